@@ -1,0 +1,67 @@
+// What every integrator declares, and the one solver the implicit ones share.
+//
+// A method is a struct with
+//   static constexpr MethodInfo info;                       name, order, flags
+//   template <Scene S> static StepStatus step(const S&, State<S::dim>& y, double t, double h);
+// that advances y from time t to t + h in place. It allocates nothing.
+#pragma once
+
+#include <algorithm>
+#include <string_view>
+
+#include "core/scene.hpp"
+
+namespace steplab {
+
+struct MethodInfo {
+  std::string_view name;
+  int order;             // global order of accuracy; 0 for the exact flow
+  bool symplectic;
+  bool implicit;         // solves a nonlinear system each step
+  bool exact_flow;       // the analytic solution: needs a scene with an exact flow
+  std::string_view summary;
+};
+
+// Eigen's ComputationInfo in spirit: a step reports, it never throws or exits.
+enum class StepStatus { Ok, NoConvergence };
+
+// Newton's method for the implicit stages. Solves for the velocity u in
+//
+//     M (u - w) = c F(x0 + cx u, u)
+//
+// (backward Euler: w = v0, c = cx = h; a half step of it is the implicit midpoint rule; velocity
+// Verlet's closing kick: w = v0 + h/2 a0, c = h/2, cx = 0 at fixed x1). The Jacobian of the
+// residual G(u) = M (u - w) - c F is  J = M - c dF/dv - c cx dF/dx.
+// Starts from u = w; stops when |G(u)| <= tolerance * (|M u| + |M w| + c |F|), i.e. when the
+// residual is at round-off relative to the terms it balances; a force that is linear in (x, v)
+// converges in one Newton step (the second pass only confirms it). At most max_iterations.
+struct NewtonSettings {
+  static constexpr int max_iterations = 50;
+  static constexpr double tolerance = 1e-12;
+};
+
+template <Scene S>
+StepStatus solve_implicit(const S& s, const Vec<S::dim>& x0, double cx, const Vec<S::dim>& w, double c,
+                          Vec<S::dim>& u) {
+  constexpr int D = S::dim;
+  const Vec<D> m = s.mass();
+  u = w;
+  for (int it = 0;; ++it) {
+    const Vec<D> x = x0 + cx * u;
+    const Vec<D> f = s.force(x, u);
+    const Vec<D> r = m.cwiseProduct(u - w) - c * f;
+    const double scale = m.cwiseProduct(u).norm() + m.cwiseProduct(w).norm() + c * f.norm();
+    if (r.norm() <= NewtonSettings::tolerance * scale) return StepStatus::Ok;
+    if (it == NewtonSettings::max_iterations || !r.allFinite()) return StepStatus::NoConvergence;
+    const Jacobians<D> jac = s.jacobians(x, u);
+    Mat<D> J = -c * jac.dv - (c * cx) * jac.dx;
+    J.diagonal() += m;
+    if constexpr (D == 1) {
+      u[0] -= r[0] / J(0, 0);
+    } else {
+      u -= J.partialPivLu().solve(r);
+    }
+  }
+}
+
+}  // namespace steplab

@@ -1,0 +1,21 @@
+#pragma once
+#include "core/method.hpp"
+
+namespace steplab {
+
+// Explicit (forward) Euler, first order, neither symplectic nor stable for an undamped
+// oscillator at any step (its amplification factor has modulus sqrt(1 + h^2 k/m) > 1):
+//   x_{n+1} = x_n + h v_n
+//   v_{n+1} = v_n + h a(x_n, v_n)
+struct ExplicitEuler {
+  static constexpr MethodInfo info{"explicit_euler", 1, false, false, false,
+                                   "x += h v, v += h a(x, v), both from the old state"};
+  template <Scene S> static StepStatus step(const S& s, State<S::dim>& y, double /*t*/, double h) {
+    const Vec<S::dim> a = acceleration(s, y.x, y.v);
+    y.x += h * y.v;
+    y.v += h * a;
+    return StepStatus::Ok;
+  }
+};
+
+}  // namespace steplab

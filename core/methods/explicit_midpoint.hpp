@@ -1,0 +1,22 @@
+#pragma once
+#include "core/method.hpp"
+
+namespace steplab {
+
+// Explicit midpoint (RK2, Butcher tableau c = (0, 1/2), a21 = 1/2, b = (0, 1)), second order:
+//   x_m = x_n + h/2 v_n,            v_m = v_n + h/2 a(x_n, v_n)
+//   x_{n+1} = x_n + h v_m,          v_{n+1} = v_n + h a(x_m, v_m)
+// Undamped oscillator: |R(i w h)|^2 = 1 + (w h)^4 / 4 > 1, unstable at every step.
+struct ExplicitMidpoint {
+  static constexpr MethodInfo info{"explicit_midpoint", 2, false, false, false,
+                                   "half an Euler step to the midpoint, then the full step with its slope"};
+  template <Scene S> static StepStatus step(const S& s, State<S::dim>& y, double /*t*/, double h) {
+    const Vec<S::dim> xm = y.x + 0.5 * h * y.v;
+    const Vec<S::dim> vm = y.v + 0.5 * h * acceleration(s, y.x, y.v);
+    y.x += h * vm;
+    y.v += h * acceleration(s, xm, vm);
+    return StepStatus::Ok;
+  }
+};
+
+}  // namespace steplab

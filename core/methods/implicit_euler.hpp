@@ -1,0 +1,23 @@
+#pragma once
+#include "core/method.hpp"
+
+namespace steplab {
+
+// Implicit (backward) Euler, first order, A-stable (damps every mode, even undamped ones):
+//   x_{n+1} = x_n + h v_{n+1}
+//   v_{n+1} = v_n + h a(x_{n+1}, v_{n+1})
+// Eliminating x_{n+1}: M (v_{n+1} - v_n) = h F(x_n + h v_{n+1}, v_{n+1}), solved by Newton
+// (solve_implicit with w = v_n, c = cx = h).
+struct ImplicitEuler {
+  static constexpr MethodInfo info{"implicit_euler", 1, false, true, false,
+                                   "x += h v', v += h a(x', v') at the new state, by Newton"};
+  template <Scene S> static StepStatus step(const S& s, State<S::dim>& y, double /*t*/, double h) {
+    Vec<S::dim> v1;
+    const StepStatus status = solve_implicit(s, y.x, h, y.v, h, v1);
+    y.x += h * v1;
+    y.v = v1;
+    return status;
+  }
+};
+
+}  // namespace steplab

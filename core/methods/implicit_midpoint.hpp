@@ -1,0 +1,23 @@
+#pragma once
+#include "core/method.hpp"
+
+namespace steplab {
+
+// Implicit midpoint rule, second order, symplectic and A-stable (|R(z)| = 1 on the imaginary axis):
+//   x_{n+1} = x_n + h v_m,   v_{n+1} = v_n + h a(x_m, v_m),   x_m = (x_n + x_{n+1})/2, v_m = (v_n + v_{n+1})/2
+// The midpoint (x_m, v_m) is exactly one backward Euler step of h/2 from (x_n, v_n):
+//   M (v_m - v_n) = h/2 F(x_n + h/2 v_m, v_m)
+// and the step ends by extrapolating: x_{n+1} = 2 x_m - x_n, v_{n+1} = 2 v_m - v_n.
+struct ImplicitMidpoint {
+  static constexpr MethodInfo info{"implicit_midpoint", 2, true, true, false,
+                                   "backward Euler for h/2 to the midpoint, then extrapolate to h"};
+  template <Scene S> static StepStatus step(const S& s, State<S::dim>& y, double /*t*/, double h) {
+    Vec<S::dim> vm;
+    const StepStatus status = solve_implicit(s, y.x, 0.5 * h, y.v, 0.5 * h, vm);
+    y.x += h * vm;
+    y.v = 2 * vm - y.v;
+    return status;
+  }
+};
+
+}  // namespace steplab

@@ -1,0 +1,24 @@
+#pragma once
+#include "core/method.hpp"
+
+namespace steplab {
+
+// Classic fourth-order Runge-Kutta on the first-order system y' = (v, a(x, v)):
+//   k1 = f(y_n), k2 = f(y_n + h/2 k1), k3 = f(y_n + h/2 k2), k4 = f(y_n + h k3)
+//   y_{n+1} = y_n + h/6 (k1 + 2 k2 + 2 k3 + k4)
+// Undamped oscillator: stable up to w h = 2 sqrt(2).
+struct Rk4 {
+  static constexpr MethodInfo info{"rk4", 4, false, false, false, "classic four-stage Runge-Kutta"};
+  template <Scene S> static StepStatus step(const S& s, State<S::dim>& y, double /*t*/, double h) {
+    using V = Vec<S::dim>;
+    const V kx1 = y.v, kv1 = acceleration(s, y.x, y.v);
+    const V kx2 = y.v + 0.5 * h * kv1, kv2 = acceleration(s, V(y.x + 0.5 * h * kx1), kx2);
+    const V kx3 = y.v + 0.5 * h * kv2, kv3 = acceleration(s, V(y.x + 0.5 * h * kx2), kx3);
+    const V kx4 = y.v + h * kv3, kv4 = acceleration(s, V(y.x + h * kx3), kx4);
+    y.x += (h / 6) * (kx1 + 2 * kx2 + 2 * kx3 + kx4);
+    y.v += (h / 6) * (kv1 + 2 * kv2 + 2 * kv3 + kv4);
+    return StepStatus::Ok;
+  }
+};
+
+}  // namespace steplab

@@ -1,0 +1,20 @@
+#pragma once
+#include "core/method.hpp"
+
+namespace steplab {
+
+// Symplectic (semi-implicit) Euler, first order: the new velocity first, then the position with it.
+//   v_{n+1} = v_n + h a(x_n, v_n)
+//   x_{n+1} = x_n + h v_{n+1}
+// Undamped oscillator: stable (|eigenvalues| = 1) for h <= 2 / omega, omega = sqrt(k/m).
+struct SymplecticEuler {
+  static constexpr MethodInfo info{"symplectic_euler", 1, true, false, false,
+                                   "v += h a(x, v), then x += h v with the new v"};
+  template <Scene S> static StepStatus step(const S& s, State<S::dim>& y, double /*t*/, double h) {
+    y.v += h * acceleration(s, y.x, y.v);
+    y.x += h * y.v;
+    return StepStatus::Ok;
+  }
+};
+
+}  // namespace steplab

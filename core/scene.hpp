@@ -1,0 +1,74 @@
+// What a scene is: a mechanical system M x'' = F(x, v) with a diagonal mass M.
+//
+// A scene gives (all const, all allocation-free):
+//   dim                   number of coordinates (compile time)
+//   mass()                the diagonal of M, one entry per coordinate
+//   force(x, v)           F(x, v); every scene here is autonomous
+//   jacobians(x, v)       dF/dx and dF/dv (used by the implicit methods only)
+//   velocity_dependent()  whether F depends on v (damping); F must be affine in v
+//   energy(x, v)          the energy whose ratio to its start value the studies track
+//   initial()             the start state
+// and, where it has one, flow(y, h): the exact state h after state y (HasExact); the exact
+// solution is then exact(s, t) = flow(initial(), t).
+//
+// Integrators see scenes only through this interface, so a new scene never touches them.
+// Parameters come from a table of ParamSpec (name, default, bound, help), which the CLI, the
+// JSON writers and the validation all read; a scene is built from the values in that order.
+#pragma once
+
+#include <array>
+#include <concepts>
+#include <span>
+#include <string_view>
+
+#include "core/state.hpp"
+
+namespace steplab {
+
+enum class Bound { Positive, NonNegative, Any };
+
+struct ParamSpec {
+  std::string_view name;  // CLI long option without the dashes, JSON key with '-' -> '_'
+  double fallback;        // the default
+  Bound bound;
+  std::string_view help;
+};
+
+template <class S>
+concept Scene = requires(const S& s, const Vec<S::dim>& x, const Vec<S::dim>& v, std::span<const double> p) {
+  { S::name } -> std::convertible_to<std::string_view>;
+  { S::params } -> std::convertible_to<std::span<const ParamSpec>>;
+  { S(p) };
+  { s.mass() } -> std::convertible_to<Vec<S::dim>>;
+  { s.force(x, v) } -> std::convertible_to<Vec<S::dim>>;
+  { s.jacobians(x, v) } -> std::convertible_to<Jacobians<S::dim>>;
+  { s.velocity_dependent() } -> std::convertible_to<bool>;
+  { s.energy(x, v) } -> std::convertible_to<double>;
+  { s.initial() } -> std::convertible_to<State<S::dim>>;
+};
+
+template <class S>
+concept HasExact = Scene<S> && requires(const S& s, const State<S::dim>& y, double h) {
+  { s.flow(y, h) } -> std::convertible_to<State<S::dim>>;
+};
+
+template <HasExact S> State<S::dim> exact(const S& s, double t) { return s.flow(s.initial(), t); }
+
+// Acceleration a = M^{-1} F(x, v).
+template <Scene S> Vec<S::dim> acceleration(const S& s, const Vec<S::dim>& x, const Vec<S::dim>& v) {
+  return s.force(x, v).cwiseQuotient(s.mass());
+}
+
+// The scene's default parameter values, in table order.
+template <Scene S> auto default_params() {
+  std::array<double, S::params.size()> p{};
+  for (std::size_t i = 0; i < p.size(); ++i) p[i] = S::params[i].fallback;
+  return p;
+}
+
+template <Scene S> S make_default_scene() {
+  const auto p = default_params<S>();
+  return S(std::span<const double>(p));
+}
+
+}  // namespace steplab

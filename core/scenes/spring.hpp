@@ -1,0 +1,109 @@
+// The hanging cube of the 2018 sheet, modelled on the vertical line only (`spring1d` in the old
+// flags): y is the mass's height relative to an anchor at y = 0, so y < 0 while it hangs.
+//
+//   m y'' = F(y, v) = -k (|y| - L) sign(y) - gamma v - m g        (the sheet's equation (1))
+//
+// While y < 0 the spring force is -k (y + L): the system is linear, with equilibrium
+// y_eq = -L - m g / k. With u = y - y_eq,   m u'' + gamma u' + k u = 0.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <span>
+
+#include "core/scene.hpp"
+
+namespace steplab {
+
+struct Spring {
+  static constexpr int dim = 1;
+  static constexpr std::string_view name = "spring";
+  // Defaults from the 2018 sheet: m = 1, k = 5, L = 5, gamma = 0.1, g = 9.81.
+  static constexpr std::array<ParamSpec, 5> params{{
+      {"mass", 1.0, Bound::Positive, "mass m"},
+      {"stiffness", 5.0, Bound::Positive, "spring stiffness k"},
+      {"damping", 0.1, Bound::NonNegative, "damping coefficient gamma (force -gamma v)"},
+      {"rest-length", 5.0, Bound::NonNegative, "rest length L"},
+      {"gravity", 9.81, Bound::NonNegative, "gravitational acceleration g (pointing down)"},
+  }};
+
+  double m, k, gamma, L, g;
+
+  explicit Spring(std::span<const double> p) : m(p[0]), k(p[1]), gamma(p[2]), L(p[3]), g(p[4]) {}
+
+  double equilibrium() const { return -L - m * g / k; }
+  double omega() const { return std::sqrt(k / m); }              // undamped angular frequency
+  double critical_damping() const { return 2 * std::sqrt(k * m); }  // gamma^2 = 4 k m
+
+  Vec<1> mass() const { return Vec<1>::Constant(m); }
+
+  Vec<1> force(const Vec<1>& x, const Vec<1>& v) const {
+    const double y = x[0];
+    const double sign = (y > 0) - (y < 0);
+    return Vec<1>::Constant(-k * (std::abs(y) - L) * sign - gamma * v[0] - m * g);
+  }
+
+  // d/dy [-k (|y| - L) sign(y)] = -k away from the anchor; dF/dv = -gamma.
+  Jacobians<1> jacobians(const Vec<1>&, const Vec<1>&) const {
+    return {Mat<1>::Constant(-k), Mat<1>::Constant(-gamma)};
+  }
+
+  bool velocity_dependent() const { return gamma != 0; }
+
+  // Oscillation energy about the equilibrium: E = 1/2 m v^2 + 1/2 k (y - y_eq)^2.
+  // It is not zero at the rest start (y = -L): E(0) = (m g)^2 / (2 k).
+  double energy(const Vec<1>& x, const Vec<1>& v) const {
+    const double u = x[0] - equilibrium();
+    return 0.5 * m * v[0] * v[0] + 0.5 * k * u * u;
+  }
+
+  // Starts at rest at rest length.
+  State<1> initial() const { return {Vec<1>::Constant(-L), Vec<1>::Zero()}; }
+
+  // The exact flow of m u'' + gamma u' + k u = 0 over a time t from any state (y0, v0) below the
+  // anchor, in every damping regime. With alpha = -gamma / (2m), beta^2 = (4 k m - gamma^2) / (4 m^2)
+  // and c = v0 - alpha u0:
+  //   underdamped (beta^2 > 0, gamma = 0 too): u = e^{alpha t} (u0 cos(beta t) + c sin(beta t) / beta)
+  //   critical    (beta^2 = 0):               u = e^{alpha t} (u0 + c t)
+  //   overdamped  (beta^2 < 0, delta^2 = -beta^2): u = e^{alpha t} (u0 cosh(delta t) + c sinh(delta t) / delta)
+  // From the rest state (u0 = m g / k, v0 = 0) the underdamped form is the sheet's (2) with
+  // c1 = m g / k, c2 = -alpha c1 / beta. sin(x)/beta and sinh(x)/delta stay accurate as beta or
+  // delta -> 0, so each form is exact to round-off right up to critical damping.
+  State<1> flow(const State<1>& y, double t) const {
+    const double y_eq = equilibrium();
+    const double u0 = y.x[0] - y_eq, v0 = y.v[0];
+    const double alpha = -gamma / (2 * m);
+    const double beta2 = (4 * k * m - gamma * gamma) / (4 * m * m);
+    const double c = v0 - alpha * u0;
+    double u, du;
+    if (beta2 > 0) {
+      const double beta = std::sqrt(beta2), e = std::exp(alpha * t);
+      const double cs = std::cos(beta * t), sn = std::sin(beta * t);
+      u = e * (u0 * cs + c * sn / beta);
+      du = alpha * u + e * (-u0 * beta * sn + c * cs);
+    } else if (beta2 == 0) {
+      const double e = std::exp(alpha * t);
+      u = e * (u0 + c * t);
+      du = alpha * u + e * c;
+    } else {
+      // e^{alpha t} cosh(delta t) and e^{alpha t} sinh(delta t); for delta t >= 1 written with
+      // exp((alpha +- delta) t), which cannot overflow (alpha + delta < 0) and does not cancel.
+      const double delta = std::sqrt(-beta2);
+      double ch, sh;
+      if (delta * t < 1) {
+        const double e = std::exp(alpha * t);
+        ch = e * std::cosh(delta * t);
+        sh = e * std::sinh(delta * t);
+      } else {
+        const double ep = std::exp((alpha + delta) * t), em = std::exp((alpha - delta) * t);
+        ch = 0.5 * (ep + em);
+        sh = 0.5 * (ep - em);
+      }
+      u = u0 * ch + c * sh / delta;
+      du = alpha * u + u0 * delta * sh + c * ch;
+    }
+    return {Vec<1>::Constant(y_eq + u), Vec<1>::Constant(du)};
+  }
+};
+
+}  // namespace steplab

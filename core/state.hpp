@@ -1,0 +1,27 @@
+// The state of a scene: positions x and velocities v, kept apart, as fixed-size Eigen vectors
+// of the scene's own dimension (1 for the hanging spring, 2 for the cannon ball, 6 for three
+// 2-D particles). Fixed size means no heap allocation anywhere in a step.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+
+namespace steplab {
+
+template <int D> using Vec = Eigen::Matrix<double, D, 1>;
+template <int D> using Mat = Eigen::Matrix<double, D, D>;
+
+template <int D> struct State {
+  Vec<D> x;
+  Vec<D> v;
+};
+
+// Force Jacobians for the implicit methods: dF/dx and dF/dv at one state.
+template <int D> struct Jacobians {
+  Mat<D> dx;
+  Mat<D> dv;
+};
+
+template <int D> bool all_finite(const State<D>& s) { return s.x.allFinite() && s.v.allFinite(); }
+
+}  // namespace steplab

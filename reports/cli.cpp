@@ -1,0 +1,116 @@
+#include "reports/cli.hpp"
+
+#include <array>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "reports/commands.hpp"
+#include "core/methods.hpp"
+#include "reports/inputs.hpp"
+
+namespace steplab {
+namespace {
+
+// The old command-line framework (the exercise slides): single-dash flags, its own defaults.
+//   steplab -testcase spring1d -method euler -step 0.01 -damp 0.1 -mass 1 -stiff 10 [-length 1]
+constexpr std::array<std::string_view, 7> legacy_flags{"-testcase", "-method", "-step", "-damp",
+                                                       "-mass",     "-stiff",  "-length"};
+// Its defaults: step 0.003, mass 0.1, stiffness 10, damping 0.01, rest length 1.
+struct LegacyArgs {
+  std::string testcase = "spring1d";
+  std::string method = "euler";
+  std::string step = "0.003";
+  std::string damp, mass, stiff, length;
+};
+
+void add_legacy_options(CLI::App& app, LegacyArgs& l) {
+  const char* group = "The old framework's flags (single or double dash; its defaults apply)";
+  app.add_option("--testcase", l.testcase, "spring1d, falling, error_measurement, stability_measurement")
+      ->capture_default_str()->group(group);
+  app.add_option("--method", l.method, "integrator (old or new name)")->capture_default_str()->group(group);
+  app.add_option("--step", l.step, "time step")->capture_default_str()->group(group);
+  app.add_option("--damp", l.damp, "damping (default 0.01)")->group(group);
+  app.add_option("--mass", l.mass, "mass (default 0.1)")->group(group);
+  app.add_option("--stiff", l.stiff, "stiffness (default 10)")->group(group);
+  app.add_option("--length", l.length, "rest length (default 1)")->group(group);
+}
+
+int legacy_command(const LegacyArgs& l) {
+  if (l.testcase != "spring1d")
+    throw UsageError(fmt::format("-testcase '{}' is unknown; accepted: spring1d", l.testcase));
+  // Checked here first so that a message names the flag as typed.
+  parse_number("-step", l.step, Bound::Positive);
+  for (const auto& [flag, value] : {std::pair{"-mass", &l.mass}, {"-stiff", &l.stiff}, {"-damp", &l.damp}, {"-length", &l.length}})
+    if (!value->empty()) parse_number(flag, *value, std::string_view(flag) == "-mass" ? Bound::Positive : Bound::NonNegative);
+  RunArgs run;
+  run.scene.scene = "spring";
+  run.scene.fallback = {{"mass", 0.1}, {"stiffness", 10.0}, {"damping", 0.01}, {"rest-length", 1.0}};
+  if (!l.mass.empty()) run.scene.set("mass", l.mass);
+  if (!l.stiff.empty()) run.scene.set("stiffness", l.stiff);
+  if (!l.damp.empty()) run.scene.set("damping", l.damp);
+  if (!l.length.empty()) run.scene.set("rest-length", l.length);
+  run.method = l.method;
+  run.dt = l.step;
+  return run_command(run);
+}
+
+}  // namespace
+
+int cli_main(int argc, const char* const* argv) {
+  // The old single-dash flags become GNU long options; everything else is left as typed.
+  std::vector<std::string> args;
+  bool legacy = false;
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    for (auto flag : legacy_flags)
+      if (a == flag) a = "-" + a;
+    for (auto flag : legacy_flags)
+      if (a == "-" + std::string(flag)) legacy = true;
+    args.push_back(std::move(a));
+  }
+
+  CLI::App app{"steplab: measures how time integrators behave (convergence order, stability, cost)"};
+  app.name("steplab");
+  app.failure_message([](const CLI::App*, const CLI::Error& e) { return std::string(e.what()) + "\n"; });
+
+  LegacyArgs legacy_args;
+  add_legacy_options(app, legacy_args);
+
+  RunArgs run;
+  CLI::App* run_cmd = app.add_subcommand("run", "one method on one scene: CSV (t, x..., v..., energy) on stdout, or --json");
+  run.scene.add_to(run_cmd);
+  run_cmd->add_option("--method", run.method, "integrator: " + method_names())->capture_default_str();
+  run_cmd->add_option("--dt", run.dt, "time step h (> 0)")->capture_default_str();
+  run_cmd->add_option("--t-end", run.t_end, "simulated time; t_end / dt steps, rounded up")->capture_default_str();
+  run_cmd->add_option("--samples", run.samples, "at most this many rows, evenly decimated, last step kept")
+      ->capture_default_str();
+  run_cmd->add_option("--json", run.json, "write JSON (schema steplab.run/1) to this file instead of CSV");
+
+  std::vector<const char*> cargv{argv[0]};
+  for (const auto& a : args) cargv.push_back(a.c_str());
+  try {
+    app.parse(static_cast<int>(cargv.size()), cargv.data());
+    if (run_cmd->parsed()) return run_command(run);
+    if (legacy) return legacy_command(legacy_args);
+    throw UsageError("no command given; accepted: run, or the old flags -testcase ... (see steplab --help)");
+  } catch (const CLI::CallForHelp&) {
+    std::fputs(app.help().c_str(), stdout);
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) {
+      app.exit(e);
+      return 0;
+    }
+    fmt::print(stderr, "steplab: {}; see steplab --help\n", e.what());
+    return 2;
+  } catch (const UsageError& e) {
+    fmt::print(stderr, "steplab: {}\n", e.what());
+    return 2;
+  }
+}
+
+}  // namespace steplab

@@ -1,0 +1,36 @@
+// Reading numbers and names from the command line and config files, with one clear message
+// naming the input and what is accepted when they are wrong (UsageError -> exit status 2).
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/scene.hpp"
+
+namespace steplab {
+
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+std::string_view describe(Bound b);  // "a finite number > 0", ...
+
+// A finite number within the bound, or a UsageError naming `what` (e.g. "--dt").
+double parse_number(std::string_view what, std::string_view text, Bound bound);
+double check_number(std::string_view what, double value, Bound bound);
+
+// A whole number in [lo, hi].
+long long parse_count(std::string_view what, std::string_view text, long long lo, long long hi);
+
+// Comma-separated list, e.g. "euler,rk4".
+std::vector<std::string> split_list(std::string_view text);
+
+// The number of steps of length dt that cover t_end: round(t_end / dt) when t_end is a whole
+// number of steps (to 1e-9 relative), else the next whole number. At most max_steps.
+inline constexpr long long max_steps = 1'000'000'000;
+long long step_count(double t_end, double dt);
+
+}  // namespace steplab

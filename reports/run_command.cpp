@@ -1,0 +1,75 @@
+// `steplab run`: one method on one scene; CSV (t, x..., v..., energy) on stdout or JSON to a file.
+#include <cstdio>
+
+#include <fmt/format.h>
+
+#include "core/scenes.hpp"
+#include "core/simulate.hpp"
+#include "reports/commands.hpp"
+#include "reports/inputs.hpp"
+#include "reports/output.hpp"
+#include "reports/run_json.hpp"
+
+namespace steplab {
+namespace {
+
+template <int D> std::string csv(const RunResult<D>& r) {
+  std::string out = "t";
+  for (int i = 0; i < D; ++i) out += D == 1 ? ",x" : fmt::format(",x{}", i);
+  for (int i = 0; i < D; ++i) out += D == 1 ? ",v" : fmt::format(",v{}", i);
+  out += ",energy\n";
+  for (const auto& s : r.samples) {
+    out += fmt::format("{}", s.t);
+    for (int i = 0; i < D; ++i) out += fmt::format(",{}", s.x[i]);
+    for (int i = 0; i < D; ++i) out += fmt::format(",{}", s.v[i]);
+    out += fmt::format(",{}\n", s.energy);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::size_t resolve_method(std::string_view name) {
+  const auto m = find_method(name);
+  if (!m) throw UsageError(fmt::format("--method '{}' is unknown; accepted: {}", name, method_names()));
+  return *m;
+}
+
+int run_command(RunArgs& a) {
+  const std::size_t scene = a.scene.scene_index();
+  const std::size_t method = resolve_method(a.method);
+  const std::vector<double> params = a.scene.values(scene);
+  RunSpec spec;
+  spec.dt = parse_number("--dt", a.dt, Bound::Positive);
+  const double t_end = parse_number("--t-end", a.t_end, Bound::NonNegative);
+  spec.steps = step_count(t_end, spec.dt);
+  spec.max_samples = parse_count("--samples", a.samples, 2, 100'000'000);
+  if (!a.json.empty()) check_writable(a.json);
+
+  return with_scene(scene, [&]<class S>() {
+    const S s(params);
+    return with_method(method, [&]<class M>() {
+      if constexpr (!applies<M, S>()) {
+        throw UsageError(fmt::format("--method {} needs a scene with an exact solution; scene {} has none", M::info.name,
+                                     S::name));
+        return 2;
+      } else {
+        const auto r = simulate<M>(s, spec);
+        if (a.json.empty()) {
+          std::fputs(csv(r).c_str(), stdout);
+        } else {
+          Json p = params_json<S>(params);
+          p["dt"] = spec.dt;
+          p["t_end"] = t_end;
+          write_atomic(a.json, run_json<S::dim>(S::name, M::info.name, std::move(p), r).dump(1) + "\n");
+        }
+        if (r.status != RunStatus::Ok)
+          std::fprintf(stderr, "steplab: %s %s at step %lld (t = %g)\n", M::info.name.data(), to_string(r.status),
+                       r.failed_step, r.failed_t);
+        return 0;
+      }
+    });
+  });
+}
+
+}  // namespace steplab

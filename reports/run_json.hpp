@@ -1,0 +1,54 @@
+// JSON of one run (schema "steplab.run/1"). The field names are an interface: notebooks and
+// scripts rely on them, and the README lists them.
+#pragma once
+
+#include <span>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+#include "core/simulate.hpp"
+
+namespace steplab {
+
+using Json = nlohmann::ordered_json;
+
+template <int D> Json vec_json(const Vec<D>& v) {
+  Json a = Json::array();
+  for (int i = 0; i < D; ++i) a.push_back(v[i]);
+  return a;
+}
+
+template <Scene S> Json params_json(std::span<const double> values) {
+  Json p = Json::object();
+  for (std::size_t i = 0; i < S::params.size(); ++i) {
+    std::string key(S::params[i].name);
+    std::replace(key.begin(), key.end(), '-', '_');
+    p[key] = values[i];
+  }
+  return p;
+}
+
+template <int D>
+Json run_json(std::string_view scene, std::string_view method, Json params, const RunResult<D>& r) {
+  Json j;
+  j["schema"] = "steplab.run/1";
+  j["scene"] = scene;
+  j["method"] = method;
+  j["params"] = std::move(params);
+  j["status"] = to_string(r.status);
+  j["diverged_at"] = r.status == RunStatus::Ok ? Json(nullptr) : Json{{"step", r.failed_step}, {"t", r.failed_t}};
+  j["steps"] = r.steps;
+  j["final"] = {{"t", r.t_final}, {"x", vec_json<D>(r.final.x)}, {"v", vec_json<D>(r.final.v)}};
+  j["error"] = r.has_exact ? Json{{"final", r.error_final}, {"max", r.error_max}, {"rms", r.error_rms},
+                                  {"velocity_final", r.error_v_final}}
+                           : Json(nullptr);
+  j["energy_ratio"] = {{"final", r.energy_ratio_final}, {"max", r.energy_ratio_max}};
+  Json samples = Json::array();
+  for (const auto& s : r.samples)
+    samples.push_back({{"t", s.t}, {"x", vec_json<D>(s.x)}, {"v", vec_json<D>(s.v)}, {"energy", s.energy}});
+  j["samples"] = std::move(samples);
+  return j;
+}
+
+}  // namespace steplab

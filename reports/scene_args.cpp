@@ -1,0 +1,66 @@
+#include "reports/scene_args.hpp"
+
+#include <fmt/format.h>
+
+#include "core/scenes.hpp"
+#include "reports/inputs.hpp"
+
+namespace steplab {
+
+std::vector<std::pair<std::string, std::string>> all_scene_parameters() {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (std::size_t s = 0; s < scene_count; ++s) {
+    with_scene(s, [&]<class S>() {
+      for (const ParamSpec& p : S::params) {
+        const std::string entry = fmt::format("{}: {} (default {})", S::name, p.help, p.fallback);
+        auto it = std::find_if(out.begin(), out.end(), [&](const auto& e) { return e.first == p.name; });
+        if (it == out.end()) out.emplace_back(std::string(p.name), entry);
+        else it->second += "; " + entry;
+      }
+    });
+  }
+  return out;
+}
+
+void SceneArgs::add_to(CLI::App* a, bool with_scene_option) {
+  app = a;
+  if (with_scene_option)
+    a->add_option("--scene", scene, "scene: " + scene_list() + " (spring1d is the old name of spring)")->capture_default_str();
+  for (const auto& [name, help] : all_scene_parameters()) a->add_option("--" + name, text[name], help)->group("Scene parameters");
+}
+
+bool SceneArgs::given(std::string_view name) const {
+  const auto it = text.find(name);
+  if (it != text.end() && !it->second.empty()) return true;
+  return app && app->count("--" + std::string(name)) > 0;  // given, but empty
+}
+
+std::size_t SceneArgs::scene_index() const {
+  const auto index = find_scene(scene);
+  if (!index) throw UsageError(fmt::format("--scene '{}' is unknown; accepted: {}", scene, scene_list()));
+  return *index;
+}
+
+std::vector<double> SceneArgs::values(std::size_t index) const {
+  return with_scene(index, [&]<class S>() {
+    for (const auto& [name, value] : text) {
+      if (!given(name)) continue;
+      const bool known = std::any_of(S::params.begin(), S::params.end(), [&](const ParamSpec& p) { return p.name == name; });
+      if (!known) {
+        std::string list;
+        for (const ParamSpec& p : S::params) list += (list.empty() ? "--" : ", --") + std::string(p.name);
+        throw UsageError(fmt::format("--{} does not apply to scene {}; accepted: {}", name, S::name, list));
+      }
+    }
+    std::vector<double> v;
+    for (const ParamSpec& p : S::params) {
+      const std::string option = "--" + std::string(p.name);
+      if (given(p.name)) v.push_back(parse_number(option, text.at(std::string(p.name)), p.bound));
+      else if (auto f = fallback.find(p.name); f != fallback.end()) v.push_back(f->second);
+      else v.push_back(p.fallback);
+    }
+    return v;
+  });
+}
+
+}  // namespace steplab

@@ -1,0 +1,35 @@
+// The scene and its parameters as given on the command line (--scene, --mass, --stiffness, ...),
+// shared by `run` and every study. A parameter is an option only once, whatever scenes have it.
+#pragma once
+
+#include <map>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace steplab {
+
+struct SceneArgs {
+  std::string scene = "spring";
+  std::map<std::string, std::string, std::less<>> text;   // parameter -> value as typed
+  std::map<std::string, double, std::less<>> fallback;    // defaults that replace the scene's (old flags)
+  CLI::App* app = nullptr;
+
+  // Adds --scene and one option per parameter name of any scene.
+  void add_to(CLI::App* a, bool with_scene_option = true);
+  void set(std::string_view name, std::string value) { text[std::string(name)] = std::move(value); }
+  bool given(std::string_view name) const;
+
+  std::size_t scene_index() const;  // UsageError for an unknown scene
+  // The scene's parameter values in its table order. UsageError for a value out of bounds, or a
+  // parameter given that the scene does not have.
+  std::vector<double> values(std::size_t scene_index) const;
+};
+
+// Every parameter name that some scene has, in first-seen order, with a help line.
+std::vector<std::pair<std::string, std::string>> all_scene_parameters();
+
+}  // namespace steplab

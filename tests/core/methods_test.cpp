@@ -1,0 +1,170 @@
+// Unit tests for core/methods/*.hpp and core/method.hpp: each method's step against the same step
+// written out by hand on the linear spring (y < 0, so F = -k (y + L) - gamma v - m g).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/methods.hpp"
+#include "core/scenes.hpp"
+
+namespace steplab {
+namespace {
+
+// The hand-written steps below evaluate the same formulas in a different order; a few ulps of
+// the state's magnitude (|y| ~ 5) apart. 1e-13 relative leaves room for that and nothing more.
+constexpr double kRoundoff = 1e-13;
+
+struct Hand {
+  double m = 1.3, k = 7.0, gamma = 0.4, L = 2.0, g = 9.81;
+  double a(double y, double v) const { return (-k * (y + L) - gamma * v - m * g) / m; }
+};
+
+Spring make_spring(const Hand& p) {
+  const std::array<double, 5> v{p.m, p.k, p.gamma, p.L, p.g};
+  return Spring(v);
+}
+
+template <class M> State<1> one_step(const Spring& s, double y, double v, double h) {
+  State<1> st{Vec<1>::Constant(y), Vec<1>::Constant(v)};
+  EXPECT_EQ(M::step(s, st, 0.0, h), StepStatus::Ok);
+  return st;
+}
+
+void expect_state(const State<1>& got, double y, double v) {
+  EXPECT_NEAR(got.x[0], y, kRoundoff * std::max(1.0, std::abs(y)));
+  EXPECT_NEAR(got.v[0], v, kRoundoff * std::max(1.0, std::abs(v)));
+}
+
+class MethodStep : public ::testing::TestWithParam<double> {
+ protected:
+  Hand p;
+  Spring s = make_spring(p);
+  double y = -6.3, v = 1.7;
+  double h = GetParam();
+};
+
+TEST_P(MethodStep, ExplicitEuler) {
+  expect_state(one_step<ExplicitEuler>(s, y, v, h), y + h * v, v + h * p.a(y, v));
+}
+
+TEST_P(MethodStep, SymplecticEuler) {
+  const double v1 = v + h * p.a(y, v);
+  expect_state(one_step<SymplecticEuler>(s, y, v, h), y + h * v1, v1);
+}
+
+TEST_P(MethodStep, ExplicitMidpoint) {
+  const double ym = y + h / 2 * v, vm = v + h / 2 * p.a(y, v);
+  expect_state(one_step<ExplicitMidpoint>(s, y, v, h), y + h * vm, v + h * p.a(ym, vm));
+}
+
+TEST_P(MethodStep, ImplicitEuler) {
+  // v1 = v + h a(y + h v1, v1), linear in v1:
+  //   v1 (1 + h gamma/m + h^2 k/m) = v + h (-k (y + L) - m g) / m
+  const double v1 = (v + h * (-p.k * (y + p.L) - p.m * p.g) / p.m) / (1 + h * p.gamma / p.m + h * h * p.k / p.m);
+  expect_state(one_step<ImplicitEuler>(s, y, v, h), y + h * v1, v1);
+}
+
+TEST_P(MethodStep, ImplicitMidpoint) {
+  // vm = v + h/2 a(y + h/2 vm, vm); then x1 = y + h vm, v1 = 2 vm - v.
+  const double vm = (v + h / 2 * (-p.k * (y + p.L) - p.m * p.g) / p.m) /
+                    (1 + h / 2 * p.gamma / p.m + h * h / 4 * p.k / p.m);
+  expect_state(one_step<ImplicitMidpoint>(s, y, v, h), y + h * vm, 2 * vm - v);
+  // and it is the midpoint rule: v1 - v = h a((y + y1)/2, (v + v1)/2)
+  const State<1> r = one_step<ImplicitMidpoint>(s, y, v, h);
+  EXPECT_NEAR(r.v[0] - v, h * p.a((y + r.x[0]) / 2, (v + r.v[0]) / 2), kRoundoff * 10);
+}
+
+TEST_P(MethodStep, VelocityVerletDamped) {
+  // x1 = y + h v + h^2/2 a0;  v1 = v + h/2 (a0 + a(x1, v1)), linear in v1:
+  //   v1 (1 + h/2 gamma/m) = v + h/2 a0 + h/2 (-k (x1 + L) - m g) / m
+  const double a0 = p.a(y, v), x1 = y + h * v + h * h / 2 * a0;
+  const double v1 = (v + h / 2 * a0 + h / 2 * (-p.k * (x1 + p.L) - p.m * p.g) / p.m) / (1 + h / 2 * p.gamma / p.m);
+  expect_state(one_step<VelocityVerlet>(s, y, v, h), x1, v1);
+}
+
+TEST_P(MethodStep, VelocityVerletUndamped) {
+  p.gamma = 0;
+  s = make_spring(p);
+  const double a0 = p.a(y, v), x1 = y + h * v + h * h / 2 * a0;
+  expect_state(one_step<VelocityVerlet>(s, y, v, h), x1, v + h / 2 * (a0 + p.a(x1, v)));
+}
+
+TEST_P(MethodStep, Rk4) {
+  const double k1x = v, k1v = p.a(y, v);
+  const double k2x = v + h / 2 * k1v, k2v = p.a(y + h / 2 * k1x, k2x);
+  const double k3x = v + h / 2 * k2v, k3v = p.a(y + h / 2 * k2x, k3x);
+  const double k4x = v + h * k3v, k4v = p.a(y + h * k3x, k4x);
+  expect_state(one_step<Rk4>(s, y, v, h), y + h / 6 * (k1x + 2 * k2x + 2 * k3x + k4x),
+               v + h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v));
+}
+
+TEST_P(MethodStep, AnalyticIsTheExactFlow) {
+  const State<1> start{Vec<1>::Constant(y), Vec<1>::Constant(v)};
+  const State<1> want = s.flow(start, h);
+  expect_state(one_step<Analytic>(s, y, v, h), want.x[0], want.v[0]);
+}
+
+INSTANTIATE_TEST_SUITE_P(Steps, MethodStep, ::testing::Values(0.001, 0.01, 0.05, 0.3));
+
+TEST(Cannonball, ExplicitAndSymplecticEulerByHand) {
+  const Cannonball c = make_default_scene<Cannonball>();
+  const double h = 0.01;
+  State<2> e = c.initial(), se = c.initial();
+  const Vec<2> x0 = e.x, v0 = e.v, g(0, -9.81);
+  ExplicitEuler::step(c, e, 0, h);
+  SymplecticEuler::step(c, se, 0, h);
+  EXPECT_TRUE(e.x.isApprox(x0 + h * v0, kRoundoff));
+  EXPECT_TRUE(e.v.isApprox(v0 + h * g, kRoundoff));
+  EXPECT_TRUE(se.x.isApprox(x0 + h * (v0 + h * g), kRoundoff));
+  // the sheet's launch: 100 (cos 1.047, sin 1.047) = (50.0171, 86.5927)
+  EXPECT_NEAR(v0[0], 50.0171, 1e-4);
+  EXPECT_NEAR(v0[1], 86.5927, 1e-4);
+}
+
+// A linear force: Newton's first step is already the solution, the second pass only confirms it.
+struct CountingSpring : Spring {
+  using Spring::Spring;
+  mutable int jacobian_calls = 0;
+  Jacobians<1> jacobians(const Vec<1>& x, const Vec<1>& v) const {
+    ++jacobian_calls;
+    return Spring::jacobians(x, v);
+  }
+};
+
+TEST(Newton, OneStepIsExactForALinearForce) {
+  const std::array<double, 5> p{1.0, 5.0, 0.1, 5.0, 9.81};
+  const CountingSpring s(p);
+  Vec<1> u;
+  EXPECT_EQ(solve_implicit(s, Vec<1>::Constant(-6.0), 0.05, Vec<1>::Constant(0.5), 0.05, u), StepStatus::Ok);
+  EXPECT_EQ(s.jacobian_calls, 1);
+}
+
+// A force whose Jacobian lies (says 0 while the force is steep) makes Newton stall: it must stop
+// at its cap and say so, not loop or exit.
+struct LyingSpring : Spring {
+  using Spring::Spring;
+  Jacobians<1> jacobians(const Vec<1>&, const Vec<1>&) const { return {Mat<1>::Constant(1e6), Mat<1>::Zero()}; }
+};
+
+TEST(Newton, ReportsNoConvergence) {
+  const std::array<double, 5> p{1.0, 5.0, 0.1, 5.0, 9.81};
+  const LyingSpring s(p);
+  State<1> y = s.initial();
+  EXPECT_EQ(ImplicitEuler::step(s, y, 0.0, 0.5), StepStatus::NoConvergence);
+}
+
+TEST(MethodTable, NamesAliasesAndFlags) {
+  EXPECT_EQ(method_count, 8u);
+  EXPECT_EQ(find_method("euler"), find_method("explicit_euler"));
+  EXPECT_EQ(find_method("midpoint"), find_method("explicit_midpoint"));
+  EXPECT_EQ(find_method("backwards_euler"), find_method("implicit_euler"));
+  EXPECT_FALSE(find_method("backward_euler").has_value());
+  for (const auto& info : method_infos) {
+    if (info.name == "implicit_euler" || info.name == "implicit_midpoint") EXPECT_TRUE(info.implicit);
+    if (info.name == "symplectic_euler" || info.name == "velocity_verlet") EXPECT_TRUE(info.symplectic);
+  }
+  EXPECT_EQ(method_infos[*find_method("rk4")].order, 4);
+}
+
+}  // namespace
+}  // namespace steplab

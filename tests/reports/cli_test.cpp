@@ -1,0 +1,149 @@
+// Tests of the steplab command line (reports/cli.cpp, reports/run_command.cpp): runs the built
+// binary and checks exit status, stderr and the files it writes or must not write.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_helpers.hpp"
+
+namespace steplab {
+namespace {
+
+TEST(Cli, RunWritesTheRunJson) {
+  TempDir dir;
+  const std::string out = dir.path("out.json");
+  const Result r = run_steplab("run --scene spring --method symplectic_euler --dt 0.05 --t-end 100 --damping 0 --json " + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(std::ifstream(out));
+  EXPECT_EQ(j["schema"], "steplab.run/1");
+  EXPECT_EQ(j["scene"], "spring");
+  EXPECT_EQ(j["method"], "symplectic_euler");
+  for (const char* key : {"mass", "stiffness", "damping", "rest_length", "gravity", "dt", "t_end"})
+    EXPECT_TRUE(j["params"].contains(key)) << key;
+  EXPECT_EQ(j["params"]["damping"], 0.0);
+  EXPECT_EQ(j["status"], "ok");
+  EXPECT_EQ(j["steps"], 2000);
+  EXPECT_DOUBLE_EQ(j["final"]["t"].get<double>(), 100.0);
+  EXPECT_EQ(j["final"]["x"].size(), 1u);
+  EXPECT_TRUE(j["error"]["final"].is_number());
+  EXPECT_TRUE(j["error"]["max"].is_number());
+  // symplectic Euler at h = 0.05 < 2/omega keeps the energy within a few percent of its start
+  EXPECT_NEAR(j["energy_ratio"]["final"].get<double>(), 1.0, 0.1);
+  EXPECT_GE(j["energy_ratio"]["max"].get<double>(), 1.0);
+  ASSERT_EQ(j["samples"].size(), 2001u);
+  EXPECT_EQ(j["samples"][0]["x"][0], -5.0);
+}
+
+TEST(Cli, BlowUpIsAResult) {
+  TempDir dir;
+  const std::string out = dir.path("d.json");
+  const Result r = run_steplab("run --scene spring --method explicit_euler --damping 0 --dt 0.5 --t-end 10000 --json " + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(std::ifstream(out));
+  EXPECT_EQ(j["status"], "diverged");
+  // |amplification| = sqrt(1 + h^2 k / m) = 1.5 per step: overflow after ~1750 steps
+  const long long step = j["diverged_at"]["step"];
+  EXPECT_GT(step, 1500);
+  EXPECT_LT(step, 2000);
+  EXPECT_DOUBLE_EQ(j["diverged_at"]["t"].get<double>(), step * 0.5);
+  EXPECT_EQ(j["steps"], step - 1);
+}
+
+TEST(Cli, SamplesAreCappedAndKeepTheLastStep) {
+  const Result r = run_steplab("run --scene cannonball --method symplectic_euler --dt 0.001 --t-end 17.1 --samples 7");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto lines = split_lines(r.out);
+  ASSERT_EQ(lines.size(), 8u);  // header + 7
+  EXPECT_EQ(lines[0], "t,x0,x1,v0,v1,energy");
+  EXPECT_EQ(lines[7].substr(0, 5), "17.1,");
+}
+
+TEST(Cli, OldFlags) {
+  const Result a = run_steplab("-testcase spring1d -method euler -step 0.01 -damp 0.1 -mass 1 -stiff 10");
+  const Result b = run_steplab("run --scene spring --method explicit_euler --dt 0.01 --damping 0.1 --mass 1 --stiffness 10 --rest-length 1");
+  ASSERT_EQ(a.status, 0) << a.err;
+  EXPECT_EQ(a.out, b.out);  // the old framework's rest length 1
+  const Result c = run_steplab("--testcase spring1d --method backwards_euler --length 2");
+  const Result d = run_steplab("run --method implicit_euler --dt 0.003 --mass 0.1 --stiffness 10 --damping 0.01 --rest-length 2");
+  ASSERT_EQ(c.status, 0) << c.err;
+  EXPECT_EQ(c.out, d.out);  // the old defaults: step 0.003, mass 0.1, stiffness 10, damping 0.01
+}
+
+TEST(Cli, HelpListsEveryOption) {
+  const Result r = run_steplab("run --help");
+  EXPECT_EQ(r.status, 0);
+  for (const char* opt : {"--scene", "--method", "--dt", "--t-end", "--samples", "--json", "--mass", "--stiffness",
+                          "--damping", "--rest-length", "--gravity"})
+    EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+}
+
+struct BadInput {
+  const char* args;
+  const char* names;  // the message must name this input
+  bool json = true;   // append --json FILE (the old flags have no --json)
+};
+
+std::string bad_input_name(const ::testing::TestParamInfo<BadInput>& info) {
+  std::string name = std::to_string(info.index) + "_";
+  for (const char* c = info.param.args; *c; ++c) name += std::isalnum(static_cast<unsigned char>(*c)) ? *c : '_';
+  return name;
+}
+
+class CliBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(CliBadInput, OneLineExitTwoNoFile) {
+  TempDir dir;
+  const std::string out = dir.path("bad.json");
+  const Result r = run_steplab(std::string(GetParam().args) + (GetParam().json ? " --json " + out : ""));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(split_lines(r.err).size(), 1u) << r.err;
+  EXPECT_NE(r.err.find(GetParam().names), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty());
+  EXPECT_TRUE(dir.empty());
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Run, CliBadInput,
+    ::testing::Values(BadInput{"run --scene pendulum", "pendulum"}, BadInput{"run --method heun", "heun"},
+                      BadInput{"run --frobnicate 3", "--frobnicate"}, BadInput{"run --dt 0", "--dt"},
+                      BadInput{"run --dt -0.1", "--dt"}, BadInput{"run --dt nan", "--dt"},
+                      BadInput{"run --dt inf", "--dt"}, BadInput{"run --dt abc", "--dt"},
+                      BadInput{"run --mass 0", "--mass"}, BadInput{"run --mass -1", "--mass"},
+                      BadInput{"run --stiffness -5", "--stiffness"}, BadInput{"run --damping -0.1", "--damping"},
+                      BadInput{"run --rest-length -1", "--rest-length"}, BadInput{"run --t-end -1", "--t-end"},
+                      BadInput{"run --gravity -inf", "--gravity"}, BadInput{"run --dt 1e-12 --t-end 1e6", "steps"},
+                      BadInput{"run --scene cannonball --stiffness 3", "--stiffness"},
+                      BadInput{"run --samples 1", "--samples"}, BadInput{"-testcase nosuch", "nosuch", false},
+                      BadInput{"-testcase spring1d -step -1", "-step", false},
+                      BadInput{"-testcase spring1d -stiff -1", "-stiff", false},
+                      BadInput{"-method nosuch", "nosuch", false}),
+    bad_input_name);
+
+TEST(Cli, UnwritableOutputIsRefused) {
+  const Result r = run_steplab("run --json /nonexistent-dir/out.json");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(split_lines(r.err).size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("/nonexistent-dir/out.json"), std::string::npos);
+}
+
+TEST(Cli, ExistingFileIsNotTouchedByARefusedRun) {
+  TempDir dir;
+  const std::string out = dir.path("keep.json");
+  std::ofstream(out) << "previous";
+  EXPECT_EQ(run_steplab("run --dt 0 --json " + out).status, 2);
+  std::ifstream in(out);
+  std::string content((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_EQ(content, "previous");
+}
+
+}  // namespace
+}  // namespace steplab
