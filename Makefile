@@ -24,7 +24,10 @@ report: deps
 	@tools/install-deps report
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS) >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS) --target steplab
-	@$(BUILD)/steplab report --out report
+	@mkdir -p report
+	@$(BUILD)/steplab run --scene spring --method symplectic_euler --dt 0.05 --t-end 100 --json report/run.json
+	@echo "wrote report/run.json"
+
 
 bench: build
 	@$(BUILD)/steplab_bench --benchmark_out=$(BUILD)/bench.json --benchmark_out_format=json
