@@ -160,8 +160,11 @@ TEST(MethodTable, NamesAliasesAndFlags) {
   EXPECT_EQ(find_method("backwards_euler"), find_method("implicit_euler"));
   EXPECT_FALSE(find_method("backward_euler").has_value());
   for (const auto& info : method_infos) {
-    if (info.name == "implicit_euler" || info.name == "implicit_midpoint") EXPECT_TRUE(info.implicit);
-    if (info.name == "symplectic_euler" || info.name == "velocity_verlet") EXPECT_TRUE(info.symplectic);
+    const bool implicit = info.name == "implicit_euler" || info.name == "implicit_midpoint";
+    const bool symplectic = info.name == "symplectic_euler" || info.name == "velocity_verlet" ||
+                            info.name == "implicit_midpoint" || info.name == "analytic";
+    EXPECT_EQ(info.implicit, implicit) << info.name;
+    EXPECT_EQ(info.symplectic, symplectic) << info.name;
   }
   EXPECT_EQ(method_infos[*find_method("rk4")].order, 4);
 }
