@@ -11,6 +11,8 @@
 #include "reports/commands.hpp"
 #include "core/methods.hpp"
 #include "reports/inputs.hpp"
+#include "reports/study_output.hpp"
+#include "analysis/local_error.hpp"
 
 namespace steplab {
 namespace {
@@ -40,8 +42,8 @@ void add_legacy_options(CLI::App& app, LegacyArgs& l) {
 }
 
 int legacy_command(const LegacyArgs& l) {
-  if (l.testcase != "spring1d")
-    throw UsageError(fmt::format("-testcase '{}' is unknown; accepted: spring1d", l.testcase));
+  if (l.testcase != "spring1d" && l.testcase != "error_measurement")
+    throw UsageError(fmt::format("-testcase '{}' is unknown; accepted: spring1d, error_measurement", l.testcase));
   // Checked here first so that a message names the flag as typed.
   parse_number("-step", l.step, Bound::Positive);
   for (const auto& [flag, value] : {std::pair{"-mass", &l.mass}, {"-stiff", &l.stiff}, {"-damp", &l.damp}, {"-length", &l.length}})
@@ -53,6 +55,14 @@ int legacy_command(const LegacyArgs& l) {
   if (!l.stiff.empty()) run.scene.set("stiffness", l.stiff);
   if (!l.damp.empty()) run.scene.set("damping", l.damp);
   if (!l.length.empty()) run.scene.set("rest-length", l.length);
+  if (l.testcase == "error_measurement") {
+    LocalErrorConfig c;
+    c.params = run.scene.values(run.scene.scene_index());
+    c.step = parse_number("-step", l.step, Bound::Positive);
+    c.methods = resolve_methods("", false);
+    std::fputs(local_error_tables(local_error_study(c)).c_str(), stdout);
+    return 0;
+  }
   run.method = l.method;
   run.dt = l.step;
   return run_command(run);
@@ -90,11 +100,26 @@ int cli_main(int argc, const char* const* argv) {
       ->capture_default_str();
   run_cmd->add_option("--json", run.json, "write JSON (schema steplab.run/1) to this file instead of CSV");
 
+  CLI::App* study = app.add_subcommand("study", "a study over many runs; prints a table, --json writes its data");
+  study->require_subcommand(1);
+  ConvergenceArgs conv;
+  CLI::App* conv_cmd = study->add_subcommand("convergence", "errors against the exact solution over a dt sweep, fitted orders");
+  conv.scene.add_to(conv_cmd);
+  conv_cmd->add_option("--methods", conv.methods, "comma-separated methods (default: every numerical method)");
+  conv_cmd->add_option("--dt-max", conv.dt_max, "largest step")->capture_default_str();
+  conv_cmd->add_option("--dt-min", conv.dt_min, "smallest step")->capture_default_str();
+  conv_cmd->add_option("--points", conv.points, "steps in the geometric sweep (>= 3)")->capture_default_str();
+  conv_cmd->add_option("--t-end", conv.t_end, "simulated time of every run")->capture_default_str();
+  conv_cmd->add_option("--error", conv.error, "error the order is fitted to: final, max, rms")->capture_default_str();
+  conv_cmd->add_option("--threads", conv.threads, "worker threads, 0 = all cores")->capture_default_str();
+  conv_cmd->add_option("--json", conv.json, "write JSON (schema steplab.convergence/1) to this file");
+
   std::vector<const char*> cargv{argv[0]};
   for (const auto& a : args) cargv.push_back(a.c_str());
   try {
     app.parse(static_cast<int>(cargv.size()), cargv.data());
     if (run_cmd->parsed()) return run_command(run);
+    if (conv_cmd->parsed()) return convergence_command(conv);
     if (legacy) return legacy_command(legacy_args);
     throw UsageError("no command given; accepted: run, or the old flags -testcase ... (see steplab --help)");
   } catch (const CLI::CallForHelp&) {

@@ -20,3 +20,23 @@ struct RunArgs {
 int run_command(RunArgs& args);
 
 }  // namespace steplab
+
+namespace steplab {
+
+struct ConvergenceArgs {
+  SceneArgs scene;
+  std::string methods;  // comma-separated; empty: every numerical method
+  std::string dt_max = "0.1", dt_min = "1e-4", points = "16", t_end = "10";
+  std::string error = "final";
+  std::string threads = "0";
+  std::string json;
+};
+
+int convergence_command(ConvergenceArgs& args);
+
+// Shared by the commands.
+std::size_t resolve_method(std::string_view name);
+std::vector<std::size_t> resolve_methods(const std::string& list, bool with_analytic);
+unsigned resolve_thread_count(const std::string& text);
+
+}  // namespace steplab

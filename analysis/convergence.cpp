@@ -1,0 +1,99 @@
+#include "analysis/convergence.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "analysis/parallel.hpp"
+#include "core/scenes.hpp"
+
+namespace steplab {
+
+std::string_view to_string(ErrorKind k) {
+  switch (k) {
+    case ErrorKind::Final: return "final";
+    case ErrorKind::Max: return "max";
+    case ErrorKind::Rms: return "rms";
+  }
+  return "?";
+}
+
+std::vector<double> sweep_steps(double t_end, double dt_max, double dt_min, int points) {
+  std::vector<double> dts;
+  long long last_n = -1;
+  for (int i = 0; i < points; ++i) {
+    const double frac = points == 1 ? 0.0 : static_cast<double>(i) / (points - 1);
+    const double nominal = dt_max * std::pow(dt_min / dt_max, frac);
+    const long long n = std::max(1LL, std::llround(t_end / nominal));
+    if (n == last_n) continue;
+    last_n = n;
+    dts.push_back(t_end / static_cast<double>(n));
+  }
+  return dts;
+}
+
+double roundoff_floor(double scale, long long steps) {
+  return std::numeric_limits<double>::epsilon() * std::max(1.0, scale) * static_cast<double>(std::max(1LL, steps));
+}
+
+namespace {
+
+template <HasExact S, class M> ConvergenceRecord one_run(const S& s, std::size_t method, double dt, double t_end) {
+  RunSpec spec;
+  spec.dt = dt;
+  spec.steps = std::llround(t_end / dt);
+  const RunResult<S::dim> r = simulate<M>(s, spec);
+  const double scale = std::max(s.initial().x.norm(), exact(s, t_end).x.norm());
+  const double inf = std::numeric_limits<double>::infinity();
+  const bool ok = r.status == RunStatus::Ok;
+  return {method, dt, spec.steps, r.status, r.failed_step,
+          ok ? r.error_final : inf, ok ? r.error_v_final : inf, ok ? r.error_max : inf, ok ? r.error_rms : inf,
+          roundoff_floor(scale, spec.steps)};
+}
+
+double pick(const ConvergenceRecord& r, ErrorKind k) {
+  switch (k) {
+    case ErrorKind::Final: return r.error_final;
+    case ErrorKind::Max: return r.error_max;
+    case ErrorKind::Rms: return r.error_rms;
+  }
+  return r.error_final;
+}
+
+}  // namespace
+
+ConvergenceResult convergence_study(const ConvergenceConfig& config) {
+  ConvergenceResult out;
+  out.config = config;
+  out.dts = sweep_steps(config.t_end, config.dt_max, config.dt_min, config.points);
+  const std::size_t nd = out.dts.size(), nm = config.methods.size();
+  out.records.resize(nm * nd);
+
+  with_scene(config.scene, [&]<class S>() {
+    if constexpr (!HasExact<S>) {
+      throw std::invalid_argument("scene " + std::string(S::name) + " has no exact solution");
+    } else {
+      const S scene(config.params);
+      parallel_for(nm * nd, config.threads, [&](std::size_t task) {
+        const std::size_t m = task / nd, i = task % nd;
+        // the most expensive runs (small dt) first would balance better; the queue is dynamic anyway
+        out.records[task] = with_method(config.methods[m], [&]<class M>() {
+          if constexpr (!applies<M, S>()) return ConvergenceRecord{};
+          else return one_run<S, M>(scene, config.methods[m], out.dts[i], config.t_end);
+        });
+      });
+    }
+  });
+
+  for (std::size_t m = 0; m < nm; ++m) {
+    std::vector<ErrorPoint> pts;
+    for (std::size_t i = 0; i < nd; ++i) {
+      const ConvergenceRecord& r = out.records[m * nd + i];
+      pts.push_back({r.dt, pick(r, config.fit_error), r.floor, r.status != RunStatus::Ok});
+    }
+    out.fits.push_back({config.methods[m], fit_order(pts)});
+  }
+  return out;
+}
+
+}  // namespace steplab

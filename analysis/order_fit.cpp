@@ -1,0 +1,79 @@
+#include "analysis/order_fit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace steplab {
+
+OrderFit fit_order(std::span<const ErrorPoint> points) {
+  OrderFit out;
+  std::vector<ErrorPoint> kept;
+  bool any_diverged = false;
+  for (const ErrorPoint& p : points) {
+    if (p.diverged || !std::isfinite(p.error)) any_diverged = true;
+    else if (p.error > p.floor) kept.push_back(p);
+  }
+  if (kept.empty()) {
+    out.exact = !any_diverged && !points.empty();
+    out.note = out.exact ? "every error at the round-off floor" : "no finite error above the round-off floor";
+    return out;
+  }
+  std::sort(kept.begin(), kept.end(), [](const ErrorPoint& a, const ErrorPoint& b) { return a.dt > b.dt; });
+  for (std::size_t k = 0; k + 1 < kept.size(); ++k)
+    out.local_slopes.push_back(std::log(kept[k + 1].error / kept[k].error) / std::log(kept[k + 1].dt / kept[k].dt));
+
+  const auto& s = out.local_slopes;
+  if (s.size() < 2) {
+    out.note = "fewer than 3 points above the round-off floor";
+    return out;
+  }
+  std::vector<double> tail(s.end() - std::min<std::ptrdiff_t>(3, static_cast<std::ptrdiff_t>(s.size())), s.end());
+  std::sort(tail.begin(), tail.end());
+  const double reference = tail[tail.size() / 2];
+  // Noise of the local slopes, from their second differences: a smooth trend hardly moves them,
+  // noise of standard deviation sigma makes them N(0, 6 sigma^2), whose median |.| is 0.6745 sqrt(6) sigma.
+  double sigma = 0;
+  if (s.size() >= 3) {
+    std::vector<double> d2;
+    for (std::size_t k = 0; k + 2 < s.size(); ++k) d2.push_back(std::abs(s[k + 2] - 2 * s[k + 1] + s[k]));
+    std::nth_element(d2.begin(), d2.begin() + d2.size() / 2, d2.end());
+    sigma = d2[d2.size() / 2] / (0.6745 * std::sqrt(6.0));
+  }
+  const double tol = std::max(kSettleTolerance * std::max(1.0, std::abs(reference)), kSettleNoiseFactor * sigma);
+  std::size_t first = s.size();  // first settled local slope (index into s)
+  // A single local slope out of tolerance between settled ones is noise, not a trend: the range
+  // ends at two in a row (a smooth pre-asymptotic trend, once out, stays out).
+  const auto settled = [&](std::size_t k) { return std::abs(s[k] - reference) <= tol; };
+  for (std::size_t k = s.size(); k-- > 0;) {
+    if (settled(k)) first = k;
+    else if (!(k > 0 && settled(k - 1))) break;
+  }
+  const std::size_t n_points = s.size() - first + 1;  // slopes first..end span these points
+  if (static_cast<int>(n_points) < kMinFitPoints) {
+    out.note = "fewer than 3 points in a settled range";
+    return out;
+  }
+  const std::size_t best_i = first;
+  if (s.size() - first >= 3) {
+    const double s1 = s[s.size() - 3], s2 = s[s.size() - 2], s3 = s[s.size() - 1];
+    const double denom = (s3 - s2) - (s2 - s1);
+    // Aitken: p = s3 - (s3 - s2)^2 / ((s3 - s2) - (s2 - s1)); undefined without a geometric trend
+    out.extrapolated = denom != 0 && (s3 - s2) * (s2 - s1) > 0 ? s3 - (s3 - s2) * (s3 - s2) / denom
+                                                               : std::numeric_limits<double>::quiet_NaN();
+  } else {
+    out.extrapolated = std::numeric_limits<double>::quiet_NaN();
+  }
+  std::vector<double> lx, ly;
+  for (std::size_t k = best_i; k < best_i + n_points; ++k) {
+    lx.push_back(std::log(kept[k].dt));
+    ly.push_back(std::log(kept[k].error));
+  }
+  out.line = fit_line(lx, ly);
+  out.fitted = true;
+  out.dt_hi = kept[best_i].dt;
+  out.dt_lo = kept[best_i + n_points - 1].dt;
+  return out;
+}
+
+}  // namespace steplab
