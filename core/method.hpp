@@ -32,9 +32,11 @@ enum class StepStatus { Ok, NoConvergence };
 // (backward Euler: w = v0, c = cx = h; a half step of it is the implicit midpoint rule; velocity
 // Verlet's closing kick: w = v0 + h/2 a0, c = h/2, cx = 0 at fixed x1). The Jacobian of the
 // residual G(u) = M (u - w) - c F is  J = M - c dF/dv - c cx dF/dx.
-// Starts from u = w; stops when |G(u)| <= tolerance * (|M u| + |M w| + c |F|), i.e. when the
-// residual is at round-off relative to the terms it balances; a force that is linear in (x, v)
-// converges in one Newton step (the second pass only confirms it). At most max_iterations.
+// Starts from u = w; stops when |G(u)| <= tolerance * scale, the scale being the size of the
+// terms G balances: |M u| + |M w| + c (|F| + |dF/dx| |x| + |dF/dv| |u|), the last two from the
+// first Jacobian (near equilibrium F itself is ~0 while its terms, k|y| or m g, are not, and
+// round-off in F is relative to those). A force linear in (x, v) converges in one Newton step
+// (the second pass only confirms it). At most max_iterations, then NoConvergence.
 struct NewtonSettings {
   static constexpr int max_iterations = 50;
   static constexpr double tolerance = 1e-12;
@@ -46,14 +48,19 @@ StepStatus solve_implicit(const S& s, const Vec<S::dim>& x0, double cx, const Ve
   constexpr int D = S::dim;
   const Vec<D> m = s.mass();
   u = w;
+  double force_terms = 0;
   for (int it = 0;; ++it) {
     const Vec<D> x = x0 + cx * u;
     const Vec<D> f = s.force(x, u);
     const Vec<D> r = m.cwiseProduct(u - w) - c * f;
-    const double scale = m.cwiseProduct(u).norm() + m.cwiseProduct(w).norm() + c * f.norm();
-    if (r.norm() <= NewtonSettings::tolerance * scale) return StepStatus::Ok;
+    if (it > 0) {
+      const double scale = m.cwiseProduct(u).norm() + m.cwiseProduct(w).norm() + c * (f.norm() + force_terms);
+      if (r.norm() <= NewtonSettings::tolerance * scale) return StepStatus::Ok;
+    }
     if (it == NewtonSettings::max_iterations || !r.allFinite()) return StepStatus::NoConvergence;
     const Jacobians<D> jac = s.jacobians(x, u);
+    if (it == 0) force_terms = jac.dx.norm() * x.norm() + jac.dv.norm() * u.norm();
+    if (r.isZero(0.0)) return StepStatus::Ok;  // already solved (e.g. at rest in equilibrium)
     Mat<D> J = -c * jac.dv - (c * cx) * jac.dx;
     J.diagonal() += m;
     if constexpr (D == 1) {

@@ -38,6 +38,11 @@ struct RunSpec {
   long long max_samples = 0;   // 0: no samples; otherwise at most this many (>= 2)
   bool energy_rate = false;    // fit the growth rate of ln E
   bool errors = true;          // compare with the exact solution where there is one
+  // Stop early once E/E0 leaves [stop_below, stop_above] (0 and inf: never). Above counts as
+  // Diverged (the energy blew up); below ends the run as Ok (it has decayed, clearly stable,
+  // before round-off flattens ln E).
+  double stop_below = 0;
+  double stop_above = std::numeric_limits<double>::infinity();
 };
 
 template <int D> struct Sample {
@@ -57,6 +62,7 @@ template <int D> struct RunResult {
   double error_final = 0, error_max = 0, error_rms = 0, error_v_final = 0;
   double energy0 = 0, energy_ratio_final = 1, energy_ratio_max = 1;
   double energy_rate = std::numeric_limits<double>::quiet_NaN();  // d ln E / dt, least squares
+  double max_abs_x = 0;         // max over the run of the largest |x_i|
   std::vector<Sample<D>> samples;
 };
 
@@ -74,7 +80,7 @@ RunResult<S::dim> simulate(const S& scene, const RunSpec& spec, State<S::dim> y 
   RunResult<D> r;
   const double h = spec.dt;
   const SamplePlan plan{spec.steps, spec.max_samples};
-  r.samples.reserve(static_cast<std::size_t>(plan.size()));
+  r.samples.reserve(static_cast<std::size_t>(plan.size()) + 1);
   long long next_sample = 0, sample_k = 0;
 
   const double e0 = scene.energy(y.x, y.v);
@@ -83,7 +89,7 @@ RunResult<S::dim> simulate(const S& scene, const RunSpec& spec, State<S::dim> y 
   // Welford accumulators for the slope of ln E on t.
   double n_fit = 0, mean_t = 0, mean_l = 0, c_tl = 0, m2_t = 0;
   const auto fit_point = [&](double t, double e) {
-    if (!(e > 0)) return;
+    if (!(e > 0) || !std::isfinite(e)) return;
     const double l = std::log(e);
     n_fit += 1;
     const double dt_ = t - mean_t;
@@ -99,6 +105,7 @@ RunResult<S::dim> simulate(const S& scene, const RunSpec& spec, State<S::dim> y 
     }
   };
   keep(0, 0.0, y, e0);
+  r.max_abs_x = y.x.cwiseAbs().maxCoeff();
   if (spec.energy_rate) fit_point(0.0, e0);
 
   double err_sq_sum = 0;
@@ -120,6 +127,7 @@ RunResult<S::dim> simulate(const S& scene, const RunSpec& spec, State<S::dim> y 
       ratio_max = std::max(ratio_max, ratio);
     }
     if (spec.energy_rate) fit_point(t, e);
+    r.max_abs_x = std::max(r.max_abs_x, y.x.cwiseAbs().maxCoeff());
     if constexpr (HasExact<S>) {
       if (spec.errors) {
         const State<D> ex = exact(scene, t);
@@ -131,6 +139,15 @@ RunResult<S::dim> simulate(const S& scene, const RunSpec& spec, State<S::dim> y 
       }
     }
     keep(i, t, y, e);
+    if (ratio > spec.stop_above || ratio < spec.stop_below) {
+      if (ratio > spec.stop_above) {
+        r.status = RunStatus::Diverged;
+        r.failed_step = i;
+        r.failed_t = t;
+      }
+      ++i;
+      break;
+    }
   }
   r.steps = i - 1;
   r.t_final = r.steps * h;

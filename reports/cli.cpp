@@ -42,8 +42,9 @@ void add_legacy_options(CLI::App& app, LegacyArgs& l) {
 }
 
 int legacy_command(const LegacyArgs& l) {
-  if (l.testcase != "spring1d" && l.testcase != "error_measurement")
-    throw UsageError(fmt::format("-testcase '{}' is unknown; accepted: spring1d, error_measurement", l.testcase));
+  if (l.testcase != "spring1d" && l.testcase != "error_measurement" && l.testcase != "stability_measurement")
+    throw UsageError(fmt::format("-testcase '{}' is unknown; accepted: spring1d, error_measurement, stability_measurement",
+                                 l.testcase));
   // Checked here first so that a message names the flag as typed.
   parse_number("-step", l.step, Bound::Positive);
   for (const auto& [flag, value] : {std::pair{"-mass", &l.mass}, {"-stiff", &l.stiff}, {"-damp", &l.damp}, {"-length", &l.length}})
@@ -63,6 +64,8 @@ int legacy_command(const LegacyArgs& l) {
     std::fputs(local_error_tables(local_error_study(c)).c_str(), stdout);
     return 0;
   }
+  if (l.testcase == "stability_measurement")
+    return amplitude_command(run.scene.values(run.scene.scene_index()), parse_number("-step", l.step, Bound::Positive));
   run.method = l.method;
   run.dt = l.step;
   return run_command(run);
@@ -114,12 +117,20 @@ int cli_main(int argc, const char* const* argv) {
   conv_cmd->add_option("--threads", conv.threads, "worker threads, 0 = all cores")->capture_default_str();
   conv_cmd->add_option("--json", conv.json, "write JSON (schema steplab.convergence/1) to this file");
 
+  StabilityArgs damp, stab;
+  CLI::App* damp_cmd = study->add_subcommand("damping", "spring: energy growth rate measured and predicted over damping and dt");
+  add_stability_options(damp_cmd, damp, true, false);
+  CLI::App* stab_cmd = study->add_subcommand("stability", "spring: stability thresholds dt* predicted and measured, and a (dt, damping) map");
+  add_stability_options(stab_cmd, stab, false, true);
+
   std::vector<const char*> cargv{argv[0]};
   for (const auto& a : args) cargv.push_back(a.c_str());
   try {
     app.parse(static_cast<int>(cargv.size()), cargv.data());
     if (run_cmd->parsed()) return run_command(run);
     if (conv_cmd->parsed()) return convergence_command(conv);
+    if (damp_cmd->parsed()) return damping_command(damp);
+    if (stab_cmd->parsed()) return stability_command(stab);
     if (legacy) return legacy_command(legacy_args);
     throw UsageError("no command given; accepted: run, or the old flags -testcase ... (see steplab --help)");
   } catch (const CLI::CallForHelp&) {

@@ -40,3 +40,24 @@ std::vector<std::size_t> resolve_methods(const std::string& list, bool with_anal
 unsigned resolve_thread_count(const std::string& text);
 
 }  // namespace steplab
+
+namespace steplab {
+
+// `study damping` and `study stability` share these (the spring only).
+struct StabilityArgs {
+  SceneArgs scene;
+  std::string methods;
+  std::string dts = "0.01,0.05,0.2";         // damping sweep
+  std::string dampings;                      // damping sweep; empty: 0 .. 2 x critical (21) + 0.1
+  std::string threshold_dampings = "0,0.1,1,4";
+  std::string map_dt_points = "64", map_damping_points = "64", map_dt_min = "0.01", map_dt_max = "10";
+  std::string threads = "0";
+  std::string json;
+};
+
+int damping_command(StabilityArgs& args);
+int stability_command(StabilityArgs& args);
+void add_stability_options(CLI::App* app, StabilityArgs& args, bool sweep, bool map);
+int amplitude_command(const std::vector<double>& spring_params, double step);
+
+}  // namespace steplab

@@ -66,3 +66,83 @@ int convergence_command(ConvergenceArgs& a) {
 }
 
 }  // namespace steplab
+
+#include "analysis/stability.hpp"
+
+namespace steplab {
+namespace {
+
+std::vector<double> number_list(std::string_view what, const std::string& text, Bound bound) {
+  std::vector<double> out;
+  for (const std::string& item : split_list(text)) out.push_back(parse_number(what, item, bound));
+  return out;
+}
+
+StabilityConfig stability_config(StabilityArgs& a) {
+  a.scene.scene = "spring";
+  StabilityConfig c;
+  c.params = a.scene.values(a.scene.scene_index());
+  c.methods = resolve_methods(a.methods, false);
+  c.threads = resolve_thread_count(a.threads);
+  return c;
+}
+
+}  // namespace
+
+void add_stability_options(CLI::App* app, StabilityArgs& a, bool sweep, bool map) {
+  a.scene.add_to(app, false);
+  app->add_option("--methods", a.methods, "comma-separated methods (default: every numerical method)");
+  if (sweep) {
+    app->add_option("--dts", a.dts, "comma-separated steps of the sweep")->capture_default_str();
+    app->add_option("--dampings", a.dampings, "comma-separated dampings (default: 0 to twice critical in 21 steps, and 0.1)");
+  } else {
+    app->add_option("--threshold-dampings", a.threshold_dampings, "dampings at which to find dt*")->capture_default_str();
+  }
+  if (map) {
+    app->add_option("--map-dt-points", a.map_dt_points, "map: steps, log-spaced")->capture_default_str();
+    app->add_option("--map-damping-points", a.map_damping_points, "map: dampings, 0 to twice critical")->capture_default_str();
+    app->add_option("--map-dt-min", a.map_dt_min, "map: smallest step")->capture_default_str();
+    app->add_option("--map-dt-max", a.map_dt_max, "map: largest step")->capture_default_str();
+  }
+  app->add_option("--threads", a.threads, "worker threads, 0 = all cores")->capture_default_str();
+  app->add_option("--json", a.json, "write JSON (schema steplab.stability/1) to this file");
+}
+
+int damping_command(StabilityArgs& a) {
+  StabilityConfig c = stability_config(a);
+  c.sweep_dts = number_list("--dts", a.dts, Bound::Positive);
+  if (!a.dampings.empty()) c.sweep_dampings = number_list("--dampings", a.dampings, Bound::NonNegative);
+  if (!a.json.empty()) check_writable(a.json);
+  const std::vector<SweepRow> rows = damping_sweep(c);
+  std::fputs(sweep_table(rows).c_str(), stdout);
+  if (!a.json.empty()) write_atomic(a.json, stability_json(c.params, {}, rows, nullptr).dump(1) + "\n");
+  return 0;
+}
+
+int stability_command(StabilityArgs& a) {
+  StabilityConfig c = stability_config(a);
+  c.threshold_dampings = number_list("--threshold-dampings", a.threshold_dampings, Bound::NonNegative);
+  c.map_dt_points = static_cast<int>(parse_count("--map-dt-points", a.map_dt_points, 2, 4096));
+  c.map_damping_points = static_cast<int>(parse_count("--map-damping-points", a.map_damping_points, 2, 4096));
+  c.map_dt_min = parse_number("--map-dt-min", a.map_dt_min, Bound::Positive);
+  c.map_dt_max = parse_number("--map-dt-max", a.map_dt_max, Bound::Positive);
+  if (c.map_dt_min >= c.map_dt_max)
+    throw UsageError(fmt::format("--map-dt-min {} is not below --map-dt-max {}; accepted: min < max", c.map_dt_min, c.map_dt_max));
+  if (!a.json.empty()) check_writable(a.json);
+  const std::vector<ThresholdRow> rows = threshold_study(c);
+  std::fputs(thresholds_table(rows).c_str(), stdout);
+  const StabilityMap map = stability_map(c);
+  std::fputs(("\n" + map_summary(map)).c_str(), stdout);
+  if (!a.json.empty()) write_atomic(a.json, stability_json(c.params, rows, {}, &map).dump(1) + "\n");
+  return 0;
+}
+
+int amplitude_command(const std::vector<double>& spring_params, double step) {
+  std::vector<std::size_t> methods = resolve_methods("", true);
+  std::rotate(methods.begin(), methods.end() - 1, methods.end());  // the analytic column first
+  const AmplitudeTable t = amplitude_table(spring_params, methods, step, 10);
+  std::fputs(amplitude_table_text(t).c_str(), stdout);
+  return 0;
+}
+
+}  // namespace steplab

@@ -154,3 +154,119 @@ std::string local_error_tables(const LocalErrorResult& r) {
 }
 
 }  // namespace steplab
+
+namespace steplab {
+namespace {
+
+// JSON has no infinity: an unbounded threshold is the string "inf".
+Json threshold_json(double x) { return std::isinf(x) ? Json("inf") : Json(x); }
+std::string threshold_text(double x) { return std::isinf(x) ? "inf" : fmt::format("{:.6g}", x); }
+
+}  // namespace
+
+Json stability_json(const std::vector<double>& params, const std::vector<ThresholdRow>& thresholds,
+                    const std::vector<SweepRow>& sweep, const StabilityMap* map) {
+  Json j;
+  j["schema"] = "steplab.stability/1";
+  j["scene"] = "spring";
+  Json p = scene_params_json(*find_scene("spring"), params);
+  p["stable_rate_tolerance"] = kStableRate;
+  p["rate_steps"] = kRateSteps;
+  j["params"] = std::move(p);
+  Json t = Json::array();
+  for (const ThresholdRow& r : thresholds)
+    t.push_back({{"method", method_infos[r.method].name}, {"damping", r.damping}, {"dt_theory", threshold_json(r.dt_theory)},
+                 {"dt_measured", threshold_json(r.dt_measured)}});
+  j["thresholds"] = std::move(t);
+  Json s = Json::array();
+  for (const SweepRow& r : sweep)
+    s.push_back({{"method", method_infos[r.method].name},
+                 {"dt", r.dt},
+                 {"damping", r.damping},
+                 {"rate_measured", number_or_null(r.run.rate)},
+                 {"rate_theory", number_or_null(r.rate_theory)},
+                 {"energy_ratio_final", number_or_null(r.run.energy_ratio_final)},
+                 {"energy_ratio_max", number_or_null(r.run.energy_ratio_max)},
+                 {"error_final", number_or_null(r.run.error_final)},
+                 {"stable", r.run.stable()},
+                 {"steps", r.run.steps},
+                 {"status", to_string(r.run.status)}});
+  j["sweep"] = std::move(s);
+  Json m = Json::object();
+  if (map) {
+    m["dt"] = map->dt;
+    m["damping"] = map->damping;
+    Json stable = Json::object(), boundary = Json::object();
+    for (std::size_t i = 0; i < map->methods.size(); ++i) {
+      const std::string name(method_infos[map->methods[i]].name);
+      Json rows = Json::array();
+      for (const auto& row : map->stable[i]) {
+        Json cells = Json::array();
+        for (bool b : row) cells.push_back(b);
+        rows.push_back(std::move(cells));
+      }
+      stable[name] = std::move(rows);
+      Json b = Json::array();
+      for (double x : map->boundary[i]) b.push_back(threshold_json(x));
+      boundary[name] = std::move(b);
+    }
+    m["stable"] = std::move(stable);
+    m["boundary"] = std::move(boundary);
+  }
+  j["map"] = std::move(m);
+  return j;
+}
+
+std::string thresholds_table(const std::vector<ThresholdRow>& rows) {
+  std::string out = fmt::format("Stability thresholds dt* (largest stable step; inf: stable at every step, 0: at none)\n\n"
+                                "{:<18} {:>8} {:>12} {:>12} {:>10}\n", "method", "damping", "predicted", "measured", "rel. diff");
+  for (const ThresholdRow& r : rows) {
+    const bool finite = std::isfinite(r.dt_theory) && r.dt_theory > 0;
+    out += fmt::format("{:<18} {:>8g} {:>12} {:>12} {:>10}\n", method_infos[r.method].name, r.damping,
+                       threshold_text(r.dt_theory), threshold_text(r.dt_measured),
+                       finite ? fmt::format("{:+.1e}", r.dt_measured / r.dt_theory - 1) : "-");
+  }
+  return out;
+}
+
+std::string sweep_table(const std::vector<SweepRow>& rows) {
+  std::string out = fmt::format("Damping sweep: energy growth rate d ln E / dt, measured (least squares) and predicted (2 ln rho / h)\n\n"
+                                "{:<18} {:>6} {:>8} {:>13} {:>13} {:>11} {:>11} {:>11} {:>7}\n",
+                                "method", "dt", "damping", "measured", "predicted", "E(T)/E0", "max E/E0", "error", "stable");
+  for (const SweepRow& r : rows)
+    out += fmt::format("{:<18} {:>6g} {:>8.4g} {:>13.5e} {:>13.5e} {:>11.3e} {:>11.3e} {:>11.3e} {:>7}\n",
+                       method_infos[r.method].name, r.dt, r.damping, r.run.rate, r.rate_theory, r.run.energy_ratio_final,
+                       r.run.energy_ratio_max, r.run.error_final, r.run.stable() ? "yes" : "no");
+  return out;
+}
+
+std::string map_summary(const StabilityMap& map) {
+  std::string out = fmt::format("Stability map: {} steps from {:.3g} to {:.3g} x {} dampings from 0 to {:.3g}\n\n"
+                                "{:<18} {:>14} {:>22}\n", map.dt.size(), map.dt.front(), map.dt.back(), map.damping.size(),
+                                map.damping.back(), "method", "stable cells", "disagree w/ predicted");
+  for (std::size_t i = 0; i < map.methods.size(); ++i) {
+    int stable = 0, disagree = 0;
+    for (std::size_t g = 0; g < map.damping.size(); ++g)
+      for (std::size_t d = 0; d < map.dt.size(); ++d) {
+        stable += map.stable[i][g][d];
+        disagree += map.stable[i][g][d] != (map.dt[d] <= map.boundary[i][g]);
+      }
+    out += fmt::format("{:<18} {:>14} {:>22}\n", method_infos[map.methods[i]].name,
+                       fmt::format("{}/{}", stable, map.dt.size() * map.damping.size()), disagree);
+  }
+  return out;
+}
+
+std::string amplitude_table_text(const AmplitudeTable& t) {
+  std::string out = "max amplitude max |p_y - L| over N = (int)(10 / step) steps\n" + fmt::format("{:>12}", "step");
+  for (std::size_t m : t.methods) out += fmt::format(" {:>17}", method_infos[m].name);
+  out += "\n";
+  for (std::size_t i = 0; i < t.steps.size(); ++i) {
+    out += fmt::format("{:>12.5e}", t.steps[i]);
+    for (double a : t.amplitude[i]) out += std::isfinite(a) ? fmt::format(" {:>17.5e}", a) : fmt::format(" {:>17}", "inf");
+    out += "\n";
+  }
+  return out;
+}
+
+}  // namespace steplab

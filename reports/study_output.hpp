@@ -24,3 +24,15 @@ namespace steplab {
 // The old framework's error_measurement tables, %.5e.
 std::string local_error_tables(const LocalErrorResult& r);
 }  // namespace steplab
+
+#include "analysis/stability.hpp"
+
+namespace steplab {
+// schema steplab.stability/1; a study fills the parts it computed, the others are empty.
+Json stability_json(const std::vector<double>& params, const std::vector<ThresholdRow>& thresholds,
+                    const std::vector<SweepRow>& sweep, const StabilityMap* map);
+std::string thresholds_table(const std::vector<ThresholdRow>& rows);
+std::string sweep_table(const std::vector<SweepRow>& rows);
+std::string map_summary(const StabilityMap& map);
+std::string amplitude_table_text(const AmplitudeTable& t);
+}  // namespace steplab

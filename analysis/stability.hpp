@@ -1,0 +1,116 @@
+// Stability on the linear spring (y below the anchor): prediction from each method's own step
+// matrix, measurement from long runs, and the two side by side.
+//
+// Prediction. On the linear spring a step is affine, (y, v) -> M(h) (y, v) + c, with the
+// equilibrium as its fixed point. M is read off the implementation: step the equilibrium
+// perturbed along each unit vector and subtract (so it stays true for every method in the
+// table). From it:
+//   rho(h)       spectral radius of M
+//   rate(h)      2 ln(rho) / h, the energy's predicted growth rate per unit time
+//                (the energy is quadratic in the state, which grows like rho^n)
+//   dt*          the largest h with rho <= 1 on all of (0, h]: infinite for a method stable at
+//                every step, 0 where no step is stable (explicit Euler and explicit midpoint
+//                without damping: |R(i w h)| > 1 for every h > 0).
+// Measurement. The least-squares slope of ln E against t over a run of kRateSteps steps from the
+// rest start (E the oscillation energy about equilibrium). Where E oscillates (the partitioned
+// methods, or any method with damping) the slope is biased by about 12 A / (Omega T^2) for an
+// oscillation of amplitude A in ln E at frequency Omega over a time T; with 60 000 steps that is
+// below 1e-7 for every h >= 0.01 on the default spring, under the tolerance kStableRate.
+// A run is measured stable if its rate is <= kStableRate. A run stops early when E/E0 passes
+// 1e4 (unstable) or falls below 1e-20 (decayed, before round-off flattens ln E). Runs use the
+// spring with its anchor moved far away (stability.cpp: with_damping), so that the motion about
+// equilibrium stays linear: the prediction is about the linear oscillator, and so is the measurement.
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include "core/scenes/spring.hpp"
+#include "core/simulate.hpp"
+
+namespace steplab {
+
+inline constexpr double kStableRate = 1e-6;        // per unit time: E changes < 0.1 % over 1000 time units
+inline constexpr long long kRateSteps = 60'000;
+inline constexpr double kRhoTolerance = 1e-12;     // round-off in rho from a differenced 2x2 step matrix
+
+Mat<2> step_matrix(std::size_t method, const Spring& s, double h);
+double spectral_radius(const Mat<2>& m);
+double predicted_rate(std::size_t method, const Spring& s, double h);   // 2 ln(rho) / h
+
+// Smallest and largest steps the threshold searches consider, in units of 1/omega.
+inline constexpr double kPredictMinWh = 1e-2, kMeasureMinWh = 2e-2, kMaxWh = 1e3;
+
+// dt* from the step matrix: scan h geometrically from kPredictMinWh/omega, then bisect the first
+// crossing to 1e-10 relative. Returns 0 if unstable at the smallest h, infinity if never unstable.
+double predicted_threshold(std::size_t method, const Spring& s);
+
+struct RateRun {
+  double rate;               // least-squares d ln E / dt
+  double energy_ratio_final, energy_ratio_max;
+  double error_final;        // position error against the exact solution (inf if it blew up)
+  RunStatus status;
+  long long steps, failed_step;
+  bool stable() const { return rate <= kStableRate && status == RunStatus::Ok; }
+};
+
+RateRun measure_rate(std::size_t method, const Spring& s, double h, long long steps = kRateSteps);
+
+// Largest measured-stable step with every smaller step (from kMeasureMinWh/omega) stable: a scan
+// by factors of 2, then bisection to 1e-4 relative. 0 if unstable at the smallest step tried,
+// infinity if stable up to kMaxWh/omega.
+double measured_threshold(std::size_t method, const Spring& s);
+
+// ---- the studies ----
+
+struct ThresholdRow {
+  std::size_t method;
+  double damping, dt_theory, dt_measured;
+};
+
+struct SweepRow {
+  std::size_t method;
+  double dt, damping;
+  RateRun run;
+  double rate_theory;
+};
+
+struct StabilityMap {
+  std::vector<double> dt, damping;
+  std::vector<std::size_t> methods;
+  std::vector<std::vector<std::vector<bool>>> stable;   // [method][damping][dt]
+  std::vector<std::vector<double>> boundary;            // [method][damping]: predicted dt*
+};
+
+struct StabilityConfig {
+  std::vector<double> params;                  // Spring parameters, table order (damping replaced per row)
+  std::vector<std::size_t> methods;
+  std::vector<double> threshold_dampings{0, 0.1, 1, 4};
+  std::vector<double> sweep_dts{0.01, 0.05, 0.2};
+  std::vector<double> sweep_dampings;          // empty: default_dampings()
+  int map_dt_points = 64, map_damping_points = 64;
+  double map_dt_min = 0.01, map_dt_max = 10;   // log-spaced
+  double map_damping_max = 0;                  // 0: twice critical damping
+  long long map_steps = kRateSteps;
+  unsigned threads = 0;
+};
+
+// 0 through critical damping 2 sqrt(k m) to twice that (21 values), plus 0.1.
+std::vector<double> default_dampings(const Spring& s);
+
+std::vector<ThresholdRow> threshold_study(const StabilityConfig& c);
+std::vector<SweepRow> damping_sweep(const StabilityConfig& c);
+StabilityMap stability_map(const StabilityConfig& c);
+
+// The old framework's stability_measurement: each method from rest, N = (int)(10 / step) steps,
+// the step doubled `count` times with N fixed; the max over the run of |y - L| (inf if it blew up).
+struct AmplitudeTable {
+  std::vector<double> steps;
+  std::vector<std::size_t> methods;            // the analytic solution is column 0 if listed
+  std::vector<std::vector<double>> amplitude;  // [step][method]
+};
+AmplitudeTable amplitude_table(const std::vector<double>& params, const std::vector<std::size_t>& methods,
+                               double step, int count);
+
+}  // namespace steplab
