@@ -41,7 +41,7 @@ namespace {
 template <HasExact S, class M> ConvergenceRecord one_run(const S& s, std::size_t method, double dt, double t_end) {
   RunSpec spec;
   spec.dt = dt;
-  spec.steps = std::llround(t_end / dt);
+  spec.steps = steps_for(t_end, dt);
   const RunResult<S::dim> r = simulate<M>(s, spec);
   const double scale = std::max(s.initial().x.norm(), exact(s, t_end).x.norm());
   const double inf = std::numeric_limits<double>::infinity();

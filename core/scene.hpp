@@ -52,7 +52,29 @@ concept HasExact = Scene<S> && requires(const S& s, const State<S::dim>& y, doub
   { s.flow(y, h) } -> std::convertible_to<State<S::dim>>;
 };
 
-template <HasExact S> State<S::dim> exact(const S& s, double t) { return s.flow(s.initial(), t); }
+template <HasExact S> State<S::dim> exact(const S& s, double t) {
+  if constexpr (requires { s.exact_at(t); }) return s.exact_at(t);
+  else return s.flow(s.initial(), t);
+}
+
+// The exact state along a run, step by step: a closed form exact_at(t) where the scene has one
+// (no accumulated round-off), else the flow map applied to the previous exact state (a scene
+// with events, like the bounce, then finds each event once).
+template <HasExact S> class ExactTracker {
+ public:
+  explicit ExactTracker(const S& s) : s_(s), y_(s.initial()) {}
+  const State<S::dim>& at(double t) {
+    if constexpr (requires { s_.exact_at(t); }) y_ = s_.exact_at(t);
+    else y_ = s_.flow(y_, t - t_);
+    t_ = t;
+    return y_;
+  }
+
+ private:
+  const S& s_;
+  State<S::dim> y_;
+  double t_ = 0;
+};
 
 // Acceleration a = M^{-1} F(x, v).
 template <Scene S> Vec<S::dim> acceleration(const S& s, const Vec<S::dim>& x, const Vec<S::dim>& v) {

@@ -11,12 +11,14 @@
 
 #include "core/dispatch.hpp"
 
+#include "core/scenes/bounce.hpp"
 #include "core/scenes/cannonball.hpp"
+#include "core/scenes/falling.hpp"
 #include "core/scenes/spring.hpp"
 
 namespace steplab {
 
-using Scenes = std::tuple<Cannonball, Spring>;
+using Scenes = std::tuple<Cannonball, Spring, Falling, Bounce>;
 
 inline constexpr std::size_t scene_count = std::tuple_size_v<Scenes>;
 

@@ -73,10 +73,26 @@ struct SamplePlan {
   long long size() const { return count == 0 ? 0 : (count - 1 >= n ? n + 1 : count); }
 };
 
-template <class M, Scene S>
-RunResult<S::dim> simulate(const S& scene, const RunSpec& spec, State<S::dim> y = {}, bool from_initial = true) {
+// The number of steps of length dt that cover t_end: round(t_end / dt) when t_end is a whole
+// number of steps (to 1e-9 relative), else the next whole number.
+inline long long steps_for(double t_end, double dt) {
+  const double ratio = t_end / dt;
+  const double nearest = std::round(ratio);
+  if (std::abs(ratio - nearest) <= 1e-9 * std::max(1.0, ratio)) return static_cast<long long>(nearest);
+  return static_cast<long long>(std::ceil(ratio));
+}
+
+// Does nothing with each step; the default observer.
+struct NoObserver {
+  template <class... A> void operator()(const A&...) const {}
+};
+
+// `observe(i, t, state)` is called after every completed step (i = 1 .. steps), for studies that
+// need more than the summary (bounces, penetration); it must not allocate.
+template <class M, Scene S, class Observer = NoObserver>
+RunResult<S::dim> simulate(const S& scene, const RunSpec& spec, Observer&& observe = {}) {
   constexpr int D = S::dim;
-  if (from_initial) y = scene.initial();
+  State<D> y = scene.initial();
   RunResult<D> r;
   const double h = spec.dt;
   const SamplePlan plan{spec.steps, spec.max_samples};
@@ -110,6 +126,10 @@ RunResult<S::dim> simulate(const S& scene, const RunSpec& spec, State<S::dim> y 
 
   double err_sq_sum = 0;
   long long i = 0;
+  [[maybe_unused]] auto tracker = [&] {
+    if constexpr (HasExact<S>) return ExactTracker<S>(scene);
+    else return 0;
+  }();
   for (i = 1; i <= spec.steps; ++i) {
     const double t_prev = (i - 1) * h, t = i * h;
     State<D> next = y;
@@ -130,7 +150,7 @@ RunResult<S::dim> simulate(const S& scene, const RunSpec& spec, State<S::dim> y 
     r.max_abs_x = std::max(r.max_abs_x, y.x.cwiseAbs().maxCoeff());
     if constexpr (HasExact<S>) {
       if (spec.errors) {
-        const State<D> ex = exact(scene, t);
+        const State<D> ex = tracker.at(t);
         const double err = (y.x - ex.x).norm();
         r.error_max = std::max(r.error_max, err);
         err_sq_sum += err * err;
@@ -139,6 +159,7 @@ RunResult<S::dim> simulate(const S& scene, const RunSpec& spec, State<S::dim> y 
       }
     }
     keep(i, t, y, e);
+    observe(i, t, y);
     if (ratio > spec.stop_above || ratio < spec.stop_below) {
       if (ratio > spec.stop_above) {
         r.status = RunStatus::Diverged;

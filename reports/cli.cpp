@@ -42,16 +42,18 @@ void add_legacy_options(CLI::App& app, LegacyArgs& l) {
 }
 
 int legacy_command(const LegacyArgs& l) {
-  if (l.testcase != "spring1d" && l.testcase != "error_measurement" && l.testcase != "stability_measurement")
-    throw UsageError(fmt::format("-testcase '{}' is unknown; accepted: spring1d, error_measurement, stability_measurement",
-                                 l.testcase));
+  if (l.testcase != "spring1d" && l.testcase != "falling" && l.testcase != "error_measurement" &&
+      l.testcase != "stability_measurement")
+    throw UsageError(fmt::format("-testcase '{}' is unknown; accepted: spring1d, falling, error_measurement, "
+                                 "stability_measurement", l.testcase));
   // Checked here first so that a message names the flag as typed.
   parse_number("-step", l.step, Bound::Positive);
   for (const auto& [flag, value] : {std::pair{"-mass", &l.mass}, {"-stiff", &l.stiff}, {"-damp", &l.damp}, {"-length", &l.length}})
     if (!value->empty()) parse_number(flag, *value, std::string_view(flag) == "-mass" ? Bound::Positive : Bound::NonNegative);
   RunArgs run;
-  run.scene.scene = "spring";
+  run.scene.scene = l.testcase == "falling" ? "falling" : "spring";
   run.scene.fallback = {{"mass", 0.1}, {"stiffness", 10.0}, {"damping", 0.01}, {"rest-length", 1.0}};
+  if (l.testcase == "falling") run.scene.fallback.erase("rest-length");
   if (!l.mass.empty()) run.scene.set("mass", l.mass);
   if (!l.stiff.empty()) run.scene.set("stiffness", l.stiff);
   if (!l.damp.empty()) run.scene.set("damping", l.damp);
@@ -123,6 +125,16 @@ int cli_main(int argc, const char* const* argv) {
   CLI::App* stab_cmd = study->add_subcommand("stability", "spring: stability thresholds dt* predicted and measured, and a (dt, damping) map");
   add_stability_options(stab_cmd, stab, false, true);
 
+  CollisionArgs coll;
+  CLI::App* coll_cmd = study->add_subcommand("collision", "the bounce and the falling triangle on the penalty ground");
+  coll.scene.add_to(coll_cmd, false);
+  coll_cmd->add_option("--methods", coll.methods, "comma-separated methods (default: every numerical method)");
+  coll_cmd->add_option("--dts", coll.dts, "steps for the bounce")->capture_default_str();
+  coll_cmd->add_option("--t-end", coll.t_end, "simulated time")->capture_default_str();
+  coll_cmd->add_option("--triangle-dt", coll.triangle_dt, "step for the falling triangle")->capture_default_str();
+  coll_cmd->add_option("--threads", coll.threads, "worker threads, 0 = all cores")->capture_default_str();
+  coll_cmd->add_option("--json", coll.json, "write JSON (schema steplab.collision/1) to this file");
+
   std::vector<const char*> cargv{argv[0]};
   for (const auto& a : args) cargv.push_back(a.c_str());
   try {
@@ -131,6 +143,7 @@ int cli_main(int argc, const char* const* argv) {
     if (conv_cmd->parsed()) return convergence_command(conv);
     if (damp_cmd->parsed()) return damping_command(damp);
     if (stab_cmd->parsed()) return stability_command(stab);
+    if (coll_cmd->parsed()) return collision_command(coll);
     if (legacy) return legacy_command(legacy_args);
     throw UsageError("no command given; accepted: run, or the old flags -testcase ... (see steplab --help)");
   } catch (const CLI::CallForHelp&) {

@@ -61,3 +61,19 @@ void add_stability_options(CLI::App* app, StabilityArgs& args, bool sweep, bool 
 int amplitude_command(const std::vector<double>& spring_params, double step);
 
 }  // namespace steplab
+
+namespace steplab {
+
+struct CollisionArgs {
+  SceneArgs scene;  // parameters shared by the bounce and the triangle (ground, mass, gravity)
+  std::string methods;
+  std::string dts = "0.001,0.002,0.004";
+  std::string t_end = "10";
+  std::string triangle_dt = "0.001";
+  std::string threads = "0";
+  std::string json;
+};
+
+int collision_command(CollisionArgs& args);
+
+}  // namespace steplab

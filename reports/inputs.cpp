@@ -1,5 +1,7 @@
 #include "reports/inputs.hpp"
 
+#include "core/simulate.hpp"
+
 #include <charconv>
 #include <cmath>
 
@@ -59,9 +61,7 @@ long long step_count(double t_end, double dt) {
   if (!(ratio <= static_cast<double>(max_steps)))
     throw UsageError(fmt::format("--t-end {} with --dt {} needs {:.3g} steps; accepted: at most {} steps", t_end, dt,
                                  ratio, max_steps));
-  const double nearest = std::round(ratio);
-  if (std::abs(ratio - nearest) <= 1e-9 * std::max(1.0, ratio)) return static_cast<long long>(nearest);
-  return static_cast<long long>(std::ceil(ratio));
+  return steps_for(t_end, dt);
 }
 
 }  // namespace steplab

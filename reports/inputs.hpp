@@ -28,8 +28,7 @@ long long parse_count(std::string_view what, std::string_view text, long long lo
 // Comma-separated list, e.g. "euler,rk4".
 std::vector<std::string> split_list(std::string_view text);
 
-// The number of steps of length dt that cover t_end: round(t_end / dt) when t_end is a whole
-// number of steps (to 1e-9 relative), else the next whole number. At most max_steps.
+// steps_for(t_end, dt) (core/simulate.hpp), or a UsageError if that is more than max_steps.
 inline constexpr long long max_steps = 1'000'000'000;
 long long step_count(double t_end, double dt);
 

@@ -146,3 +146,47 @@ int amplitude_command(const std::vector<double>& spring_params, double step) {
 }
 
 }  // namespace steplab
+
+#include "analysis/collision.hpp"
+#include "core/scenes.hpp"
+
+namespace steplab {
+
+int collision_command(CollisionArgs& a) {
+  CollisionConfig c;
+  // A parameter given applies to each scene that has it (--ground-stiffness to both, --stiffness
+  // to the triangle's springs).
+  const auto values_for = [&](std::string_view scene) {
+    SceneArgs only = a.scene;
+    only.scene = std::string(scene);
+    const std::size_t index = only.scene_index();
+    return with_scene(index, [&]<class S>() {
+      for (auto& [name, text] : only.text)
+        if (std::none_of(S::params.begin(), S::params.end(), [&](const ParamSpec& p) { return p.name == name; }))
+          text.clear();
+      only.app = nullptr;
+      return only.values(index);
+    });
+  };
+  for (const auto& [name, text] : a.scene.text)
+    if (a.scene.given(name) && name != "mass" && name != "gravity" && name != "stiffness" && name != "damping" &&
+        name != "ground-stiffness" && name != "ground-damping")
+      throw UsageError(fmt::format("--{} does not apply to the collision scenes; accepted: --mass, --gravity, "
+                                   "--stiffness, --damping, --ground-stiffness, --ground-damping", name));
+  c.bounce_params = values_for("bounce");
+  c.falling_params = values_for("falling");
+  c.methods = resolve_methods(a.methods, false);
+  c.dts = number_list("--dts", a.dts, Bound::Positive);
+  c.t_end = parse_number("--t-end", a.t_end, Bound::Positive);
+  c.triangle_dt = parse_number("--triangle-dt", a.triangle_dt, Bound::Positive);
+  for (double dt : c.dts) step_count(c.t_end, dt);
+  step_count(c.t_end, c.triangle_dt);
+  c.threads = resolve_thread_count(a.threads);
+  if (!a.json.empty()) check_writable(a.json);
+  const CollisionResult r = collision_study(c);
+  std::fputs(collision_table(r).c_str(), stdout);
+  if (!a.json.empty()) write_atomic(a.json, collision_json(r).dump(1) + "\n");
+  return 0;
+}
+
+}  // namespace steplab

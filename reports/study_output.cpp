@@ -270,3 +270,73 @@ std::string amplitude_table_text(const AmplitudeTable& t) {
 }
 
 }  // namespace steplab
+
+namespace steplab {
+namespace {
+
+Json collision_run_json(const CollisionRun& run, bool bounce) {
+  Json j;
+  j["method"] = method_infos[run.method].name;
+  j["dt"] = run.dt;
+  j["status"] = to_string(run.status);
+  j["diverged_at"] = run.status == RunStatus::Ok ? Json(nullptr) : Json{{"step", run.failed_step}, {"t", run.failed_t}};
+  j["energy_ratio_final"] = number_or_null(run.energy_ratio_final);
+  j["energy_ratio_max"] = number_or_null(run.energy_ratio_max);
+  j["max_penetration"] = number_or_null(run.max_penetration);
+  if (bounce) {
+    Json b = Json::array();
+    for (const BounceEvent& e : run.bounces)
+      b.push_back({{"t", e.t}, {"energy_ratio", number_or_null(e.energy_ratio)}, {"rebound_height", number_or_null(e.rebound_height)}});
+    j["bounces"] = std::move(b);
+  } else {
+    Json p = Json::array();
+    for (const auto& s : run.path) p.push_back({{"t", s.t}, {"x", vec_json<6>(s.x)}, {"energy", number_or_null(s.energy)}});
+    j["path"] = std::move(p);
+  }
+  return j;
+}
+
+}  // namespace
+
+Json collision_json(const CollisionResult& r) {
+  const CollisionConfig& c = r.config;
+  Json j;
+  j["schema"] = "steplab.collision/1";
+  j["params"] = {{"bounce", scene_params_json(*find_scene("bounce"), c.bounce_params)},
+                 {"falling", scene_params_json(*find_scene("falling"), c.falling_params)},
+                 {"t_end", c.t_end},
+                 {"triangle_dt", c.triangle_dt}};
+  Json b = Json::array(), t = Json::array();
+  for (const CollisionRun& run : r.bounce) b.push_back(collision_run_json(run, true));
+  for (const CollisionRun& run : r.triangle) t.push_back(collision_run_json(run, false));
+  j["bounce"] = std::move(b);
+  j["triangle"] = std::move(t);
+  return j;
+}
+
+std::string collision_table(const CollisionResult& r) {
+  std::string out = fmt::format("Undamped bounce over {} s: energy ratio E/E0 after the first and last bounce\n\n"
+                                "{:<18} {:>7} {:>8} {:>11} {:>11} {:>11} {:>12} {:>10}\n",
+                                r.config.t_end, "method", "dt", "bounces", "E/E0 first", "E/E0 last", "max E/E0",
+                                "last apex", "max depth");
+  for (const CollisionRun& run : r.bounce) {
+    const bool any = !run.bounces.empty();
+    double rebound = NAN;  // the last completed apex
+    for (const BounceEvent& e : run.bounces)
+      if (std::isfinite(e.rebound_height)) rebound = e.rebound_height;
+    out += fmt::format("{:<18} {:>7g} {:>8} {:>11.6f} {:>11.6f} {:>11.6f} {:>12.5f} {:>10.5f}{}\n", method_infos[run.method].name,
+                       run.dt, run.bounces.size(), any ? run.bounces.front().energy_ratio : NAN,
+                       any ? run.bounces.back().energy_ratio : NAN, run.energy_ratio_max,
+                       rebound, run.max_penetration,
+                       run.status == RunStatus::Ok ? "" : fmt::format("  {} at step {}", to_string(run.status), run.failed_step));
+  }
+  out += fmt::format("\nFalling triangle over {} s at dt {}\n\n{:<18} {:>16} {:>11} {:>11} {:>10}\n", r.config.t_end,
+                     r.config.triangle_dt, "method", "status", "E/E0 end", "max E/E0", "max depth");
+  for (const CollisionRun& run : r.triangle)
+    out += fmt::format("{:<18} {:>16} {:>11.5f} {:>11.5f} {:>10.5f}\n", method_infos[run.method].name,
+                       run.status == RunStatus::Ok ? "ok" : fmt::format("{} @{}", to_string(run.status), run.failed_step),
+                       run.energy_ratio_final, run.energy_ratio_max, run.max_penetration);
+  return out;
+}
+
+}  // namespace steplab

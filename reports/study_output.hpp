@@ -36,3 +36,10 @@ std::string sweep_table(const std::vector<SweepRow>& rows);
 std::string map_summary(const StabilityMap& map);
 std::string amplitude_table_text(const AmplitudeTable& t);
 }  // namespace steplab
+
+#include "analysis/collision.hpp"
+
+namespace steplab {
+Json collision_json(const CollisionResult& r);   // schema steplab.collision/1
+std::string collision_table(const CollisionResult& r);
+}  // namespace steplab

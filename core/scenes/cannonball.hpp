@@ -42,6 +42,7 @@ struct Cannonball {
 
   bool velocity_dependent() const { return false; }
 
+  State<2> exact_at(double t) const { return flow(initial(), t); }
   State<2> flow(const State<2>& y, double t) const { return {y.x + y.v * t + 0.5 * g * t * t, y.v + g * t}; }
 };
 

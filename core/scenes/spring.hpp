@@ -60,6 +60,8 @@ struct Spring {
   // Starts at rest at rest length.
   State<1> initial() const { return {Vec<1>::Constant(-L), Vec<1>::Zero()}; }
 
+  State<1> exact_at(double t) const { return flow(initial(), t); }
+
   // The exact flow of m u'' + gamma u' + k u = 0 over a time t from any state (y0, v0) below the
   // anchor, in every damping regime. With alpha = -gamma / (2m), beta^2 = (4 k m - gamma^2) / (4 m^2)
   // and c = v0 - alpha u0:

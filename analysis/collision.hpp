@@ -1,0 +1,53 @@
+// Collision study: how each method handles the penalty ground.
+//  - the undamped bounce (exact motion known): per method and dt, the energy ratio E/E0 after
+//    each bounce (when the mass leaves the ground), the rebound height of the flight that
+//    follows, the deepest penetration, and blow-up;
+//  - the falling triangle: per method at one dt, energy ratio, deepest penetration, blow-up,
+//    and a decimated path of the three particles for the report's figure.
+#pragma once
+
+#include <vector>
+
+#include "core/simulate.hpp"
+
+namespace steplab {
+
+struct BounceEvent {
+  double t;               // time the mass left the ground
+  double energy_ratio;    // E/E0 then
+  double rebound_height;  // apex of the flight that follows (above the drop height 0: energy gained); NaN if cut off
+};
+
+struct CollisionRun {
+  std::size_t method;
+  double dt;
+  RunStatus status;
+  long long failed_step;
+  double failed_t;
+  double energy_ratio_final, energy_ratio_max;
+  double max_penetration;
+  std::vector<BounceEvent> bounces;   // bounce scene only
+  std::vector<Sample<6>> path;        // falling scene only
+};
+
+struct CollisionConfig {
+  std::vector<double> bounce_params, falling_params;  // table order
+  std::vector<std::size_t> methods;
+  std::vector<double> dts{0.001, 0.002, 0.004};
+  double t_end = 10;
+  double triangle_dt = 0.001;
+  long long path_samples = 201;
+  unsigned threads = 0;
+};
+
+struct CollisionResult {
+  CollisionConfig config;
+  std::vector<CollisionRun> bounce;    // method-major, dt-minor
+  std::vector<CollisionRun> triangle;  // one per method
+};
+
+inline constexpr std::size_t kMaxRecordedBounces = 4096;
+
+CollisionResult collision_study(const CollisionConfig& config);
+
+}  // namespace steplab

@@ -1,0 +1,114 @@
+// The slides' problem 3: a triangle of three 2-D masses joined by three damped springs falls
+// onto the ground y = -1 (core/scenes/ground.hpp), which pushes back any mass below it.
+// State: x = (x1, y1, x2, y2, x3, y3). Start at rest at p1 = (0, 1), p2 = (cos 210°, sin 210°),
+// p3 = (cos 330°, sin 330°); rest lengths from that shape (sqrt 3).
+//
+// Spring between i and j, d = x_i - x_j, l = |d|, n = d / l, P = I - n n^T:
+//   F_i = -k (l - L) n - gamma (n . (v_i - v_j)) n,   F_j = -F_i   (damping along the spring)
+//   dF_i/dd = -k (n n^T + (l - L)/l P) - gamma / l (n (v_i - v_j)^T P + (n . (v_i - v_j)) P)
+//   dF_i/dv_i = -gamma n n^T
+// with dF/dx_j = -dF/dd, and so on by symmetry. Plus gravity -m g on every y and the ground.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <span>
+
+#include "core/scene.hpp"
+#include "core/scenes/ground.hpp"
+
+namespace steplab {
+
+struct Falling {
+  static constexpr int dim = 6;
+  static constexpr std::string_view name = "falling";
+  // The old command-line framework's defaults: mass 0.1, stiffness 10, damping 0.01; ground 100.
+  static constexpr std::array<ParamSpec, 6> params{{
+      {"mass", 0.1, Bound::Positive, "mass of each of the three particles"},
+      {"stiffness", 10.0, Bound::NonNegative, "stiffness k of the triangle's springs"},
+      {"damping", 0.01, Bound::NonNegative, "damping gamma of the triangle's springs (along each spring)"},
+      {"gravity", 9.81, Bound::NonNegative, "gravitational acceleration g (pointing down)"},
+      {"ground-stiffness", 100.0, Bound::Positive, "stiffness k_g of the ground's penalty spring"},
+      {"ground-damping", 0.0, Bound::NonNegative, "damping c_g of the ground's penalty spring"},
+  }};
+  static constexpr std::array<std::array<int, 2>, 3> springs{{{0, 1}, {1, 2}, {2, 0}}};
+
+  double m, k, gamma, g;
+  Ground ground;
+  double rest;  // rest length of every spring: the side of the start triangle, sqrt(3)
+
+  explicit Falling(std::span<const double> p)
+      : m(p[0]), k(p[1]), gamma(p[2]), g(p[3]), ground{p[4], p[5]} {
+    const Vec<6> x0 = initial().x;
+    rest = (x0.segment<2>(0) - x0.segment<2>(2)).norm();
+  }
+
+  Vec<6> mass() const { return Vec<6>::Constant(m); }
+
+  Vec<6> force(const Vec<6>& x, const Vec<6>& v) const {
+    Vec<6> f = Vec<6>::Zero();
+    for (int i = 0; i < 3; ++i) f[2 * i + 1] = -m * g + ground.force(x[2 * i + 1], v[2 * i + 1]);
+    for (const auto& [i, j] : springs) {
+      const Eigen::Vector2d d = x.segment<2>(2 * i) - x.segment<2>(2 * j);
+      const double l = d.norm();
+      if (l == 0) continue;  // coincident particles: no direction, no force
+      const Eigen::Vector2d n = d / l;
+      const double dv = n.dot(v.segment<2>(2 * i) - v.segment<2>(2 * j));
+      const Eigen::Vector2d fi = -(k * (l - rest) + gamma * dv) * n;
+      f.segment<2>(2 * i) += fi;
+      f.segment<2>(2 * j) -= fi;
+    }
+    return f;
+  }
+
+  Jacobians<6> jacobians(const Vec<6>& x, const Vec<6>& v) const {
+    Jacobians<6> jac{Mat<6>::Zero(), Mat<6>::Zero()};
+    for (int i = 0; i < 3; ++i) {
+      jac.dx(2 * i + 1, 2 * i + 1) = ground.dforce_dy(x[2 * i + 1]);
+      jac.dv(2 * i + 1, 2 * i + 1) = ground.dforce_dv(x[2 * i + 1]);
+    }
+    for (const auto& [i, j] : springs) {
+      const Eigen::Vector2d d = x.segment<2>(2 * i) - x.segment<2>(2 * j);
+      const double l = d.norm();
+      if (l == 0) continue;
+      const Eigen::Vector2d n = d / l;
+      const Eigen::Vector2d dv = v.segment<2>(2 * i) - v.segment<2>(2 * j);
+      const Eigen::Matrix2d nn = n * n.transpose(), P = Eigen::Matrix2d::Identity() - nn;
+      const Eigen::Matrix2d dfd = -k * (nn + (l - rest) / l * P) - gamma / l * (n * dv.transpose() * P + n.dot(dv) * P);
+      const Eigen::Matrix2d dfv = -gamma * nn;
+      jac.dx.block<2, 2>(2 * i, 2 * i) += dfd;
+      jac.dx.block<2, 2>(2 * i, 2 * j) -= dfd;
+      jac.dx.block<2, 2>(2 * j, 2 * i) -= dfd;
+      jac.dx.block<2, 2>(2 * j, 2 * j) += dfd;
+      jac.dv.block<2, 2>(2 * i, 2 * i) += dfv;
+      jac.dv.block<2, 2>(2 * i, 2 * j) -= dfv;
+      jac.dv.block<2, 2>(2 * j, 2 * i) -= dfv;
+      jac.dv.block<2, 2>(2 * j, 2 * j) += dfv;
+    }
+    return jac;
+  }
+
+  bool velocity_dependent() const { return gamma != 0 || ground.c != 0; }
+
+  // Total mechanical energy: kinetic + gravity (height above the ground) + springs + ground penalty.
+  double energy(const Vec<6>& x, const Vec<6>& v) const {
+    double e = 0.5 * m * v.squaredNorm();
+    for (int i = 0; i < 3; ++i) e += m * g * (x[2 * i + 1] - Ground::level) + ground.energy(x[2 * i + 1]);
+    for (const auto& [i, j] : springs) {
+      const double stretch = (x.segment<2>(2 * i) - x.segment<2>(2 * j)).norm() - rest;
+      e += 0.5 * k * stretch * stretch;
+    }
+    return e;
+  }
+
+  State<6> initial() const {
+    using std::numbers::pi;
+    const double a2 = 210 * pi / 180, a3 = 330 * pi / 180;
+    Vec<6> x;
+    x << 0, 1, std::cos(a2), std::sin(a2), std::cos(a3), std::sin(a3);
+    return {x, Vec<6>::Zero()};
+  }
+};
+
+}  // namespace steplab
