@@ -30,7 +30,10 @@ report: deps
 
 
 bench: build
-	@$(BUILD)/steplab_bench --benchmark_out=$(BUILD)/bench.json --benchmark_out_format=json
+	@$(BUILD)/steplab_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
+	  --benchmark_out=$(BUILD)/bench.json --benchmark_out_format=json --ratios=$(BUILD)/bench-ratios.md
+	@echo "wrote $(BUILD)/bench.json and $(BUILD)/bench-ratios.md"
+
 
 clean:
 	rm -rf $(BUILD)

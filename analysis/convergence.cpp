@@ -1,5 +1,7 @@
 #include "analysis/convergence.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -60,6 +62,40 @@ double pick(const ConvergenceRecord& r, ErrorKind k) {
   return r.error_final;
 }
 
+// One run at a time (no other run competing for the core), the integration alone (what a user
+// pays; the exact solution evaluated for the errors would dominate a cheap method's time),
+// repeated until kTimingSeconds and 3 repetitions; the median is kept.
+void time_runs(ConvergenceResult& out) {
+  const ConvergenceConfig& c = out.config;
+  with_scene(c.scene, [&]<class S>() {
+    if constexpr (HasExact<S>) {
+      const S scene(c.params);
+      for (ConvergenceRecord& rec : out.records) {
+        with_method(rec.method, [&]<class M>() {
+          if constexpr (applies<M, S>()) {
+            std::vector<double> times;
+            double total = 0;
+            while (total < kTimingSeconds || times.size() < 3) {
+              RunSpec spec;  // the integration alone: no exact solution evaluated along the way
+              spec.dt = rec.dt;
+              spec.steps = rec.steps;
+              spec.errors = false;
+              const auto start = std::chrono::steady_clock::now();
+              const RunResult<S::dim> r = simulate<M>(scene, spec);
+              const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+              if (r.steps == 0 && rec.steps > 0) throw std::logic_error("timed run took no step");
+              times.push_back(s);
+              total += s;
+            }
+            std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
+            rec.seconds = times[times.size() / 2];
+          }
+        });
+      }
+    }
+  });
+}
+
 }  // namespace
 
 ConvergenceResult convergence_study(const ConvergenceConfig& config) {
@@ -84,6 +120,8 @@ ConvergenceResult convergence_study(const ConvergenceConfig& config) {
       });
     }
   });
+
+  if (config.timing) time_runs(out);
 
   for (std::size_t m = 0; m < nm; ++m) {
     std::vector<ErrorPoint> pts;

@@ -23,7 +23,13 @@ struct ConvergenceConfig {
   int points = 16;
   ErrorKind fit_error = ErrorKind::Final;  // which error the order is fitted to
   unsigned threads = 0;                    // 0: all cores
+  // Work-precision: time every run again, one at a time, repeated until kTimingSeconds of
+  // runs and at least 3 repetitions; the median is kept. Wall-clock times differ from run to
+  // run: the only part of the output that is not reproducible, so it is off by default.
+  bool timing = false;
 };
+
+inline constexpr double kTimingSeconds = 0.02;
 
 struct ConvergenceRecord {
   std::size_t method;
@@ -33,6 +39,7 @@ struct ConvergenceRecord {
   long long failed_step;    // -1 unless diverged
   double error_final, error_v_final, error_max, error_rms;
   double floor;             // round-off floor of this run's position error
+  double seconds = -1;      // median wall-clock time of the run (timing only), else -1
 };
 
 struct ConvergenceFit {

@@ -96,7 +96,7 @@ RunResult<S::dim> simulate(const S& scene, const RunSpec& spec, Observer&& obser
   RunResult<D> r;
   const double h = spec.dt;
   const SamplePlan plan{spec.steps, spec.max_samples};
-  r.samples.reserve(static_cast<std::size_t>(plan.size()) + 1);
+  if (plan.size() > 0) r.samples.reserve(static_cast<std::size_t>(plan.size()) + 1);
   long long next_sample = 0, sample_k = 0;
 
   const double e0 = scene.energy(y.x, y.v);

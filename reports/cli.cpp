@@ -117,6 +117,7 @@ int cli_main(int argc, const char* const* argv) {
   conv_cmd->add_option("--t-end", conv.t_end, "simulated time of every run")->capture_default_str();
   conv_cmd->add_option("--error", conv.error, "error the order is fitted to: final, max, rms")->capture_default_str();
   conv_cmd->add_option("--threads", conv.threads, "worker threads, 0 = all cores")->capture_default_str();
+  conv_cmd->add_flag("--timing", conv.timing, "also time every run (work-precision; not reproducible byte for byte)");
   conv_cmd->add_option("--json", conv.json, "write JSON (schema steplab.convergence/1) to this file");
 
   StabilityArgs damp, stab;

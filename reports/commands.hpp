@@ -29,6 +29,7 @@ struct ConvergenceArgs {
   std::string dt_max = "0.1", dt_min = "1e-4", points = "16", t_end = "10";
   std::string error = "final";
   std::string threads = "0";
+  bool timing = false;
   std::string json;
 };
 

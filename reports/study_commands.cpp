@@ -55,6 +55,7 @@ int convergence_command(ConvergenceArgs& a) {
   else if (a.error == "rms") c.fit_error = ErrorKind::Rms;
   else throw UsageError(fmt::format("--error '{}' is unknown; accepted: final, max, rms", a.error));
   c.threads = resolve_thread_count(a.threads);
+  c.timing = a.timing;
   if (sweep_steps(c.t_end, c.dt_max, c.dt_min, c.points).size() < 3)
     throw UsageError("--dt-max, --dt-min and --t-end leave fewer than 3 distinct steps; accepted: a wider range");
   if (!a.json.empty()) check_writable(a.json);

@@ -30,6 +30,7 @@ Json convergence_json(const ConvergenceResult& r) {
   p["dt_min"] = c.dt_min;
   p["points"] = c.points;
   p["fit_error"] = to_string(c.fit_error);
+  p["timing"] = c.timing;
   j["params"] = std::move(p);
   Json results = Json::array();
   for (const ConvergenceRecord& rec : r.records) {
@@ -44,6 +45,7 @@ Json convergence_json(const ConvergenceResult& r) {
     e["error_max"] = number_or_null(rec.error_max);
     e["error_rms"] = number_or_null(rec.error_rms);
     e["roundoff_floor"] = rec.floor;
+    e["seconds"] = rec.seconds >= 0 ? Json(rec.seconds) : Json(nullptr);
     results.push_back(std::move(e));
   }
   j["results"] = std::move(results);

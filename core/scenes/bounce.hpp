@@ -35,6 +35,7 @@ struct Bounce {
   }};
 
   double m, g;
+  double inv_m = 1 / m;  // initialized after m (declaration order)
   Ground ground;
   Spring contact;  // the contact phase as a hanging spring: k_g, c_g, L = 1
 
@@ -42,6 +43,7 @@ struct Bounce {
       : m(p[0]), g(p[1]), ground{p[2], p[3]}, contact(std::array<double, 5>{p[0], p[2], p[3], 1.0, p[1]}) {}
 
   Vec<1> mass() const { return Vec<1>::Constant(m); }
+  Vec<1> inverse_mass() const { return Vec<1>::Constant(inv_m); }
   Vec<1> force(const Vec<1>& x, const Vec<1>& v) const { return Vec<1>::Constant(-m * g + ground.force(x[0], v[0])); }
   Jacobians<1> jacobians(const Vec<1>& x, const Vec<1>&) const {
     return {Mat<1>::Constant(ground.dforce_dy(x[0])), Mat<1>::Constant(ground.dforce_dv(x[0]))};

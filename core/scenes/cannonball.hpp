@@ -25,6 +25,7 @@ struct Cannonball {
   }};
 
   double m;
+  double inv_m = 1 / m;  // initialized after m (declaration order)
   Vec<2> g;
   Vec<2> v0;
 
@@ -32,6 +33,7 @@ struct Cannonball {
       : m(p[0]), g(0.0, -p[1]), v0(p[2] * std::cos(p[3]), p[2] * std::sin(p[3])) {}
 
   Vec<2> mass() const { return Vec<2>::Constant(m); }
+  Vec<2> inverse_mass() const { return Vec<2>::Constant(inv_m); }
   Vec<2> force(const Vec<2>&, const Vec<2>&) const { return m * g; }
   Jacobians<2> jacobians(const Vec<2>&, const Vec<2>&) const { return {Mat<2>::Zero(), Mat<2>::Zero()}; }
 

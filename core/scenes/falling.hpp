@@ -35,6 +35,7 @@ struct Falling {
   static constexpr std::array<std::array<int, 2>, 3> springs{{{0, 1}, {1, 2}, {2, 0}}};
 
   double m, k, gamma, g;
+  double inv_m = 1 / m;  // initialized after m (declaration order)
   Ground ground;
   double rest;  // rest length of every spring: the side of the start triangle, sqrt(3)
 
@@ -45,6 +46,7 @@ struct Falling {
   }
 
   Vec<6> mass() const { return Vec<6>::Constant(m); }
+  Vec<6> inverse_mass() const { return Vec<6>::Constant(inv_m); }
 
   Vec<6> force(const Vec<6>& x, const Vec<6>& v) const {
     Vec<6> f = Vec<6>::Zero();

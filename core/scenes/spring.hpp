@@ -28,6 +28,8 @@ struct Spring {
   }};
 
   double m, k, gamma, L, g;
+  double inv_m = 1 / m;  // initialized after m (declaration order)
+  double weight = m * g;
 
   explicit Spring(std::span<const double> p) : m(p[0]), k(p[1]), gamma(p[2]), L(p[3]), g(p[4]) {}
 
@@ -36,11 +38,12 @@ struct Spring {
   double critical_damping() const { return 2 * std::sqrt(k * m); }  // gamma^2 = 4 k m
 
   Vec<1> mass() const { return Vec<1>::Constant(m); }
+  Vec<1> inverse_mass() const { return Vec<1>::Constant(inv_m); }
 
   Vec<1> force(const Vec<1>& x, const Vec<1>& v) const {
     const double y = x[0];
     const double sign = (y > 0) - (y < 0);
-    return Vec<1>::Constant(-k * (std::abs(y) - L) * sign - gamma * v[0] - m * g);
+    return Vec<1>::Constant(-k * (std::abs(y) - L) * sign - gamma * v[0] - weight);
   }
 
   // d/dy [-k (|y| - L) sign(y)] = -k away from the anchor; dF/dv = -gamma.

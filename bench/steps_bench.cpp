@@ -1,0 +1,287 @@
+// Per-step cost: every method on every scene (step/<scene>/<method>), the same problems stepped
+// with Boost.Odeint (odeint/<scene>/<method>), and the plainest hand-written loop of the same
+// update (baseline/<scene>/<method>) as the floor. After the run a table of time-per-step ratios
+// steplab/odeint and steplab/baseline (medians of the repetitions) is printed and, with
+// --ratios FILE, written as Markdown.
+//
+// Every benchmark steps one state in place, benchmark::DoNotOptimize on it each step, at
+// dt = 0.001, and starts again from the initial state every kRestart steps (10 simulated
+// seconds): long enough that the restart costs nothing measurable, short enough that no run
+// decays to rest (where denormals or an early Newton exit would distort the time) or grows
+// without bound. steplab, odeint and the baselines all restart alike.
+#include <benchmark/benchmark.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <string>
+#include <utility>
+
+#include <boost/numeric/odeint.hpp>
+
+#include "core/methods.hpp"
+#include "core/scenes.hpp"
+
+void register_odeint_implicit_euler();
+
+namespace {
+
+using namespace steplab;
+namespace odeint = boost::numeric::odeint;
+constexpr double kDt = 0.001;
+constexpr int kRestart = 10'000;
+
+// ---------------- steplab ----------------
+
+template <class S, class M> void register_step() {
+  const std::string name = "step/" + std::string(S::name) + "/" + std::string(M::info.name);
+  benchmark::RegisterBenchmark(name.c_str(), [](benchmark::State& st) {
+    const S scene = make_default_scene<S>();
+    State<S::dim> y = scene.initial();
+    int n = 0;
+    for (auto _ : st) {
+      M::step(scene, y, n * kDt, kDt);
+      benchmark::DoNotOptimize(y);
+      if (++n == kRestart) n = 0, y = scene.initial();
+    }
+    st.counters["steps_per_second"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
+  });
+}
+
+// The undamped spring: odeint's velocity_verlet and symplectic_euler take x'' = a(x) only.
+template <class M> void register_undamped_step() {
+  const std::string name = "step/spring_undamped/" + std::string(M::info.name);
+  benchmark::RegisterBenchmark(name.c_str(), [](benchmark::State& st) {
+    const Spring scene(std::array<double, 5>{1.0, 5.0, 0.0, 5.0, 9.81});
+    State<1> y = scene.initial();
+    int n = 0;
+    for (auto _ : st) {
+      M::step(scene, y, n * kDt, kDt);
+      benchmark::DoNotOptimize(y);
+      if (++n == kRestart) n = 0, y = scene.initial();
+    }
+    st.counters["steps_per_second"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
+  });
+}
+
+void register_steplab() {
+  register_undamped_step<VelocityVerlet>();
+  register_undamped_step<SymplecticEuler>();
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    (([&]<class S>() {
+       [&]<std::size_t... J>(std::index_sequence<J...>) {
+         (([&]<class M>() {
+            if constexpr (applies<M, S>()) register_step<S, M>();
+          }.template operator()<std::tuple_element_t<J, Methods>>()),
+          ...);
+       }(std::make_index_sequence<method_count>{});
+     }.template operator()<std::tuple_element_t<I, Scenes>>()),
+     ...);
+  }(std::make_index_sequence<scene_count>{});
+}
+
+// ---------------- the default spring, written by hand ----------------
+// m = 1, k = 5, L = 5, gamma = 0.1 (0 for the symplectic peers), g = 9.81; force as in Spring.
+struct SpringForce {
+  double m = 1, k = 5, L = 5, gamma = 0.1, g = 9.81;
+  double operator()(double y, double v) const {
+    const double sign = (y > 0) - (y < 0);
+    return -k * (std::abs(y) - L) * sign - gamma * v - m * g;
+  }
+};
+
+template <class Step> void register_loop(const char* name, SpringForce f, Step step) {
+  benchmark::RegisterBenchmark(name, [f, step](benchmark::State& st) {
+    double y = -f.L, v = 0;
+    int n = 0;
+    for (auto _ : st) {
+      step(f, y, v);
+      benchmark::DoNotOptimize(y);
+      benchmark::DoNotOptimize(v);
+      if (++n == kRestart) n = 0, y = -f.L, v = 0;
+    }
+    st.counters["steps_per_second"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
+  });
+}
+
+void register_baselines() {
+  const double h = kDt;
+  SpringForce damped, undamped;
+  undamped.gamma = 0;
+  register_loop("baseline/spring/explicit_euler", damped, [h](const SpringForce& f, double& y, double& v) {
+    const double a = f(y, v) / f.m;
+    y += h * v;
+    v += h * a;
+  });
+  register_loop("baseline/spring/symplectic_euler", damped, [h](const SpringForce& f, double& y, double& v) {
+    v += h * f(y, v) / f.m;
+    y += h * v;
+  });
+  register_loop("baseline/spring/explicit_midpoint", damped, [h](const SpringForce& f, double& y, double& v) {
+    const double ym = y + 0.5 * h * v, vm = v + 0.5 * h * f(y, v) / f.m;
+    y += h * vm;
+    v += h * f(ym, vm) / f.m;
+  });
+  register_loop("baseline/spring/rk4", damped, [h](const SpringForce& f, double& y, double& v) {
+    const double k1x = v, k1v = f(y, v) / f.m;
+    const double k2x = v + 0.5 * h * k1v, k2v = f(y + 0.5 * h * k1x, k2x) / f.m;
+    const double k3x = v + 0.5 * h * k2v, k3v = f(y + 0.5 * h * k2x, k3x) / f.m;
+    const double k4x = v + h * k3v, k4v = f(y + h * k3x, k4x) / f.m;
+    y += h / 6 * (k1x + 2 * k2x + 2 * k3x + k4x);
+    v += h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
+  });
+  register_loop("baseline/spring/velocity_verlet", damped, [h](const SpringForce& f, double& y, double& v) {
+    // closing kick implicit in the (linear) damping: v1 (1 + h/2 gamma/m) = v + h/2 (a0 + F(y1, 0)/m)
+    const double a0 = f(y, v) / f.m;
+    y += h * v + 0.5 * h * h * a0;
+    v = (v + 0.5 * h * (a0 + f(y, 0.0) / f.m)) / (1 + 0.5 * h * f.gamma / f.m);
+  });
+  register_loop("baseline/spring_undamped/velocity_verlet", undamped, [h](const SpringForce& f, double& y, double& v) {
+    const double a0 = f(y, v) / f.m;
+    y += h * v + 0.5 * h * h * a0;
+    v += 0.5 * h * (a0 + f(y, v) / f.m);
+  });
+  register_loop("baseline/spring_undamped/symplectic_euler", undamped, [h](const SpringForce& f, double& y, double& v) {
+    v += h * f(y, v) / f.m;
+    y += h * v;
+  });
+  register_loop("baseline/spring/implicit_euler", damped, [h](const SpringForce& f, double& y, double& v) {
+    // one Newton step is exact (linear below the anchor): v1 = v + h F(y + h v1, v1) / m
+    const double r = -h * f(y + h * v, v);
+    v -= r / (f.m + h * f.gamma + h * h * f.k);
+    y += h * v;
+  });
+  register_loop("baseline/spring/implicit_midpoint", damped, [h](const SpringForce& f, double& y, double& v) {
+    const double c = 0.5 * h, r = -c * f(y + c * v, v);
+    const double vm = v - r / (f.m + c * f.gamma + c * c * f.k);
+    y += h * vm;
+    v = 2 * vm - v;
+  });
+}
+
+// ---------------- Boost.Odeint ----------------
+
+using Y = std::array<double, 2>;
+
+template <class Stepper> void register_odeint(const char* name, Stepper stepper, SpringForce f) {
+  benchmark::RegisterBenchmark(name, [stepper, f](benchmark::State& st) mutable {
+    Y y{-f.L, 0.0};
+    const auto sys = [&f](const Y& s, Y& ds, double) {
+      ds[0] = s[1];
+      ds[1] = f(s[0], s[1]) / f.m;
+    };
+    int n = 0;
+    for (auto _ : st) {
+      stepper.do_step(sys, y, n * kDt, kDt);
+      benchmark::DoNotOptimize(y);
+      if (++n == kRestart) n = 0, y = Y{-f.L, 0.0};
+    }
+    st.counters["steps_per_second"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
+  });
+}
+
+void register_odeint_all() {
+  SpringForce damped, undamped;
+  undamped.gamma = 0;
+  register_odeint("odeint/spring/explicit_euler", odeint::euler<Y>(), damped);
+  using Rk2 = odeint::explicit_generic_rk<2, 2, Y, double>;
+  register_odeint("odeint/spring/explicit_midpoint",
+                  Rk2(Rk2::coef_a_type(boost::array<double, 1>{{0.5}}), Rk2::coef_b_type{{0.0, 1.0}}, Rk2::coef_c_type{{0.0, 0.5}}),
+                  damped);
+  register_odeint("odeint/spring/rk4", odeint::runge_kutta4<Y>(), damped);
+
+  // velocity_verlet and symplectic_euler are for x'' = a(x): the undamped spring.
+  using Q = std::array<double, 1>;
+  benchmark::RegisterBenchmark("odeint/spring_undamped/velocity_verlet", [undamped](benchmark::State& st) {
+    odeint::velocity_verlet<Q> vv;
+    std::pair<Q, Q> qp{Q{-undamped.L}, Q{0.0}};
+    const auto acc = [&undamped](const Q& q, const Q& p, Q& a, double) { a[0] = undamped(q[0], p[0]) / undamped.m; };
+    int n = 0;
+    for (auto _ : st) {
+      vv.do_step(acc, qp, n * kDt, kDt);
+      benchmark::DoNotOptimize(qp);
+      if (++n == kRestart) n = 0, qp = {Q{-undamped.L}, Q{0.0}}, vv.reset();
+    }
+    st.counters["steps_per_second"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
+  });
+  benchmark::RegisterBenchmark("odeint/spring_undamped/symplectic_euler", [undamped](benchmark::State& st) {
+    odeint::symplectic_euler<Q> se;
+    std::pair<Q, Q> qp{Q{-undamped.L}, Q{0.0}};
+    const auto coor = [](const Q& p, Q& dq) { dq[0] = p[0]; };
+    const auto mom = [&undamped](const Q& q, Q& dp) { dp[0] = undamped(q[0], 0.0) / undamped.m; };
+    int n = 0;
+    for (auto _ : st) {
+      se.do_step(std::make_pair(coor, mom), qp, n * kDt, kDt);
+      benchmark::DoNotOptimize(qp);
+      if (++n == kRestart) n = 0, qp = {Q{-undamped.L}, Q{0.0}};
+    }
+    st.counters["steps_per_second"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
+  });
+
+  register_odeint_implicit_euler();  // odeint_implicit_bench.cpp, compiled as C++17
+}
+
+// ---------------- the ratio table ----------------
+
+// Collects the median (or the single) time per step of every benchmark while the console
+// reporter prints as usual.
+class RatioReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    for (const Run& r : runs) {
+      const bool use = r.run_type == Run::RT_Aggregate ? r.aggregate_name == "median" : r.repetitions <= 1;
+      if (use && !r.error_occurred) ns_per_step[r.run_name.function_name] = r.GetAdjustedRealTime();
+    }
+    ConsoleReporter::ReportRuns(runs);
+  }
+  std::map<std::string, double> ns_per_step;
+};
+
+std::string ratio_table(const std::map<std::string, double>& t) {
+  std::string out = "| scene/method | steplab ns/step | odeint ns/step | baseline ns/step | steplab/odeint | steplab/baseline |\n"
+                    "|---|---:|---:|---:|---:|---:|\n";
+  const auto cell = [&](const std::string& key) {
+    const auto it = t.find(key);
+    return it == t.end() ? std::string("-") : std::to_string(it->second).substr(0, 6);
+  };
+  for (const auto& [name, ns] : t) {
+    if (name.rfind("step/", 0) != 0) continue;
+    const std::string rest = name.substr(5);
+    const auto od = t.find("odeint/" + rest), base = t.find("baseline/" + rest);
+    char r1[32] = "-", r2[32] = "-";
+    if (od != t.end()) std::snprintf(r1, sizeof r1, "%.2f", ns / od->second);
+    if (base != t.end()) std::snprintf(r2, sizeof r2, "%.2f", ns / base->second);
+    if (od == t.end() && base == t.end()) continue;
+    out += "| " + rest + " | " + cell(name) + " | " + cell("odeint/" + rest) + " | " + cell("baseline/" + rest) + " | " + r1 +
+           " | " + r2 + " |\n";
+  }
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Our own flag, taken out before Google Benchmark reads the rest.
+  std::string ratios_path;
+  int kept = 1;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a.rfind("--ratios=", 0) == 0) ratios_path = a.substr(9);
+    else argv[kept++] = argv[i];
+  }
+  argc = kept;
+  register_steplab();
+  register_baselines();
+  register_odeint_all();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+  RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::Shutdown();
+  const std::string table = ratio_table(reporter.ns_per_step);
+  std::printf("\nTime per step, median of the repetitions (ratios < 1: steplab is faster)\n\n%s", table.c_str());
+  if (!ratios_path.empty()) std::ofstream(ratios_path) << table;
+  return 0;
+}

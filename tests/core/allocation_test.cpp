@@ -1,0 +1,62 @@
+// No heap allocation in a stepping loop: counts calls of the global operator new while whole
+// runs of every method on every scene execute. Without samples a run allocates nothing at all;
+// with samples it allocates once (the reserved buffer), however many steps it takes.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "core/methods.hpp"
+#include "core/scenes.hpp"
+#include "core/simulate.hpp"
+
+namespace {
+std::atomic<long> g_allocations{0};
+}
+
+void* operator new(std::size_t n) {
+  ++g_allocations;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace steplab {
+namespace {
+
+template <class M, class S> long allocations_in_run(long long steps, long long samples) {
+  const S scene = make_default_scene<S>();
+  RunSpec spec;
+  spec.dt = 0.001;
+  spec.steps = steps;
+  spec.max_samples = samples;
+  spec.energy_rate = true;
+  const long before = g_allocations.load();
+  const auto r = simulate<M>(scene, spec);
+  const long used = g_allocations.load() - before;
+  EXPECT_EQ(r.steps, steps);
+  return used;
+}
+
+TEST(Allocation, NoneInAnyStepOfAnyMethodOnAnyScene) {
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    (([&]<class S>() {
+       [&]<std::size_t... J>(std::index_sequence<J...>) {
+         (([&]<class M>() {
+            if constexpr (applies<M, S>()) {
+              EXPECT_EQ((allocations_in_run<M, S>(2000, 0)), 0) << S::name << " " << M::info.name;
+              EXPECT_EQ((allocations_in_run<M, S>(200, 50)), (allocations_in_run<M, S>(4000, 50)))
+                  << S::name << " " << M::info.name;
+            }
+          }.template operator()<std::tuple_element_t<J, Methods>>()),
+          ...);
+       }(std::make_index_sequence<method_count>{});
+     }.template operator()<std::tuple_element_t<I, Scenes>>()),
+     ...);
+  }(std::make_index_sequence<scene_count>{});
+}
+
+}  // namespace
+}  // namespace steplab
