@@ -24,10 +24,7 @@ report: deps
 	@tools/install-deps report
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS) >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS) --target steplab
-	@mkdir -p report
-	@$(BUILD)/steplab run --scene spring --method symplectic_euler --dt 0.05 --t-end 100 --json report/run.json
-	@echo "wrote report/run.json"
-
+	@$(BUILD)/steplab report --out report
 
 bench: build
 	@$(BUILD)/steplab_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \

@@ -36,7 +36,7 @@ struct CollisionConfig {
   std::vector<double> dts{0.001, 0.002, 0.004};
   double t_end = 10;
   double triangle_dt = 0.001;
-  long long path_samples = 201;
+  long long path_samples = 1001;
   unsigned threads = 0;
 };
 

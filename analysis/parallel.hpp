@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstddef>
 #include <exception>
 #include <mutex>
@@ -11,6 +12,11 @@
 #include <vector>
 
 namespace steplab {
+
+// Called (from one thread at a time) after each task with the tasks done, the total and the
+// seconds since the work began; the front end shows progress with it. Null: nothing shown.
+using ProgressHook = void (*)(std::size_t done, std::size_t total, double seconds);
+inline ProgressHook progress_hook = nullptr;
 
 // 0 means all cores.
 inline unsigned resolve_threads(unsigned requested) {
@@ -22,14 +28,20 @@ inline unsigned resolve_threads(unsigned requested) {
 template <class Task> void parallel_for(std::size_t n, unsigned threads, Task&& task) {
   threads = std::min<unsigned>(resolve_threads(threads), static_cast<unsigned>(std::max<std::size_t>(n, 1)));
   std::atomic<std::size_t> next{0};
+  std::size_t done = 0;
   std::exception_ptr error;
-  std::mutex error_mutex;
+  std::mutex mutex;
+  const auto start = std::chrono::steady_clock::now();
   const auto worker = [&] {
     for (std::size_t i; (i = next.fetch_add(1)) < n;) {
       try {
         task(i);
+        if (progress_hook) {
+          const std::lock_guard lock(mutex);
+          progress_hook(++done, n, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        }
       } catch (...) {
-        const std::lock_guard lock(error_mutex);
+        const std::lock_guard lock(mutex);
         if (!error) error = std::current_exception();
         next = n;
       }

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
@@ -12,6 +14,7 @@
 #include "core/methods.hpp"
 #include "reports/inputs.hpp"
 #include "reports/study_output.hpp"
+#include "analysis/parallel.hpp"
 #include "analysis/local_error.hpp"
 
 namespace steplab {
@@ -73,9 +76,20 @@ int legacy_command(const LegacyArgs& l) {
   return run_command(run);
 }
 
+// Progress of a study on stderr, only when stderr is a terminal and the study has run for a
+// second: "steplab: 1234/4096 runs".
+void install_terminal_progress() {
+  progress_hook = [](std::size_t done, std::size_t total, double seconds) {
+    if (seconds < 1) return;
+    std::fprintf(stderr, "\r\033[Ksteplab: %zu/%zu runs", done, total);
+    if (done == total) std::fputs("\r\033[K", stderr);
+  };
+}
+
 }  // namespace
 
 int cli_main(int argc, const char* const* argv) {
+  if (isatty(STDERR_FILENO)) install_terminal_progress();
   // The old single-dash flags become GNU long options; everything else is left as typed.
   std::vector<std::string> args;
   bool legacy = false;
@@ -136,6 +150,13 @@ int cli_main(int argc, const char* const* argv) {
   coll_cmd->add_option("--threads", coll.threads, "worker threads, 0 = all cores")->capture_default_str();
   coll_cmd->add_option("--json", coll.json, "write JSON (schema steplab.collision/1) to this file");
 
+  ReportArgs rep;
+  CLI::App* rep_cmd = app.add_subcommand("report", "run every study and write report.md, report.pdf, figures/ and data/ into one folder");
+  rep_cmd->add_option("--out", rep.out, "output folder")->capture_default_str();
+  rep_cmd->add_option("--config", rep.config, "JSON file overriding any study parameter (see --print-config)");
+  rep_cmd->add_flag("--force", rep.force, "redo the report even if it is up to date");
+  rep_cmd->add_flag("--print-config", rep.print_config, "print the configuration (defaults, or --config applied) and exit");
+
   std::vector<const char*> cargv{argv[0]};
   for (const auto& a : args) cargv.push_back(a.c_str());
   try {
@@ -145,8 +166,9 @@ int cli_main(int argc, const char* const* argv) {
     if (damp_cmd->parsed()) return damping_command(damp);
     if (stab_cmd->parsed()) return stability_command(stab);
     if (coll_cmd->parsed()) return collision_command(coll);
+    if (rep_cmd->parsed()) return report_command(rep);
     if (legacy) return legacy_command(legacy_args);
-    throw UsageError("no command given; accepted: run, or the old flags -testcase ... (see steplab --help)");
+    throw UsageError("no command given; accepted: run, study, report, or the old flags -testcase ... (see steplab --help)");
   } catch (const CLI::CallForHelp&) {
     std::fputs(app.help().c_str(), stdout);
     return 0;

@@ -78,3 +78,16 @@ struct CollisionArgs {
 int collision_command(CollisionArgs& args);
 
 }  // namespace steplab
+
+namespace steplab {
+
+struct ReportArgs {
+  std::string out = "report";
+  std::string config;
+  bool force = false;
+  bool print_config = false;
+};
+
+int report_command(ReportArgs& args);
+
+}  // namespace steplab

@@ -1,6 +1,7 @@
 // `steplab study ...`: reads and checks the arguments, runs the study, prints its table and
 // writes its JSON.
 #include <cstdio>
+#include <filesystem>
 
 #include <fmt/format.h>
 
@@ -188,6 +189,25 @@ int collision_command(CollisionArgs& a) {
   std::fputs(collision_table(r).c_str(), stdout);
   if (!a.json.empty()) write_atomic(a.json, collision_json(r).dump(1) + "\n");
   return 0;
+}
+
+}  // namespace steplab
+
+#include "reports/report.hpp"
+
+namespace steplab {
+
+int report_command(ReportArgs& a) {
+  const ReportConfig c = a.config.empty() ? default_report_config() : read_report_config(a.config);
+  if (a.print_config) {
+    std::fputs((report_config_json(c).dump(1) + "\n").c_str(), stdout);
+    return 0;
+  }
+  if (a.out.empty()) throw UsageError("--out is empty; accepted: a folder path");
+  check_writable((std::filesystem::path(a.out).parent_path().empty() ? std::filesystem::path(".")
+                                                                     : std::filesystem::path(a.out).parent_path()) /
+                 ".steplab-write-check");
+  return write_report(c, a.out, a.force);
 }
 
 }  // namespace steplab

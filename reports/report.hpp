@@ -1,0 +1,70 @@
+// `steplab report`: runs every study, draws the figures with gnuplot (reports/*.gp), writes
+// report.md (figures linked relatively), report.pdf (pandoc + LaTeX), and the data of every
+// study, into one folder.
+//
+// Every sentence that states a finding is generated from the numbers: Findings holds what the
+// data say (which methods are stable where, the rank correlation of order and dt*, the methods
+// that break the pattern), and the text is rendered from it, so other parameters give other,
+// still true, sentences.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "analysis/collision.hpp"
+#include "analysis/convergence.hpp"
+#include "analysis/stability.hpp"
+#include "reports/report_config.hpp"
+
+namespace steplab {
+
+struct ReportData {
+  ReportConfig config;
+  std::vector<std::size_t> methods;  // every method in the table, the exact flow included
+  ConvergenceResult conv_spring, conv_cannonball, conv_bounce;
+  std::vector<ThresholdRow> thresholds;
+  std::vector<SweepRow> sweep;
+  StabilityMap map;
+  CollisionResult collision;
+  // figure data
+  std::vector<RunResult<2>> cannon;               // [method]
+  std::vector<std::vector<RunResult<1>>> spring;  // [figure dt][method]
+  std::vector<RunResult<1>> energy;               // [method]: gamma = 0 at the large step
+  std::vector<double> curve_damping;              // predicted rate against damping, at the large step
+  std::vector<std::vector<double>> curve_rate;    // [method][damping]
+};
+
+ReportData run_report_studies(const ReportConfig& config);
+
+struct MethodFinding {
+  std::size_t method;
+  const ConvergenceFit* fit;  // on the spring
+  bool stable_large_dt;       // at config.large_dt with the spring's damping
+  bool stable_undamped;       // at config.small_dt with damping 0
+  double dt_theory, dt_measured;  // at the spring's damping
+  double growth_large_dt;     // measured d ln E / dt at config.large_dt
+};
+
+struct Findings {
+  std::vector<MethodFinding> rows;
+  double spearman = 0;                  // rank correlation of declared order and measured dt*
+  std::vector<std::size_t> breakers;    // rows whose order and dt* ranks are >= n/3 apart
+  std::vector<std::size_t> stable_large, unstable_large, stable_undamped, unstable_undamped;
+  std::vector<std::size_t> never_stable_undamped, always_stable;  // predicted dt* = 0 at gamma = 0 / inf
+};
+
+Findings compute_findings(const ReportData& d);
+
+// Spearman's rho with average ranks for ties (+inf ranks above every finite value).
+double spearman(const std::vector<double>& a, const std::vector<double>& b);
+
+std::string report_markdown(const ReportData& d, const Findings& f, const std::string& figure_ext,
+                            const std::string& footer);
+
+// The whole report into `out_dir`, atomically: built in a staging folder beside it and swapped
+// in at the end, so an interrupted run leaves the previous report as it was. Skips all work if
+// `out_dir` already holds a report made from the same configuration by the same binary.
+// Returns the exit status.
+int write_report(const ReportConfig& config, const std::string& out_dir, bool force);
+
+}  // namespace steplab

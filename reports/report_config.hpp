@@ -1,0 +1,43 @@
+// The report's parameters: every study's settings, with defaults embedded here. A JSON file
+// (`steplab report --config FILE`) overrides any of them; `steplab report --print-config`
+// prints the defaults in that format. Unknown keys, wrong types and values out of range are
+// refused with a UsageError naming the key.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace steplab {
+
+struct ReportConfig {
+  std::vector<double> spring, cannonball, bounce, falling;  // scene parameters, table order
+  // convergence (every scene with an exact solution)
+  double conv_dt_max = 0.1, conv_dt_min = 1e-4, conv_t_end = 10;
+  int conv_points = 16;
+  bool timing = true;  // work-precision (figure 7)
+  // stability (spring)
+  std::vector<double> threshold_dampings{0, 0.1, 1, 4};
+  std::vector<double> sweep_dts{0.01, 0.05, 0.2};
+  int map_dt_points = 64, map_damping_points = 64;
+  double map_dt_min = 0.01, map_dt_max = 10;
+  // the sheet's two stability tests: a large step (with the spring's damping), and no damping
+  double large_dt = 0.05, small_dt = 0.01;
+  // collision
+  std::vector<double> collision_dts{0.001, 0.002, 0.004};
+  double collision_t_end = 10, triangle_dt = 0.001;
+  // figures
+  double cannonball_dt = 0.25, cannonball_t_end = 17.5;
+  std::vector<double> spring_figure_dts{0.01, 0.05};
+  double spring_figure_t_end = 10, energy_t_end = 100;
+  unsigned threads = 0;
+};
+
+ReportConfig default_report_config();
+nlohmann::ordered_json report_config_json(const ReportConfig& c);
+// Defaults overridden by the keys of `user`; UsageError("config: ...") for anything wrong.
+ReportConfig report_config_from_json(const nlohmann::ordered_json& user);
+ReportConfig read_report_config(const std::string& path);  // UsageError if unreadable or malformed
+
+}  // namespace steplab
