@@ -18,6 +18,7 @@ build: deps
 	@cmake --build $(BUILD) -j $(JOBS)
 
 test: build
+	@tools/install-deps test
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 report: deps

@@ -1,0 +1,157 @@
+// Tests of the report's findings (reports/report_studies.cpp, reports/report.cpp): the sentences
+// follow the data, also when the parameters change. Each check recomputes what the sentence
+// claims from the study data themselves, not from the Findings that produced the sentence.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <regex>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "core/methods.hpp"
+#include "reports/inputs.hpp"
+#include "reports/report.hpp"
+
+namespace steplab {
+namespace {
+
+// Small studies, so the whole pipeline runs in about a second.
+ReportConfig small_config() {
+  ReportConfig c = default_report_config();
+  c.conv_points = 8;
+  c.conv_dt_min = 1e-3;
+  c.timing = false;
+  c.map_dt_points = 6;
+  c.map_damping_points = 4;
+  c.collision_dts = {0.002};
+  c.collision_t_end = 2;
+  c.energy_t_end = 10;
+  c.cannonball_t_end = 5;
+  return c;
+}
+
+// The backticked names in `line` between `from` and `to` (to the end if `to` is empty).
+std::set<std::string> names_between(const std::string& line, const std::string& from, const std::string& to) {
+  const std::size_t a = line.find(from);
+  if (a == std::string::npos) return {};
+  const std::size_t b = to.empty() ? std::string::npos : line.find(to, a);
+  const std::string part = line.substr(a + from.size(), b == std::string::npos ? std::string::npos : b - a - from.size());
+  std::set<std::string> out;
+  static const std::regex name("`([a-z_0-9]+)`");
+  for (auto it = std::sregex_iterator(part.begin(), part.end(), name); it != std::sregex_iterator(); ++it) out.insert((*it)[1]);
+  return out;
+}
+
+std::string line_starting(const std::string& md, const std::string& prefix) {
+  const std::size_t a = md.find(prefix);
+  return a == std::string::npos ? "" : md.substr(a, md.find('\n', a) - a);
+}
+
+void expect_sentences_follow_data(const ReportConfig& c) {
+  const ReportData d = run_report_studies(c);
+  const Findings f = compute_findings(d);
+  const std::string md = report_markdown(d, f, "png", "footer");
+  const double gamma = c.spring[2];
+
+  std::set<std::string> stable_large, unstable_large, stable_undamped, unstable_undamped;
+  for (const SweepRow& r : d.sweep) {
+    const std::string n(method_infos[r.method].name);
+    if (r.dt == c.large_dt && r.damping == gamma) (r.run.stable() ? stable_large : unstable_large).insert(n);
+    if (r.dt == c.small_dt && r.damping == 0) (r.run.stable() ? stable_undamped : unstable_undamped).insert(n);
+  }
+  ASSERT_EQ(stable_large.size() + unstable_large.size(), method_count);
+  const std::string large = line_starting(md, "- At the sheet's large step");
+  ASSERT_FALSE(large.empty()) << md;
+  EXPECT_EQ(names_between(large, "stable:", "; unstable:"), stable_large) << large;
+  EXPECT_EQ(names_between(large, "; unstable:", ""), unstable_large) << large;
+  const std::string undamped = line_starting(md, "- Without damping (dt");
+  EXPECT_EQ(names_between(undamped, "stable:", "; unstable:"), stable_undamped) << undamped;
+  EXPECT_EQ(names_between(undamped, "; unstable:", ""), unstable_undamped) << undamped;
+
+  // "Stable at every step" names exactly the methods whose predicted dt* is infinite.
+  std::set<std::string> always;
+  for (const ThresholdRow& r : d.thresholds)
+    if (r.damping == gamma && std::isinf(r.dt_theory)) always.insert(std::string(method_infos[r.method].name));
+  EXPECT_EQ(names_between(line_starting(md, "- Stable at every step"), ":", ""), always);
+
+  // The correlation sentence carries the Spearman value of (order, measured dt*) and names the
+  // methods whose ranks lie a third of the table apart.
+  std::vector<double> order, dt;
+  for (std::size_t m = 0; m < method_count; ++m) {
+    order.push_back(method_infos[m].exact_flow ? INFINITY : method_infos[m].order);
+    for (const ThresholdRow& r : d.thresholds)
+      if (r.method == m && r.damping == gamma) dt.push_back(r.dt_measured);
+  }
+  ASSERT_EQ(dt.size(), method_count);
+  const double rho = spearman(order, dt);
+  EXPECT_NE(md.find(fmt::format("is **{:.2f}**", rho)), std::string::npos) << rho;
+  const std::string corr = line_starting(md, "Spearman's rank correlation");
+  const auto rank = [](const std::vector<double>& x, std::size_t i) {
+    double below = 0, equal = 0;
+    for (double y : x) below += y < x[i], equal += y == x[i];
+    return below + 0.5 * (equal + 1);
+  };
+  std::set<std::string> breakers;
+  for (std::size_t i = 0; i < method_count; ++i)
+    if (std::abs(rank(order, i) - rank(dt, i)) >= method_count / 3.0) breakers.insert(std::string(method_infos[i].name));
+  EXPECT_EQ(names_between(corr, "apart:", ")."), breakers) << corr;  // the list ends at ")."
+}
+
+TEST(ReportFindings, FollowTheDataWithDefaults) { expect_sentences_follow_data(small_config()); }
+
+TEST(ReportFindings, FollowTheDataWithoutDamping) {
+  ReportConfig c = small_config();
+  c.spring[2] = 0;  // damping 0: explicit Euler and midpoint are unstable at every step
+  expect_sentences_follow_data(c);
+}
+
+TEST(ReportFindings, FollowTheDataWithAStiffSpringAndALargeStep) {
+  ReportConfig c = small_config();
+  c.spring[1] = 50;    // stiffness: omega = 7.1
+  c.large_dt = 0.3;    // beyond symplectic Euler's 2/omega = 0.28
+  expect_sentences_follow_data(c);
+}
+
+TEST(ReportFindings, ChangedParametersChangeTheSentences) {
+  const auto markdown = [](const ReportConfig& c) {
+    const ReportData d = run_report_studies(c);
+    return report_markdown(d, compute_findings(d), "png", "");
+  };
+  ReportConfig c = small_config();
+  const std::string a = markdown(c);
+  c.spring[1] = 50;
+  c.large_dt = 0.3;
+  const std::string b = markdown(c);
+  EXPECT_NE(line_starting(a, "- At the sheet's large step"), line_starting(b, "- At the sheet's large step"));
+}
+
+TEST(Spearman, KnownValues) {
+  EXPECT_DOUBLE_EQ(spearman({1, 2, 3, 4}, {10, 20, 30, 40}), 1.0);
+  EXPECT_DOUBLE_EQ(spearman({1, 2, 3, 4}, {4, 3, 2, 1}), -1.0);
+  // ties and infinities: ranks (1.5, 1.5, 3, 4) against (1, 2, 3.5, 3.5)
+  const double rho = spearman({1, 1, 2, INFINITY}, {0.1, 0.2, INFINITY, INFINITY});
+  // Pearson of the ranks about their mean 2.5: deviations (-1, -1, 0.5, 1.5) and (-1.5, -0.5, 1, 1);
+  // products 1.5 + 0.5 + 0.5 + 1.5 = 4; sums of squares 4.5 and 4.5: rho = 4 / 4.5
+  EXPECT_NEAR(rho, 4.0 / 4.5, 1e-12);
+}
+
+TEST(ReportConfigJson, DefaultsRoundTripAndOverrides) {
+  const auto defaults = report_config_json(default_report_config());
+  EXPECT_EQ(report_config_json(report_config_from_json(defaults)).dump(), defaults.dump());
+  const ReportConfig c = report_config_from_json(nlohmann::ordered_json::parse(R"({"spring": {"damping": 0.3}, "threads": 1})"));
+  EXPECT_DOUBLE_EQ(c.spring[2], 0.3);
+  EXPECT_EQ(c.threads, 1u);
+  EXPECT_DOUBLE_EQ(c.spring[1], 5.0);  // the rest stays default
+}
+
+TEST(ReportConfigJson, RefusesBadConfigs) {
+  for (const char* bad : {R"({"spring": {"stifness": 3}})", R"({"sprung": {}})", R"({"spring": {"damping": "a lot"}})",
+                          R"({"spring": {"mass": 0}})", R"({"stability": {"sweep_dts": []}})", R"({"convergence": {"points": 2.5}})",
+                          R"({"convergence": {"dt_min": 0.5, "dt_max": 0.1}})", R"([1, 2])", R"({"convergence": {"timing": 1}})"}) {
+    EXPECT_THROW(report_config_from_json(nlohmann::ordered_json::parse(bad)), UsageError) << bad;
+  }
+}
+
+}  // namespace
+}  // namespace steplab
