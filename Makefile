@@ -6,7 +6,7 @@ ifdef CI
 CMAKE_FLAGS += -DSTEPLAB_WERROR=ON
 endif
 
-.PHONY: all build test report bench test-sanitize clean deps
+.PHONY: all build test report bench test-sanitize fuzz clean deps
 
 all: build
 
@@ -33,5 +33,22 @@ bench: build
 	@echo "wrote $(BUILD)/bench.json and $(BUILD)/bench-ratios.md"
 
 
+# The whole suite under AddressSanitizer and UndefinedBehaviorSanitizer, in its own build folder.
+test-sanitize: deps
+	@tools/install-deps test
+	@cmake -S . -B $(BUILD)-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSTEPLAB_SANITIZE=ON -DSTEPLAB_BUILD_BENCH=OFF $(CMAKE_FLAGS) >/dev/null
+	@cmake --build $(BUILD)-sanitize -j $(JOBS)
+	@cd $(BUILD)-sanitize && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS)
+
+# libFuzzer over the command line and the report configuration, 60 s from tests/fuzz/corpus
+# (new inputs go to $(BUILD)-fuzz/corpus; the kept corpus is not changed).
+FUZZ_SECONDS ?= 60
+fuzz:
+	@tools/install-deps fuzz
+	@CXX=clang++ cmake -S . -B $(BUILD)-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSTEPLAB_FUZZ=ON -DSTEPLAB_BUILD_TESTS=OFF -DSTEPLAB_BUILD_BENCH=OFF >/dev/null
+	@cmake --build $(BUILD)-fuzz -j $(JOBS) --target steplab_fuzz
+	@mkdir -p $(BUILD)-fuzz/corpus
+	@$(BUILD)-fuzz/steplab_fuzz -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 -close_fd_mask=3 $(BUILD)-fuzz/corpus tests/fuzz/corpus
+
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) $(BUILD)-sanitize $(BUILD)-fuzz

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <exception>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
@@ -17,6 +18,13 @@ namespace steplab {
 // seconds since the work began; the front end shows progress with it. Null: nothing shown.
 using ProgressHook = void (*)(std::size_t done, std::size_t total, double seconds);
 inline ProgressHook progress_hook = nullptr;
+
+// Set (from a signal handler) to stop the work: no task starts after it, and parallel_for
+// throws Interrupted once the running tasks are done.
+inline std::atomic<bool> stop_requested{false};
+struct Interrupted : std::runtime_error {
+  Interrupted() : std::runtime_error("interrupted") {}
+};
 
 // 0 means all cores.
 inline unsigned resolve_threads(unsigned requested) {
@@ -34,6 +42,10 @@ template <class Task> void parallel_for(std::size_t n, unsigned threads, Task&& 
   const auto start = std::chrono::steady_clock::now();
   const auto worker = [&] {
     for (std::size_t i; (i = next.fetch_add(1)) < n;) {
+      if (stop_requested) {
+        next = n;
+        break;
+      }
       try {
         task(i);
         if (progress_hook) {
@@ -52,6 +64,7 @@ template <class Task> void parallel_for(std::size_t n, unsigned threads, Task&& 
   worker();
   for (auto& th : pool) th.join();
   if (error) std::rethrow_exception(error);
+  if (stop_requested) throw Interrupted();
 }
 
 }  // namespace steplab

@@ -85,6 +85,13 @@ template <Scene S> Vec<S::dim> acceleration(const S& s, const Vec<S::dim>& x, co
   return s.force(x, v).cwiseProduct(s.inverse_mass());
 }
 
+// Whether the scene has a parameter of that name.
+template <Scene S> bool has_param(std::string_view name) {
+  for (const ParamSpec& p : S::params)
+    if (p.name == name) return true;
+  return false;
+}
+
 // The scene's default parameter values, in table order.
 template <Scene S> auto default_params() {
   std::array<double, S::params.size()> p{};

@@ -66,6 +66,7 @@ int legacy_command(const LegacyArgs& l) {
     c.params = run.scene.values(run.scene.scene_index());
     c.step = parse_number("-step", l.step, Bound::Positive);
     c.methods = resolve_methods("", false);
+    if (dry_run) return 0;
     std::fputs(local_error_tables(local_error_study(c)).c_str(), stdout);
     return 0;
   }

@@ -8,6 +8,13 @@
 
 namespace steplab {
 
+// Set by the fuzzer: every command checks its input and stops there, running nothing.
+inline bool dry_run = false;
+
+// Called by each command once its input is checked: true in a dry run (stop); otherwise refuses
+// an output path that cannot be written, before any work is done.
+bool stop_after_validation(const std::string& output_path);
+
 struct RunArgs {
   SceneArgs scene;
   std::string method = "explicit_euler";

@@ -3,11 +3,14 @@
 #include "reports/report.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
 #include <sys/stat.h>
 #include <sys/utsname.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -18,6 +21,7 @@
 
 #include <fmt/format.h>
 
+#include "analysis/parallel.hpp"
 #include "core/scenes.hpp"
 #include "reports/gnuplot_scripts.hpp"
 #include "reports/output.hpp"
@@ -184,7 +188,10 @@ std::string report_markdown(const ReportData& d, const Findings& f, const std::s
   md += fig(6, "fig6_maps", "measured stable (dark) and unstable (light) steps over (dt, damping), predicted boundary dt* (line)");
 
   md += "## Cost\n\n";
-  md += fig(7, "fig7_work_precision", "work-precision on the spring: final error against the measured run time (integration only)");
+  if (c.timing)
+    md += fig(7, "fig7_work_precision", "work-precision on the spring: final error against the measured run time (integration only)");
+  else
+    md += "Work-precision (figure 7) is left out: the configuration turned timing off (`convergence.timing`).\n\n";
 
   md += "## Collision\n\n";
   md += fmt::format("The undamped bounce (dropped from y = 0 onto the penalty ground y = -1; {}) and the falling triangle ({}), "
@@ -329,10 +336,40 @@ void write_figure_data(const ReportData& d, const DataDir& dat) {
   }
 }
 
+// Runs `sh -c cmd` with its output discarded and returns its exit status. Not std::system:
+// that ignores SIGINT in the caller while the child runs, and an interrupt must not be lost.
 int run_quiet(const std::string& cmd) {
-  const int raw = std::system((cmd + " >/dev/null 2>&1").c_str());
-  return raw == -1 ? -1 : WEXITSTATUS(raw);
+  posix_spawn_file_actions_t io;
+  posix_spawn_file_actions_init(&io);
+  posix_spawn_file_actions_addopen(&io, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&io, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  const std::string full = cmd;
+  const char* argv[] = {"/bin/sh", "-c", full.c_str(), nullptr};
+  pid_t pid = 0;
+  const int err = posix_spawn(&pid, "/bin/sh", &io, nullptr, const_cast<char* const*>(argv), environ);
+  posix_spawn_file_actions_destroy(&io);
+  if (err != 0) return -1;
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (stop_requested) throw Interrupted();
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
+
+// Staging folders left by a run that was killed (SIGKILL cannot be handled): removed when the
+// process that made them is gone.
+void remove_stale_staging(const fs::path& out) {
+  const std::string prefix = fmt::format(".{}.staging-", out.filename().string());
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(out.parent_path(), ec)) {
+    const std::string n = entry.path().filename().string();
+    if (n.rfind(prefix, 0) != 0) continue;
+    const pid_t pid = static_cast<pid_t>(std::atol(n.c_str() + prefix.size()));
+    if (pid > 0 && kill(pid, 0) != 0 && errno == ESRCH) fs::remove_all(entry.path(), ec);
+  }
+}
+
+extern "C" void on_interrupt(int) { stop_requested = true; }
 
 std::string machine_footer() {
   std::string cpu = "unknown CPU";
@@ -379,16 +416,24 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force) 
     std::fprintf(stderr, "steplab: %s is up to date (same configuration, same binary); --force redoes it\n", out.c_str());
     return 0;
   }
+  remove_stale_staging(out);
   if (run_quiet("command -v gnuplot") != 0 || run_quiet("command -v pandoc") != 0 || run_quiet("command -v pdflatex") != 0)
     throw std::runtime_error("the report needs gnuplot, pandoc and pdflatex; run: tools/install-deps report");
 
   const fs::path staging = out.parent_path() / fmt::format(".{}.staging-{}", out.filename().string(), getpid());
+  // SIGINT and SIGTERM stop the work at the next task or tool; the staging folder is removed
+  // and the previous report stays as it was.
+  struct sigaction sa {};
+  sa.sa_handler = on_interrupt;
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
   fs::remove_all(staging);
   fs::create_directories(staging / "data");
   fs::create_directories(staging / "figures");
   try {
     const auto t0 = std::chrono::steady_clock::now();
     const ReportData d = run_report_studies(c);
+    if (stop_requested) throw Interrupted();
     const Findings f = compute_findings(d);
     const double study_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
@@ -404,6 +449,7 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force) 
     // Figures: each script twice, PNG for the Markdown and PDF (vector) for the PDF.
     const std::string all = method_words(d.methods), numeric = method_words(d.collision.config.methods);
     for (const GnuplotScript& gp : gnuplot_scripts) {
+      if (gp.name == "fig7_work_precision" && !c.timing) continue;  // no timings, no work-precision
       DataDir(staging / "figures").write(std::string(gp.name) + ".gp", std::string(gp.text));
       for (const char* fmt_name : {"png", "pdf"}) {
         const std::string cmd = fmt::format(
@@ -424,6 +470,7 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force) 
     if (run_quiet(pandoc) != 0) throw std::runtime_error("pandoc could not make report.pdf (rerun it by hand to see why)");
     fs::remove(staging / "report-pdf.md");
     data.write("stamp", stamp);
+    if (stop_requested) throw Interrupted();
   } catch (...) {
     fs::remove_all(staging);
     throw;

@@ -35,6 +35,12 @@ std::size_t resolve_method(std::string_view name) {
   return *m;
 }
 
+bool stop_after_validation(const std::string& output_path) {
+  if (dry_run) return true;
+  if (!output_path.empty()) check_writable(output_path);
+  return false;
+}
+
 int run_command(RunArgs& a) {
   const std::size_t scene = a.scene.scene_index();
   const std::size_t method = resolve_method(a.method);
@@ -44,7 +50,7 @@ int run_command(RunArgs& a) {
   const double t_end = parse_number("--t-end", a.t_end, Bound::NonNegative);
   spec.steps = step_count(t_end, spec.dt);
   spec.max_samples = parse_count("--samples", a.samples, 2, 100'000'000);
-  if (!a.json.empty()) check_writable(a.json);
+  if (stop_after_validation(a.json)) return 0;
 
   return with_scene(scene, [&]<class S>() {
     const S s(params);

@@ -45,8 +45,7 @@ std::vector<double> SceneArgs::values(std::size_t index) const {
   return with_scene(index, [&]<class S>() {
     for (const auto& [name, value] : text) {
       if (!given(name)) continue;
-      const bool known = std::any_of(S::params.begin(), S::params.end(), [&](const ParamSpec& p) { return p.name == name; });
-      if (!known) {
+      if (!has_param<S>(name)) {
         std::string list;
         for (const ParamSpec& p : S::params) list += (list.empty() ? "--" : ", --") + std::string(p.name);
         throw UsageError(fmt::format("--{} does not apply to scene {}; accepted: {}", name, S::name, list));

@@ -59,7 +59,7 @@ int convergence_command(ConvergenceArgs& a) {
   c.timing = a.timing;
   if (sweep_steps(c.t_end, c.dt_max, c.dt_min, c.points).size() < 3)
     throw UsageError("--dt-max, --dt-min and --t-end leave fewer than 3 distinct steps; accepted: a wider range");
-  if (!a.json.empty()) check_writable(a.json);
+  if (stop_after_validation(a.json)) return 0;
 
   const ConvergenceResult r = convergence_study(c);
   std::fputs(convergence_table(r).c_str(), stdout);
@@ -114,7 +114,7 @@ int damping_command(StabilityArgs& a) {
   StabilityConfig c = stability_config(a);
   c.sweep_dts = number_list("--dts", a.dts, Bound::Positive);
   if (!a.dampings.empty()) c.sweep_dampings = number_list("--dampings", a.dampings, Bound::NonNegative);
-  if (!a.json.empty()) check_writable(a.json);
+  if (stop_after_validation(a.json)) return 0;
   const std::vector<SweepRow> rows = damping_sweep(c);
   std::fputs(sweep_table(rows).c_str(), stdout);
   if (!a.json.empty()) write_atomic(a.json, stability_json(c.params, {}, rows, nullptr).dump(1) + "\n");
@@ -130,7 +130,7 @@ int stability_command(StabilityArgs& a) {
   c.map_dt_max = parse_number("--map-dt-max", a.map_dt_max, Bound::Positive);
   if (c.map_dt_min >= c.map_dt_max)
     throw UsageError(fmt::format("--map-dt-min {} is not below --map-dt-max {}; accepted: min < max", c.map_dt_min, c.map_dt_max));
-  if (!a.json.empty()) check_writable(a.json);
+  if (stop_after_validation(a.json)) return 0;
   const std::vector<ThresholdRow> rows = threshold_study(c);
   std::fputs(thresholds_table(rows).c_str(), stdout);
   const StabilityMap map = stability_map(c);
@@ -140,6 +140,7 @@ int stability_command(StabilityArgs& a) {
 }
 
 int amplitude_command(const std::vector<double>& spring_params, double step) {
+  if (dry_run) return 0;
   std::vector<std::size_t> methods = resolve_methods("", true);
   std::rotate(methods.begin(), methods.end() - 1, methods.end());  // the analytic column first
   const AmplitudeTable t = amplitude_table(spring_params, methods, step, 10);
@@ -164,8 +165,7 @@ int collision_command(CollisionArgs& a) {
     const std::size_t index = only.scene_index();
     return with_scene(index, [&]<class S>() {
       for (auto& [name, text] : only.text)
-        if (std::none_of(S::params.begin(), S::params.end(), [&](const ParamSpec& p) { return p.name == name; }))
-          text.clear();
+        if (!has_param<S>(name)) text.clear();
       only.app = nullptr;
       return only.values(index);
     });
@@ -184,7 +184,7 @@ int collision_command(CollisionArgs& a) {
   for (double dt : c.dts) step_count(c.t_end, dt);
   step_count(c.t_end, c.triangle_dt);
   c.threads = resolve_thread_count(a.threads);
-  if (!a.json.empty()) check_writable(a.json);
+  if (stop_after_validation(a.json)) return 0;
   const CollisionResult r = collision_study(c);
   std::fputs(collision_table(r).c_str(), stdout);
   if (!a.json.empty()) write_atomic(a.json, collision_json(r).dump(1) + "\n");
@@ -204,6 +204,7 @@ int report_command(ReportArgs& a) {
     return 0;
   }
   if (a.out.empty()) throw UsageError("--out is empty; accepted: a folder path");
+  if (dry_run) return 0;
   check_writable((std::filesystem::path(a.out).parent_path().empty() ? std::filesystem::path(".")
                                                                      : std::filesystem::path(a.out).parent_path()) /
                  ".steplab-write-check");

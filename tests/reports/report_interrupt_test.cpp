@@ -1,0 +1,100 @@
+// Stops `steplab report` midway (SIGINT, then SIGKILL) and checks that the previous report is
+// intact, byte for byte, and that no half-made folder is left behind (after SIGKILL, the next
+// run removes it). Needs gnuplot, pandoc and LaTeX (tools/install-deps test).
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <thread>
+
+#include "cli_helpers.hpp"
+
+namespace steplab {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::map<std::string, std::string> snapshot(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file()) files[fs::relative(e.path(), dir).string()] = slurp(e.path().string());
+  return files;
+}
+
+int staging_folders(const fs::path& parent) {
+  int n = 0;
+  for (const auto& e : fs::directory_iterator(parent)) n += e.path().filename().string().find(".staging-") != std::string::npos;
+  return n;
+}
+
+// Starts steplab report and sends `sig` after `after`; returns the raw wait status.
+int interrupted_report(const std::string& config, const std::string& out, int sig, std::chrono::milliseconds after) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    execl(STEPLAB_EXE, STEPLAB_EXE, "report", "--force", "--config", config.c_str(), "--out", out.c_str(), (char*)nullptr);
+    _exit(127);
+  }
+  std::this_thread::sleep_for(after);
+  kill(pid, sig);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return status;
+}
+
+TEST(ReportInterrupted, PreviousReportStaysIntact) {
+  TempDir dir;
+  const std::string config = dir.path("small.json"), out = dir.path("report");
+  // Small studies (about a second), then gnuplot and pandoc.
+  std::ofstream(config) << R"({"convergence": {"points": 8, "dt_min": 0.001, "timing": false},
+                               "stability": {"map_dt_points": 16, "map_damping_points": 16},
+                               "collision": {"t_end": 2}, "figures": {"energy_t_end": 10}})";
+  const Result first = run_steplab("report --config " + config + " --out " + out);
+  ASSERT_EQ(first.status, 0) << first.err;
+  const auto before = snapshot(out);
+  ASSERT_TRUE(before.count("report.pdf") && before.count("report.md") && before.count("data/stability.json"));
+
+  int interrupted = 0;
+  for (int ms : {300, 1500}) {  // during the studies, and during the figures
+    const int status = interrupted_report(config, out, SIGINT, std::chrono::milliseconds(ms));
+    ASSERT_TRUE(WIFEXITED(status)) << "SIGINT at " << ms << " ms";
+    if (WEXITSTATUS(status) == 0) continue;  // it finished first: a complete new report, also fine
+    EXPECT_EQ(WEXITSTATUS(status), 130) << ms;
+    ++interrupted;
+    EXPECT_EQ(snapshot(out), before) << "SIGINT at " << ms << " ms changed the report";
+    EXPECT_EQ(staging_folders(dir.root()), 0);
+  }
+
+  EXPECT_GE(interrupted, 1);  // the report takes seconds: a signal at 300 ms stops it
+
+  const int killed = interrupted_report(config, out, SIGKILL, std::chrono::milliseconds(500));
+  ASSERT_TRUE(WIFSIGNALED(killed));
+  EXPECT_EQ(snapshot(out), before) << "SIGKILL changed the report";
+  EXPECT_EQ(staging_folders(dir.root()), 1);  // what the killed run left; the next run removes it
+
+  const Result again = run_steplab("report --force --config " + config + " --out " + out);
+  ASSERT_EQ(again.status, 0) << again.err;
+  EXPECT_EQ(staging_folders(dir.root()), 0);
+  EXPECT_TRUE(fs::exists(fs::path(out) / "report.pdf"));
+}
+
+TEST(ReportUpToDate, SecondRunDoesNothing) {
+  TempDir dir;
+  const std::string config = dir.path("small.json"), out = dir.path("report");
+  std::ofstream(config) << R"({"convergence": {"points": 6, "dt_min": 0.001, "timing": false},
+                               "stability": {"map_dt_points": 4, "map_damping_points": 4},
+                               "collision": {"t_end": 1}, "figures": {"energy_t_end": 5}})";
+  ASSERT_EQ(run_steplab("report --config " + config + " --out " + out).status, 0);
+  const auto before = snapshot(out);
+  const Result again = run_steplab("report --config " + config + " --out " + out);
+  EXPECT_EQ(again.status, 0);
+  EXPECT_NE(again.err.find("up to date"), std::string::npos) << again.err;
+  EXPECT_EQ(snapshot(out), before);
+}
+
+}  // namespace
+}  // namespace steplab
