@@ -11,7 +11,7 @@ OrderFit fit_order(std::span<const ErrorPoint> points) {
   std::vector<ErrorPoint> kept;
   bool any_diverged = false;
   for (const ErrorPoint& p : points) {
-    if (p.diverged || !std::isfinite(p.error)) any_diverged = true;
+    if (p.diverged || !std::isfinite(p.error)) any_diverged = true, ++out.diverged_skipped;
     else if (p.error > p.floor) kept.push_back(p);
   }
   if (kept.empty()) {

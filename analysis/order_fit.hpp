@@ -45,6 +45,7 @@ struct OrderFit {
   std::vector<double> local_slopes;  // pairwise orders over the kept points, by decreasing dt
   double extrapolated = 0;   // Aitken delta-squared limit of the local slopes (NaN if not defined)
   std::string note;          // why there is no order, if there is none
+  int diverged_skipped = 0;  // diverged runs (non-finite state) left out of the fit
 };
 
 inline constexpr double kSettleTolerance = 0.01;   // local slopes within 1 % of the reference

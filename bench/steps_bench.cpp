@@ -66,7 +66,30 @@ template <class M> void register_undamped_step() {
   });
 }
 
+// The cost of detecting a blow-up: the same stepping loop with and without the check that run()
+// makes after every step (all_finite on x and v).
+template <class S, class M, bool Check> void register_finite_check() {
+  const std::string name = "finite_check/" + std::string(S::name) + "/" + std::string(M::info.name) + (Check ? "/on" : "/off");
+  benchmark::RegisterBenchmark(name.c_str(), [](benchmark::State& st) {
+    const S scene = make_default_scene<S>();
+    State<S::dim> y = scene.initial();
+    int n = 0;
+    for (auto _ : st) {
+      M::step(scene, y, n * kDt, kDt);
+      if constexpr (Check) {
+        if (!all_finite(y)) st.SkipWithError("non-finite state");
+      }
+      benchmark::DoNotOptimize(y);
+      if (++n == kRestart) n = 0, y = scene.initial();
+    }
+  });
+}
+
 void register_steplab() {
+  register_finite_check<Spring, ExplicitEuler, true>();
+  register_finite_check<Spring, ExplicitEuler, false>();
+  register_finite_check<Falling, Rk4, true>();
+  register_finite_check<Falling, Rk4, false>();
   register_undamped_step<VelocityVerlet>();
   register_undamped_step<SymplecticEuler>();
   [&]<std::size_t... I>(std::index_sequence<I...>) {
@@ -282,6 +305,13 @@ int main(int argc, char** argv) {
   benchmark::Shutdown();
   const std::string table = ratio_table(reporter.ns_per_step);
   std::printf("\nTime per step, median of the repetitions (ratios < 1: steplab is faster)\n\n%s", table.c_str());
+  for (const auto& [name, ns] : reporter.ns_per_step) {
+    if (name.rfind("finite_check/", 0) != 0 || name.size() < 3 || name.substr(name.size() - 3) != "/on") continue;
+    const auto off = reporter.ns_per_step.find(name.substr(0, name.size() - 3) + "/off");
+    if (off != reporter.ns_per_step.end())
+      std::printf("%s: %.2f ns with the non-finite check, %.2f ns without (%+.1f %%)\n", name.substr(13, name.size() - 16).c_str(),
+                  ns, off->second, 100 * (ns / off->second - 1));
+  }
   if (!ratios_path.empty()) std::ofstream(ratios_path) << table;
   return 0;
 }

@@ -175,6 +175,15 @@ std::string report_markdown(const ReportData& d, const Findings& f, const std::s
                     "(Aitken's delta-squared on the local slopes) estimates the limit the slopes approach.\n\n",
                     d.conv_spring.dts.size(), c.conv_dt_max, c.conv_dt_min, c.conv_t_end);
   md += fig(3, "fig3_convergence", "error against dt on the spring, fitted slopes (solid) and reference slopes 1, 2, 4 (dashed)");
+  {
+    int diverged = 0, runs = 0;
+    for (const ConvergenceResult* r : {&d.conv_spring, &d.conv_cannonball, &d.conv_bounce})
+      for (const ConvergenceRecord& rec : r->records) diverged += rec.status != RunStatus::Ok, ++runs;
+    md += diverged == 0 ? fmt::format("All {} runs of the convergence studies stayed finite.\n\n", runs)
+                        : fmt::format("{} of the {} runs of the convergence studies diverged (a non-finite state, recorded "
+                                      "with its step in `data/`); they are left out of the fits and of figure 3.\n\n",
+                                      diverged, runs);
+  }
   md += "Spring:\n\n" + fits_table(d.conv_spring) + "\nCannon ball (constant acceleration):\n\n" + fits_table(d.conv_cannonball);
   md += "\n";
 
@@ -183,6 +192,14 @@ std::string report_markdown(const ReportData& d, const Findings& f, const std::s
   for (const ThresholdRow& r : d.thresholds)
     md += fmt::format("| `{}` | {} | {} | {} |\n", name(r.method), r.damping, dt_text(r.dt_theory), dt_text(r.dt_measured));
   md += "\n";
+  {
+    std::string ended;
+    for (std::size_t i = 0; i < d.energy.size(); ++i)
+      if (d.energy[i].status != RunStatus::Ok)
+        ended += fmt::format("{}`{}` at t = {:g}", ended.empty() ? "" : ", ", name(d.methods[i]), d.energy[i].failed_t);
+    if (!ended.empty())
+      md += fmt::format("In figure 4 the curves of runs that diverged end where they did: {}.\n\n", ended);
+  }
   md += fig(4, "fig4_energy", fmt::format("energy ratio E/E0 against time without damping at dt {} (log scale)", c.large_dt));
   md += fig(5, "fig5_damping", fmt::format("energy growth rate against damping at dt {}: measured (points), predicted 2 ln(rho)/h (lines)", c.large_dt));
   md += fig(6, "fig6_maps", "measured stable (dark) and unstable (light) steps over (dt, damping), predicted boundary dt* (line)");

@@ -71,6 +71,7 @@ Json convergence_json(const ConvergenceResult& r) {
     }
     e["order_extrapolated"] = f.fit.fitted ? number_or_null(f.fit.extrapolated) : Json(nullptr);
     e["local_orders"] = f.fit.local_slopes;
+    e["diverged_skipped"] = f.fit.diverged_skipped;
     e["note"] = f.fit.note;
     fits.push_back(std::move(e));
   }
@@ -98,6 +99,8 @@ std::string convergence_table(const ConvergenceResult& r) {
   }
   out += fmt::format("\n{:<18} {:>8} {:>8} {:>20} {:>9} {:>6} {:>21} {:>12}\n", "method", "declared", "order",
                      "95% interval", "R^2", "points", "dt range", "extrapolated");
+  int skipped = 0;
+  for (const auto& f : r.fits) skipped += f.fit.diverged_skipped;
   for (const auto& f : r.fits) {
     const MethodInfo& info = method_infos[f.method];
     const std::string declared = info.exact_flow ? "exact" : std::to_string(info.order);
@@ -112,6 +115,7 @@ std::string convergence_table(const ConvergenceResult& r) {
                          fmt::format("{:.3g} .. {:.3g}", f.fit.dt_lo, f.fit.dt_hi), f.fit.extrapolated);
     }
   }
+  if (skipped > 0) out += fmt::format("\n{} diverged runs (marked 'diverged' above) are left out of the fits.\n", skipped);
   return out;
 }
 

@@ -53,6 +53,19 @@ inline Result run_steplab(const std::string& args) {
   return r;
 }
 
+// Runs `steplab <args>` with `dir` as its working directory.
+inline Result run_steplab_in(const std::string& dir, const std::string& args) {
+  TempDir io;
+  const std::string cmd = "cd '" + dir + "' && " + std::string(STEPLAB_EXE) + " " + args + " </dev/null >" + io.path("out") +
+                          " 2>" + io.path("err");
+  const int raw = std::system(cmd.c_str());
+  Result r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  r.out = slurp(io.path("out"));
+  r.err = slurp(io.path("err"));
+  return r;
+}
+
 inline std::vector<std::string> split_lines(const std::string& s) {
   std::vector<std::string> lines;
   std::stringstream in(s);

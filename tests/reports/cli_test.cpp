@@ -86,48 +86,6 @@ TEST(Cli, HelpListsEveryOption) {
     EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
 }
 
-struct BadInput {
-  const char* args;
-  const char* names;  // the message must name this input
-  bool json = true;   // append --json FILE (the old flags have no --json)
-};
-
-std::string bad_input_name(const ::testing::TestParamInfo<BadInput>& info) {
-  std::string name = std::to_string(info.index) + "_";
-  for (const char* c = info.param.args; *c; ++c) name += std::isalnum(static_cast<unsigned char>(*c)) ? *c : '_';
-  return name;
-}
-
-class CliBadInput : public ::testing::TestWithParam<BadInput> {};
-
-TEST_P(CliBadInput, OneLineExitTwoNoFile) {
-  TempDir dir;
-  const std::string out = dir.path("bad.json");
-  const Result r = run_steplab(std::string(GetParam().args) + (GetParam().json ? " --json " + out : ""));
-  EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(split_lines(r.err).size(), 1u) << r.err;
-  EXPECT_NE(r.err.find(GetParam().names), std::string::npos) << r.err;
-  EXPECT_TRUE(r.out.empty());
-  EXPECT_TRUE(dir.empty());
-}
-
-INSTANTIATE_TEST_SUITE_P(
-    Run, CliBadInput,
-    ::testing::Values(BadInput{"run --scene pendulum", "pendulum"}, BadInput{"run --method heun", "heun"},
-                      BadInput{"run --frobnicate 3", "--frobnicate"}, BadInput{"run --dt 0", "--dt"},
-                      BadInput{"run --dt -0.1", "--dt"}, BadInput{"run --dt nan", "--dt"},
-                      BadInput{"run --dt inf", "--dt"}, BadInput{"run --dt abc", "--dt"},
-                      BadInput{"run --mass 0", "--mass"}, BadInput{"run --mass -1", "--mass"},
-                      BadInput{"run --stiffness -5", "--stiffness"}, BadInput{"run --damping -0.1", "--damping"},
-                      BadInput{"run --rest-length -1", "--rest-length"}, BadInput{"run --t-end -1", "--t-end"},
-                      BadInput{"run --gravity -inf", "--gravity"}, BadInput{"run --dt 1e-12 --t-end 1e6", "steps"},
-                      BadInput{"run --scene cannonball --stiffness 3", "--stiffness"},
-                      BadInput{"run --samples 1", "--samples"}, BadInput{"-testcase nosuch", "nosuch", false},
-                      BadInput{"-testcase spring1d -step -1", "-step", false},
-                      BadInput{"-testcase spring1d -stiff -1", "-stiff", false},
-                      BadInput{"-method nosuch", "nosuch", false}),
-    bad_input_name);
-
 TEST(Cli, UnwritableOutputIsRefused) {
   const Result r = run_steplab("run --json /nonexistent-dir/out.json");
   EXPECT_EQ(r.status, 2);

@@ -1,0 +1,111 @@
+// Every bad input, across the command line and the report's configuration file, gets one line
+// on stderr naming the input, exit status 2, nothing on stdout, and leaves no new or changed file.
+// Each case runs in its own empty folder (its working directory), holding only the files the
+// case provides, which must come out unchanged.
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include "cli_helpers.hpp"
+
+namespace steplab {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct BadInput {
+  const char* args;        // {dir} is replaced by the case's folder
+  const char* names;       // the message must contain this
+  const char* file = "";   // written to {dir}/config.json first, if not empty
+};
+
+std::map<std::string, std::string> snapshot(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) files[e.path().string()] = e.is_regular_file() ? slurp(e.path().string()) : "<dir>";
+  return files;
+}
+
+std::string replace_dir(std::string s, const std::string& dir) {
+  for (std::size_t at; (at = s.find("{dir}")) != std::string::npos;) s.replace(at, 5, dir);
+  return s;
+}
+
+class BadInputs : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(BadInputs, OneLineExitTwoNothingWritten) {
+  const BadInput& in = GetParam();
+  TempDir dir;
+  if (*in.file) std::ofstream(dir.path("config.json")) << in.file;
+  const auto before = snapshot(dir.root());
+  const Result r = run_steplab_in(dir.root(), replace_dir(in.args, dir.root()));
+  EXPECT_EQ(r.status, 2) << in.args << "\n" << r.err;
+  const auto lines = split_lines(r.err);
+  ASSERT_EQ(lines.size(), 1u) << in.args << "\n" << r.err;
+  EXPECT_NE(lines[0].find(in.names), std::string::npos) << in.args << ": " << lines[0];
+  EXPECT_EQ(lines[0].rfind("steplab: ", 0), 0u) << lines[0];
+  EXPECT_TRUE(r.out.empty()) << in.args;
+  EXPECT_EQ(snapshot(dir.root()), before) << in.args << " wrote or changed a file";
+}
+
+std::string case_name(const ::testing::TestParamInfo<BadInput>& info) {
+  std::string name = std::to_string(info.index) + "_";
+  for (const char* c = info.param.args; *c && name.size() < 60; ++c) name += std::isalnum(static_cast<unsigned char>(*c)) ? *c : '_';
+  return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    CliAndConfig, BadInputs,
+    ::testing::Values(
+        // run: names
+        BadInput{"run --scene pendulum", "pendulum"}, BadInput{"run --method heun", "heun"},
+        BadInput{"run --frobnicate 3", "--frobnicate"}, BadInput{"frobnicate", "frobnicate"},
+        // run: numbers
+        BadInput{"run --dt 0", "--dt"}, BadInput{"run --dt -0.1", "--dt"}, BadInput{"run --dt nan", "--dt"},
+        BadInput{"run --dt inf", "--dt"}, BadInput{"run --dt -inf", "--dt"}, BadInput{"run --dt abc", "--dt"},
+        BadInput{"run --dt 1e400", "--dt"}, BadInput{"run --dt", "--dt"}, BadInput{"run --mass 0", "--mass"},
+        BadInput{"run --mass -1", "--mass"}, BadInput{"run --stiffness -5", "--stiffness"},
+        BadInput{"run --stiffness 0", "--stiffness"}, BadInput{"run --damping -0.1", "--damping"},
+        BadInput{"run --rest-length -1", "--rest-length"}, BadInput{"run --t-end -1", "--t-end"},
+        BadInput{"run --gravity -inf", "--gravity"}, BadInput{"run --dt 1e-12 --t-end 1e6", "steps"},
+        BadInput{"run --samples 1", "--samples"}, BadInput{"run --samples many", "--samples"},
+        // run: impossible combinations and outputs
+        BadInput{"run --scene cannonball --stiffness 3", "--stiffness"},
+        BadInput{"run --scene falling --method analytic", "analytic"},
+        BadInput{"run --json {dir}/no/such/folder/out.json", "no/such/folder"}, BadInput{"run --json {dir}", "directory"},
+        // the old flags
+        BadInput{"-testcase nosuch", "nosuch"}, BadInput{"-testcase spring1d -step -1", "-step"},
+        BadInput{"-testcase spring1d -stiff -1", "-stiff"}, BadInput{"-method nosuch", "nosuch"},
+        BadInput{"-testcase error_measurement -step 0", "-step"}, BadInput{"-testcase spring1d -mass nan", "-mass"},
+        // studies
+        BadInput{"study", "subcommand"}, BadInput{"study convergence --dt-min 0.2 --dt-max 0.1", "--dt-min"},
+        BadInput{"study convergence --points 2", "--points"}, BadInput{"study convergence --scene falling", "falling"},
+        BadInput{"study convergence --methods rk4,rk4", "rk4"}, BadInput{"study convergence --methods rk4,foo", "foo"},
+        BadInput{"study convergence --error median", "median"}, BadInput{"study convergence --dt-min 1e-12", "steps"},
+        BadInput{"study convergence --threads -1", "--threads"}, BadInput{"study convergence --dt-max 100", "--dt-max"},
+        BadInput{"study convergence --json {dir}/no/out.json", "no/out.json"},
+        BadInput{"study damping --dts 0.01,-0.05", "--dts"}, BadInput{"study damping --dampings 1,,2", "--dampings"},
+        BadInput{"study stability --map-dt-min 1 --map-dt-max 0.1", "--map-dt-min"},
+        BadInput{"study stability --threshold-dampings -1", "--threshold-dampings"},
+        BadInput{"study stability --map-dt-points 1", "--map-dt-points"}, BadInput{"study collision --dts 0", "--dts"},
+        BadInput{"study collision --rest-length 3", "--rest-length"}, BadInput{"study collision --t-end nan", "--t-end"},
+        // the report's configuration file
+        BadInput{"report --config {dir}/missing.json --out {dir}/r", "missing.json"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "not valid JSON", "{ not json"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "spring.damping", R"({"spring": {"damping": "lots"}})"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "sprung", R"({"sprung": {}})"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "dt_min", R"({"convergence": {"dt_min": 0.5, "dt_max": 0.1}})"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "points", R"({"convergence": {"points": 2}})"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "steps", R"({"collision": {"triangle_dt": 1e-12}})"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "spring.mass", R"({"spring": {"mass": -1}})"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "JSON object", "[]"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "sweep_dts", R"({"stability": {"sweep_dts": [0.01, "x"]}})"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "not valid JSON", R"({"spring": {"mass": NaN}})"},  // JSON has no NaN
+        BadInput{"report --out {dir}/no/such/report", "no/such"}),
+    case_name);
+
+
+}  // namespace
+}  // namespace steplab
