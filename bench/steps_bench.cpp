@@ -35,34 +35,28 @@ constexpr int kRestart = 10'000;
 
 // ---------------- steplab ----------------
 
+// One step of M on `scene`, timed; restarts from the initial state every kRestart steps.
+template <class M, class S> void step_loop(benchmark::State& st, const S& scene) {
+  State<S::dim> y = scene.initial();
+  int n = 0;
+  for (auto _ : st) {
+    M::step(scene, y, n * kDt, kDt);
+    benchmark::DoNotOptimize(y);
+    if (++n == kRestart) n = 0, y = scene.initial();
+  }
+  st.counters["steps_per_second"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
+}
+
 template <class S, class M> void register_step() {
   const std::string name = "step/" + std::string(S::name) + "/" + std::string(M::info.name);
-  benchmark::RegisterBenchmark(name.c_str(), [](benchmark::State& st) {
-    const S scene = make_default_scene<S>();
-    State<S::dim> y = scene.initial();
-    int n = 0;
-    for (auto _ : st) {
-      M::step(scene, y, n * kDt, kDt);
-      benchmark::DoNotOptimize(y);
-      if (++n == kRestart) n = 0, y = scene.initial();
-    }
-    st.counters["steps_per_second"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
-  });
+  benchmark::RegisterBenchmark(name.c_str(), [](benchmark::State& st) { step_loop<M>(st, make_default_scene<S>()); });
 }
 
 // The undamped spring: odeint's velocity_verlet and symplectic_euler take x'' = a(x) only.
 template <class M> void register_undamped_step() {
   const std::string name = "step/spring_undamped/" + std::string(M::info.name);
   benchmark::RegisterBenchmark(name.c_str(), [](benchmark::State& st) {
-    const Spring scene(std::array<double, 5>{1.0, 5.0, 0.0, 5.0, 9.81});
-    State<1> y = scene.initial();
-    int n = 0;
-    for (auto _ : st) {
-      M::step(scene, y, n * kDt, kDt);
-      benchmark::DoNotOptimize(y);
-      if (++n == kRestart) n = 0, y = scene.initial();
-    }
-    st.counters["steps_per_second"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
+    step_loop<M>(st, Spring(std::array<double, 5>{1.0, 5.0, 0.0, 5.0, 9.81}));
   });
 }
 

@@ -41,19 +41,7 @@ inline std::string slurp(const std::string& path) {
   return s.str();
 }
 
-// Runs `steplab <args>` through the shell, stdin from /dev/null.
-inline Result run_steplab(const std::string& args) {
-  TempDir io;
-  const std::string cmd = std::string(STEPLAB_EXE) + " " + args + " </dev/null >" + io.path("out") + " 2>" + io.path("err");
-  const int raw = std::system(cmd.c_str());
-  Result r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = slurp(io.path("out"));
-  r.err = slurp(io.path("err"));
-  return r;
-}
-
-// Runs `steplab <args>` with `dir` as its working directory.
+// Runs `steplab <args>` through the shell with `dir` as its working directory, stdin from /dev/null.
 inline Result run_steplab_in(const std::string& dir, const std::string& args) {
   TempDir io;
   const std::string cmd = "cd '" + dir + "' && " + std::string(STEPLAB_EXE) + " " + args + " </dev/null >" + io.path("out") +
@@ -65,6 +53,9 @@ inline Result run_steplab_in(const std::string& dir, const std::string& args) {
   r.err = slurp(io.path("err"));
   return r;
 }
+
+// Runs `steplab <args>` from the tests' own working directory.
+inline Result run_steplab(const std::string& args) { return run_steplab_in(".", args); }
 
 inline std::vector<std::string> split_lines(const std::string& s) {
   std::vector<std::string> lines;

@@ -15,6 +15,10 @@ namespace {
 std::atomic<long> g_allocations{0};
 }
 
+// The replacement pairs malloc with free throughout; GCC's -Wmismatched-new-delete cannot see
+// that operator new below is the one in use and warns on the deletes.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 void* operator new(std::size_t n) {
   ++g_allocations;
   if (void* p = std::malloc(n ? n : 1)) return p;
@@ -22,6 +26,7 @@ void* operator new(std::size_t n) {
 }
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#pragma GCC diagnostic pop
 
 namespace steplab {
 namespace {
