@@ -84,6 +84,24 @@ std::string params_text(std::size_t scene, const std::vector<double>& v) {
   });
 }
 
+// A shell command wrapped with backslash continuations, so it fits a printed page.
+std::string wrapped(const std::string& cmd) {
+  std::string out, line;
+  std::size_t start = 0;
+  while (start < cmd.size()) {
+    std::size_t next = cmd.find(" --", start + 1);
+    if (next == std::string::npos) next = cmd.size();
+    const std::string piece = cmd.substr(start, next - start);
+    if (!line.empty() && line.size() + piece.size() > 76) {
+      out += line + " \\\n   ";
+      line.clear();
+    }
+    line += piece;
+    start = next;
+  }
+  return out + line + "\n";
+}
+
 std::string words(const std::vector<double>& v) {  // gnuplot's word lists are space-separated
   std::string out;
   for (double x : v) out += fmt::format("{}{}", out.empty() ? "" : " ", x);
@@ -225,14 +243,15 @@ std::string report_markdown(const ReportData& d, const Findings& f, const std::s
 
   md += "## Reproduce\n\n```sh\n";
   md += "build/steplab report --config data/config.json   # this whole report\n";
-  md += fmt::format("build/steplab study convergence --scene spring --dt-max {} --dt-min {} --points {} --t-end {}{}\n",
-                    c.conv_dt_max, c.conv_dt_min, c.conv_points, c.conv_t_end, c.timing ? " --timing" : "");
-  md += fmt::format("build/steplab study stability --threshold-dampings {} --map-dt-points {} --map-damping-points {} "
-                    "--map-dt-min {} --map-dt-max {}\n", join(c.threshold_dampings), c.map_dt_points, c.map_damping_points,
-                    c.map_dt_min, c.map_dt_max);
-  md += fmt::format("build/steplab study damping --dts {}\n", join(c.sweep_dts));
-  md += fmt::format("build/steplab study collision --dts {} --t-end {} --triangle-dt {}\n```\n\n", join(c.collision_dts),
-                    c.collision_t_end, c.triangle_dt);
+  md += wrapped(fmt::format("build/steplab study convergence --scene spring --dt-max {} --dt-min {} --points {} --t-end {}{}",
+                            c.conv_dt_max, c.conv_dt_min, c.conv_points, c.conv_t_end, c.timing ? " --timing" : ""));
+  md += wrapped(fmt::format("build/steplab study stability --threshold-dampings {} --map-dt-points {} --map-damping-points {} "
+                            "--map-dt-min {} --map-dt-max {}", join(c.threshold_dampings), c.map_dt_points,
+                            c.map_damping_points, c.map_dt_min, c.map_dt_max));
+  md += wrapped(fmt::format("build/steplab study damping --dts {}", join(c.sweep_dts)));
+  md += wrapped(fmt::format("build/steplab study collision --dts {} --t-end {} --triangle-dt {}", join(c.collision_dts),
+                            c.collision_t_end, c.triangle_dt));
+  md += "```\n\n";
   md += "(with the scene parameters above as `--mass`, `--stiffness`, ... where they differ from the defaults). The data of "
         "every study is in `data/`.\n\n";
   md += "---\n\n" + footer + "\n";

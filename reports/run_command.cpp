@@ -70,8 +70,7 @@ int run_command(RunArgs& a) {
           write_atomic(a.json, run_json<S::dim>(S::name, M::info.name, std::move(p), r).dump(1) + "\n");
         }
         if (r.status != RunStatus::Ok)
-          std::fprintf(stderr, "steplab: %s %s at step %lld (t = %g)\n", M::info.name.data(), to_string(r.status),
-                       r.failed_step, r.failed_t);
+          fmt::print(stderr, "steplab: {} {} at step {} (t = {})\n", M::info.name, to_string(r.status), r.failed_step, r.failed_t);
         return 0;
       }
     });
