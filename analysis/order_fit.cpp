@@ -31,12 +31,15 @@ OrderFit fit_order(std::span<const ErrorPoint> points) {
   std::vector<double> tail(s.end() - std::min<std::ptrdiff_t>(3, static_cast<std::ptrdiff_t>(s.size())), s.end());
   std::sort(tail.begin(), tail.end());
   const double reference = tail[tail.size() / 2];
-  // Noise of the local slopes, from their second differences: a smooth trend hardly moves them,
-  // noise of standard deviation sigma makes them N(0, 6 sigma^2), whose median |.| is 0.6745 sqrt(6) sigma.
+  // Noise of the local slopes, from their second differences over the last six (at the smallest
+  // steps, where the range is anchored; further out a pre-asymptotic trend's curvature would pass
+  // for noise): a settling trend hardly moves them, noise of standard deviation sigma makes them
+  // N(0, 6 sigma^2), whose median |.| is 0.6745 sqrt(6) sigma.
   double sigma = 0;
   if (s.size() >= 3) {
     std::vector<double> d2;
-    for (std::size_t k = 0; k + 2 < s.size(); ++k) d2.push_back(std::abs(s[k + 2] - 2 * s[k + 1] + s[k]));
+    for (std::size_t k = s.size() - std::min<std::size_t>(s.size(), 6); k + 2 < s.size(); ++k)
+      d2.push_back(std::abs(s[k + 2] - 2 * s[k + 1] + s[k]));
     std::nth_element(d2.begin(), d2.begin() + d2.size() / 2, d2.end());
     sigma = d2[d2.size() / 2] / (0.6745 * std::sqrt(6.0));
   }
@@ -55,14 +58,15 @@ OrderFit fit_order(std::span<const ErrorPoint> points) {
     return out;
   }
   const std::size_t best_i = first;
-  if (s.size() - first >= 3) {
+  // Aitken's delta-squared presumes the local slopes approach their limit geometrically: their
+  // successive changes shrink by a ratio in (0, 1). Where noise set the tolerance, or the
+  // changes do not shrink, there is no trend to extrapolate and the estimate is left out.
+  out.extrapolated = std::numeric_limits<double>::quiet_NaN();
+  const bool noisy = kSettleNoiseFactor * sigma > kSettleTolerance * std::max(1.0, std::abs(reference));
+  if (s.size() - first >= 3 && !noisy) {
     const double s1 = s[s.size() - 3], s2 = s[s.size() - 2], s3 = s[s.size() - 1];
-    const double denom = (s3 - s2) - (s2 - s1);
-    // Aitken: p = s3 - (s3 - s2)^2 / ((s3 - s2) - (s2 - s1)); undefined without a geometric trend
-    out.extrapolated = denom != 0 && (s3 - s2) * (s2 - s1) > 0 ? s3 - (s3 - s2) * (s3 - s2) / denom
-                                                               : std::numeric_limits<double>::quiet_NaN();
-  } else {
-    out.extrapolated = std::numeric_limits<double>::quiet_NaN();
+    const double ratio = (s3 - s2) / (s2 - s1);
+    if (ratio > 0 && ratio < 1) out.extrapolated = s3 - (s3 - s2) * (s3 - s2) / ((s3 - s2) - (s2 - s1));
   }
   std::vector<double> lx, ly;
   for (std::size_t k = best_i; k < best_i + n_points; ++k) {

@@ -13,7 +13,8 @@
 //      larger steps are pre-asymptotic (the slope has not settled).
 //   4. Fit that range (at least 3 points): slope, 95 % interval (Student t), R^2.
 //   5. Extrapolated order: the local slopes approach the order like s(dt) = p + c dt^q; Aitken's
-//      delta-squared on the last three settled local slopes estimates the limit p.
+//      delta-squared on the last three settled local slopes estimates the limit p, where that
+//      trend is there to see (changes shrinking by a ratio in (0, 1), not noise).
 // SUNDIALS' ark_kepler --check-order also reports the pairwise orders; we keep them too.
 //
 // A caveat the report states: truncation error is smooth, not random. Over any window the
