@@ -53,7 +53,9 @@ template <HasExact S, class M> ConvergenceRecord one_run(const S& s, std::size_t
           roundoff_floor(scale, spec.steps)};
 }
 
-double pick(const ConvergenceRecord& r, ErrorKind k) {
+}  // namespace
+
+double error_of(const ConvergenceRecord& r, ErrorKind k) {
   switch (k) {
     case ErrorKind::Final: return r.error_final;
     case ErrorKind::Max: return r.error_max;
@@ -61,6 +63,8 @@ double pick(const ConvergenceRecord& r, ErrorKind k) {
   }
   return r.error_final;
 }
+
+namespace {
 
 // One run at a time (no other run competing for the core), the integration alone (what a user
 // pays; the exact solution evaluated for the errors would dominate a cheap method's time),
@@ -127,7 +131,7 @@ ConvergenceResult convergence_study(const ConvergenceConfig& config) {
     std::vector<ErrorPoint> pts;
     for (std::size_t i = 0; i < nd; ++i) {
       const ConvergenceRecord& r = out.records[m * nd + i];
-      pts.push_back({r.dt, pick(r, config.fit_error), r.floor, r.status != RunStatus::Ok});
+      pts.push_back({r.dt, error_of(r, config.fit_error), r.floor, r.status != RunStatus::Ok});
     }
     out.fits.push_back({config.methods[m], fit_order(pts)});
   }

@@ -54,6 +54,9 @@ struct ConvergenceResult {
   std::vector<ConvergenceFit> fits;
 };
 
+// The record's error of that kind (the one the order is fitted to).
+double error_of(const ConvergenceRecord& r, ErrorKind k);
+
 // Geometric sweep from dt_max down to dt_min; each dt adjusted so that t_end is a whole number
 // of steps (dt = t_end / n); duplicates (same n) dropped.
 std::vector<double> sweep_steps(double t_end, double dt_max, double dt_min, int points);

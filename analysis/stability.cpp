@@ -199,9 +199,11 @@ AmplitudeTable amplitude_table(const std::vector<double>& params, const std::vec
       spec.dt = h;
       spec.steps = n;
       spec.errors = false;
-      const RunResult<1> r = with_method(m, [&]<class M>() { return simulate<M>(s, spec); });
-      // |y - L| with y < 0 is |y| + L; the largest |y| reached, plus L
-      row.push_back(r.status == RunStatus::Ok ? r.max_abs_x + s.L : kInf);
+      // |y - L| with y < 0 is |y| + L: the largest |y| reached (from the rest start, |y| = L), plus L
+      double max_abs_y = s.L;
+      const auto observe = [&](long long, double, const State<1>& y) { max_abs_y = std::max(max_abs_y, std::abs(y.x[0])); };
+      const RunResult<1> r = with_method(m, [&]<class M>() { return simulate<M>(s, spec, observe); });
+      row.push_back(r.status == RunStatus::Ok ? max_abs_y + s.L : kInf);
     }
     t.amplitude.push_back(std::move(row));
   }

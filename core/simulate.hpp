@@ -62,7 +62,6 @@ template <int D> struct RunResult {
   double error_final = 0, error_max = 0, error_rms = 0, error_v_final = 0;
   double energy0 = 0, energy_ratio_final = 1, energy_ratio_max = 1;
   double energy_rate = std::numeric_limits<double>::quiet_NaN();  // d ln E / dt, least squares
-  double max_abs_x = 0;         // max over the run of the largest |x_i|
   std::vector<Sample<D>> samples;
 };
 
@@ -121,7 +120,6 @@ RunResult<S::dim> simulate(const S& scene, const RunSpec& spec, Observer&& obser
     }
   };
   keep(0, 0.0, y, e0);
-  r.max_abs_x = y.x.cwiseAbs().maxCoeff();
   if (spec.energy_rate) fit_point(0.0, e0);
 
   double err_sq_sum = 0;
@@ -147,7 +145,6 @@ RunResult<S::dim> simulate(const S& scene, const RunSpec& spec, Observer&& obser
       ratio_max = std::max(ratio_max, ratio);
     }
     if (spec.energy_rate) fit_point(t, e);
-    r.max_abs_x = std::max(r.max_abs_x, y.x.cwiseAbs().maxCoeff());
     if constexpr (HasExact<S>) {
       if (spec.errors) {
         const State<D> ex = tracker.at(t);

@@ -426,8 +426,6 @@ std::string machine_footer() {
 
 // What decides whether a report is up to date: the configuration and this very binary.
 std::string stamp_for(const ReportConfig& c) {
-  struct stat st {};
-  stat("/proc/self/exe", &st);
   char exe[4096] = {};
   const ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
   struct stat bin {};

@@ -55,7 +55,9 @@ struct Findings {
 
 Findings compute_findings(const ReportData& d);
 
-// Spearman's rho with average ranks for ties (+inf ranks above every finite value).
+// Ranks 1..n with ties sharing their average rank (+inf ranks above every finite value), and
+// Spearman's rho: the correlation of two such rankings.
+std::vector<double> average_ranks(const std::vector<double>& x);
 double spearman(const std::vector<double>& a, const std::vector<double>& b);
 
 std::string report_markdown(const ReportData& d, const Findings& f, const std::string& figure_ext,

@@ -7,6 +7,7 @@
 
 #include "core/scenes.hpp"
 #include "reports/inputs.hpp"
+#include "reports/run_json.hpp"
 
 namespace steplab {
 namespace {
@@ -16,16 +17,6 @@ using Json = nlohmann::ordered_json;
 template <class S> std::vector<double> defaults_of() {
   const auto p = default_params<S>();
   return {p.begin(), p.end()};
-}
-
-template <class S> Json scene_json(const std::vector<double>& v) {
-  Json j = Json::object();
-  for (std::size_t i = 0; i < S::params.size(); ++i) {
-    std::string key(S::params[i].name);
-    std::replace(key.begin(), key.end(), '-', '_');
-    j[key] = v[i];
-  }
-  return j;
 }
 
 std::string keys_of(const Json& j) {
@@ -79,11 +70,7 @@ int count(const Json& j, const std::string& path, int lo, int hi) {
 
 template <class S> std::vector<double> scene_values(const Json& j, const std::string& section) {
   std::vector<double> out;
-  for (const ParamSpec& p : S::params) {
-    std::string key(p.name);
-    std::replace(key.begin(), key.end(), '-', '_');
-    out.push_back(num(j[key], section + "." + key, p.bound));
-  }
+  for (const ParamSpec& p : S::params) out.push_back(num(j[param_key(p)], section + "." + param_key(p), p.bound));
   return out;
 }
 
@@ -100,10 +87,10 @@ ReportConfig default_report_config() {
 
 Json report_config_json(const ReportConfig& c) {
   Json j;
-  j["spring"] = scene_json<Spring>(c.spring);
-  j["cannonball"] = scene_json<Cannonball>(c.cannonball);
-  j["bounce"] = scene_json<Bounce>(c.bounce);
-  j["falling"] = scene_json<Falling>(c.falling);
+  j["spring"] = params_json<Spring>(c.spring);
+  j["cannonball"] = params_json<Cannonball>(c.cannonball);
+  j["bounce"] = params_json<Bounce>(c.bounce);
+  j["falling"] = params_json<Falling>(c.falling);
   j["convergence"] = {{"dt_max", c.conv_dt_max}, {"dt_min", c.conv_dt_min}, {"points", c.conv_points},
                       {"t_end", c.conv_t_end}, {"timing", c.timing}};
   j["stability"] = {{"threshold_dampings", c.threshold_dampings}, {"sweep_dts", c.sweep_dts},

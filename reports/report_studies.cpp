@@ -110,21 +110,22 @@ ReportData run_report_studies(const ReportConfig& c) {
   return d;
 }
 
+std::vector<double> average_ranks(const std::vector<double>& x) {
+  std::vector<std::size_t> idx(x.size());
+  std::iota(idx.begin(), idx.end(), 0);
+  std::sort(idx.begin(), idx.end(), [&](std::size_t i, std::size_t j) { return x[i] < x[j]; });
+  std::vector<double> r(x.size());
+  for (std::size_t i = 0; i < idx.size();) {
+    std::size_t j = i;
+    while (j + 1 < idx.size() && x[idx[j + 1]] == x[idx[i]]) ++j;
+    for (std::size_t k = i; k <= j; ++k) r[idx[k]] = 0.5 * static_cast<double>(i + j) + 1;
+    i = j + 1;
+  }
+  return r;
+}
+
 double spearman(const std::vector<double>& a, const std::vector<double>& b) {
-  const auto ranks = [](const std::vector<double>& x) {
-    std::vector<std::size_t> idx(x.size());
-    std::iota(idx.begin(), idx.end(), 0);
-    std::sort(idx.begin(), idx.end(), [&](std::size_t i, std::size_t j) { return x[i] < x[j]; });
-    std::vector<double> r(x.size());
-    for (std::size_t i = 0; i < idx.size();) {
-      std::size_t j = i;
-      while (j + 1 < idx.size() && x[idx[j + 1]] == x[idx[i]]) ++j;
-      for (std::size_t k = i; k <= j; ++k) r[idx[k]] = 0.5 * static_cast<double>(i + j) + 1;  // average rank
-      i = j + 1;
-    }
-    return r;
-  };
-  const std::vector<double> ra = ranks(a), rb = ranks(b);
+  const std::vector<double> ra = average_ranks(a), rb = average_ranks(b);
   const double n = static_cast<double>(a.size());
   const double ma = std::accumulate(ra.begin(), ra.end(), 0.0) / n, mb = std::accumulate(rb.begin(), rb.end(), 0.0) / n;
   double sab = 0, saa = 0, sbb = 0;
@@ -176,14 +177,10 @@ Findings compute_findings(const ReportData& d) {
   }
   f.spearman = spearman(order, dt);
   // A method breaks the pattern when its order rank and its dt* rank are far apart.
-  const auto rank_of = [](const std::vector<double>& x, std::size_t i) {
-    double below = 0, equal = 0;
-    for (double y : x) below += y < x[i], equal += y == x[i];
-    return below + 0.5 * (equal + 1);
-  };
+  const std::vector<double> order_rank = average_ranks(order), dt_rank = average_ranks(dt);
   const double gap = static_cast<double>(f.rows.size()) / 3;
   for (std::size_t i = 0; i < f.rows.size(); ++i)
-    if (std::abs(rank_of(order, i) - rank_of(dt, i)) >= gap) f.breakers.push_back(i);
+    if (std::abs(order_rank[i] - dt_rank[i]) >= gap) f.breakers.push_back(i);
   return f;
 }
 

@@ -19,13 +19,16 @@ template <int D> Json vec_json(const Vec<D>& v) {
   return a;
 }
 
+// A parameter's JSON key: its CLI name with '-' -> '_' ("rest-length" -> "rest_length").
+inline std::string param_key(const ParamSpec& p) {
+  std::string key(p.name);
+  std::replace(key.begin(), key.end(), '-', '_');
+  return key;
+}
+
 template <Scene S> Json params_json(std::span<const double> values) {
   Json p = Json::object();
-  for (std::size_t i = 0; i < S::params.size(); ++i) {
-    std::string key(S::params[i].name);
-    std::replace(key.begin(), key.end(), '-', '_');
-    p[key] = values[i];
-  }
+  for (std::size_t i = 0; i < S::params.size(); ++i) p[param_key(S::params[i])] = values[i];
   return p;
 }
 

@@ -170,11 +170,12 @@ int collision_command(CollisionArgs& a) {
       return only.values(index);
     });
   };
+  std::string accepted;  // the parameters of either collision scene
   for (const auto& [name, text] : a.scene.text)
-    if (a.scene.given(name) && name != "mass" && name != "gravity" && name != "stiffness" && name != "damping" &&
-        name != "ground-stiffness" && name != "ground-damping")
-      throw UsageError(fmt::format("--{} does not apply to the collision scenes; accepted: --mass, --gravity, "
-                                   "--stiffness, --damping, --ground-stiffness, --ground-damping", name));
+    if (has_param<Bounce>(name) || has_param<Falling>(name)) accepted += (accepted.empty() ? "--" : ", --") + name;
+  for (const auto& [name, text] : a.scene.text)
+    if (a.scene.given(name) && !has_param<Bounce>(name) && !has_param<Falling>(name))
+      throw UsageError(fmt::format("--{} does not apply to the collision scenes; accepted: {}", name, accepted));
   c.bounce_params = values_for("bounce");
   c.falling_params = values_for("falling");
   c.methods = resolve_methods(a.methods, false);

@@ -91,8 +91,7 @@ std::string convergence_table(const ConvergenceResult& r) {
     out += fmt::format("{:>10.4g}", r.dts[i]);
     for (std::size_t m = 0; m < r.fits.size(); ++m) {
       const ConvergenceRecord& rec = r.records[m * r.dts.size() + i];
-      const double e = c.fit_error == ErrorKind::Final ? rec.error_final
-                       : c.fit_error == ErrorKind::Max ? rec.error_max : rec.error_rms;
+      const double e = error_of(rec, c.fit_error);
       out += rec.status != RunStatus::Ok ? fmt::format(" {:>18}", to_string(rec.status)) : fmt::format(" {:>18.5e}", e);
     }
     out += "\n";

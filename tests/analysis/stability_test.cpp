@@ -21,6 +21,14 @@ std::vector<std::size_t> numerical_methods() {
 
 std::size_t id(std::string_view name) { return *find_method(name); }
 
+// The default spring, every numerical method; each test sets the study it runs.
+StabilityConfig default_spring_config() {
+  StabilityConfig c;
+  c.params = spring_params(0.1);
+  c.methods = numerical_methods();
+  return c;
+}
+
 // M(h) written out by hand for the sheet's four methods, with A = [[0, 1], [-k/m, -gamma/m]].
 // The differenced matrix carries round-off of ~eps |y_eq| / delta ~ 1e-14: 1e-11 is ample.
 TEST(StepMatrix, MatchesTheSheetMethodsByHand) {
@@ -65,9 +73,7 @@ TEST(Threshold, PredictedMatchesClosedForms) {
 // The bar: measured thresholds within 1 % of dt* for gamma in {0.1, 1, 4}, every
 // conditionally stable method; at gamma = 0 the measured statements the sheet asks about.
 TEST(Threshold, MeasuredWithinOnePercentOfPredicted) {
-  StabilityConfig c;
-  c.params = spring_params(0.1);
-  c.methods = numerical_methods();
+  StabilityConfig c = default_spring_config();
   c.threshold_dampings = {0.0, 0.1, 1.0, 4.0};
   for (const ThresholdRow& r : threshold_study(c)) {
     const auto name = method_infos[r.method].name;
@@ -104,9 +110,7 @@ TEST(Threshold, VanishingEnergyIsNotGrowth) {
 
 // Measured growth rates within 2 % of 2 ln(rho)/h, or 1e-6 absolute where that is larger.
 TEST(DampingSweep, MeasuredRatesMatchPredicted) {
-  StabilityConfig c;
-  c.params = spring_params(0.1);
-  c.methods = numerical_methods();
+  StabilityConfig c = default_spring_config();
   c.sweep_dts = {0.01, 0.05, 0.2};
   c.sweep_dampings = {0.0, 0.1};
   for (const SweepRow& r : damping_sweep(c)) {
@@ -116,9 +120,7 @@ TEST(DampingSweep, MeasuredRatesMatchPredicted) {
 }
 
 TEST(DampingSweep, UndampedVerdictsOfTheSheet) {
-  StabilityConfig c;
-  c.params = spring_params(0.1);
-  c.methods = numerical_methods();
+  StabilityConfig c = default_spring_config();
   c.sweep_dts = {0.01, 0.05, 0.2};
   c.sweep_dampings = {0.0};
   for (const SweepRow& r : damping_sweep(c)) {
@@ -131,9 +133,7 @@ TEST(DampingSweep, UndampedVerdictsOfTheSheet) {
 }
 
 TEST(StabilityMap, MeasuredCellsAgreeWithPredictedBoundary) {
-  StabilityConfig c;
-  c.params = spring_params(0.1);
-  c.methods = numerical_methods();
+  StabilityConfig c = default_spring_config();
   c.map_dt_points = 12;
   c.map_damping_points = 9;
   const StabilityMap map = stability_map(c);
@@ -145,9 +145,7 @@ TEST(StabilityMap, MeasuredCellsAgreeWithPredictedBoundary) {
 }
 
 TEST(StabilityJson, SameForOneAndTwoThreads) {
-  StabilityConfig c;
-  c.params = spring_params(0.1);
-  c.methods = numerical_methods();
+  StabilityConfig c = default_spring_config();
   c.map_dt_points = 8;
   c.map_damping_points = 5;
   c.threshold_dampings = {0.1};

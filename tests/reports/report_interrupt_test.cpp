@@ -46,13 +46,18 @@ int interrupted_report(const std::string& config, const std::string& out, int si
   return status;
 }
 
+// A report with small studies (about a second), then gnuplot and pandoc; returns the config's path.
+std::string small_config(const TempDir& dir) {
+  const std::string path = dir.path("small.json");
+  std::ofstream(path) << R"({"convergence": {"points": 8, "dt_min": 0.001, "timing": false},
+                             "stability": {"map_dt_points": 16, "map_damping_points": 16},
+                             "collision": {"t_end": 2}, "figures": {"energy_t_end": 10}})";
+  return path;
+}
+
 TEST(ReportInterrupted, PreviousReportStaysIntact) {
   TempDir dir;
-  const std::string config = dir.path("small.json"), out = dir.path("report");
-  // Small studies (about a second), then gnuplot and pandoc.
-  std::ofstream(config) << R"({"convergence": {"points": 8, "dt_min": 0.001, "timing": false},
-                               "stability": {"map_dt_points": 16, "map_damping_points": 16},
-                               "collision": {"t_end": 2}, "figures": {"energy_t_end": 10}})";
+  const std::string config = small_config(dir), out = dir.path("report");
   const Result first = run_steplab("report --config " + config + " --out " + out);
   ASSERT_EQ(first.status, 0) << first.err;
   const auto before = snapshot(out);
@@ -84,10 +89,7 @@ TEST(ReportInterrupted, PreviousReportStaysIntact) {
 
 TEST(ReportUpToDate, SecondRunDoesNothing) {
   TempDir dir;
-  const std::string config = dir.path("small.json"), out = dir.path("report");
-  std::ofstream(config) << R"({"convergence": {"points": 6, "dt_min": 0.001, "timing": false},
-                               "stability": {"map_dt_points": 4, "map_damping_points": 4},
-                               "collision": {"t_end": 1}, "figures": {"energy_t_end": 5}})";
+  const std::string config = small_config(dir), out = dir.path("report");
   ASSERT_EQ(run_steplab("report --config " + config + " --out " + out).status, 0);
   const auto before = snapshot(out);
   const Result again = run_steplab("report --config " + config + " --out " + out);
