@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "core/methods.hpp"
+#include "core/stepper.hpp"
 #include "core/scenes/spring.hpp"
 
 namespace steplab {
@@ -27,7 +28,12 @@ LocalErrorResult local_error_study(const LocalErrorConfig& c) {
     std::vector<ErrorPoint> pts;
     for (int i = 0; i < c.count; ++i) {
       State<1> y = start;
-      const StepStatus st = with_method(m, [&]<class M>() { return M::step(s, y, c.t0, out.steps[i]); });
+      const double h = out.steps[i];
+      const StepStatus st = with_method(m, [&]<class M>() {
+        Stepper<M, Spring> stepper;  // a multistep method remembers the exact past: y(t0 - k h)
+        if constexpr (Multistep<M>) stepper.memory = M::remember(s, [&](int k) { return exact(s, c.t0 - k * h); });
+        return stepper.step(s, y, c.t0, h);
+      });
       col.dv.push_back(y.v[0] - start.v[0]);
       col.dx.push_back(y.x[0] - start.x[0]);
       const double ex = col.dx.back() - out.exact_dx[i], ev = col.dv.back() - out.exact_dv[i];

@@ -3,8 +3,11 @@
 #include <cmath>
 #include <complex>
 
+#include <Eigen/Eigenvalues>
+
 #include "analysis/parallel.hpp"
 #include "core/methods.hpp"
+#include "core/stepper.hpp"
 
 namespace steplab {
 namespace {
@@ -18,6 +21,11 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // the spring's kink at the anchor; the motion in u is the same as with the user's L.
 constexpr double kAnchorShift = 1000;
 
+// Scan factors: the prediction is cheap and scans by 1.05; runs scan by 2 up to dt* (the first
+// unstable step: bisection finds the edge). Beyond dt* stable windows can be narrow (yoshida4
+// undamped has some), so both scan by 1.05 there.
+constexpr double kPredictFactor = 1.05, kMeasureFactor = 2, kAgainFactor = 1.05;
+
 Spring with_damping(const std::vector<double>& params, double gamma) {
   std::vector<double> p = params;
   p[2] = gamma;  // Spring::params: mass, stiffness, damping, rest-length, gravity
@@ -26,66 +34,115 @@ Spring with_damping(const std::vector<double>& params, double gamma) {
   return Spring(p);
 }
 
-State<1> step_once(std::size_t method, const Spring& s, State<1> y, double h) {
-  with_method(method, [&]<class M>() { return M::step(s, y, 0.0, h); });
-  return y;
-}
-
-// First h in (lo, hi] on a geometric scan by `factor` where `unstable(h)`; then bisection (in
-// log h) down to relative `precision`. 0 if unstable at lo, inf if never.
-template <class Unstable> double first_crossing(double lo, double hi, double factor, double precision, Unstable unstable) {
-  if (unstable(lo)) return 0;
-  double good = lo, bad = kInf;
-  for (double h = lo * factor; h <= hi * (1 + 1e-12); h *= factor) {
-    if (unstable(h)) {
-      bad = h;
+// The stable set of h on a geometric scan from lo to hi (by `factor` up to the first unstable
+// step, then by kAgainFactor), each edge then bisected (in log h) down to relative `precision`:
+//   dt*    the largest h with every step in [lo, h] stable: 0 if unstable at lo, inf if never;
+//   again  the smallest h > dt* from which the scan finds stable steps again (inf if none up to hi).
+template <class Unstable>
+StableSet stable_set(double lo, double hi, double factor, double precision, Unstable unstable) {
+  const auto bisect = [&](double good, double bad) {  // the edge between a stable and an unstable h
+    while (std::max(good, bad) / std::min(good, bad) - 1 > precision) {
+      const double mid = std::sqrt(good * bad);
+      (unstable(mid) ? bad : good) = mid;
+    }
+    return good;
+  };
+  StableSet out{kInf, kInf};
+  double h = lo, last_good = 0;
+  for (; h <= hi * (1 + 1e-12); h *= factor) {
+    if (unstable(h)) break;
+    last_good = h;
+  }
+  if (h > hi * (1 + 1e-12)) return out;  // stable everywhere scanned
+  out.dt_star = last_good == 0 ? 0 : bisect(last_good, h);
+  double last_bad = h;
+  for (h *= kAgainFactor; h <= hi * (1 + 1e-12); h *= kAgainFactor) {
+    if (!unstable(h)) {
+      out.again = bisect(h, last_bad);
       break;
     }
-    good = h;
+    last_bad = h;
   }
-  if (!std::isfinite(bad)) return kInf;
-  while (bad / good - 1 > precision) {
-    const double mid = std::sqrt(good * bad);
-    (unstable(mid) ? bad : good) = mid;
-  }
-  return good;
+  return out;
 }
 
 }  // namespace
 
 namespace {
 
-Mat<2> differenced_matrix(std::size_t method, const Spring& s, double h, double delta_x) {
+// The step map on (x, v, and a multistep method's memory), flattened: x, v, then every memory
+// entry's x and v (most recent first). A one-step method's map is (x, v) alone.
+template <class M> constexpr int map_size() {
+  if constexpr (Multistep<M>) return 2 * (1 + M::history);
+  else return 2;
+}
+
+template <class M> Eigen::VectorXd step_flat(const Spring& s, const Eigen::VectorXd& z, double h) {
+  State<1> y{Vec<1>::Constant(z[0]), Vec<1>::Constant(z[1])};
+  Stepper<M, Spring> stepper;
+  if constexpr (Multistep<M>)
+    stepper.memory = history_of<1, M::history>([&](int k) {
+      return State<1>{Vec<1>::Constant(z[2 * k]), Vec<1>::Constant(z[2 * k + 1])};
+    });
+  stepper.step(s, y, 0.0, h);
+  Eigen::VectorXd out(z.size());
+  out << y.x[0], y.v[0];
+  if constexpr (Multistep<M>)
+    for (int k = 1; k <= M::history; ++k) out.segment<2>(2 * k) << stepper.memory.past[k - 1].x[0], stepper.memory.past[k - 1].v[0];
+  return out;
+}
+
+template <class M> Eigen::MatrixXd differenced_matrix(const Spring& s, double h, double delta_x) {
   // An implicit method's Newton starts from x0 + h v0: the velocity perturbation must not carry
   // that guess past the anchor either, or Newton may settle on the other linear branch.
   const double delta_v = std::min(delta_x, 0.1 * std::abs(s.equilibrium()) / std::max(1.0, h));
   const State<1> eq{Vec<1>::Constant(s.equilibrium()), Vec<1>::Zero()};
-  const State<1> base = step_once(method, s, eq, h);
-  Mat<2> m;
-  for (int j = 0; j < 2; ++j) {
-    State<1> p = eq;
-    const double delta = j == 0 ? delta_x : delta_v;
-    (j == 0 ? p.x[0] : p.v[0]) += delta;
-    const State<1> out = step_once(method, s, p, h);
-    m(0, j) = (out.x[0] - base.x[0]) / delta;
-    m(1, j) = (out.v[0] - base.v[0]) / delta;
+  constexpr int n = map_size<M>();
+  Eigen::VectorXd rest(n);
+  rest << eq.x[0], eq.v[0];
+  if constexpr (Multistep<M>) {  // the memory of a run that has sat at equilibrium forever
+    const History<1, M::history> mem = M::remember(s, [&](int) { return eq; });
+    for (int k = 1; k <= M::history; ++k) rest.segment<2>(2 * k) << mem.past[k - 1].x[0], mem.past[k - 1].v[0];
+  }
+  const Eigen::VectorXd base = step_flat<M>(s, rest, h);
+  Eigen::MatrixXd m(n, n);
+  for (int j = 0; j < n; ++j) {
+    Eigen::VectorXd p = rest;
+    const double delta = j % 2 == 0 ? delta_x : delta_v;
+    p[j] += delta;
+    m.col(j) = (step_flat<M>(s, p, h) - base) / delta;
   }
   return m;
 }
 
 }  // namespace
 
+// A differenced matrix with entries of size |M| carries errors of about eps |M|^2 (the step from
+// equilibrium is off by eps |M| |y_eq|, divided by a perturbation of |y_eq| / |M|): past
+// kTrustedEntry its eigenvalues are noise. Such a matrix is not that of a stable step anyway: on the
+// spring M = V R(h Lambda) V^-1 with V fixed by (m, k, gamma), so rho <= 1 bounds |M| by cond(V)
+// (at most ~1e3 here, at critical damping). yoshida4 undamped at omega h = 553 (|M| ~ 1e8) came
+// out "stable" from such noise; exact arithmetic on its trace finds no stable window there.
+constexpr double kTrustedEntry = 1e6;
+
 // Two passes: a tiny perturbation estimates |M|; then one a tenth of the distance to the anchor,
 // divided by max(1, |M|), which keeps every state below the anchor (where the force is linear)
 // and resolves M to ~eps |y_eq| / delta ~ 1e-14.
-Mat<2> step_matrix(std::size_t method, const Spring& s, double h) {
+Eigen::MatrixXd step_matrix(std::size_t method, const Spring& s, double h) {
   const double room = 0.1 * std::max(std::abs(s.equilibrium()), 1e-6);
-  const Mat<2> rough = differenced_matrix(method, s, h, 1e-6 * room);
-  return differenced_matrix(method, s, h, room / std::max(1.0, rough.cwiseAbs().maxCoeff()));
+  return with_method(method, [&]<class M>() {
+    const Eigen::MatrixXd rough = differenced_matrix<M>(s, h, 1e-6 * room);
+    // so large that the second pass's perturbation would vanish in y_eq's rounding: past any
+    // trust (predicted_stable), and the rough matrix already says so
+    if (!(rough.cwiseAbs().maxCoeff() <= kTrustedEntry)) return rough;
+    return differenced_matrix<M>(s, h, room / std::max(1.0, rough.cwiseAbs().maxCoeff()));
+  });
 }
 
-// Eigenvalues of [[a, b], [c, d]]: tr/2 +- sqrt(tr^2/4 - det); a complex pair has |lambda|^2 = det.
-double spectral_radius(const Mat<2>& m) {
+// 2 x 2: eigenvalues of [[a, b], [c, d]] are tr/2 +- sqrt(tr^2/4 - det), and a complex pair has
+// |lambda|^2 = det. Larger (a multistep method's companion matrix): Eigen's real Schur form.
+double spectral_radius(const Eigen::MatrixXd& m) {
+  if (m.rows() != 2) return Eigen::EigenSolver<Eigen::MatrixXd>(m, false).eigenvalues().cwiseAbs().maxCoeff();
   const double half_tr = 0.5 * m.trace(), det = m.determinant();
   const double disc = half_tr * half_tr - det;
   if (disc < 0) return std::sqrt(det);
@@ -97,11 +154,17 @@ double predicted_rate(std::size_t method, const Spring& s, double h) {
   return 2 * std::log(spectral_radius(step_matrix(method, s, h))) / h;
 }
 
-double predicted_threshold(std::size_t method, const Spring& s) {
+
+bool predicted_stable(std::size_t method, const Spring& s, double h) {
+  const double wh = s.omega() * h;
+  const Eigen::MatrixXd m = step_matrix(method, s, h);
+  if (!(m.cwiseAbs().maxCoeff() <= kTrustedEntry)) return false;
+  return spectral_radius(m) <= 1 + std::min(kRhoToleranceMax, kRhoTolerance * std::max(1.0, wh * wh));
+}
+
+StableSet predicted_stable_set(std::size_t method, const Spring& s) {
   const double w = s.omega();
-  return first_crossing(kPredictMinWh / w, kMaxWh / w, 1.05, 1e-10, [&](double h) {
-    return spectral_radius(step_matrix(method, s, h)) > 1 + kRhoTolerance;
-  });
+  return stable_set(kPredictMinWh / w, kMaxWh / w, kPredictFactor, 1e-10, [&](double h) { return !predicted_stable(method, s, h); });
 }
 
 RateRun measure_rate(std::size_t method, const Spring& s, double h, long long steps) {
@@ -119,9 +182,9 @@ RateRun measure_rate(std::size_t method, const Spring& s, double h, long long st
   });
 }
 
-double measured_threshold(std::size_t method, const Spring& s) {
+StableSet measured_stable_set(std::size_t method, const Spring& s) {
   const double w = s.omega();
-  return first_crossing(kMeasureMinWh / w, kMaxWh / w, 2.0, 1e-4,
+  return stable_set(kMeasureMinWh / w, kMaxWh / w, kMeasureFactor, 1e-4,
                         [&](double h) { return !measure_rate(method, s, h).stable(); });
 }
 
@@ -141,7 +204,8 @@ std::vector<ThresholdRow> threshold_study(const StabilityConfig& c) {
     const std::size_t m = c.methods[task / ng];
     const double gamma = c.threshold_dampings[task % ng];
     const Spring s = with_damping(c.params, gamma);
-    rows[task] = {m, gamma, predicted_threshold(m, s), measured_threshold(m, s)};
+    const StableSet predicted = predicted_stable_set(m, s), measured = measured_stable_set(m, s);
+    rows[task] = {m, gamma, predicted.dt_star, measured.dt_star, predicted.again, measured.again};
   });
   return rows;
 }
@@ -171,16 +235,23 @@ StabilityMap stability_map(const StabilityConfig& c) {
   const std::size_t nm = c.methods.size(), ng = map.damping.size(), nd = map.dt.size();
   std::vector<char> cells(nm * ng * nd);
   map.boundary.assign(nm, std::vector<double>(ng));
+  std::vector<char> predicted(cells.size());
   // one task per (method, damping) row: its predicted dt* and every cell of the row
   parallel_for(nm * ng, c.threads, [&](std::size_t task) {
     const std::size_t mi = task / ng, gi = task % ng;
     const Spring s = with_damping(c.params, map.damping[gi]);
-    map.boundary[mi][gi] = predicted_threshold(c.methods[mi], s);
-    for (std::size_t di = 0; di < nd; ++di)
+    map.boundary[mi][gi] = predicted_stable_set(c.methods[mi], s).dt_star;
+    for (std::size_t di = 0; di < nd; ++di) {
       cells[task * nd + di] = measure_rate(c.methods[mi], s, map.dt[di], c.map_steps).stable();
+      predicted[task * nd + di] = predicted_stable(c.methods[mi], s, map.dt[di]);
+    }
   });
   map.stable.assign(nm, std::vector<std::vector<bool>>(ng, std::vector<bool>(nd)));
-  for (std::size_t i = 0; i < cells.size(); ++i) map.stable[i / (ng * nd)][(i / nd) % ng][i % nd] = cells[i];
+  map.predicted = map.stable;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    map.stable[i / (ng * nd)][(i / nd) % ng][i % nd] = cells[i];
+    map.predicted[i / (ng * nd)][(i / nd) % ng][i % nd] = predicted[i];
+  }
   return map;
 }
 

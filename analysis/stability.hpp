@@ -33,18 +33,34 @@ namespace steplab {
 
 inline constexpr double kStableRate = 1e-6;        // per unit time: E changes < 0.1 % over 1000 time units
 inline constexpr long long kRateSteps = 60'000;
-inline constexpr double kRhoTolerance = 1e-12;     // round-off in rho from a differenced 2x2 step matrix
+// Round-off in rho from a differenced step matrix: 1e-12, times (omega h)^2 past omega h = 1, the
+// growth of the condition number of an implicit method's stage system (measured on
+// gauss_legendre4: rho - 1 = 3e-13 at omega h = 45, 1.5e-10 at 670), at most kRhoToleranceMax.
+inline constexpr double kRhoTolerance = 1e-12, kRhoToleranceMax = 1e-9;
 
-Mat<2> step_matrix(std::size_t method, const Spring& s, double h);
-double spectral_radius(const Mat<2>& m);
+// The matrix of the whole step map: 2 x 2 on (y, v) for a one-step method; for a multistep
+// method the companion matrix on (y, v and its memory), 2 (1 + K) square.
+Eigen::MatrixXd step_matrix(std::size_t method, const Spring& s, double h);
+double spectral_radius(const Eigen::MatrixXd& m);
 double predicted_rate(std::size_t method, const Spring& s, double h);   // 2 ln(rho) / h
 
 // Smallest and largest steps the threshold searches consider, in units of 1/omega.
 inline constexpr double kPredictMinWh = 1e-2, kMeasureMinWh = 2e-2, kMaxWh = 1e3;
 
-// dt* from the step matrix: scan h geometrically from kPredictMinWh/omega, then bisect the first
-// crossing to 1e-10 relative. Returns 0 if unstable at the smallest h, infinity if never unstable.
-double predicted_threshold(std::size_t method, const Spring& s);
+// Where a method is stable. The stable set need not be an interval (BDF3 on the undamped spring
+// grows at small steps and is stable again at large ones), so besides dt* ("the largest h stable
+// on all of (0, h]": 0 if unstable at the smallest h tried, inf if never unstable) it says where
+// stability comes back: the smallest h > dt* stable again (inf if none up to kMaxWh / omega).
+struct StableSet {
+  double dt_star, again;
+};
+
+// Predicted stable at step h: the step matrix's spectral radius <= 1 (within kRhoTolerance).
+bool predicted_stable(std::size_t method, const Spring& s, double h);
+
+// From the step matrix: h scanned geometrically by 1.05 from kPredictMinWh/omega, each edge
+// bisected to 1e-10 relative. (The predicted and measured dt* are compared in the tests.)
+StableSet predicted_stable_set(std::size_t method, const Spring& s);
 
 struct RateRun {
   double rate;               // least-squares d ln E / dt
@@ -59,16 +75,19 @@ struct RateRun {
 
 RateRun measure_rate(std::size_t method, const Spring& s, double h, long long steps = kRateSteps);
 
-// Largest measured-stable step with every smaller step (from kMeasureMinWh/omega) stable: a scan
-// by factors of 2, then bisection to 1e-4 relative. 0 if unstable at the smallest step tried,
-// infinity if stable up to kMaxWh/omega.
-double measured_threshold(std::size_t method, const Spring& s);
+// From runs (measure_rate): h scanned by factors of 2 from kMeasureMinWh/omega up to dt*, by 1.05
+// beyond it, each edge bisected to 1e-4 relative.
+StableSet measured_stable_set(std::size_t method, const Spring& s);
+
+inline double predicted_threshold(std::size_t method, const Spring& s) { return predicted_stable_set(method, s).dt_star; }
+inline double measured_threshold(std::size_t method, const Spring& s) { return measured_stable_set(method, s).dt_star; }
 
 // ---- the studies ----
 
 struct ThresholdRow {
   std::size_t method;
   double damping, dt_theory, dt_measured;
+  double again_theory, again_measured;  // stable again from here on (StableSet::again)
 };
 
 struct SweepRow {
@@ -82,6 +101,7 @@ struct StabilityMap {
   std::vector<double> dt, damping;
   std::vector<std::size_t> methods;
   std::vector<std::vector<std::vector<bool>>> stable;   // [method][damping][dt]
+  std::vector<std::vector<std::vector<bool>>> predicted;  // [method][damping][dt]: rho <= 1
   std::vector<std::vector<double>> boundary;            // [method][damping]: predicted dt*
 };
 

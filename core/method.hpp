@@ -7,20 +7,44 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <string_view>
 
 #include "core/scene.hpp"
 
 namespace steplab {
 
+// The families the report answers "is stability correlated with order?" for, one by one.
+// Explicit Euler and implicit Euler are also the first Adams-Bashforth and BDF methods (`also`).
+enum class Family { ExplicitRungeKutta, Splitting, ImplicitRungeKutta, AdamsBashforth, Bdf, Exact, None };
+
+inline constexpr std::string_view to_string(Family f) {
+  switch (f) {
+    case Family::ExplicitRungeKutta: return "explicit Runge-Kutta";
+    case Family::Splitting: return "symplectic splitting";
+    case Family::ImplicitRungeKutta: return "implicit Runge-Kutta";
+    case Family::AdamsBashforth: return "Adams-Bashforth";
+    case Family::Bdf: return "BDF";
+    case Family::Exact: return "exact flow";
+    case Family::None: return "none";
+  }
+  return "?";
+}
+
 struct MethodInfo {
   std::string_view name;
   int order;             // global order of accuracy; 0 for the exact flow
+  Family family;
   bool symplectic;
   bool implicit;         // solves a nonlinear system each step
   bool exact_flow;       // the analytic solution: needs a scene with an exact flow
   std::string_view summary;
+  Family also = Family::None;  // a second family the method is the first member of
 };
+
+// A partitioned method (x and v updated by different rules) has no scalar stability function
+// R(z): its step matrix on the oscillator is not a function of h A alone.
+constexpr bool has_stability_function(const MethodInfo& m) { return m.family != Family::Splitting && !m.exact_flow; }
 
 // Eigen's ComputationInfo in spirit: a step reports, it never throws or exits.
 enum class StepStatus { Ok, NoConvergence };
@@ -34,7 +58,7 @@ enum class StepStatus { Ok, NoConvergence };
 // residual G(u) = M (u - w) - c F is  J = M - c dF/dv - c cx dF/dx.
 // Starts from u = w; stops when |G(u)| <= tolerance * scale, the scale being the size of the
 // terms G balances: |M u| + |M w| + c (|F| + |dF/dx| |x| + |dF/dv| |u|), the last two from the
-// first Jacobian (near equilibrium F itself is ~0 while its terms, k|y| or m g, are not, and
+// first Jacobian (|c|: a composition such as Yoshida's runs substeps backwards; near equilibrium F itself is ~0 while its terms, k|y| or m g, are not, and
 // round-off in F is relative to those). A force linear in (x, v) converges in one Newton step
 // (the second pass only confirms it). At most max_iterations, then NoConvergence.
 struct NewtonSettings {
@@ -54,7 +78,7 @@ StepStatus solve_implicit(const S& s, const Vec<S::dim>& x0, double cx, const Ve
     const Vec<D> f = s.force(x, u);
     const Vec<D> r = m.cwiseProduct(u - w) - c * f;
     if (it > 0) {
-      const double scale = m.cwiseProduct(u).norm() + m.cwiseProduct(w).norm() + c * (f.norm() + force_terms);
+      const double scale = m.cwiseProduct(u).norm() + m.cwiseProduct(w).norm() + std::abs(c) * (f.norm() + force_terms);
       if (r.norm() <= NewtonSettings::tolerance * scale) return StepStatus::Ok;
     }
     if (it == NewtonSettings::max_iterations || !r.allFinite()) return StepStatus::NoConvergence;

@@ -1,5 +1,6 @@
 // THE method table. Adding an integrator: write core/methods/<name>.hpp (a struct with `info`
-// and `step`, see core/method.hpp) and list it in `Methods` below. Nothing else changes:
+// and `step`, see core/method.hpp; a multistep method also keeps a memory, see core/stepper.hpp)
+// and list it in `Methods` below. Nothing else changes:
 // the CLI, the studies, the tests over every method and the report all iterate this list.
 #pragma once
 
@@ -12,19 +13,28 @@
 
 #include "core/dispatch.hpp"
 
+#include "core/methods/adams_bashforth2.hpp"
+#include "core/methods/adams_bashforth3.hpp"
 #include "core/methods/analytic.hpp"
+#include "core/methods/bdf2.hpp"
+#include "core/methods/bdf3.hpp"
 #include "core/methods/explicit_euler.hpp"
 #include "core/methods/explicit_midpoint.hpp"
 #include "core/methods/implicit_euler.hpp"
+#include "core/methods/gauss_legendre4.hpp"
 #include "core/methods/implicit_midpoint.hpp"
+#include "core/methods/rk3.hpp"
 #include "core/methods/rk4.hpp"
 #include "core/methods/symplectic_euler.hpp"
 #include "core/methods/velocity_verlet.hpp"
+#include "core/methods/yoshida4.hpp"
 
 namespace steplab {
 
 using Methods = std::tuple<ExplicitEuler, SymplecticEuler, ExplicitMidpoint, ImplicitEuler,  // the sheet's four
                            VelocityVerlet, Rk4, ImplicitMidpoint,                            // order vs stability
+                           Rk3, Yoshida4, GaussLegendre4,                                    // families: one-step
+                           AdamsBashforth2, AdamsBashforth3, Bdf2, Bdf3,                     // families: multistep
                            Analytic>;
 
 inline constexpr std::size_t method_count = std::tuple_size_v<Methods>;

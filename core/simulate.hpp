@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/methods.hpp"
+#include "core/stepper.hpp"
 
 namespace steplab {
 
@@ -128,10 +129,11 @@ RunResult<S::dim> simulate(const S& scene, const RunSpec& spec, Observer&& obser
     if constexpr (HasExact<S>) return ExactTracker<S>(scene);
     else return 0;
   }();
+  Stepper<M, S> stepper;  // a multistep method's memory; nothing for a one-step method
   for (i = 1; i <= spec.steps; ++i) {
     const double t_prev = (i - 1) * h, t = i * h;
     State<D> next = y;
-    const StepStatus st = M::step(scene, next, t_prev, h);
+    const StepStatus st = stepper.step(scene, next, t_prev, h);
     if (!all_finite(next) || st != StepStatus::Ok) {
       r.status = st != StepStatus::Ok ? RunStatus::NoConvergence : RunStatus::Diverged;
       r.failed_step = i;

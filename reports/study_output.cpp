@@ -181,7 +181,9 @@ Json stability_json(const std::vector<double>& params, const std::vector<Thresho
   Json t = Json::array();
   for (const ThresholdRow& r : thresholds)
     t.push_back({{"method", method_infos[r.method].name}, {"damping", r.damping}, {"dt_theory", threshold_json(r.dt_theory)},
-                 {"dt_measured", threshold_json(r.dt_measured)}});
+                 {"dt_measured", threshold_json(r.dt_measured)},
+                 {"stable_again_theory", threshold_json(r.again_theory)},
+                 {"stable_again_measured", threshold_json(r.again_measured)}});
   j["thresholds"] = std::move(t);
   Json s = Json::array();
   for (const SweepRow& r : sweep)
@@ -201,21 +203,22 @@ Json stability_json(const std::vector<double>& params, const std::vector<Thresho
   if (map) {
     m["dt"] = map->dt;
     m["damping"] = map->damping;
-    Json stable = Json::object(), boundary = Json::object();
+    Json stable = Json::object(), predicted = Json::object(), boundary = Json::object();
+    const auto grid = [](const std::vector<std::vector<bool>>& cells) {
+      Json rows = Json::array();
+      for (const auto& row : cells) rows.push_back(Json(std::vector<bool>(row)));
+      return rows;
+    };
     for (std::size_t i = 0; i < map->methods.size(); ++i) {
       const std::string name(method_infos[map->methods[i]].name);
-      Json rows = Json::array();
-      for (const auto& row : map->stable[i]) {
-        Json cells = Json::array();
-        for (bool b : row) cells.push_back(b);
-        rows.push_back(std::move(cells));
-      }
-      stable[name] = std::move(rows);
+      stable[name] = grid(map->stable[i]);
+      predicted[name] = grid(map->predicted[i]);
       Json b = Json::array();
       for (double x : map->boundary[i]) b.push_back(threshold_json(x));
       boundary[name] = std::move(b);
     }
     m["stable"] = std::move(stable);
+    m["predicted"] = std::move(predicted);
     m["boundary"] = std::move(boundary);
   }
   j["map"] = std::move(m);
@@ -224,12 +227,16 @@ Json stability_json(const std::vector<double>& params, const std::vector<Thresho
 
 std::string thresholds_table(const std::vector<ThresholdRow>& rows) {
   std::string out = fmt::format("Stability thresholds dt* (largest stable step; inf: stable at every step, 0: at none)\n\n"
-                                "{:<18} {:>8} {:>12} {:>12} {:>10}\n", "method", "damping", "predicted", "measured", "rel. diff");
+                                "{:<18} {:>8} {:>12} {:>12} {:>10}  {}\n", "method", "damping", "predicted", "measured", "rel. diff",
+                                "stable again from (predicted / measured)");
   for (const ThresholdRow& r : rows) {
     const bool finite = std::isfinite(r.dt_theory) && r.dt_theory > 0;
-    out += fmt::format("{:<18} {:>8g} {:>12} {:>12} {:>10}\n", method_infos[r.method].name, r.damping,
+    const std::string again = std::isinf(r.again_theory) && std::isinf(r.again_measured)
+                                  ? "-"
+                                  : threshold_text(r.again_theory) + " / " + threshold_text(r.again_measured);
+    out += fmt::format("{:<18} {:>8g} {:>12} {:>12} {:>10}  {}\n", method_infos[r.method].name, r.damping,
                        threshold_text(r.dt_theory), threshold_text(r.dt_measured),
-                       finite ? fmt::format("{:+.1e}", r.dt_measured / r.dt_theory - 1) : "-");
+                       finite ? fmt::format("{:+.1e}", r.dt_measured / r.dt_theory - 1) : "-", again);
   }
   return out;
 }
@@ -254,7 +261,7 @@ std::string map_summary(const StabilityMap& map) {
     for (std::size_t g = 0; g < map.damping.size(); ++g)
       for (std::size_t d = 0; d < map.dt.size(); ++d) {
         stable += map.stable[i][g][d];
-        disagree += map.stable[i][g][d] != (map.dt[d] <= map.boundary[i][g]);
+        disagree += map.stable[i][g][d] != map.predicted[i][g][d];
       }
     out += fmt::format("{:<18} {:>14} {:>22}\n", method_infos[map.methods[i]].name,
                        fmt::format("{}/{}", stable, map.dt.size() * map.damping.size()), disagree);

@@ -8,7 +8,7 @@ namespace steplab {
 //   x_{n+1} = x_n + h v_m,          v_{n+1} = v_n + h a(x_m, v_m)
 // Undamped oscillator: |R(i w h)|^2 = 1 + (w h)^4 / 4 > 1, unstable at every step.
 struct ExplicitMidpoint {
-  static constexpr MethodInfo info{"explicit_midpoint", 2, false, false, false,
+  static constexpr MethodInfo info{"explicit_midpoint", 2, Family::ExplicitRungeKutta, false, false, false,
                                    "half an Euler step to the midpoint, then the full step with its slope"};
   template <Scene S> static StepStatus step(const S& s, State<S::dim>& y, double /*t*/, double h) {
     const Vec<S::dim> xm = y.x + 0.5 * h * y.v;

@@ -9,7 +9,7 @@ namespace steplab {
 //   M (v_m - v_n) = h/2 F(x_n + h/2 v_m, v_m)
 // and the step ends by extrapolating: x_{n+1} = 2 x_m - x_n, v_{n+1} = 2 v_m - v_n.
 struct ImplicitMidpoint {
-  static constexpr MethodInfo info{"implicit_midpoint", 2, true, true, false,
+  static constexpr MethodInfo info{"implicit_midpoint", 2, Family::ImplicitRungeKutta, true, true, false,
                                    "backward Euler for h/2 to the midpoint, then extrapolate to h"};
   template <Scene S> static StepStatus step(const S& s, State<S::dim>& y, double /*t*/, double h) {
     Vec<S::dim> vm;

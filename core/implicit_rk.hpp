@@ -1,0 +1,77 @@
+// Newton on all stages at once, for an s-stage implicit Runge-Kutta method (Butcher A, b) on
+// M x'' = F(x, v). Written on the first-order system y = (x, v), y' = (v, M^-1 F):
+//
+//   stage velocities V_i (the unknowns, s D of them), stage positions X_i = x0 + h sum_j a_ij V_j,
+//   G_i(V) = M (V_i - v0) - h sum_j a_ij F(X_j, V_j) = 0,
+//   x1 = x0 + h sum_i b_i V_i,   v1 = v0 + h sum_i b_i M^-1 F(X_i, V_i).
+//
+// The Jacobian of G, block (i, k):  M delta_ik - h a_ik dF/dv(k) - h^2 sum_j a_ij a_jk dF/dx(j).
+// Full Newton from V_i = v0, with the stopping test of solve_implicit (core/method.hpp): |G| below
+// NewtonSettings::tolerance times the size of the terms G balances. A force linear in (x, v)
+// converges in one Newton step. The force values of the converged stages give v1 directly.
+#pragma once
+
+#include <array>
+
+#include "core/method.hpp"
+
+namespace steplab {
+
+template <int Stages> struct ButcherTableau {
+  std::array<std::array<double, Stages>, Stages> a;
+  std::array<double, Stages> b;
+};
+
+template <int Stages, Scene S>
+StepStatus implicit_rk_step(const S& s, State<S::dim>& y, double h, const ButcherTableau<Stages>& t) {
+  constexpr int D = S::dim, N = Stages * D;
+  using Big = Eigen::Matrix<double, N, 1>;
+  const Vec<D> m = s.mass();
+  Big V;
+  for (int i = 0; i < Stages; ++i) V.template segment<D>(i * D) = y.v;
+  std::array<Vec<D>, Stages> X, F;
+  std::array<Jacobians<D>, Stages> J;
+  double force_terms = 0;
+  for (int it = 0;; ++it) {
+    for (int i = 0; i < Stages; ++i) {
+      X[i] = y.x;
+      for (int j = 0; j < Stages; ++j) X[i] += (h * t.a[i][j]) * V.template segment<D>(j * D);
+      F[i] = s.force(X[i], V.template segment<D>(i * D));
+    }
+    Big r;
+    double f_norm = 0;
+    for (int i = 0; i < Stages; ++i) {
+      Vec<D> g = m.cwiseProduct(V.template segment<D>(i * D) - y.v);
+      for (int j = 0; j < Stages; ++j) g -= (h * t.a[i][j]) * F[j];
+      r.template segment<D>(i * D) = g;
+      f_norm += F[i].norm();
+    }
+    if (it > 0) {
+      const double scale = (m.asDiagonal() * V.reshaped(D, Stages)).norm() + Stages * m.cwiseProduct(y.v).norm() +
+                           std::abs(h) * (f_norm + force_terms);
+      if (r.norm() <= NewtonSettings::tolerance * scale) break;
+    }
+    if (it == NewtonSettings::max_iterations || !r.allFinite()) return StepStatus::NoConvergence;
+    for (int i = 0; i < Stages; ++i) J[i] = s.jacobians(X[i], V.template segment<D>(i * D));
+    if (it == 0)
+      for (int i = 0; i < Stages; ++i) force_terms += J[i].dx.norm() * X[i].norm() + J[i].dv.norm() * V.template segment<D>(i * D).norm();
+    if (r.isZero(0.0)) break;  // already solved (at rest in equilibrium)
+    Eigen::Matrix<double, N, N> G;
+    for (int i = 0; i < Stages; ++i)
+      for (int k = 0; k < Stages; ++k) {
+        Mat<D> block = -(h * t.a[i][k]) * J[k].dv;
+        for (int j = 0; j < Stages; ++j) block -= (h * h * t.a[i][j] * t.a[j][k]) * J[j].dx;
+        if (i == k) block.diagonal() += m;
+        G.template block<D, D>(i * D, k * D) = block;
+      }
+    V -= G.partialPivLu().solve(r);
+  }
+  const Vec<D> inv_m = s.inverse_mass();
+  for (int i = 0; i < Stages; ++i) {
+    y.x += (h * t.b[i]) * V.template segment<D>(i * D);
+    y.v += (h * t.b[i]) * F[i].cwiseProduct(inv_m);
+  }
+  return StepStatus::Ok;
+}
+
+}  // namespace steplab
