@@ -4,7 +4,63 @@
 #include <cmath>
 #include <limits>
 
+#include <Eigen/Dense>
+
 namespace steplab {
+namespace {
+
+struct Corrected {
+  double p, se, rss;
+  int dof;
+};
+
+// ln e = a + p ln dt + b (dt / dt_hi)^q by least squares (QR), with se(p) from the residuals.
+Corrected fit_corrected(const std::vector<ErrorPoint>& pts, int q) {
+  const int n = static_cast<int>(pts.size());
+  Eigen::MatrixXd X(n, 3);
+  Eigen::VectorXd y(n);
+  const double top = pts.front().dt;
+  for (int i = 0; i < n; ++i) {
+    X(i, 0) = 1;
+    X(i, 1) = std::log(pts[i].dt);
+    X(i, 2) = std::pow(pts[i].dt / top, q);
+    y[i] = std::log(pts[i].error);
+  }
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(X);
+  const Eigen::VectorXd beta = qr.solve(y);
+  const double rss = (X * beta - y).squaredNorm();
+  const int dof = n - 3;
+  const Eigen::MatrixXd cov = (X.transpose() * X).inverse();
+  return {beta[1], dof > 0 ? std::sqrt(rss / dof * cov(1, 1)) : 0.0, rss, dof};
+}
+
+// Step 6 on the window's points (by decreasing dt).
+void asymptotic_order(const std::vector<ErrorPoint>& window, OrderFit& out) {
+  if (window.size() < 5) {
+    out.order = out.line.slope;
+    out.bound_lo = out.line.ci95_lo;
+    out.bound_hi = out.line.ci95_hi;
+    out.correction_power = 0;
+    return;
+  }
+  const Corrected c1 = fit_corrected(window, 1), c2 = fit_corrected(window, 2);
+  const bool second = c2.rss < c1.rss;
+  const Corrected& c = second ? c2 : c1;
+  out.correction_power = second ? 2 : 1;
+  const std::vector<ErrorPoint> upper(window.begin(), window.end() - (window.size() >= 6 ? 2 : 1));
+  const double shifted = fit_corrected(upper, out.correction_power).p;
+  // noise: the larger of the two models' standard errors (choosing the model by its residual
+  // makes the chosen one's look smaller than it is); truncation: the larger of the window shift
+  // and the disagreement between the two models of the next term
+  const double noise = student_t95(c.dof) * std::max(c1.se, c2.se);
+  const double truncation = std::max(std::abs(c.p - shifted), std::abs(c1.p - c2.p));
+  const double half = noise + truncation;
+  out.order = c.p;
+  out.bound_lo = c.p - half;
+  out.bound_hi = c.p + half;
+}
+
+}  // namespace
 
 OrderFit fit_order(std::span<const ErrorPoint> points) {
   OrderFit out;
@@ -75,6 +131,7 @@ OrderFit fit_order(std::span<const ErrorPoint> points) {
   }
   out.line = fit_line(lx, ly);
   out.fitted = true;
+  asymptotic_order(std::vector<ErrorPoint>(kept.begin() + best_i, kept.begin() + best_i + n_points), out);
   out.dt_hi = kept[best_i].dt;
   out.dt_lo = kept[best_i + n_points - 1].dt;
   return out;

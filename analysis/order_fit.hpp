@@ -15,12 +15,20 @@
 //   5. Extrapolated order: the local slopes approach the order like s(dt) = p + c dt^q; Aitken's
 //      delta-squared on the last three settled local slopes estimates the limit p, where that
 //      trend is there to see (changes shrinking by a ratio in (0, 1), not noise).
+//   6. The headline order: the asymptotic one. Truncation error is smooth, not random, so the
+//      window's least-squares slope is biased by the next error term, and its Student-t interval
+//      (whose width comes from the same smooth curvature) misses the true order as often as not:
+//      1.005 [1.003, 1.007] for explicit Euler on the spring. So the next term is modelled:
+//         ln e = a + p ln dt + b (dt / dt_hi)^q,   q = 1 or 2 (a symmetric method's error
+//      expands in dt^2), whichever fits the window better: linear least squares in (a, p, b).
+//      Its interval is named for what it is, a bound and not a confidence interval:
+//         p +- (t95 max(se_1, se_2) + max(|p - p'|, |p_1 - p_2|))
+//      round-off noise (95 %, n - 3 degrees of freedom, the larger standard error of the two
+//      models) plus the truncation left over: p' is the same fit without the window's two
+//      smallest steps (its bias is larger than p's by the factor (dt ratio)^(2q) at least, so
+//      |p - p'| bounds p's own), and p_1, p_2 are the two models' estimates (which next term). Fewer than 5 points in the
+//      window: the plain slope and its interval stand in, and `order_model` says so.
 // SUNDIALS' ark_kepler --check-order also reports the pairwise orders; we keep them too.
-//
-// A caveat the report states: truncation error is smooth, not random. Over any window the
-// slope's bias and the interval's width both come from the same curvature, so their ratio is
-// fixed by the window's shape (about 2.2 for a first-order correction c dt): the interval
-// covers the declared order only where round-off noise, not truncation, dominates the residuals.
 #pragma once
 
 #include <span>
@@ -41,7 +49,10 @@ struct ErrorPoint {
 struct OrderFit {
   bool exact = false;        // every point at the round-off floor
   bool fitted = false;       // enough points in an asymptotic range
-  LineFit line;              // slope = order
+  double order = 0;          // the headline: the asymptotic order (step 6)
+  double bound_lo = 0, bound_hi = 0;  // its bound: noise (95 %) plus truncation left over
+  int correction_power = 0;  // q of the modelled next term; 0: too few points, the plain slope
+  LineFit line;              // the window's least-squares slope and its Student-t interval
   double dt_lo = 0, dt_hi = 0;
   std::vector<double> local_slopes;  // pairwise orders over the kept points, by decreasing dt
   double extrapolated = 0;   // Aitken delta-squared limit of the local slopes (NaN if not defined)

@@ -57,14 +57,20 @@ Json convergence_json(const ConvergenceResult& r) {
     e["declared_order"] = info.exact_flow ? Json(nullptr) : Json(info.order);
     e["exact"] = f.fit.exact;
     if (f.fit.fitted) {
-      e["order"] = f.fit.line.slope;
-      e["ci95"] = {number_or_null(f.fit.line.ci95_lo), number_or_null(f.fit.line.ci95_hi)};
+      e["order"] = f.fit.order;
+      e["order_bound"] = {number_or_null(f.fit.bound_lo), number_or_null(f.fit.bound_hi)};
+      e["correction_power"] = f.fit.correction_power;
+      e["window_slope"] = f.fit.line.slope;
+      e["window_ci95"] = {number_or_null(f.fit.line.ci95_lo), number_or_null(f.fit.line.ci95_hi)};
       e["r2"] = f.fit.line.r2;
       e["n_points"] = f.fit.line.n;
       e["dt_range"] = {f.fit.dt_lo, f.fit.dt_hi};
     } else {
       e["order"] = nullptr;
-      e["ci95"] = nullptr;
+      e["order_bound"] = nullptr;
+      e["correction_power"] = nullptr;
+      e["window_slope"] = nullptr;
+      e["window_ci95"] = nullptr;
       e["r2"] = nullptr;
       e["n_points"] = 0;
       e["dt_range"] = nullptr;
@@ -96,8 +102,8 @@ std::string convergence_table(const ConvergenceResult& r) {
     }
     out += "\n";
   }
-  out += fmt::format("\n{:<18} {:>8} {:>8} {:>20} {:>9} {:>6} {:>21} {:>12}\n", "method", "declared", "order",
-                     "95% interval", "R^2", "points", "dt range", "extrapolated");
+  out += fmt::format("\n{:<18} {:>8} {:>8} {:>20} {:>2} {:>8} {:>20} {:>9} {:>6} {:>21}\n", "method", "declared", "order",
+                     "bound", "q", "slope", "slope 95% interval", "R^2", "points", "dt range");
   int skipped = 0;
   for (const auto& f : r.fits) skipped += f.fit.diverged_skipped;
   for (const auto& f : r.fits) {
@@ -109,9 +115,10 @@ std::string convergence_table(const ConvergenceResult& r) {
       out += fmt::format("{:<18} {:>8} {:>8}   {}\n", info.name, declared, "-", f.fit.note);
     } else {
       const LineFit& l = f.fit.line;
-      out += fmt::format("{:<18} {:>8} {:>8.4f} {:>20} {:>9.6f} {:>6} {:>21} {:>12.4f}\n", info.name, declared, l.slope,
-                         fmt::format("[{:.4f}, {:.4f}]", l.ci95_lo, l.ci95_hi), l.r2, l.n,
-                         fmt::format("{:.3g} .. {:.3g}", f.fit.dt_lo, f.fit.dt_hi), f.fit.extrapolated);
+      out += fmt::format("{:<18} {:>8} {:>8.4f} {:>20} {:>2} {:>8.4f} {:>20} {:>9.6f} {:>6} {:>21}\n", info.name, declared,
+                         f.fit.order, fmt::format("[{:.4f}, {:.4f}]", f.fit.bound_lo, f.fit.bound_hi), f.fit.correction_power,
+                         l.slope, fmt::format("[{:.4f}, {:.4f}]", l.ci95_lo, l.ci95_hi), l.r2, l.n,
+                         fmt::format("{:.3g} .. {:.3g}", f.fit.dt_lo, f.fit.dt_hi));
     }
   }
   if (skipped > 0) out += fmt::format("\n{} diverged runs (marked 'diverged' above) are left out of the fits.\n", skipped);

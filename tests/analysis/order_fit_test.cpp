@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "analysis/order_fit.hpp"
@@ -65,6 +66,41 @@ TEST(OrderFit, DropsThePreAsymptoticRange) {
   EXPECT_LT(f.dt_hi, 2e-3);
   EXPECT_NEAR(f.line.slope, 1.0, 0.01);
   EXPECT_NEAR(f.extrapolated, 1.0, 1e-3);  // Aitken removes the geometric trend
+}
+
+// Smooth truncation, no noise: e = dt^p (1 + c1 dt + c2 dt^2), or a symmetric method's
+// dt^p (1 + c2 dt^2 + c4 dt^4). The window's plain slope is biased and its Student-t interval
+// misses p; the headline order must be within 0.01 of p and its bound must hold p.
+TEST(OrderFit, AsymptoticOrderAndBoundHoldTheTrueOrderUnderSmoothTruncation) {
+  for (double p : {1.0, 2.0, 3.0, 4.0})
+    for (const auto& [c1, c2] : {std::pair{5.0, 0.0}, std::pair{-3.0, 40.0}, std::pair{0.0, 30.0}, std::pair{20.0, -100.0}}) {
+      std::vector<ErrorPoint> pts;
+      for (int i = 0; i < 16; ++i) {
+        const double dt = 0.1 * std::pow(1e-3, i / 15.0);
+        pts.push_back({dt, std::pow(dt, p) * (1 + c1 * dt + c2 * dt * dt + (c1 == 0 ? 500 * std::pow(dt, 4) : 0)), 0, false});
+      }
+      const OrderFit f = fit_order(pts);
+      ASSERT_TRUE(f.fitted) << p << " " << c1 << " " << c2;
+      EXPECT_NEAR(f.order, p, 0.01) << p << " " << c1 << " " << c2;
+      EXPECT_LE(f.bound_lo, p) << p << " " << c1 << " " << c2;
+      EXPECT_GE(f.bound_hi, p) << p << " " << c1 << " " << c2;
+    }
+}
+
+// With noise as well (lognormal 2 %, a first-order correction): the bound holds p at least as often
+// as a 95 % interval would (at most 18 misses in 200, as above).
+TEST(OrderFit, BoundHoldsTheTrueOrderWithNoise) {
+  for (double p : {1.0, 2.0, 4.0}) {
+    int misses = 0;
+    for (unsigned seed = 1; seed <= 200; ++seed) {
+      std::vector<ErrorPoint> pts = table(p, 0.02, seed);
+      for (ErrorPoint& pt : pts) pt.error *= 1 + 3 * pt.dt;
+      const OrderFit f = fit_order(pts);
+      ASSERT_TRUE(f.fitted);
+      if (p < f.bound_lo || p > f.bound_hi) ++misses;
+    }
+    EXPECT_LE(misses, 18) << p;
+  }
 }
 
 TEST(OrderFit, ExactWhenEverythingIsAtTheFloor) {

@@ -3,9 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
+#include <utility>
+#include <vector>
 
 #include "core/methods.hpp"
 #include "core/scenes.hpp"
+#include "core/stepper.hpp"
 
 namespace steplab {
 namespace {
@@ -98,6 +102,87 @@ TEST_P(MethodStep, Rk4) {
                v + h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v));
 }
 
+TEST_P(MethodStep, Rk3) {
+  const double k1x = v, k1v = p.a(y, v);
+  const double k2x = v + h / 2 * k1v, k2v = p.a(y + h / 2 * k1x, k2x);
+  const double k3x = v - h * k1v + 2 * h * k2v, k3v = p.a(y - h * k1x + 2 * h * k2x, k3x);
+  expect_state(one_step<Rk3>(s, y, v, h), y + h / 6 * (k1x + 4 * k2x + k3x), v + h / 6 * (k1v + 4 * k2v + k3v));
+}
+
+// Yoshida: three hand-written damped Verlet steps of w1 h, w0 h, w1 h.
+TEST_P(MethodStep, Yoshida4IsATripleJumpOfVerlet) {
+  const double c = std::cbrt(2.0), w1 = 1 / (2 - c), w0 = -c / (2 - c);
+  double x = y, u = v;
+  for (double w : {w1, w0, w1}) {
+    const double t = w * h, a0 = p.a(x, u), x1 = x + t * u + t * t / 2 * a0;
+    u = (u + t / 2 * a0 + t / 2 * (-p.k * (x1 + p.L) - p.m * p.g) / p.m) / (1 + t / 2 * p.gamma / p.m);
+    x = x1;
+  }
+  expect_state(one_step<Yoshida4>(s, y, v, h), x, u);
+}
+
+// On the linear spring a Gauss-Legendre step is R(h A) applied to (y - y_eq, v), with R the (2,2)
+// Pade approximant of exp: R(Z) = (I - Z/2 + Z^2/12)^-1 (I + Z/2 + Z^2/12).
+TEST_P(MethodStep, GaussLegendre4IsThePadeApproximant) {
+  Mat<2> A;
+  A << 0, 1, -p.k / p.m, -p.gamma / p.m;
+  const Mat<2> Z = h * A, I = Mat<2>::Identity();
+  const Mat<2> R = (I - Z / 2 + Z * Z / 12).inverse() * (I + Z / 2 + Z * Z / 12);
+  const double yeq = -p.L - p.m * p.g / p.k;
+  const Eigen::Vector2d u = R * Eigen::Vector2d(y - yeq, v);
+  expect_state(one_step<GaussLegendre4>(s, y, v, h), u[0] + yeq, u[1]);
+}
+
+// Multistep methods from a given past (their memory filled by `remember`), against the formulas.
+template <class M> State<1> multistep(const Spring& s, const std::vector<std::pair<double, double>>& past, double y, double v,
+                                      double h) {
+  Stepper<M, Spring> st;
+  st.memory = M::remember(s, [&](int k) { return State<1>{Vec<1>::Constant(past[k - 1].first), Vec<1>::Constant(past[k - 1].second)}; });
+  State<1> out{Vec<1>::Constant(y), Vec<1>::Constant(v)};
+  EXPECT_EQ(st.step(s, out, 0.0, h), StepStatus::Ok);
+  return out;
+}
+
+TEST_P(MethodStep, AdamsBashforth) {
+  const std::vector<std::pair<double, double>> past{{-6.2, 1.6}, {-6.05, 1.45}};  // y_{n-1}, y_{n-2}
+  const double f0v = p.a(y, v), f1v = p.a(past[0].first, past[0].second), f2v = p.a(past[1].first, past[1].second);
+  expect_state(multistep<AdamsBashforth2>(s, past, y, v, h), y + h * (1.5 * v - 0.5 * past[0].second),
+               v + h * (1.5 * f0v - 0.5 * f1v));
+  expect_state(multistep<AdamsBashforth3>(s, past, y, v, h),
+               y + h / 12 * (23 * v - 16 * past[0].second + 5 * past[1].second), v + h / 12 * (23 * f0v - 16 * f1v + 5 * f2v));
+}
+
+TEST_P(MethodStep, Bdf) {
+  const std::vector<std::pair<double, double>> past{{-6.2, 1.6}, {-6.05, 1.45}};
+  // y1 = w + beta h f(y1), linear: v1 (1 + b gamma/m + b^2 k/m) = wv + b (-k (wx + L) - m g)/m, b = beta h
+  const auto bdf = [&](double wx, double wv, double beta) {
+    const double b = beta * h;
+    const double v1 = (wv + b * (-p.k * (wx + p.L) - p.m * p.g) / p.m) / (1 + b * p.gamma / p.m + b * b * p.k / p.m);
+    return std::pair{wx + b * v1, v1};
+  };
+  const auto [x2, v2] = bdf(4.0 / 3 * y - 1.0 / 3 * past[0].first, 4.0 / 3 * v - 1.0 / 3 * past[0].second, 2.0 / 3);
+  expect_state(multistep<Bdf2>(s, past, y, v, h), x2, v2);
+  const auto [x3, v3] = bdf(18.0 / 11 * y - 9.0 / 11 * past[0].first + 2.0 / 11 * past[1].first,
+                            18.0 / 11 * v - 9.0 / 11 * past[0].second + 2.0 / 11 * past[1].second, 6.0 / 11);
+  expect_state(multistep<Bdf3>(s, past, y, v, h), x3, v3);
+}
+
+// The start: an explicit multistep method's first steps are RK4 steps, an implicit one's
+// Gauss-Legendre steps (A-stable, so a large step does not blow up what BDF damps).
+TEST_P(MethodStep, MultistepMethodsStartWithOneStepMethods) {
+  const auto first = [&]<class M>() {
+    Stepper<M, Spring> st;
+    State<1> out{Vec<1>::Constant(y), Vec<1>::Constant(v)};
+    st.step(s, out, 0.0, h);
+    return out;
+  };
+  const State<1> rk4 = one_step<Rk4>(s, y, v, h), gl = one_step<GaussLegendre4>(s, y, v, h);
+  expect_state(first.operator()<AdamsBashforth2>(), rk4.x[0], rk4.v[0]);
+  expect_state(first.operator()<AdamsBashforth3>(), rk4.x[0], rk4.v[0]);
+  expect_state(first.operator()<Bdf2>(), gl.x[0], gl.v[0]);
+  expect_state(first.operator()<Bdf3>(), gl.x[0], gl.v[0]);
+}
+
 TEST_P(MethodStep, AnalyticIsTheExactFlow) {
   const State<1> start{Vec<1>::Constant(y), Vec<1>::Constant(v)};
   const State<1> want = s.flow(start, h);
@@ -154,19 +239,29 @@ TEST(Newton, ReportsNoConvergence) {
 }
 
 TEST(MethodTable, NamesAliasesAndFlags) {
-  EXPECT_EQ(method_count, 8u);
+  EXPECT_EQ(method_count, 15u);
   EXPECT_EQ(find_method("euler"), find_method("explicit_euler"));
   EXPECT_EQ(find_method("midpoint"), find_method("explicit_midpoint"));
   EXPECT_EQ(find_method("backwards_euler"), find_method("implicit_euler"));
   EXPECT_FALSE(find_method("backward_euler").has_value());
   for (const auto& info : method_infos) {
-    const bool implicit = info.name == "implicit_euler" || info.name == "implicit_midpoint";
-    const bool symplectic = info.name == "symplectic_euler" || info.name == "velocity_verlet" ||
-                            info.name == "implicit_midpoint" || info.name == "analytic";
+    const bool implicit = info.name == "implicit_euler" || info.name == "implicit_midpoint" ||
+                          info.name == "gauss_legendre4" || info.name == "bdf2" || info.name == "bdf3";
+    const bool symplectic = info.name == "symplectic_euler" || info.name == "velocity_verlet" || info.name == "yoshida4" ||
+                            info.name == "implicit_midpoint" || info.name == "gauss_legendre4" || info.name == "analytic";
     EXPECT_EQ(info.implicit, implicit) << info.name;
     EXPECT_EQ(info.symplectic, symplectic) << info.name;
   }
   EXPECT_EQ(method_infos[*find_method("rk4")].order, 4);
+  // every family spans several orders; explicit and implicit Euler open Adams-Bashforth and BDF
+  EXPECT_EQ(method_infos[*find_method("explicit_euler")].also, Family::AdamsBashforth);
+  EXPECT_EQ(method_infos[*find_method("implicit_euler")].also, Family::Bdf);
+  for (Family f : {Family::ExplicitRungeKutta, Family::Splitting, Family::ImplicitRungeKutta}) {
+    std::set<int> orders;
+    for (const auto& info : method_infos)
+      if (info.family == f) orders.insert(info.order);
+    EXPECT_EQ(orders.size(), f == Family::ExplicitRungeKutta ? 4u : 3u) << to_string(f);
+  }
 }
 
 }  // namespace

@@ -74,6 +74,30 @@ TEST(Odeint, Rk4EqualsRungeKutta4) {
   expect_same(ours<Rk4>(s), theirs(odeint::runge_kutta4<Y>(), s));
 }
 
+// Kutta's third-order method as a generic explicit Runge-Kutta tableau.
+TEST(Odeint, Rk3EqualsGenericRk3) {
+  using Kutta3 = odeint::explicit_generic_rk<3, 3, Y, double>;
+  const Kutta3::coef_a_type a(boost::fusion::make_vector(boost::array<double, 1>{{0.5}}, boost::array<double, 2>{{-1.0, 2.0}}));
+  const Kutta3::coef_b_type b{{1.0 / 6, 2.0 / 3, 1.0 / 6}};
+  const Kutta3::coef_c_type c{{0.0, 0.5, 1.0}};
+  const Spring s = spring(0.1);
+  expect_same(ours<Rk3>(s), theirs(Kutta3(a, b, c), s));
+}
+
+// odeint's Adams-Bashforth with RK4 as its initialising stepper, which is how steplab starts them.
+template <std::size_t N>
+using OdeintAb = odeint::adams_bashforth<N, Y, double, Y, double, odeint::algebra_dispatcher<Y>::algebra_type,
+                                         odeint::operations_dispatcher<Y>::operations_type, odeint::initially_resizer,
+                                         odeint::runge_kutta4<Y>>;
+
+TEST(Odeint, AdamsBashforthEqualsAdamsBashforth) {
+  for (double gamma : {0.0, 0.1}) {
+    const Spring s = spring(gamma);
+    expect_same(ours<AdamsBashforth2>(s), theirs(OdeintAb<2>(), s));
+    expect_same(ours<AdamsBashforth3>(s), theirs(OdeintAb<3>(), s));
+  }
+}
+
 // odeint's velocity_verlet evaluates the new acceleration at the old velocity, so it is the same
 // method only without damping (see core/methods/velocity_verlet.hpp).
 TEST(Odeint, VelocityVerletEqualsVelocityVerletUndamped) {
