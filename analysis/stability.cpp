@@ -7,7 +7,7 @@
 
 #include "analysis/parallel.hpp"
 #include "core/methods.hpp"
-#include "core/stepper.hpp"
+#include "analysis/step_map.hpp"
 
 namespace steplab {
 namespace {
@@ -70,40 +70,13 @@ StableSet stable_set(double lo, double hi, double factor, double precision, Unst
 
 namespace {
 
-// The step map on (x, v, and a multistep method's memory), flattened: x, v, then every memory
-// entry's x and v (most recent first). A one-step method's map is (x, v) alone.
-template <class M> constexpr int map_size() {
-  if constexpr (Multistep<M>) return 2 * (1 + M::history);
-  else return 2;
-}
-
-template <class M> Eigen::VectorXd step_flat(const Spring& s, const Eigen::VectorXd& z, double h) {
-  State<1> y{Vec<1>::Constant(z[0]), Vec<1>::Constant(z[1])};
-  Stepper<M, Spring> stepper;
-  if constexpr (Multistep<M>)
-    stepper.memory = history_of<1, M::history>([&](int k) {
-      return State<1>{Vec<1>::Constant(z[2 * k]), Vec<1>::Constant(z[2 * k + 1])};
-    });
-  stepper.step(s, y, 0.0, h);
-  Eigen::VectorXd out(z.size());
-  out << y.x[0], y.v[0];
-  if constexpr (Multistep<M>)
-    for (int k = 1; k <= M::history; ++k) out.segment<2>(2 * k) << stepper.memory.past[k - 1].x[0], stepper.memory.past[k - 1].v[0];
-  return out;
-}
-
 template <class M> Eigen::MatrixXd differenced_matrix(const Spring& s, double h, double delta_x) {
   // An implicit method's Newton starts from x0 + h v0: the velocity perturbation must not carry
   // that guess past the anchor either, or Newton may settle on the other linear branch.
   const double delta_v = std::min(delta_x, 0.1 * std::abs(s.equilibrium()) / std::max(1.0, h));
   const State<1> eq{Vec<1>::Constant(s.equilibrium()), Vec<1>::Zero()};
   constexpr int n = map_size<M>();
-  Eigen::VectorXd rest(n);
-  rest << eq.x[0], eq.v[0];
-  if constexpr (Multistep<M>) {  // the memory of a run that has sat at equilibrium forever
-    const History<1, M::history> mem = M::remember(s, [&](int) { return eq; });
-    for (int k = 1; k <= M::history; ++k) rest.segment<2>(2 * k) << mem.past[k - 1].x[0], mem.past[k - 1].v[0];
-  }
+  const Eigen::VectorXd rest = at_rest_flat<M>(s, eq);
   const Eigen::VectorXd base = step_flat<M>(s, rest, h);
   Eigen::MatrixXd m(n, n);
   for (int j = 0; j < n; ++j) {
