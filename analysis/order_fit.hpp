@@ -26,8 +26,9 @@
 //      round-off noise (95 %, n - 3 degrees of freedom, the larger standard error of the two
 //      models) plus the truncation left over: p' is the same fit without the window's two
 //      smallest steps (its bias is larger than p's by the factor (dt ratio)^(2q) at least, so
-//      |p - p'| bounds p's own), and p_1, p_2 are the two models' estimates (which next term). Fewer than 5 points in the
-//      window: the plain slope and its interval stand in, and `order_model` says so.
+//      |p - p'| bounds p's own), and p_1, p_2 are the two models' estimates (which next term).
+//      Fewer than 5 points in the window: the plain slope and its interval stand in, and
+//      correction_power is 0.
 // SUNDIALS' ark_kepler --check-order also reports the pairwise orders; we keep them too.
 #pragma once
 

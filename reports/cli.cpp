@@ -133,7 +133,7 @@ int cli_main(int argc, const char* const* argv) {
   conv_cmd->add_option("--error", conv.error, "error the order is fitted to: final, max, rms")->capture_default_str();
   conv_cmd->add_option("--threads", conv.threads, "worker threads, 0 = all cores")->capture_default_str();
   conv_cmd->add_flag("--timing", conv.timing, "also time every run (work-precision; not reproducible byte for byte)");
-  conv_cmd->add_option("--json", conv.json, "write JSON (schema steplab.convergence/1) to this file");
+  conv_cmd->add_option("--json", conv.json, "write JSON (schema steplab.convergence/2) to this file");
 
   StabilityArgs damp, stab;
   CLI::App* damp_cmd = study->add_subcommand("damping", "spring: energy growth rate measured and predicted over damping and dt");

@@ -3,11 +3,12 @@
 // study, into one folder.
 //
 // Every sentence that states a finding is generated from the numbers: Findings holds what the
-// data say (which methods are stable where, the rank correlation of order and dt*, the methods
-// that break the pattern), and the text is rendered from it, so other parameters give other,
-// still true, sentences.
+// shared data say (which methods are stable where, dt* per method), each section computes what
+// its own sentences need, and the text is rendered from that, so other parameters give other,
+// still true, sentences. The sections are listed in reports/sections/sections.hpp.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -43,12 +44,13 @@ struct MethodFinding {
   bool stable_undamped;       // at config.small_dt with damping 0
   double dt_theory, dt_measured;  // at the spring's damping
   double growth_large_dt;     // measured d ln E / dt at config.large_dt
+  double again_measured;      // stable again from here (at the spring's damping; inf: never)
+  double dt_undamped_theory, dt_undamped_measured, again_undamped_measured;  // at damping 0
 };
 
 struct Findings {
   std::vector<MethodFinding> rows;
-  double spearman = 0;                  // rank correlation of declared order and measured dt*
-  std::vector<std::size_t> breakers;    // rows whose order and dt* ranks are >= n/3 apart
+  double spearman = 0;                  // rank correlation of declared order and measured dt*, pooled
   std::vector<std::size_t> stable_large, unstable_large, stable_undamped, unstable_undamped;
   std::vector<std::size_t> never_stable_undamped, always_stable;  // predicted dt* = 0 at gamma = 0 / inf
 };
@@ -60,8 +62,22 @@ Findings compute_findings(const ReportData& d);
 std::vector<double> average_ranks(const std::vector<double>& x);
 double spearman(const std::vector<double>& a, const std::vector<double>& b);
 
-std::string report_markdown(const ReportData& d, const Findings& f, const std::string& figure_ext,
-                            const std::string& footer);
+class Section;
+
+// The report: the shared studies, their findings, and the sections (reports/section.hpp) with
+// their own studies run.
+struct Report {
+  ReportData data;
+  Findings findings;
+  std::vector<std::unique_ptr<Section>> sections;
+  Report();
+  Report(Report&&) noexcept;
+  ~Report();
+};
+
+Report build_report(const ReportConfig& config);
+
+std::string report_markdown(const Report& r, const std::string& figure_ext, const std::string& footer);
 
 // The whole report into `out_dir`, atomically: built in a staging folder beside it and swapped
 // in at the end, so an interrupted run leaves the previous report as it was. Skips all work if

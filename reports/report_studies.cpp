@@ -57,7 +57,7 @@ ReportData run_report_studies(const ReportConfig& c) {
   StabilityConfig sc;
   sc.params = c.spring;
   sc.methods = d.methods;
-  sc.threshold_dampings = with_values(c.threshold_dampings, {gamma});
+  sc.threshold_dampings = with_values(c.threshold_dampings, {0.0, gamma});
   sc.sweep_dts = with_values(c.sweep_dts, {c.large_dt, c.small_dt});
   sc.sweep_dampings = with_values(default_dampings(Spring(c.spring)), {0.0, gamma});
   sc.map_dt_points = c.map_dt_points;
@@ -153,7 +153,7 @@ Findings compute_findings(const ReportData& d) {
   };
   for (std::size_t i = 0; i < d.methods.size(); ++i) {
     const std::size_t m = d.methods[i];
-    MethodFinding row{m, &d.conv_spring.fits[i], false, false, 0, 0, 0};
+    MethodFinding row{m, &d.conv_spring.fits[i], false, false, 0, 0, 0, 0, 0, 0, 0};
     const SweepRow* large = sweep_row(m, c.large_dt, gamma);
     const SweepRow* undamped = sweep_row(m, c.small_dt, 0.0);
     const ThresholdRow* th = threshold(m, gamma);
@@ -162,6 +162,11 @@ Findings compute_findings(const ReportData& d) {
     row.stable_undamped = undamped && undamped->run.stable();
     row.dt_theory = th ? th->dt_theory : NAN;
     row.dt_measured = th ? th->dt_measured : NAN;
+    row.again_measured = th ? th->again_measured : NAN;
+    const ThresholdRow* th0 = threshold(m, 0.0);
+    row.dt_undamped_theory = th0 ? th0->dt_theory : NAN;
+    row.dt_undamped_measured = th0 ? th0->dt_measured : NAN;
+    row.again_undamped_measured = th0 ? th0->again_measured : NAN;
     (row.stable_large_dt ? f.stable_large : f.unstable_large).push_back(i);
     (row.stable_undamped ? f.stable_undamped : f.unstable_undamped).push_back(i);
     if (const ThresholdRow* t0 = threshold(m, 0.0); t0 && t0->dt_theory == 0) f.never_stable_undamped.push_back(i);
@@ -176,11 +181,6 @@ Findings compute_findings(const ReportData& d) {
     dt.push_back(r.dt_measured);
   }
   f.spearman = spearman(order, dt);
-  // A method breaks the pattern when its order rank and its dt* rank are far apart.
-  const std::vector<double> order_rank = average_ranks(order), dt_rank = average_ranks(dt);
-  const double gap = static_cast<double>(f.rows.size()) / 3;
-  for (std::size_t i = 0; i < f.rows.size(); ++i)
-    if (std::abs(order_rank[i] - dt_rank[i]) >= gap) f.breakers.push_back(i);
   return f;
 }
 

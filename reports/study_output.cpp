@@ -22,7 +22,7 @@ Json scene_params_json(std::size_t scene, const std::vector<double>& values) {
 Json convergence_json(const ConvergenceResult& r) {
   const ConvergenceConfig& c = r.config;
   Json j;
-  j["schema"] = "steplab.convergence/1";
+  j["schema"] = "steplab.convergence/2";
   j["scene"] = scene_names[c.scene];
   Json p = scene_params_json(c.scene, c.params);
   p["t_end"] = c.t_end;

@@ -13,7 +13,7 @@ using Json = nlohmann::ordered_json;
 
 Json scene_params_json(std::size_t scene, const std::vector<double>& values);
 
-Json convergence_json(const ConvergenceResult& r);   // schema steplab.convergence/1
+Json convergence_json(const ConvergenceResult& r);   // schema steplab.convergence/2
 std::string convergence_table(const ConvergenceResult& r);
 
 }  // namespace steplab

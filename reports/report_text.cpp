@@ -1,0 +1,112 @@
+#include "reports/report_text.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/methods.hpp"
+#include "core/scenes.hpp"
+
+namespace steplab {
+
+std::string name(std::size_t m) { return std::string(method_infos[m].name); }
+std::string dt_text(double x) { return std::isinf(x) ? "inf" : std::isnan(x) ? "-" : fmt::format("{:.4g}", x); }
+std::string num(double x) { return std::isfinite(x) ? fmt::format("{}", x) : "NaN"; }
+
+std::string order_text(std::size_t m) {
+  const MethodInfo& info = method_infos[m];
+  return info.exact_flow ? "exact" : std::to_string(info.order);
+}
+
+std::string fitted_text(const ConvergenceFit& fit) {
+  if (fit.fit.exact) return "exact (round-off)";
+  if (!fit.fit.fitted) return "-";
+  return fmt::format("{:.3f} [{:.3f}, {:.3f}]", fit.fit.order, fit.fit.bound_lo, fit.fit.bound_hi);
+}
+
+std::string method_list(const std::vector<std::size_t>& methods) {
+  if (methods.empty()) return "none";
+  std::string out;
+  for (std::size_t i = 0; i < methods.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == methods.size() ? " and " : ", ") + fmt::format("`{}`", name(methods[i]));
+  return out;
+}
+
+std::string fits_table(const ConvergenceResult& r) {
+  std::string out =
+      "| method | declared | order | bound | window slope [95 % t] | R² | points | dt range |\n"
+      "|------------------|-----:|------:|-----------------|-----------------------|-------:|-----:|-------------------|\n";
+  for (const ConvergenceFit& f : r.fits) {
+    const MethodInfo& info = method_infos[f.method];
+    const std::string declared = order_text(f.method);
+    if (f.fit.exact) out += fmt::format("| `{}` | {} | exact | - | - | - | - | - |\n", info.name, declared);
+    else if (!f.fit.fitted) out += fmt::format("| `{}` | {} | - ({}) | - | - | - | - | - |\n", info.name, declared, f.fit.note);
+    else
+      out += fmt::format("| `{}` | {} | {:.3f} | [{:.3f}, {:.3f}] | {:.3f} [{:.3f}, {:.3f}] | {:.5f} | {} | {:.3g} – {:.3g} |\n",
+                         info.name, declared, f.fit.order, f.fit.bound_lo, f.fit.bound_hi, f.fit.line.slope, f.fit.line.ci95_lo,
+                         f.fit.line.ci95_hi, f.fit.line.r2, f.fit.line.n, f.fit.dt_lo, f.fit.dt_hi);
+  }
+  return out;
+}
+
+std::string params_text(std::size_t scene, const std::vector<double>& v) {
+  return with_scene(scene, [&]<class S>() {
+    std::string out;
+    for (std::size_t i = 0; i < S::params.size(); ++i) out += fmt::format("{}{} {}", i ? ", " : "", S::params[i].name, v[i]);
+    return out;
+  });
+}
+
+std::string wrapped(const std::string& cmd) {
+  std::string out, line;
+  std::size_t start = 0;
+  while (start < cmd.size()) {
+    std::size_t next = cmd.find(" --", start + 1);
+    if (next == std::string::npos) next = cmd.size();
+    const std::string piece = cmd.substr(start, next - start);
+    if (!line.empty() && line.size() + piece.size() > 76) {
+      out += line + " \\\n   ";
+      line.clear();
+    }
+    line += piece;
+    start = next;
+  }
+  return out + line + "\n";
+}
+
+std::string words(const std::vector<double>& v) {
+  std::string out;
+  for (double x : v) out += fmt::format("{}{}", out.empty() ? "" : " ", x);
+  return out;
+}
+
+std::string join(const std::vector<double>& v) {
+  std::string out;
+  for (double x : v) out += fmt::format("{}{}", out.empty() ? "" : ",", x);
+  return out;
+}
+
+std::string method_words(const std::vector<std::size_t>& methods) {
+  std::string out;
+  for (std::size_t m : methods) {
+    if (!out.empty()) out += ' ';
+    out += name(m);
+  }
+  return out;
+}
+
+std::vector<std::size_t> family_members(const std::vector<std::size_t>& methods, Family f) {
+  std::vector<std::size_t> out;
+  for (std::size_t m : methods)
+    if (method_infos[m].family == f || method_infos[m].also == f) out.push_back(m);
+  std::stable_sort(out.begin(), out.end(), [](std::size_t a, std::size_t b) { return method_infos[a].order < method_infos[b].order; });
+  return out;
+}
+
+bool family_order_less(std::size_t a, std::size_t b) {
+  const MethodInfo &x = method_infos[a], &y = method_infos[b];
+  return x.family != y.family ? x.family < y.family : x.order < y.order;
+}
+
+}  // namespace steplab
