@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -100,13 +102,15 @@ std::vector<std::size_t> family_members(const std::vector<std::size_t>& methods,
   std::vector<std::size_t> out;
   for (std::size_t m : methods)
     if (method_infos[m].family == f || method_infos[m].also == f) out.push_back(m);
-  std::stable_sort(out.begin(), out.end(), [](std::size_t a, std::size_t b) { return method_infos[a].order < method_infos[b].order; });
+  std::sort(out.begin(), out.end(), [](std::size_t a, std::size_t b) {
+    return std::pair(method_infos[a].order, a) < std::pair(method_infos[b].order, b);
+  });
   return out;
 }
 
 bool family_order_less(std::size_t a, std::size_t b) {
   const MethodInfo &x = method_infos[a], &y = method_infos[b];
-  return x.family != y.family ? x.family < y.family : x.order < y.order;
+  return std::tuple(x.family, x.order, a) < std::tuple(y.family, y.order, b);
 }
 
 }  // namespace steplab

@@ -30,6 +30,6 @@ std::string method_words(const std::vector<std::size_t>& methods);
 inline constexpr Family kReportFamilies[] = {Family::ExplicitRungeKutta, Family::Splitting, Family::ImplicitRungeKutta,
                                              Family::AdamsBashforth, Family::Bdf};
 std::vector<std::size_t> family_members(const std::vector<std::size_t>& methods, Family f);
-bool family_order_less(std::size_t a, std::size_t b);  // by family, then by order
+bool family_order_less(std::size_t a, std::size_t b);  // by family, then order, then table position
 
 }  // namespace steplab

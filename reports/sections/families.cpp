@@ -81,7 +81,7 @@ class Families : public Section {
   std::vector<FigureSpec> figures(const ReportData&) const override {
     std::vector<std::size_t> with_region;
     for (const StabilityRegion& r : regions_.regions) with_region.push_back(r.method);
-    std::stable_sort(with_region.begin(), with_region.end(), family_order_less);
+    std::sort(with_region.begin(), with_region.end(), family_order_less);
     return {{"fig10_regions", fmt::format("regions='{}'", method_words(with_region))}};
   }
 

@@ -1,4 +1,6 @@
 // The summary: one row per method, grouped by family, with what the answers below rest on.
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "core/methods.hpp"
@@ -22,8 +24,8 @@ class Summary : public Section {
                       c.large_dt, c.small_dt, gamma, c.large_dt);
     std::vector<const MethodFinding*> rows;
     for (const MethodFinding& r : page.findings.rows) rows.push_back(&r);
-    std::stable_sort(rows.begin(), rows.end(),
-                     [](const MethodFinding* a, const MethodFinding* b) { return family_order_less(a->method, b->method); });
+    std::sort(rows.begin(), rows.end(),
+              [](const MethodFinding* a, const MethodFinding* b) { return family_order_less(a->method, b->method); });
     const auto yes = [](bool b) { return b ? "yes" : "**no**"; };
     for (std::size_t i = 0; i < rows.size(); ++i) {
       const MethodFinding& r = *rows[i];
