@@ -1,8 +1,9 @@
 // Per-step cost: every method on every scene (step/<scene>/<method>), the same problems stepped
 // with Boost.Odeint (odeint/<scene>/<method>), and the plainest hand-written loop of the same
 // update (baseline/<scene>/<method>) as the floor. After the run a table of time-per-step ratios
-// steplab/odeint and steplab/baseline (medians of the repetitions) is printed and, with
-// --ratios FILE, written as Markdown.
+// steplab/odeint and steplab/baseline (medians of the repetitions) is printed (console format
+// only) and, with --ratios=FILE, written as Markdown. Every Google Benchmark flag works as it
+// documents it (--benchmark_format=json prints JSON on stdout, --benchmark_out=FILE, ...).
 //
 // Every benchmark steps one state in place, benchmark::DoNotOptimize on it each step, at
 // dt = 0.001, and starts again from the initial state every kRestart steps (10 simulated
@@ -10,6 +11,7 @@
 // decays to rest (where denormals or an early Newton exit would distort the time) or grows
 // without bound. steplab, odeint and the baselines all restart alike.
 #include <benchmark/benchmark.h>
+#include <unistd.h>
 
 #include <array>
 #include <cmath>
@@ -245,19 +247,31 @@ void register_odeint_all() {
 
 // ---------------- the ratio table ----------------
 
-// Collects the median (or the single) time per step of every benchmark while the console
-// reporter prints as usual.
-class RatioReporter : public benchmark::ConsoleReporter {
+// Collects the median (or the single) time per step of every benchmark while the reporter that
+// --benchmark_format asks for (console, json or csv) prints as Google Benchmark documents it.
+// Google Benchmark ignores --benchmark_format when given a reporter, so the format is read here.
+template <class Base>
+class Collecting : public Base {
  public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    for (const Run& r : runs) {
-      const bool use = r.run_type == Run::RT_Aggregate ? r.aggregate_name == "median" : r.repetitions <= 1;
+  using Base::Base;
+  void ReportRuns(const std::vector<benchmark::BenchmarkReporter::Run>& runs) override {
+    for (const auto& r : runs) {
+      const bool use = r.run_type == benchmark::BenchmarkReporter::Run::RT_Aggregate ? r.aggregate_name == "median"
+                                                                                     : r.repetitions <= 1;
       if (use && !r.error_occurred) ns_per_step[r.run_name.function_name] = r.GetAdjustedRealTime();
     }
-    ConsoleReporter::ReportRuns(runs);
+    Base::ReportRuns(runs);
   }
   std::map<std::string, double> ns_per_step;
 };
+
+// The value of --flag=value among the arguments (the last one given), or `fallback`.
+std::string flag_value(int argc, char** argv, const std::string& flag, const std::string& fallback) {
+  std::string v = fallback;
+  for (int i = 1; i < argc; ++i)
+    if (std::string a = argv[i]; a.rfind(flag + "=", 0) == 0) v = a.substr(flag.size() + 1);
+  return v;
+}
 
 std::string ratio_table(const std::map<std::string, double>& t) {
   std::string out = "| scene/method | steplab ns/step | odeint ns/step | baseline ns/step | steplab/odeint | steplab/baseline |\n"
@@ -295,19 +309,45 @@ int main(int argc, char** argv) {
   register_steplab();
   register_baselines();
   register_odeint_all();
+  // Read before Initialize, which takes the flags it knows out of argv.
+  const std::string format = flag_value(argc, argv, "--benchmark_format", "console");
+  if (format != "console" && format != "json" && format != "csv") {
+    std::fprintf(stderr, "steplab_bench: --benchmark_format=%s: accepted: console, json, csv\n", format.c_str());
+    return 2;
+  }
+  const std::string color = flag_value(argc, argv, "--benchmark_color", "auto");
+  const bool colored = color == "auto" ? isatty(STDOUT_FILENO) != 0 : color == "true" || color == "yes" || color == "1";
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
-  RatioReporter reporter;
-  benchmark::RunSpecifiedBenchmarks(&reporter);
+  std::map<std::string, double> ns_per_step;
+  if (format == "json") {
+    Collecting<benchmark::JSONReporter> reporter;
+    benchmark::RunSpecifiedBenchmarks(&reporter);
+    ns_per_step = reporter.ns_per_step;
+  } else if (format == "csv") {
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"  // deprecated, but still a documented format
+    Collecting<benchmark::CSVReporter> reporter;
+#pragma GCC diagnostic pop
+    benchmark::RunSpecifiedBenchmarks(&reporter);
+    ns_per_step = reporter.ns_per_step;
+  } else {
+    Collecting<benchmark::ConsoleReporter> reporter(colored ? benchmark::ConsoleReporter::OO_ColorTabular
+                                                            : benchmark::ConsoleReporter::OO_Tabular);
+    benchmark::RunSpecifiedBenchmarks(&reporter);
+    ns_per_step = reporter.ns_per_step;
+  }
   benchmark::Shutdown();
-  const std::string table = ratio_table(reporter.ns_per_step);
-  std::printf("\nTime per step, median of the repetitions (ratios < 1: steplab is faster)\n\n%s", table.c_str());
-  for (const auto& [name, ns] : reporter.ns_per_step) {
-    if (name.rfind("finite_check/", 0) != 0 || name.size() < 3 || name.substr(name.size() - 3) != "/on") continue;
-    const auto off = reporter.ns_per_step.find(name.substr(0, name.size() - 3) + "/off");
-    if (off != reporter.ns_per_step.end())
-      std::printf("%s: %.2f ns with the non-finite check, %.2f ns without (%+.1f %%)\n", name.substr(13, name.size() - 16).c_str(),
-                  ns, off->second, 100 * (ns / off->second - 1));
+  const std::string table = ratio_table(ns_per_step);
+  if (format == "console") {  // json and csv on stdout stay machine-readable
+    std::printf("\nTime per step, median of the repetitions (ratios < 1: steplab is faster)\n\n%s", table.c_str());
+    for (const auto& [name, ns] : ns_per_step) {
+      if (name.rfind("finite_check/", 0) != 0 || name.size() < 3 || name.substr(name.size() - 3) != "/on") continue;
+      const auto off = ns_per_step.find(name.substr(0, name.size() - 3) + "/off");
+      if (off != ns_per_step.end())
+        std::printf("%s: %.2f ns with the non-finite check, %.2f ns without (%+.1f %%)\n", name.substr(13, name.size() - 16).c_str(),
+                    ns, off->second, 100 * (ns / off->second - 1));
+    }
   }
   if (!ratios_path.empty()) std::ofstream(ratios_path) << table;
   return 0;
