@@ -4,10 +4,10 @@
 // case provides, which must come out unchanged.
 #include <gtest/gtest.h>
 
-#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <ostream>
 
 #include "cli_helpers.hpp"
 
@@ -50,10 +50,11 @@ TEST_P(BadInputs, OneLineExitTwoNothingWritten) {
   EXPECT_EQ(snapshot(dir.root()), before) << in.args << " wrote or changed a file";
 }
 
-std::string case_name(const ::testing::TestParamInfo<BadInput>& info) {
-  std::string name = std::to_string(info.index) + "_";
-  for (const char* c = info.param.args; *c && name.size() < 60; ++c) name += std::isalnum(static_cast<unsigned char>(*c)) ? *c : '_';
-  return name;
+// How a case reads in the test list (CTest shows it as the test's name): the command, and the
+// config file it is given.
+void PrintTo(const BadInput& in, std::ostream* os) {
+  *os << "steplab " << in.args;
+  if (*in.file) *os << " with config.json " << in.file;
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -103,9 +104,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"report --config {dir}/config.json --out {dir}/r", "JSON object", "[]"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "sweep_dts", R"({"stability": {"sweep_dts": [0.01, "x"]}})"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "not valid JSON", R"({"spring": {"mass": NaN}})"},  // JSON has no NaN
-        BadInput{"report --out {dir}/no/such/report", "no/such"}),
-    case_name);
-
+        BadInput{"report --out {dir}/no/such/report", "no/such"}));
 
 }  // namespace
 }  // namespace steplab
