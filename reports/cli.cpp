@@ -77,6 +77,27 @@ int legacy_command(const LegacyArgs& l) {
   return run_command(run);
 }
 
+// What each option takes, shown in --help instead of CLI11's TEXT (every value is read as text and
+// checked by reports/inputs.cpp, so that a bad one gets steplab's own message).
+std::string_view value_kind(std::string_view option) {
+  static constexpr std::pair<std::string_view, std::string_view> kinds[] = {
+      {"--samples", "WHOLE"},         {"--points", "WHOLE"},          {"--threads", "WHOLE"},
+      {"--map-dt-points", "WHOLE"},   {"--map-damping-points", "WHOLE"},
+      {"--methods", "NAME,..."},      {"--dts", "NUMBER,..."},        {"--threshold-dampings", "NUMBER,..."},
+      {"--dampings", "NUMBER,..."},   {"--method", "NAME"},           {"--scene", "NAME"},
+      {"--error", "NAME"},            {"--testcase", "NAME"},         {"--json", "FILE"},
+      {"--config", "FILE"},           {"--out", "FOLDER"}};
+  for (const auto& [name, kind] : kinds)
+    if (name == option) return kind;
+  return "NUMBER";  // steps, times, ranges and every scene parameter
+}
+
+void name_value_kinds(CLI::App& app) {
+  for (CLI::Option* o : app.get_options())
+    if (o->get_type_size() != 0 && !o->get_lnames().empty()) o->type_name(std::string(value_kind("--" + o->get_lnames()[0])));
+  for (CLI::App* sub : app.get_subcommands({})) name_value_kinds(*sub);
+}
+
 // Progress of a study on stderr, only when stderr is a terminal and the study has run for a
 // second: "steplab: 1234/4096 runs".
 void install_terminal_progress() {
@@ -157,6 +178,8 @@ int cli_main(int argc, const char* const* argv) {
   rep_cmd->add_option("--config", rep.config, "JSON file overriding any study parameter (see --print-config)");
   rep_cmd->add_flag("--force", rep.force, "redo the report even if it is up to date");
   rep_cmd->add_flag("--print-config", rep.print_config, "print the configuration (defaults, or --config applied) and exit");
+
+  name_value_kinds(app);
 
   std::vector<const char*> cargv{argv[0]};
   for (const auto& a : args) cargv.push_back(a.c_str());

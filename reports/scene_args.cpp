@@ -1,5 +1,7 @@
 #include "reports/scene_args.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "core/scenes.hpp"
@@ -7,18 +9,24 @@
 
 namespace steplab {
 
-std::vector<std::pair<std::string, std::string>> all_scene_parameters() {
-  std::vector<std::pair<std::string, std::string>> out;
-  for (std::size_t s = 0; s < scene_count; ++s) {
+std::vector<std::string> all_scene_parameters() {
+  std::vector<std::string> out;
+  for (std::size_t s = 0; s < scene_count; ++s)
     with_scene(s, [&]<class S>() {
-      for (const ParamSpec& p : S::params) {
-        const std::string entry = fmt::format("{}: {} (default {})", S::name, p.help, p.fallback);
-        auto it = std::find_if(out.begin(), out.end(), [&](const auto& e) { return e.first == p.name; });
-        if (it == out.end()) out.emplace_back(std::string(p.name), entry);
-        else it->second += "; " + entry;
-      }
+      for (const ParamSpec& p : S::params)
+        if (std::find(out.begin(), out.end(), p.name) == out.end()) out.emplace_back(p.name);
     });
-  }
+  return out;
+}
+
+std::string scene_parameters_help() {
+  std::string out = "Scene parameters (each a NUMBER), by scene:\n";
+  for (std::size_t s = 0; s < scene_count; ++s)
+    with_scene(s, [&]<class S>() {
+      out += fmt::format("  {}:\n", S::name);
+      for (const ParamSpec& p : S::params)
+        out += fmt::format("    {:<28}{} (default {})\n", fmt::format("--{} NUMBER", p.name), p.help, p.fallback);
+    });
   return out;
 }
 
@@ -26,7 +34,9 @@ void SceneArgs::add_to(CLI::App* a, bool with_scene_option) {
   app = a;
   if (with_scene_option)
     a->add_option("--scene", scene, "scene: " + scene_list() + " (spring1d is the old name of spring)")->capture_default_str();
-  for (const auto& [name, help] : all_scene_parameters()) a->add_option("--" + name, text[name], help)->group("Scene parameters");
+  // Listed once, by scene, in the footer; an empty group keeps them out of the merged option list.
+  for (const std::string& name : all_scene_parameters()) a->add_option("--" + name, text[name])->group("");
+  a->footer(scene_parameters_help());
 }
 
 bool SceneArgs::given(std::string_view name) const {

@@ -18,7 +18,7 @@ struct SceneArgs {
   std::map<std::string, double, std::less<>> fallback;    // defaults that replace the scene's (old flags)
   CLI::App* app = nullptr;
 
-  // Adds --scene and one option per parameter name of any scene.
+  // Adds --scene, one option per parameter name of any scene, and their help by scene.
   void add_to(CLI::App* a, bool with_scene_option = true);
   void set(std::string_view name, std::string value) { text[std::string(name)] = std::move(value); }
   bool given(std::string_view name) const;
@@ -29,7 +29,9 @@ struct SceneArgs {
   std::vector<double> values(std::size_t scene_index) const;
 };
 
-// Every parameter name that some scene has, in first-seen order, with a help line.
-std::vector<std::pair<std::string, std::string>> all_scene_parameters();
+// Every parameter name that some scene has, in first-seen order.
+std::vector<std::string> all_scene_parameters();
+// The scenes' parameters for --help, grouped by scene, each with its meaning and default.
+std::string scene_parameters_help();
 
 }  // namespace steplab

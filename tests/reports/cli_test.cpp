@@ -86,6 +86,30 @@ TEST(Cli, HelpListsEveryOption) {
     EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
 }
 
+// --help names each option's kind of value (never CLI11's TEXT) and lists the scene parameters
+// under each scene that has them.
+TEST(Cli, HelpShowsKindsOfValueAndParametersByScene) {
+  for (const char* cmd : {"--help", "run --help", "study convergence --help", "study damping --help", "study stability --help",
+                          "study collision --help", "report --help"}) {
+    const Result r = run_steplab(cmd);
+    ASSERT_EQ(r.status, 0) << cmd;
+    EXPECT_EQ(r.out.find("TEXT"), std::string::npos) << cmd << "\n" << r.out;
+  }
+  const std::string run = run_steplab("run --help").out;
+  for (const char* shown : {"--dt NUMBER", "--samples WHOLE", "--method NAME", "--json FILE"})
+    EXPECT_NE(run.find(shown), std::string::npos) << shown << "\n" << run;
+  // Under "spring:" its own parameters, up to the next scene; cannon ball's speed is not there.
+  const std::size_t spring = run.find("\n  spring:\n"), next = run.find(":\n", spring + 11);
+  ASSERT_NE(spring, std::string::npos) << run;
+  const std::string block = run.substr(spring, next - spring);
+  for (const char* p : {"--mass NUMBER", "--stiffness NUMBER", "--damping NUMBER", "--rest-length NUMBER", "--gravity NUMBER"})
+    EXPECT_NE(block.find(p), std::string::npos) << p << "\n" << block;
+  EXPECT_EQ(block.find("--speed"), std::string::npos) << block;
+  const std::string conv = run_steplab("study convergence --help").out;
+  EXPECT_NE(conv.find("--methods NAME,..."), std::string::npos) << conv;
+  EXPECT_NE(conv.find("--points WHOLE"), std::string::npos) << conv;
+}
+
 TEST(Cli, UnwritableOutputIsRefused) {
   const Result r = run_steplab("run --json /nonexistent-dir/out.json");
   EXPECT_EQ(r.status, 2);
