@@ -94,7 +94,8 @@ std::string_view value_kind(std::string_view option) {
 
 void name_value_kinds(CLI::App& app) {
   for (CLI::Option* o : app.get_options())
-    if (o->get_type_size() != 0 && !o->get_lnames().empty()) o->type_name(std::string(value_kind("--" + o->get_lnames()[0])));
+    if (o->get_expected_max() != 0 && !o->get_lnames().empty() && o != app.get_help_ptr())  // not flags, not --help
+      o->type_name(std::string(value_kind("--" + o->get_lnames()[0])));
   for (CLI::App* sub : app.get_subcommands({})) name_value_kinds(*sub);
 }
 

@@ -94,6 +94,7 @@ TEST(Cli, HelpShowsKindsOfValueAndParametersByScene) {
     const Result r = run_steplab(cmd);
     ASSERT_EQ(r.status, 0) << cmd;
     EXPECT_EQ(r.out.find("TEXT"), std::string::npos) << cmd << "\n" << r.out;
+    EXPECT_EQ(r.out.find("--help NUMBER"), std::string::npos) << cmd << "\n" << r.out;  // flags take no value
   }
   const std::string run = run_steplab("run --help").out;
   for (const char* shown : {"--dt NUMBER", "--samples WHOLE", "--method NAME", "--json FILE"})
