@@ -144,6 +144,12 @@ std::string slurp(const fs::path& p) {
 }  // namespace
 
 int write_report(const ReportConfig& c, const std::string& out_dir, bool force) {
+  // SIGINT and SIGTERM stop the work at the next task or tool; the staging folder is removed
+  // and the previous report stays as it was. Installed first, so an early Ctrl-C exits 130 too.
+  struct sigaction sa {};
+  sa.sa_handler = on_interrupt;
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
   const fs::path out = fs::absolute(out_dir);
   const std::string stamp = stamp_for(c);
   if (!force && fs::exists(out / "data" / "stamp") && slurp(out / "data" / "stamp") == stamp && fs::exists(out / "report.pdf")) {
@@ -155,12 +161,6 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force) 
     throw std::runtime_error("the report needs gnuplot, pandoc and pdflatex; run: tools/install-deps report");
 
   const fs::path staging = out.parent_path() / fmt::format(".{}.staging-{}", out.filename().string(), getpid());
-  // SIGINT and SIGTERM stop the work at the next task or tool; the staging folder is removed
-  // and the previous report stays as it was.
-  struct sigaction sa {};
-  sa.sa_handler = on_interrupt;
-  sigaction(SIGINT, &sa, nullptr);
-  sigaction(SIGTERM, &sa, nullptr);
   fs::remove_all(staging);
   fs::create_directories(staging / "data");
   fs::create_directories(staging / "figures");
