@@ -20,8 +20,11 @@ namespace steplab {
 
 // The last K entries (states or derivatives, as the method chooses), past[0] the most recent.
 template <int D, int K> struct History {
-  std::array<State<D>, K> past{};
+  std::array<State<D>, K> past;
   int count = 0;  // how many are filled; a method starts itself (one-step steps) until count == K
+  // Zeroed (Eigen leaves a vector uninitialised): never read before count says so, but the
+  // compiler cannot see that through a method's start-up branch.
+  History() { past.fill({Vec<D>::Zero(), Vec<D>::Zero()}); }
   void push(const State<D>& s) {
     for (int i = K - 1; i > 0; --i) past[i] = past[i - 1];
     past[0] = s;

@@ -1,0 +1,78 @@
+// Linear multistep methods on y' = f(y) = (v, a(x, v)), from their coefficients. Each keeps a
+// memory of K past entries (core/stepper.hpp) and starts itself with one-step steps of order 4
+// until the memory is full, so the start costs no order.
+//
+//   Adams-Bashforth, explicit, memory f_{n-1} .. f_{n-K}, started by RK4:
+//     y_{n+1} = y_n + h (b_0 f_n + b_1 f_{n-1} + ... + b_K f_{n-K})
+//   BDF, implicit, memory y_{n-1} .. y_{n-K}, started by Gauss-Legendre (A-stable, so a start at
+//   a step far beyond any explicit method's limit does not blow up what the BDF would damp):
+//     y_{n+1} = w + beta h f(y_{n+1}),   w = a_0 y_n + a_1 y_{n-1} + ... + a_K y_{n-K}
+//   in (x, v): x_{n+1} = w_x + beta h v_{n+1},  M (v_{n+1} - w_v) = beta h F(w_x + beta h v_{n+1}, v_{n+1}),
+//   which is solve_implicit (core/method.hpp) with x0 = w_x, cx = c = beta h.
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+#include "core/methods/gauss_legendre4.hpp"
+#include "core/methods/rk4.hpp"
+#include "core/stepper.hpp"
+
+namespace steplab {
+
+// Sum_j c[j] e_j over e_0 = `now` and the memory's entries e_1 .. e_K.
+template <auto C, int D, int K> State<D> combination(const State<D>& now, const History<D, K>& mem) {
+  static_assert(C.size() == K + 1);
+  State<D> out{C[0] * now.x, C[0] * now.v};
+  for (int j = 1; j <= K; ++j) {
+    out.x += C[j] * mem.past[j - 1].x;
+    out.v += C[j] * mem.past[j - 1].v;
+  }
+  return out;
+}
+
+// B: b_0 .. b_K.
+template <auto B> struct AdamsBashforthMethod {
+  static constexpr int history = static_cast<int>(B.size()) - 1;
+  // Memory of a run whose state k steps back was past(k): the derivatives there.
+  template <Scene S, class Past> static History<S::dim, history> remember(const S& s, Past&& past) {
+    return history_of<S::dim, history>([&](int k) { return derivative(s, past(k)); });
+  }
+  template <Scene S>
+  static StepStatus step(const S& s, State<S::dim>& y, double t, double h, History<S::dim, history>& mem) {
+    const State<S::dim> f = derivative(s, y);
+    if (mem.count < history) {
+      mem.push(f);
+      return Rk4::step(s, y, t, h);
+    }
+    const State<S::dim> sum = combination<B>(f, mem);
+    y.x += h * sum.x;
+    y.v += h * sum.v;
+    mem.push(f);
+    return StepStatus::Ok;
+  }
+};
+
+// A: a_0 .. a_K; Beta: beta.
+template <auto A, double Beta> struct BdfMethod {
+  static constexpr int history = static_cast<int>(A.size()) - 1;
+  // Memory of a run whose state k steps back was past(k): those states.
+  template <Scene S, class Past> static History<S::dim, history> remember(const S&, Past&& past) {
+    return history_of<S::dim, history>(past);
+  }
+  template <Scene S>
+  static StepStatus step(const S& s, State<S::dim>& y, double t, double h, History<S::dim, history>& mem) {
+    const State<S::dim> now = y;
+    if (mem.count < history) {
+      mem.push(now);
+      return GaussLegendre4::step(s, y, t, h);
+    }
+    const State<S::dim> w = combination<A>(now, mem);
+    const StepStatus st = solve_implicit(s, w.x, Beta * h, w.v, Beta * h, y.v);
+    y.x = w.x + (Beta * h) * y.v;
+    mem.push(now);
+    return st;
+  }
+};
+
+}  // namespace steplab
