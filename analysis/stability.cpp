@@ -66,10 +66,6 @@ StableSet stable_set(double lo, double hi, double factor, double precision, Unst
   return out;
 }
 
-}  // namespace
-
-namespace {
-
 template <class M> Eigen::MatrixXd differenced_matrix(const Spring& s, double h, double delta_x) {
   // An implicit method's Newton starts from x0 + h v0: the velocity perturbation must not carry
   // that guess past the anchor either, or Newton may settle on the other linear branch.
@@ -98,6 +94,8 @@ template <class M> Eigen::MatrixXd differenced_matrix(const Spring& s, double h,
 // out "stable" from such noise; exact arithmetic on its trace finds no stable window there.
 constexpr double kTrustedEntry = 1e6;
 
+bool trusted(const Eigen::MatrixXd& m) { return m.cwiseAbs().maxCoeff() <= kTrustedEntry; }  // false for NaN too
+
 // Two passes: a tiny perturbation estimates |M|; then one a tenth of the distance to the anchor,
 // divided by max(1, |M|), which keeps every state below the anchor (where the force is linear)
 // and resolves M to ~eps |y_eq| / delta ~ 1e-14.
@@ -107,7 +105,7 @@ Eigen::MatrixXd step_matrix(std::size_t method, const Spring& s, double h) {
     const Eigen::MatrixXd rough = differenced_matrix<M>(s, h, 1e-6 * room);
     // so large that the second pass's perturbation would vanish in y_eq's rounding: past any
     // trust (predicted_stable), and the rough matrix already says so
-    if (!(rough.cwiseAbs().maxCoeff() <= kTrustedEntry)) return rough;
+    if (!trusted(rough)) return rough;
     return differenced_matrix<M>(s, h, room / std::max(1.0, rough.cwiseAbs().maxCoeff()));
   });
 }
@@ -127,11 +125,10 @@ double predicted_rate(std::size_t method, const Spring& s, double h) {
   return 2 * std::log(spectral_radius(step_matrix(method, s, h))) / h;
 }
 
-
 bool predicted_stable(std::size_t method, const Spring& s, double h) {
   const double wh = s.omega() * h;
   const Eigen::MatrixXd m = step_matrix(method, s, h);
-  if (!(m.cwiseAbs().maxCoeff() <= kTrustedEntry)) return false;
+  if (!trusted(m)) return false;
   return spectral_radius(m) <= 1 + std::min(kRhoToleranceMax, kRhoTolerance * std::max(1.0, wh * wh));
 }
 
@@ -226,6 +223,13 @@ StabilityMap stability_map(const StabilityConfig& c) {
     map.predicted[i / (ng * nd)][(i / nd) % ng][i % nd] = predicted[i];
   }
   return map;
+}
+
+std::size_t disagreeing_cells(const StabilityMap& map, std::size_t i) {
+  std::size_t n = 0;
+  for (std::size_t g = 0; g < map.damping.size(); ++g)
+    for (std::size_t d = 0; d < map.dt.size(); ++d) n += map.stable[i][g][d] != map.predicted[i][g][d];
+  return n;
 }
 
 AmplitudeTable amplitude_table(const std::vector<double>& params, const std::vector<std::size_t>& methods,

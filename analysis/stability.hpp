@@ -105,6 +105,9 @@ struct StabilityMap {
   std::vector<std::vector<double>> boundary;            // [method][damping]: predicted dt*
 };
 
+// The cells of method i's map whose measured verdict differs from the prediction at that cell.
+std::size_t disagreeing_cells(const StabilityMap& map, std::size_t i);
+
 struct StabilityConfig {
   std::vector<double> params;                  // Spring parameters, table order (damping replaced per row)
   std::vector<std::size_t> methods;

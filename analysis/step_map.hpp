@@ -15,6 +15,11 @@ template <class M> constexpr int map_size() {
   else return 2;
 }
 
+// A memory's entries into z after (x, v): entry k at 2k, 2k + 1.
+template <int K> void put_memory(Eigen::VectorXd& z, const History<1, K>& mem) {
+  for (int k = 1; k <= K; ++k) z.segment<2>(2 * k) << mem.past[k - 1].x[0], mem.past[k - 1].v[0];
+}
+
 // One step of M from the flattened state z (memory full), returned flattened.
 template <class M, Scene S> Eigen::VectorXd step_flat(const S& s, const Eigen::VectorXd& z, double h) {
   static_assert(S::dim == 1, "the step map is flattened for 1-D scenes");
@@ -27,8 +32,7 @@ template <class M, Scene S> Eigen::VectorXd step_flat(const S& s, const Eigen::V
   stepper.step(s, y, 0.0, h);
   Eigen::VectorXd out(z.size());
   out << y.x[0], y.v[0];
-  if constexpr (Multistep<M>)
-    for (int k = 1; k <= M::history; ++k) out.segment<2>(2 * k) << stepper.memory.past[k - 1].x[0], stepper.memory.past[k - 1].v[0];
+  if constexpr (Multistep<M>) put_memory(out, stepper.memory);
   return out;
 }
 
@@ -36,10 +40,7 @@ template <class M, Scene S> Eigen::VectorXd step_flat(const S& s, const Eigen::V
 template <class M, Scene S> Eigen::VectorXd at_rest_flat(const S& s, const State<1>& y) {
   Eigen::VectorXd z(map_size<M>());
   z << y.x[0], y.v[0];
-  if constexpr (Multistep<M>) {
-    const History<1, M::history> mem = M::remember(s, [&](int) { return y; });
-    for (int k = 1; k <= M::history; ++k) z.segment<2>(2 * k) << mem.past[k - 1].x[0], mem.past[k - 1].v[0];
-  }
+  if constexpr (Multistep<M>) put_memory(z, M::remember(s, [&](int) { return y; }));
   return z;
 }
 

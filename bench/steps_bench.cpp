@@ -265,6 +265,13 @@ class Collecting : public Base {
   std::map<std::string, double> ns_per_step;
 };
 
+// Runs the benchmarks with a Collecting<Reporter>; returns the times it collected.
+template <class Reporter, class... Args> std::map<std::string, double> run_collecting(Args... args) {
+  Collecting<Reporter> reporter(args...);
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  return reporter.ns_per_step;
+}
+
 // The value of --flag=value among the arguments (the last one given), or `fallback`.
 std::string flag_value(int argc, char** argv, const std::string& flag, const std::string& fallback) {
   std::string v = fallback;
@@ -319,24 +326,14 @@ int main(int argc, char** argv) {
   const bool colored = color == "auto" ? isatty(STDOUT_FILENO) != 0 : color == "true" || color == "yes" || color == "1";
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
-  std::map<std::string, double> ns_per_step;
-  if (format == "json") {
-    Collecting<benchmark::JSONReporter> reporter;
-    benchmark::RunSpecifiedBenchmarks(&reporter);
-    ns_per_step = reporter.ns_per_step;
-  } else if (format == "csv") {
 #pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wdeprecated-declarations"  // deprecated, but still a documented format
-    Collecting<benchmark::CSVReporter> reporter;
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"  // CSVReporter: deprecated, but still a documented format
+  const std::map<std::string, double> ns_per_step =
+      format == "json"  ? run_collecting<benchmark::JSONReporter>()
+      : format == "csv" ? run_collecting<benchmark::CSVReporter>()
+                        : run_collecting<benchmark::ConsoleReporter>(colored ? benchmark::ConsoleReporter::OO_ColorTabular
+                                                                             : benchmark::ConsoleReporter::OO_Tabular);
 #pragma GCC diagnostic pop
-    benchmark::RunSpecifiedBenchmarks(&reporter);
-    ns_per_step = reporter.ns_per_step;
-  } else {
-    Collecting<benchmark::ConsoleReporter> reporter(colored ? benchmark::ConsoleReporter::OO_ColorTabular
-                                                            : benchmark::ConsoleReporter::OO_Tabular);
-    benchmark::RunSpecifiedBenchmarks(&reporter);
-    ns_per_step = reporter.ns_per_step;
-  }
   benchmark::Shutdown();
   const std::string table = ratio_table(ns_per_step);
   if (format == "console") {  // json and csv on stdout stay machine-readable

@@ -45,7 +45,7 @@ struct MethodFinding {
   double dt_theory, dt_measured;  // at the spring's damping
   double growth_large_dt;     // measured d ln E / dt at config.large_dt
   double again_measured;      // stable again from here (at the spring's damping; inf: never)
-  double dt_undamped_theory, dt_undamped_measured, again_undamped_measured;  // at damping 0
+  double dt_undamped_theory, dt_undamped_measured;  // at damping 0
 };
 
 struct Findings {
@@ -56,6 +56,9 @@ struct Findings {
 };
 
 Findings compute_findings(const ReportData& d);
+
+// The threshold row of a method at a damping (nullptr if the study did not run that pair).
+const ThresholdRow* find_threshold(const ReportData& d, std::size_t method, double damping);
 
 // Ranks 1..n with ties sharing their average rank (+inf ranks above every finite value), and
 // Spearman's rho: the correlation of two such rankings.

@@ -137,6 +137,12 @@ double spearman(const std::vector<double>& a, const std::vector<double>& b) {
   return saa > 0 && sbb > 0 ? sab / std::sqrt(saa * sbb) : 0.0;
 }
 
+const ThresholdRow* find_threshold(const ReportData& d, std::size_t method, double damping) {
+  for (const ThresholdRow& r : d.thresholds)
+    if (r.method == method && r.damping == damping) return &r;
+  return nullptr;
+}
+
 Findings compute_findings(const ReportData& d) {
   const ReportConfig& c = d.config;
   const double gamma = c.spring[2];
@@ -146,30 +152,24 @@ Findings compute_findings(const ReportData& d) {
       if (r.method == m && r.dt == dt && r.damping == damping) return &r;
     return nullptr;
   };
-  const auto threshold = [&](std::size_t m, double damping) -> const ThresholdRow* {
-    for (const ThresholdRow& r : d.thresholds)
-      if (r.method == m && r.damping == damping) return &r;
-    return nullptr;
-  };
   for (std::size_t i = 0; i < d.methods.size(); ++i) {
     const std::size_t m = d.methods[i];
-    MethodFinding row{m, &d.conv_spring.fits[i], false, false, 0, 0, 0, 0, 0, 0, 0};
+    MethodFinding row{m, &d.conv_spring.fits[i], false, false, 0, 0, 0, 0, 0, 0};
     const SweepRow* large = sweep_row(m, c.large_dt, gamma);
     const SweepRow* undamped = sweep_row(m, c.small_dt, 0.0);
-    const ThresholdRow* th = threshold(m, gamma);
+    const ThresholdRow* th = find_threshold(d, m, gamma);
     row.stable_large_dt = large && large->run.stable();
     row.growth_large_dt = large ? large->run.rate : NAN;
     row.stable_undamped = undamped && undamped->run.stable();
     row.dt_theory = th ? th->dt_theory : NAN;
     row.dt_measured = th ? th->dt_measured : NAN;
     row.again_measured = th ? th->again_measured : NAN;
-    const ThresholdRow* th0 = threshold(m, 0.0);
+    const ThresholdRow* th0 = find_threshold(d, m, 0.0);
     row.dt_undamped_theory = th0 ? th0->dt_theory : NAN;
     row.dt_undamped_measured = th0 ? th0->dt_measured : NAN;
-    row.again_undamped_measured = th0 ? th0->again_measured : NAN;
     (row.stable_large_dt ? f.stable_large : f.unstable_large).push_back(i);
     (row.stable_undamped ? f.stable_undamped : f.unstable_undamped).push_back(i);
-    if (const ThresholdRow* t0 = threshold(m, 0.0); t0 && t0->dt_theory == 0) f.never_stable_undamped.push_back(i);
+    if (row.dt_undamped_theory == 0) f.never_stable_undamped.push_back(i);
     if (std::isinf(row.dt_theory)) f.always_stable.push_back(i);
     f.rows.push_back(row);
   }

@@ -27,12 +27,20 @@ std::string fitted_text(const ConvergenceFit& fit) {
   return fmt::format("{:.3f} [{:.3f}, {:.3f}]", fit.fit.order, fit.fit.bound_lo, fit.fit.bound_hi);
 }
 
+std::string and_list(const std::vector<std::string>& items) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (i > 0) out += i + 1 == items.size() ? " and " : ", ";
+    out += items[i];
+  }
+  return out;
+}
+
 std::string method_list(const std::vector<std::size_t>& methods) {
   if (methods.empty()) return "none";
-  std::string out;
-  for (std::size_t i = 0; i < methods.size(); ++i)
-    out += (i == 0 ? "" : i + 1 == methods.size() ? " and " : ", ") + fmt::format("`{}`", name(methods[i]));
-  return out;
+  std::vector<std::string> quoted;
+  for (std::size_t m : methods) quoted.push_back(fmt::format("`{}`", name(m)));
+  return and_list(quoted);
 }
 
 std::string fits_table(const ConvergenceResult& r) {

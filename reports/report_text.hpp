@@ -17,6 +17,7 @@ std::string dt_text(double x);                            // 4 significant digit
 std::string num(double x);                                // full precision for data files; NaN if not finite
 std::string order_text(std::size_t method);               // declared order, or "exact"
 std::string fitted_text(const ConvergenceFit& fit);       // headline order and its bound
+std::string and_list(const std::vector<std::string>& items);       // a, b and c
 std::string method_list(const std::vector<std::size_t>& methods);  // `a`, `b` and `c`; "none"
 std::string fits_table(const ConvergenceResult& r);       // the Markdown table of fitted orders
 std::string params_text(std::size_t scene, const std::vector<double>& values);

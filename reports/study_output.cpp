@@ -264,14 +264,11 @@ std::string map_summary(const StabilityMap& map) {
                                 "{:<18} {:>14} {:>22}\n", map.dt.size(), map.dt.front(), map.dt.back(), map.damping.size(),
                                 map.damping.back(), "method", "stable cells", "disagree w/ predicted");
   for (std::size_t i = 0; i < map.methods.size(); ++i) {
-    int stable = 0, disagree = 0;
-    for (std::size_t g = 0; g < map.damping.size(); ++g)
-      for (std::size_t d = 0; d < map.dt.size(); ++d) {
-        stable += map.stable[i][g][d];
-        disagree += map.stable[i][g][d] != map.predicted[i][g][d];
-      }
+    int stable = 0;
+    for (const auto& row : map.stable[i])
+      for (bool cell : row) stable += cell;
     out += fmt::format("{:<18} {:>14} {:>22}\n", method_infos[map.methods[i]].name,
-                       fmt::format("{}/{}", stable, map.dt.size() * map.damping.size()), disagree);
+                       fmt::format("{}/{}", stable, map.dt.size() * map.damping.size()), disagreeing_cells(map, i));
   }
   return out;
 }

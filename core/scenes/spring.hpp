@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cmath>
+#include <complex>
 #include <span>
 
 #include "core/scene.hpp"
@@ -36,6 +37,12 @@ struct Spring {
   double equilibrium() const { return -L - m * g / k; }
   double omega() const { return std::sqrt(k / m); }              // undamped angular frequency
   double critical_damping() const { return 2 * std::sqrt(k * m); }  // gamma^2 = 4 k m
+  // An eigenvalue of m u'' + gamma u' + k u = 0 (notation of flow below): alpha + i beta when
+  // underdamped (the one with Im >= 0), the faster real one alpha - delta when overdamped.
+  std::complex<double> eigenvalue() const {
+    const double alpha = -gamma / (2 * m), beta2 = (4 * k * m - gamma * gamma) / (4 * m * m);
+    return beta2 > 0 ? std::complex<double>(alpha, std::sqrt(beta2)) : std::complex<double>(alpha - std::sqrt(-beta2), 0);
+  }
 
   Vec<1> mass() const { return Vec<1>::Constant(m); }
   Vec<1> inverse_mass() const { return Vec<1>::Constant(inv_m); }

@@ -6,40 +6,38 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <map>
 
 #include <fmt/format.h>
 
 #include "analysis/regions.hpp"
 #include "core/methods.hpp"
+#include "core/scenes/spring.hpp"
 #include "reports/report_text.hpp"
 #include "reports/section.hpp"
 
 namespace steplab {
 namespace {
 
-const ThresholdRow* threshold(const ReportData& d, std::size_t m, double damping) {
-  for (const ThresholdRow& r : d.thresholds)
-    if (r.method == m && r.damping == damping) return &r;
-  return nullptr;
+// How dt* moves along a family's orders.
+enum class Trend { StaysInfinite, Rises, Falls, StaysTheSame, Mixed };
+
+const char* to_text(Trend t) {
+  switch (t) {
+    case Trend::StaysInfinite: return "stays infinite";
+    case Trend::Rises: return "rises";
+    case Trend::Falls: return "falls";
+    case Trend::StaysTheSame: return "stays the same";
+    case Trend::Mixed: return "does not move one way";
+  }
+  return "?";
 }
 
-// How dt* moves along a family's orders: "stays infinite", "rises", "falls", "stays at X" or
-// "does not move one way".
-std::string trend(const std::vector<double>& dt) {
-  if (std::all_of(dt.begin(), dt.end(), [](double x) { return std::isinf(x); })) return "stays infinite";
+Trend trend(const std::vector<double>& dt) {
+  if (std::all_of(dt.begin(), dt.end(), [](double x) { return std::isinf(x); })) return Trend::StaysInfinite;
   bool up = false, down = false;
   for (std::size_t i = 0; i + 1 < dt.size(); ++i) up |= dt[i + 1] > dt[i], down |= dt[i + 1] < dt[i];
-  if (up && !down) return "rises";
-  if (down && !up) return "falls";
-  if (!up && !down) return "stays the same";
-  return "does not move one way";
-}
-
-// The spring's eigenvalue lambda at its damping (the faster one when overdamped).
-std::complex<double> spring_lambda(const std::vector<double>& spring) {
-  const double m = spring[0], k = spring[1], gamma = spring[2];
-  const double a = -gamma / (2 * m), disc = a * a - k / m;
-  return disc < 0 ? std::complex<double>(a, std::sqrt(-disc)) : std::complex<double>(a - std::sqrt(disc), 0);
+  return up && down ? Trend::Mixed : up ? Trend::Rises : down ? Trend::Falls : Trend::StaysTheSame;
 }
 
 class Families : public Section {
@@ -52,7 +50,7 @@ class Families : public Section {
   }
 
   void write_data(const ReportData& d, const DataDir& dat) const override {
-    const std::complex<double> lambda = spring_lambda(d.config.spring);
+    const std::complex<double> lambda = Spring(d.config.spring).eigenvalue();
     const std::size_t ni = regions_.im.size();
     for (const StabilityRegion& r : regions_.regions) {
       std::string s = "# re im stable (rho <= 1)\n";
@@ -65,7 +63,7 @@ class Families : public Section {
       }
       dat.write("region_" + name(r.method) + ".dat", s);
       s = "# re im of dt* lambda, where the ray leaves the region\n";
-      if (const ThresholdRow* t = threshold(d, r.method, d.config.spring[2]); t && t->dt_theory > 0 && std::isfinite(t->dt_theory)) {
+      if (const ThresholdRow* t = find_threshold(d, r.method, d.config.spring[2]); t && t->dt_theory > 0 && std::isfinite(t->dt_theory)) {
         const std::complex<double> z = t->dt_theory * lambda;
         s += num(z.real()) + " " + num(z.imag()) + "\n" + num(z.real()) + " " + num(-z.imag()) + "\n";
       }
@@ -99,32 +97,29 @@ class Families : public Section {
           "is the measured answer; across families the construction dominates. dt* measured at each damping (the largest "
           "step with every smaller one stable; inf: stable at every step tried):\n\n";
     md += family_table(d, gamma);
-    std::vector<std::string> rising, falling, infinite;
+    std::map<Trend, std::vector<std::string>> at_gamma;  // the families by their trend at the spring's damping
     bool turns = false;
     for (Family f : kReportFamilies) {
       const std::vector<std::size_t> fam = family_members(d.methods, f);
       if (fam.size() < 2) continue;
       std::string line = fmt::format("- **{}** ({}):", to_string(f), method_list(fam));
-      std::string at_gamma, first;
+      Trend first = Trend::Mixed;
       for (std::size_t g = 0; g < dampings.size(); ++g) {
         std::vector<double> dt;
         std::string values;
         for (std::size_t m : fam) {
-          const ThresholdRow* t = threshold(d, m, dampings[g]);
+          const ThresholdRow* t = find_threshold(d, m, dampings[g]);
           dt.push_back(t ? t->dt_measured : NAN);
           values += fmt::format("{}{}", values.empty() ? "" : " → ", dt_text(dt.back()));
           if (t && std::isfinite(t->again_measured)) values += fmt::format(" (stable again from {})", dt_text(t->again_measured));
         }
-        const std::string tr = trend(dt);
+        const Trend tr = trend(dt);
         if (g == 0) first = tr;
         else turns |= tr != first;
-        if (dampings[g] == gamma) at_gamma = tr;
-        line += fmt::format("{} at damping {} dt* {}: {}", g ? ";" : "", dampings[g], tr, values);
+        if (dampings[g] == gamma) at_gamma[tr].emplace_back(to_string(f));
+        line += fmt::format("{} at damping {} dt* {}: {}", g ? ";" : "", dampings[g], to_text(tr), values);
       }
       md += line + ".\n";
-      if (at_gamma == "rises") rising.push_back(std::string(to_string(f)));
-      else if (at_gamma == "falls") falling.push_back(std::string(to_string(f)));
-      else if (at_gamma == "stays infinite") infinite.push_back(std::string(to_string(f)));
     }
     md += "\n";
     if (turns)
@@ -132,7 +127,7 @@ class Families : public Section {
             "to the imaginary axis when lightly damped, onto the negative real axis near critical damping; each region "
             "reaches further in some directions than others (figure " + std::to_string(page.next_figure()) + ").\n\n";
     md += dahlquist(d, dampings, page.next_figure());
-    md += pooled(page.findings, gamma, rising, falling, infinite);
+    md += pooled(page.findings, gamma, at_gamma);
     md += page.figure("fig10_regions", fmt::format("stability regions in z = h lambda (shaded: |R(z)| <= 1 for one-step methods, "
                                                    "the root condition for multistep ones), from each method's own step map; the "
                                                    "spring's eigenvalue ray at damping {} (line) and predicted dt* where it leaves "
@@ -166,7 +161,7 @@ class Families : public Section {
         std::string cell;
         for (std::size_t m : fam)
           if (method_infos[m].order == p) {
-            const ThresholdRow *u = threshold(d, m, 0), *g = threshold(d, m, gamma);
+            const ThresholdRow *u = find_threshold(d, m, 0), *g = find_threshold(d, m, gamma);
             cell += fmt::format("{}`{}` {} / {}", cell.empty() ? "" : "; ", name(m), u ? dt_text(u->dt_measured) : "-",
                                 g ? dt_text(g->dt_measured) : "-");
           }
@@ -186,7 +181,7 @@ class Families : public Section {
     for (std::size_t m : multistep) {
       bool all = true;
       for (double g : dampings)
-        if (const ThresholdRow* t = threshold(d, m, g); !t || !std::isinf(t->dt_measured)) all = false;
+        if (const ThresholdRow* t = find_threshold(d, m, g); !t || !std::isinf(t->dt_measured)) all = false;
       if (all) every_step.push_back(m);
       for (const StabilityRegion& r : regions_.regions)
         if (r.method == m && left_half_plane_stable(regions_, r)) half_plane.push_back(m);
@@ -211,17 +206,13 @@ class Families : public Section {
     return md + "\n\n";
   }
 
-  std::string pooled(const Findings& f, double gamma, const std::vector<std::string>& rising, const std::vector<std::string>& falling,
-                     const std::vector<std::string>& infinite) const {
-    const auto names = [](const std::vector<std::string>& v) {
-      std::string out;
-      for (std::size_t i = 0; i < v.size(); ++i) out += (i == 0 ? "" : i + 1 == v.size() ? " and " : ", ") + v[i];
-      return out.empty() ? "no family" : out;
-    };
+  std::string pooled(const Findings& f, double gamma, std::map<Trend, std::vector<std::string>> at_gamma) const {
+    const auto families = [&](Trend t) { return at_gamma[t].empty() ? std::string("no family") : and_list(at_gamma[t]); };
     return fmt::format("Pooled over all {} methods, Spearman's rank correlation between order and measured dt* (damping {}) is "
                        "**{:.2f}**. It misleads: it mixes families in which dt* rises with the order ({}), falls ({}) or stays "
                        "infinite ({}), so one number answers none of them.\n\n",
-                       f.rows.size(), gamma, f.spearman, names(rising), names(falling), names(infinite));
+                       f.rows.size(), gamma, f.spearman, families(Trend::Rises), families(Trend::Falls),
+                       families(Trend::StaysInfinite));
   }
 };
 

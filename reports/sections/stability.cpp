@@ -86,10 +86,9 @@ class Stability : public Section {
                                                   "2 ln(rho)/h (lines)", c.large_dt));
     md += page.figure("fig6_maps", "measured stable (dark) and unstable (light) steps over (dt, damping), one row per family; "
                                    "predicted dt* (line). Cells that disagree with the prediction at that cell: see `data/stability.json`");
-    int disagree = 0, cells = 0;
-    for (std::size_t i = 0; i < d.map.methods.size(); ++i)
-      for (std::size_t g = 0; g < d.map.damping.size(); ++g)
-        for (std::size_t k = 0; k < d.map.dt.size(); ++k) disagree += d.map.stable[i][g][k] != d.map.predicted[i][g][k], ++cells;
+    std::size_t disagree = 0;
+    for (std::size_t i = 0; i < d.map.methods.size(); ++i) disagree += disagreeing_cells(d.map, i);
+    const std::size_t cells = d.map.methods.size() * d.map.damping.size() * d.map.dt.size();
     md += fmt::format("Of the map's {} cells, {} disagree with the step matrix's prediction at that cell.\n\n", cells, disagree);
     return md;
   }
