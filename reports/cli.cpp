@@ -127,6 +127,7 @@ int cli_main(int argc, const char* const* argv) {
 
   CLI::App app{"steplab: measures how time integrators behave (convergence order, stability, cost)"};
   app.name("steplab");
+  app.set_version_flag("--version", "steplab " STEPLAB_VERSION);
   app.failure_message([](const CLI::App*, const CLI::Error& e) { return std::string(e.what()) + "\n"; });
 
   LegacyArgs legacy_args;
