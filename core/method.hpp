@@ -31,13 +31,16 @@ inline constexpr std::string_view to_string(Family f) {
   return "?";
 }
 
+// What a method claims; `steplab check --method NAME` measures each claim (analysis/check.hpp).
+// A row names the flags that hold: {.name = "rk4", .order = 4, .family = ..., .summary = "..."}.
 struct MethodInfo {
   std::string_view name;
-  int order;             // global order of accuracy; 0 for the exact flow
-  Family family;
-  bool symplectic;
-  bool implicit;         // solves a nonlinear system each step
-  bool exact_flow;       // the analytic solution: needs a scene with an exact flow
+  int order = 0;              // global order of accuracy; 0 for the exact flow
+  Family family = Family::None;
+  bool symplectic = false;    // preserves the flow's symplectic form: energy bounded, no drift
+  bool implicit = false;      // solves a nonlinear system each step
+  bool a_stable = false;      // stable for every h lambda with Re <= 0: every step on a damped spring
+  bool exact_flow = false;    // the analytic solution: needs a scene with an exact flow
   std::string_view summary;
   Family also = Family::None;  // a second family the method is the first member of
 };

@@ -8,8 +8,8 @@ namespace steplab {
 // One force evaluation a step. Its stability region holds a piece of the imaginary axis,
 // |Im h lambda| < ~0.72, so unlike AB2 it keeps an undamped oscillator bounded at small steps.
 struct AdamsBashforth3 : AdamsBashforthMethod<std::array{23.0 / 12, -16.0 / 12, 5.0 / 12}> {
-  static constexpr MethodInfo info{"adams_bashforth3", 3, Family::AdamsBashforth, false, false, false,
-                                   "y += h (23 f_n - 16 f_(n-1) + 5 f_(n-2)) / 12, started by RK4"};
+  static constexpr MethodInfo info{.name = "adams_bashforth3", .order = 3, .family = Family::AdamsBashforth,
+                                   .summary = "y += h (23 f_n - 16 f_(n-1) + 5 f_(n-2)) / 12, started by RK4"};
 };
 
 }  // namespace steplab

@@ -8,8 +8,9 @@ namespace steplab {
 // A-stable (and L-stable): the highest order an A-stable linear multistep method can have
 // (Dahlquist's second barrier).
 struct Bdf2 : BdfMethod<std::array{4.0 / 3, -1.0 / 3}, 2.0 / 3> {
-  static constexpr MethodInfo info{"bdf2", 2, Family::Bdf, false, true, false,
-                                   "y' = 3/2 y_(n+1) - 2 y_n + 1/2 y_(n-1) = h f(y_(n+1)), by Newton, started by Gauss-Legendre"};
+  static constexpr MethodInfo info{.name = "bdf2", .order = 2, .family = Family::Bdf,
+                                   .implicit = true, .a_stable = true,
+                                   .summary = "y' = 3/2 y_(n+1) - 2 y_n + 1/2 y_(n-1) = h f(y_(n+1)), by Newton, started by Gauss-Legendre"};
 };
 
 }  // namespace steplab

@@ -10,8 +10,9 @@ namespace steplab {
 // half-plane next to the imaginary axis, so an undamped oscillator grows at small steps and is
 // damped again at large ones.
 struct Bdf3 : BdfMethod<std::array{18.0 / 11, -9.0 / 11, 2.0 / 11}, 6.0 / 11> {
-  static constexpr MethodInfo info{"bdf3", 3, Family::Bdf, false, true, false,
-                                   "BDF of order 3 (three past states), by Newton, started by Gauss-Legendre"};
+  static constexpr MethodInfo info{.name = "bdf3", .order = 3, .family = Family::Bdf,
+                                   .implicit = true,
+                                   .summary = "BDF of order 3 (three past states), by Newton, started by Gauss-Legendre"};
 };
 
 }  // namespace steplab

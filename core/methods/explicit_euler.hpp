@@ -8,8 +8,8 @@ namespace steplab {
 //   x_{n+1} = x_n + h v_n
 //   v_{n+1} = v_n + h a(x_n, v_n)
 struct ExplicitEuler {
-  static constexpr MethodInfo info{"explicit_euler", 1, Family::ExplicitRungeKutta, false, false, false,
-                                   "x += h v, v += h a(x, v), both from the old state", Family::AdamsBashforth};
+  static constexpr MethodInfo info{.name = "explicit_euler", .order = 1, .family = Family::ExplicitRungeKutta,
+                                   .summary = "x += h v, v += h a(x, v), both from the old state", .also = Family::AdamsBashforth};
   template <Scene S> static StepStatus step(const S& s, State<S::dim>& y, double /*t*/, double h) {
     const Vec<S::dim> a = acceleration(s, y.x, y.v);
     y.x += h * y.v;

@@ -8,8 +8,8 @@ namespace steplab {
 //   x_{n+1} = x_n + h v_m,          v_{n+1} = v_n + h a(x_m, v_m)
 // Undamped oscillator: |R(i w h)|^2 = 1 + (w h)^4 / 4 > 1, unstable at every step.
 struct ExplicitMidpoint {
-  static constexpr MethodInfo info{"explicit_midpoint", 2, Family::ExplicitRungeKutta, false, false, false,
-                                   "half an Euler step to the midpoint, then the full step with its slope"};
+  static constexpr MethodInfo info{.name = "explicit_midpoint", .order = 2, .family = Family::ExplicitRungeKutta,
+                                   .summary = "half an Euler step to the midpoint, then the full step with its slope"};
   template <Scene S> static StepStatus step(const S& s, State<S::dim>& y, double /*t*/, double h) {
     const Vec<S::dim> xm = y.x + 0.5 * h * y.v;
     const Vec<S::dim> vm = y.v + 0.5 * h * acceleration(s, y.x, y.v);

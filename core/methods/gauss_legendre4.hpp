@@ -10,8 +10,9 @@ namespace steplab {
 // A-stable with |R(z)| = 1 exactly on the imaginary axis (R is the (2,2) Pade approximant of
 // e^z), and symplectic. Newton on both stages together (core/implicit_rk.hpp).
 struct GaussLegendre4 {
-  static constexpr MethodInfo info{"gauss_legendre4", 4, Family::ImplicitRungeKutta, true, true, false,
-                                   "two-stage Gauss-Legendre collocation, both stages by Newton"};
+  static constexpr MethodInfo info{.name = "gauss_legendre4", .order = 4, .family = Family::ImplicitRungeKutta,
+                                   .symplectic = true, .implicit = true, .a_stable = true,
+                                   .summary = "two-stage Gauss-Legendre collocation, both stages by Newton"};
   static constexpr double r3 = 1.7320508075688772935;  // sqrt(3)
   static constexpr ButcherTableau<2> tableau{{{{0.25, 0.25 - r3 / 6}, {0.25 + r3 / 6, 0.25}}}, {0.5, 0.5}};
   template <Scene S> static StepStatus step(const S& s, State<S::dim>& y, double /*t*/, double h) {

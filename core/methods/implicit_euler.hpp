@@ -9,8 +9,9 @@ namespace steplab {
 // Eliminating x_{n+1}: M (v_{n+1} - v_n) = h F(x_n + h v_{n+1}, v_{n+1}), solved by Newton
 // (solve_implicit with w = v_n, c = cx = h).
 struct ImplicitEuler {
-  static constexpr MethodInfo info{"implicit_euler", 1, Family::ImplicitRungeKutta, false, true, false,
-                                   "x += h v', v += h a(x', v') at the new state, by Newton", Family::Bdf};
+  static constexpr MethodInfo info{.name = "implicit_euler", .order = 1, .family = Family::ImplicitRungeKutta,
+                                   .implicit = true, .a_stable = true,
+                                   .summary = "x += h v', v += h a(x', v') at the new state, by Newton", .also = Family::Bdf};
   template <Scene S> static StepStatus step(const S& s, State<S::dim>& y, double /*t*/, double h) {
     Vec<S::dim> v1;
     const StepStatus status = solve_implicit(s, y.x, h, y.v, h, v1);

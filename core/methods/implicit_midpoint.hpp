@@ -9,8 +9,9 @@ namespace steplab {
 //   M (v_m - v_n) = h/2 F(x_n + h/2 v_m, v_m)
 // and the step ends by extrapolating: x_{n+1} = 2 x_m - x_n, v_{n+1} = 2 v_m - v_n.
 struct ImplicitMidpoint {
-  static constexpr MethodInfo info{"implicit_midpoint", 2, Family::ImplicitRungeKutta, true, true, false,
-                                   "backward Euler for h/2 to the midpoint, then extrapolate to h"};
+  static constexpr MethodInfo info{.name = "implicit_midpoint", .order = 2, .family = Family::ImplicitRungeKutta,
+                                   .symplectic = true, .implicit = true, .a_stable = true,
+                                   .summary = "backward Euler for h/2 to the midpoint, then extrapolate to h"};
   template <Scene S> static StepStatus step(const S& s, State<S::dim>& y, double /*t*/, double h) {
     Vec<S::dim> vm;
     const StepStatus status = solve_implicit(s, y.x, 0.5 * h, y.v, 0.5 * h, vm);

@@ -9,7 +9,8 @@ namespace steplab {
 //   y_{n+1} = y_n + h/6 (k1 + 4 k2 + k3)
 // R(z) = 1 + z + z^2/2 + z^3/6: undamped oscillator stable up to w h = sqrt(3).
 struct Rk3 {
-  static constexpr MethodInfo info{"rk3", 3, Family::ExplicitRungeKutta, false, false, false, "Kutta's three-stage Runge-Kutta"};
+  static constexpr MethodInfo info{.name = "rk3", .order = 3, .family = Family::ExplicitRungeKutta,
+                                   .summary = "Kutta's three-stage Runge-Kutta"};
   template <Scene S> static StepStatus step(const S& s, State<S::dim>& y, double /*t*/, double h) {
     using V = Vec<S::dim>;
     const V kx1 = y.v, kv1 = acceleration(s, y.x, y.v);

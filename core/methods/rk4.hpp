@@ -8,7 +8,8 @@ namespace steplab {
 //   y_{n+1} = y_n + h/6 (k1 + 2 k2 + 2 k3 + k4)
 // Undamped oscillator: stable up to w h = 2 sqrt(2).
 struct Rk4 {
-  static constexpr MethodInfo info{"rk4", 4, Family::ExplicitRungeKutta, false, false, false, "classic four-stage Runge-Kutta"};
+  static constexpr MethodInfo info{.name = "rk4", .order = 4, .family = Family::ExplicitRungeKutta,
+                                   .summary = "classic four-stage Runge-Kutta"};
   template <Scene S> static StepStatus step(const S& s, State<S::dim>& y, double /*t*/, double h) {
     using V = Vec<S::dim>;
     const V kx1 = y.v, kv1 = acceleration(s, y.x, y.v);

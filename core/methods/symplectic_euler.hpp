@@ -8,8 +8,9 @@ namespace steplab {
 //   x_{n+1} = x_n + h v_{n+1}
 // Undamped oscillator: stable (|eigenvalues| = 1) for h <= 2 / omega, omega = sqrt(k/m).
 struct SymplecticEuler {
-  static constexpr MethodInfo info{"symplectic_euler", 1, Family::Splitting, true, false, false,
-                                   "v += h a(x, v), then x += h v with the new v"};
+  static constexpr MethodInfo info{.name = "symplectic_euler", .order = 1, .family = Family::Splitting,
+                                   .symplectic = true,
+                                   .summary = "v += h a(x, v), then x += h v with the new v"};
   template <Scene S> static StepStatus step(const S& s, State<S::dim>& y, double /*t*/, double h) {
     y.v += h * acceleration(s, y.x, y.v);
     y.x += h * y.v;

@@ -12,8 +12,9 @@ namespace steplab {
 // is affine in v for every scene here, so one Newton step solves it. Odeint instead evaluates
 // a(x_{n+1}, v_n), which drops the method to first order as soon as there is damping.
 struct VelocityVerlet {
-  static constexpr MethodInfo info{"velocity_verlet", 2, Family::Splitting, true, false, false,
-                                   "kick h/2, drift h, kick h/2 with the new acceleration"};
+  static constexpr MethodInfo info{.name = "velocity_verlet", .order = 2, .family = Family::Splitting,
+                                   .symplectic = true,
+                                   .summary = "kick h/2, drift h, kick h/2 with the new acceleration"};
   template <Scene S> static StepStatus step(const S& s, State<S::dim>& y, double /*t*/, double h) {
     const Vec<S::dim> a0 = acceleration(s, y.x, y.v);
     y.x += h * y.v + (0.5 * h * h) * a0;

@@ -10,8 +10,9 @@ namespace steplab {
 // here is symmetric with damping too (its closing kick is trapezoidal), so the composition stays
 // fourth order on every scene. Symplectic without damping; the middle step runs backwards.
 struct Yoshida4 {
-  static constexpr MethodInfo info{"yoshida4", 4, Family::Splitting, true, false, false,
-                                   "velocity Verlet steps of w1 h, w0 h, w1 h (triple jump)"};
+  static constexpr MethodInfo info{.name = "yoshida4", .order = 4, .family = Family::Splitting,
+                                   .symplectic = true,
+                                   .summary = "velocity Verlet steps of w1 h, w0 h, w1 h (triple jump)"};
   static constexpr double cbrt2 = 1.2599210498948731648;  // 2^(1/3)
   static constexpr double w1 = 1 / (2 - cbrt2), w0 = -cbrt2 / (2 - cbrt2);
   template <Scene S> static StepStatus step(const S& s, State<S::dim>& y, double t, double h) {

@@ -249,8 +249,13 @@ TEST(MethodTable, NamesAliasesAndFlags) {
                           info.name == "gauss_legendre4" || info.name == "bdf2" || info.name == "bdf3";
     const bool symplectic = info.name == "symplectic_euler" || info.name == "velocity_verlet" || info.name == "yoshida4" ||
                             info.name == "implicit_midpoint" || info.name == "gauss_legendre4" || info.name == "analytic";
+    // A-stable: |R(z)| <= 1 on the left half-plane (implicit Euler, implicit midpoint, Gauss-Legendre,
+    // the exact flow) or the root condition there (BDF2); BDF3 is A(86 degrees)-stable only
+    const bool a_stable = info.name == "implicit_euler" || info.name == "implicit_midpoint" ||
+                          info.name == "gauss_legendre4" || info.name == "bdf2" || info.name == "analytic";
     EXPECT_EQ(info.implicit, implicit) << info.name;
     EXPECT_EQ(info.symplectic, symplectic) << info.name;
+    EXPECT_EQ(info.a_stable, a_stable) << info.name;
   }
   EXPECT_EQ(method_infos[*find_method("rk4")].order, 4);
   // every family spans several orders; explicit and implicit Euler open Adams-Bashforth and BDF
