@@ -14,7 +14,7 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// The spring with damping gamma and its anchor moved kAnchorShift amplitudes further away. The
+// The anchor moved kAnchorShift amplitudes further away (linear_spring, stability.hpp). The
 // stability question is about m u'' + gamma u' + k u = 0 (u = y - y_eq): M(h) depends on m, k
 // and gamma only, not on L. With the anchor that far the oscillation stays on the linear side
 // (y < 0) up to E/E0 = kAnchorShift^2, so a growing run measures the linear growth rate and not
@@ -26,13 +26,17 @@ constexpr double kAnchorShift = 1000;
 // undamped has some), so both scan by 1.05 there.
 constexpr double kPredictFactor = 1.05, kMeasureFactor = 2, kAgainFactor = 1.05;
 
-Spring with_damping(const std::vector<double>& params, double gamma) {
+}  // namespace
+
+Spring linear_spring(const std::vector<double>& params, double gamma) {
   std::vector<double> p = params;
   p[2] = gamma;  // Spring::params: mass, stiffness, damping, rest-length, gravity
   const Spring user(p);
   p[3] = user.L + kAnchorShift * std::max(user.m * user.g / user.k, 1.0);
   return Spring(p);
 }
+
+namespace {
 
 // The stable set of h on a geometric scan from lo to hi (by `factor` up to the first unstable
 // step, then by kAgainFactor), each edge then bisected (in log h) down to relative `precision`:
@@ -173,7 +177,7 @@ std::vector<ThresholdRow> threshold_study(const StabilityConfig& c) {
   parallel_for(nm * ng, c.threads, [&](std::size_t task) {
     const std::size_t m = c.methods[task / ng];
     const double gamma = c.threshold_dampings[task % ng];
-    const Spring s = with_damping(c.params, gamma);
+    const Spring s = linear_spring(c.params, gamma);
     const StableSet predicted = predicted_stable_set(m, s), measured = measured_stable_set(m, s);
     rows[task] = {m, gamma, predicted.dt_star, measured.dt_star, predicted.again, measured.again};
   });
@@ -182,13 +186,13 @@ std::vector<ThresholdRow> threshold_study(const StabilityConfig& c) {
 
 std::vector<SweepRow> damping_sweep(const StabilityConfig& c) {
   const std::vector<double> gammas =
-      c.sweep_dampings.empty() ? default_dampings(with_damping(c.params, c.params[2])) : c.sweep_dampings;
+      c.sweep_dampings.empty() ? default_dampings(linear_spring(c.params, c.params[2])) : c.sweep_dampings;
   const std::size_t nm = c.methods.size(), nd = c.sweep_dts.size(), ng = gammas.size();
   std::vector<SweepRow> rows(nm * nd * ng);
   parallel_for(rows.size(), c.threads, [&](std::size_t task) {
     const std::size_t m = c.methods[task / (nd * ng)];
     const double dt = c.sweep_dts[(task / ng) % nd], gamma = gammas[task % ng];
-    const Spring s = with_damping(c.params, gamma);
+    const Spring s = linear_spring(c.params, gamma);
     rows[task] = {m, dt, gamma, measure_rate(m, s, dt), predicted_rate(m, s, dt)};
   });
   return rows;
@@ -197,7 +201,7 @@ std::vector<SweepRow> damping_sweep(const StabilityConfig& c) {
 StabilityMap stability_map(const StabilityConfig& c) {
   StabilityMap map;
   map.methods = c.methods;
-  const Spring base = with_damping(c.params, c.params[2]);
+  const Spring base = linear_spring(c.params, c.params[2]);
   const double gmax = c.map_damping_max > 0 ? c.map_damping_max : 2 * base.critical_damping();
   for (int i = 0; i < c.map_dt_points; ++i)
     map.dt.push_back(c.map_dt_min * std::pow(c.map_dt_max / c.map_dt_min, i / double(std::max(1, c.map_dt_points - 1))));
@@ -209,7 +213,7 @@ StabilityMap stability_map(const StabilityConfig& c) {
   // one task per (method, damping) row: its predicted dt* and every cell of the row
   parallel_for(nm * ng, c.threads, [&](std::size_t task) {
     const std::size_t mi = task / ng, gi = task % ng;
-    const Spring s = with_damping(c.params, map.damping[gi]);
+    const Spring s = linear_spring(c.params, map.damping[gi]);
     map.boundary[mi][gi] = predicted_stable_set(c.methods[mi], s).dt_star;
     for (std::size_t di = 0; di < nd; ++di) {
       cells[task * nd + di] = measure_rate(c.methods[mi], s, map.dt[di], c.map_steps).stable();

@@ -18,7 +18,7 @@
 // below 1e-7 for every h >= 0.01 on the default spring, under the tolerance kStableRate.
 // A run is measured stable if its rate is <= kStableRate. A run stops early when E/E0 passes
 // 1e4 (unstable) or falls below 1e-20 (decayed, before round-off flattens ln E). Runs use the
-// spring with its anchor moved far away (stability.cpp: with_damping), so that the motion about
+// spring with its anchor moved far away (linear_spring below), so that the motion about
 // equilibrium stays linear: the prediction is about the linear oscillator, and so is the measurement.
 #pragma once
 
@@ -37,6 +37,10 @@ inline constexpr long long kRateSteps = 60'000;
 // growth of the condition number of an implicit method's stage system (measured on
 // gauss_legendre4: rho - 1 = 3e-13 at omega h = 45, 1.5e-10 at 670), at most kRhoToleranceMax.
 inline constexpr double kRhoTolerance = 1e-12, kRhoToleranceMax = 1e-9;
+
+// The spring of `params` (Spring's table order) with damping gamma and its anchor moved so far
+// away that every run of the studies stays on its linear side: what every stability run uses.
+Spring linear_spring(const std::vector<double>& params, double gamma);
 
 // The matrix of the whole step map: 2 x 2 on (y, v) for a one-step method; for a multistep
 // method the companion matrix on (y, v and its memory), 2 (1 + K) square.
