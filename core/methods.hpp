@@ -2,6 +2,7 @@
 // and `step`, see core/method.hpp; a multistep method also keeps a memory, see core/stepper.hpp)
 // and list it in `Methods` below. Nothing else changes:
 // the CLI, the studies, the tests over every method and the report all iterate this list.
+// Then `steplab check --method <name>` measures what its `info` claims (analysis/check.hpp).
 #pragma once
 
 #include <array>

@@ -181,6 +181,12 @@ int cli_main(int argc, const char* const* argv) {
   rep_cmd->add_flag("--force", rep.force, "redo the report even if it is up to date");
   rep_cmd->add_flag("--print-config", rep.print_config, "print the configuration (defaults, or --config applied) and exit");
 
+  CheckArgs check;
+  CLI::App* check_cmd = app.add_subcommand("check", "is a method what its row in the table claims? One line per claim, "
+                                                    "PASS or FAIL; exit 0 if all hold, 1 if one fails");
+  check_cmd->add_option("--method", check.method, "integrator: " + method_names());
+  check_cmd->add_option("--threads", check.threads, "worker threads, 0 = all cores")->capture_default_str();
+
   name_value_kinds(app);
 
   std::vector<const char*> cargv{argv[0]};
@@ -193,8 +199,9 @@ int cli_main(int argc, const char* const* argv) {
     if (stab_cmd->parsed()) return stability_command(stab);
     if (coll_cmd->parsed()) return collision_command(coll);
     if (rep_cmd->parsed()) return report_command(rep);
+    if (check_cmd->parsed()) return check_command(check);
     if (legacy) return legacy_command(legacy_args);
-    throw UsageError("no command given; accepted: run, study, report, or the old flags -testcase ... (see steplab --help)");
+    throw UsageError("no command given; accepted: run, study, report, check, or the old flags -testcase ... (see steplab --help)");
   } catch (const CLI::CallForHelp&) {
     std::fputs(app.help().c_str(), stdout);
     return 0;

@@ -98,3 +98,14 @@ struct ReportArgs {
 int report_command(ReportArgs& args);
 
 }  // namespace steplab
+
+namespace steplab {
+
+struct CheckArgs {
+  std::string method;
+  std::string threads = "0";
+};
+
+int check_command(CheckArgs& args);
+
+}  // namespace steplab

@@ -92,6 +92,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"study stability --threshold-dampings -1", "--threshold-dampings"},
         BadInput{"study stability --map-dt-points 1", "--map-dt-points"}, BadInput{"study collision --dts 0", "--dts"},
         BadInput{"study collision --rest-length 3", "--rest-length"}, BadInput{"study collision --t-end nan", "--t-end"},
+        // check
+        BadInput{"check", "--method"}, BadInput{"check --method heun", "heun"},
+        BadInput{"check --method rk4 --threads -1", "--threads"},
         // the report's configuration file
         BadInput{"report --config {dir}/missing.json --out {dir}/r", "missing.json"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "not valid JSON", "{ not json"},

@@ -1,0 +1,108 @@
+#include "analysis/check.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "analysis/convergence.hpp"
+#include "core/methods.hpp"
+#include "core/scenes.hpp"
+#include "core/stepper.hpp"
+
+namespace steplab {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+template <class S> std::vector<double> defaults_of() {
+  const auto p = default_params<S>();
+  return {p.begin(), p.end()};
+}
+
+template <class S> OrderCheck order_check(std::size_t method, const MethodInfo& claims, unsigned threads) {
+  ConvergenceConfig c;
+  c.scene = *find_scene(S::name);
+  c.params = defaults_of<S>();
+  c.methods = {method};
+  c.threads = threads;
+  const ConvergenceResult r = convergence_study(c);
+  const ConvergenceRecord& fine = r.records.back();
+  OrderCheck o{S::name, r.fits.front().fit, fine.dt, kInf, fine.dt, fine.error_final, false, false, false};
+  for (const ConvergenceRecord& rec : r.records)  // by decreasing dt
+    if (std::isfinite(rec.error_final)) {
+      o.dt_coarse = rec.dt;
+      o.error_coarse = rec.error_final;
+      break;
+    }
+  o.at_roundoff = fine.error_final <= fine.floor;
+  o.converges = o.at_roundoff || o.error_fine <= kConvergedRatio * o.error_coarse;
+  if (claims.order == 0) o.order_holds = o.fit.exact;  // the exact flow
+  else if (o.fit.exact) o.order_holds = claims.order >= 2;
+  else o.order_holds = o.fit.fitted && std::abs(o.fit.order - claims.order) <= kOrderTolerance;
+  return o;
+}
+
+EnergyCheck energy_check(std::size_t method, const MethodInfo& claims) {
+  const Spring s = linear_spring(defaults_of<Spring>(), 0);
+  EnergyCheck e{kDriftOmegaH / s.omega(), kDriftSteps, kInf, false, false};
+  const RateRun run = measure_rate(method, s, e.h, e.steps);
+  if (run.status == RunStatus::Ok) e.drift = std::isnan(run.rate) ? -kInf : run.rate * e.h * static_cast<double>(e.steps);
+  e.bounded = std::abs(e.drift) <= kDriftBound;
+  e.holds = e.bounded == claims.symplectic;
+  return e;
+}
+
+bool close(double measured, double predicted) {
+  if (std::isinf(measured) || std::isinf(predicted) || predicted == 0) return measured == predicted;
+  return std::abs(measured - predicted) <= kStableAgreement * predicted;
+}
+
+// From rest at equilibrium, kRestSteps steps with the method's own memory and start-up.
+template <class M> RestCheck rest_check(const Spring& s) {
+  const double y_eq = s.equilibrium(), h = 0.1 / s.omega();
+  State<1> y{Vec<1>::Constant(y_eq), Vec<1>::Zero()};
+  Stepper<M, Spring> stepper;
+  double worst = 0;
+  for (int i = 0; i < kRestSteps; ++i) {
+    if (stepper.step(s, y, i * h, h) != StepStatus::Ok) worst = kInf;
+    worst = std::max({worst, std::abs(y.x[0] - y_eq), std::abs(y.v[0]) / s.omega()});
+  }
+  const double deviation = std::isnan(worst) ? kInf : worst / std::abs(y_eq);
+  return {h, deviation, deviation <= kRestTolerance};
+}
+
+}  // namespace
+
+bool CheckResult::all_hold() const {
+  bool ok = energy.holds && a_stable_holds && rest.holds;
+  for (const OrderCheck& o : orders) ok = ok && o.order_holds && o.converges;
+  for (const StabilityCheck& st : stability) ok = ok && st.agrees;
+  return ok;
+}
+
+CheckResult check_method(std::size_t method, const MethodInfo& claims, unsigned threads) {
+  CheckResult r;
+  r.method = method;
+  r.claims = claims;
+  r.orders = {order_check<Spring>(method, claims, threads), order_check<Cannonball>(method, claims, threads)};
+  r.energy = energy_check(method, claims);
+
+  StabilityConfig c;
+  c.params = defaults_of<Spring>();
+  c.methods = {method};
+  c.threshold_dampings.assign(std::begin(kCheckDampings), std::end(kCheckDampings));
+  c.threads = threads;
+  bool all_infinite = true;
+  for (const ThresholdRow& row : threshold_study(c)) {
+    const StableSet predicted{row.dt_theory, row.again_theory}, measured{row.dt_measured, row.again_measured};
+    r.stability.push_back({row.damping, predicted, measured,
+                           close(measured.dt_star, predicted.dt_star) && close(measured.again, predicted.again)});
+    all_infinite = all_infinite && std::isinf(predicted.dt_star) && std::isinf(measured.dt_star);
+  }
+  r.a_stable_holds = all_infinite == claims.a_stable;
+
+  r.rest = with_method(method, [&]<class M>() { return rest_check<M>(make_default_scene<Spring>()); });
+  return r;
+}
+
+}  // namespace steplab

@@ -1,0 +1,126 @@
+// steplab check (analysis/check.hpp): every row of the table holds its claims; rows made wrong
+// here (a first-order method declared second order, a non-symplectic one declared symplectic, ...)
+// fail exactly the claim that is wrong; the energy drift matches |R(i omega h)| from theory.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "analysis/check.hpp"
+#include "core/methods.hpp"
+#include "reports/check_command.hpp"
+
+namespace steplab {
+namespace {
+
+std::size_t index_of(std::string_view name) { return *find_method(name); }
+
+CheckResult check_as(std::string_view name, MethodInfo claims) { return check_method(index_of(name), claims, 2); }
+
+class EveryRow : public ::testing::TestWithParam<std::size_t> {};
+
+TEST_P(EveryRow, HoldsEveryClaim) {
+  const std::size_t m = GetParam();
+  const CheckResult r = check_method(m, method_infos[m], 2);
+  EXPECT_TRUE(r.all_hold()) << check_text(r);
+  ASSERT_EQ(r.orders.size(), 2u);
+  if (method_infos[m].order > 0) {  // the spring's order is fitted, within 0.01 for every row
+    EXPECT_TRUE(r.orders[0].fit.fitted);
+    EXPECT_NEAR(r.orders[0].fit.order, method_infos[m].order, 0.01) << method_infos[m].name;
+  }
+  EXPECT_EQ(r.stability.size(), std::size(kCheckDampings));
+  const auto lines = check_lines(r);
+  EXPECT_EQ(lines.size(), 2 * r.orders.size() + 2 + r.stability.size() + 1);
+}
+
+INSTANTIATE_TEST_SUITE_P(Table, EveryRow, ::testing::Range<std::size_t>(0, method_count),
+                         [](const auto& row) { return std::string(method_infos[row.param].name); });
+
+// The energy's drift over kDriftSteps at omega h = y is kDriftSteps ln|R(iy)|^2 for a one-step
+// method whose stability function is R; least squares on an exact exponential returns its rate.
+TEST(Check, EnergyDriftIsTheStabilityFunctionsModulus) {
+  const double y = kDriftOmegaH, n = kDriftSteps;
+  const double y2 = y * y, y4 = y2 * y2, y6 = y4 * y2, y8 = y4 * y4;
+  // RK4: |R(iy)|^2 = 1 - y^6/72 + y^8/576; RK3: 1 - y^4/12 + y^6/36; implicit Euler: 1 / (1 + y^2)
+  const struct {
+    const char* name;
+    double theory;
+  } cases[] = {{"rk4", n * std::log(1 - y6 / 72 + y8 / 576)},
+               {"rk3", n * std::log(1 - y4 / 12 + y6 / 36)},
+               {"implicit_euler", -n * std::log(1 + y2)}};
+  for (const auto& c : cases) {
+    const CheckResult r = check_as(c.name, method_infos[index_of(c.name)]);
+    EXPECT_NEAR(r.energy.drift, c.theory, 1e-3 * std::abs(c.theory)) << c.name;
+  }
+}
+
+TEST(Check, FirstOrderDeclaredSecondOrderFailsItsOrderOnly) {
+  MethodInfo wrong = method_infos[index_of("explicit_euler")];
+  wrong.order = 2;
+  const CheckResult r = check_as("explicit_euler", wrong);
+  EXPECT_FALSE(r.all_hold());
+  for (const OrderCheck& o : r.orders) {
+    EXPECT_FALSE(o.order_holds) << o.scene;
+    EXPECT_NEAR(o.fit.order, 1, 0.01) << o.scene;
+    EXPECT_TRUE(o.converges) << o.scene;
+  }
+  EXPECT_TRUE(r.energy.holds);
+  EXPECT_TRUE(r.a_stable_holds);
+  EXPECT_TRUE(r.rest.holds);
+  const std::string text = check_text(r);
+  EXPECT_NE(text.find("FAIL  order 2 on the spring: fitted 1.000"), std::string::npos) << text;
+  EXPECT_NE(text.find("2 of 11 claims fail"), std::string::npos) << text;
+}
+
+// RK4 declared third order: the spring refutes it; the cannon ball (exact for any order >= 2) cannot.
+TEST(Check, FourthOrderDeclaredThirdFailsOnTheSpring) {
+  MethodInfo wrong = method_infos[index_of("rk4")];
+  wrong.order = 3;
+  const CheckResult r = check_as("rk4", wrong);
+  EXPECT_FALSE(r.orders[0].order_holds);
+  EXPECT_TRUE(r.orders[1].fit.exact);
+  EXPECT_TRUE(r.orders[1].order_holds);
+}
+
+TEST(Check, NonSymplecticDeclaredSymplecticFails) {
+  for (const char* name : {"explicit_euler", "rk4", "implicit_euler", "bdf2"}) {
+    MethodInfo wrong = method_infos[index_of(name)];
+    wrong.symplectic = true;
+    const CheckResult r = check_as(name, wrong);
+    EXPECT_FALSE(r.energy.holds) << name;
+    EXPECT_FALSE(r.energy.bounded) << name;
+    EXPECT_FALSE(r.all_hold()) << name;
+    EXPECT_NE(check_text(r).find("FAIL  symplectic: energy"), std::string::npos) << name;
+  }
+}
+
+TEST(Check, SymplecticDeclaredNotFails) {
+  MethodInfo wrong = method_infos[index_of("velocity_verlet")];
+  wrong.symplectic = false;
+  const CheckResult r = check_as("velocity_verlet", wrong);
+  EXPECT_TRUE(r.energy.bounded);
+  EXPECT_FALSE(r.energy.holds);
+  EXPECT_FALSE(r.all_hold());
+}
+
+TEST(Check, AStabilityDeclaredWronglyFailsBothWays) {
+  for (const char* name : {"rk4", "bdf3"}) {  // bdf3: infinite dt* at damping 1 and 4, not at 0 and 0.1
+    MethodInfo wrong = method_infos[index_of(name)];
+    wrong.a_stable = true;
+    EXPECT_FALSE(check_as(name, wrong).a_stable_holds) << name;
+  }
+  MethodInfo wrong = method_infos[index_of("implicit_euler")];
+  wrong.a_stable = false;
+  const CheckResult r = check_as("implicit_euler", wrong);
+  EXPECT_FALSE(r.a_stable_holds);
+  for (const StabilityCheck& s : r.stability) EXPECT_TRUE(std::isinf(s.measured.dt_star)) << s.damping;
+}
+
+// The same result whatever the number of threads.
+TEST(Check, ThreadCountDoesNotChangeTheText) {
+  const std::size_t m = index_of("bdf3");
+  EXPECT_EQ(check_text(check_method(m, method_infos[m], 1)), check_text(check_method(m, method_infos[m], 2)));
+}
+
+}  // namespace
+}  // namespace steplab
