@@ -25,6 +25,7 @@
 
 #include "analysis/parallel.hpp"
 #include "core/scenes.hpp"
+#include "reports/figure_styles.hpp"
 #include "reports/gnuplot_scripts.hpp"
 #include "reports/output.hpp"
 #include "reports/report_text.hpp"
@@ -177,6 +178,7 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force) 
 
     // Figures: each script twice, PNG for the Markdown and PDF (vector) for the PDF.
     const std::string all = method_words(d.methods), numeric = method_words(d.collision.config.methods);
+    DataDir(staging / "figures").write("styles.gp", styles_gp(d.methods));  // loaded by every script
     for (const auto& s : report.sections)
       for (const FigureSpec& fig : s->figures(d)) {
         const auto gp = std::find_if(gnuplot_scripts.begin(), gnuplot_scripts.end(), [&](const GnuplotScript& g) { return g.name == fig.script; });

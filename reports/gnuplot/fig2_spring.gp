@@ -1,16 +1,27 @@
-# Figure 2: the spring's height y(t) per method against the exact solution, one panel per step.
-# Variables set by steplab report: datadir, outfile, format (png|pdf), methods, numeric, springdts, largedt.
-if (format eq "png") { set terminal pngcairo enhanced size 1100,680 font ",12" } else { set terminal pdfcairo enhanced size 16cm,9.6cm font ",8" }
+# Figure 2: the spring's height y(t) per method against the exact solution: a row per family, a
+# column per step.
+# Variables set by steplab report: datadir, outfile, format (png|pdf), methods, numeric, springdts, largedt;
+# styles.gp (written beside this script): each method's style, the family panels nfam, fam1.., famname1..
+if (format eq "png") { set terminal pngcairo enhanced size 1100,1250 font ",11" } else { set terminal pdfcairo enhanced size 16cm,19cm font ",7" }
 set output outfile
+load "styles.gp"
 set grid lc rgb "#dddddd"
-set key outside right top samplen 2 noenhanced  # method names have underscores
+set key outside right top samplen 3 noenhanced  # method names have underscores
 n = words(springdts)
-set multiplot layout n,1
-set ylabel "y (m)"
-do for [k=1:n] {
-  if (k == n) { set xlabel "t (s)" } else { unset xlabel }
-  set title "dt = ".word(springdts, k) noenhanced
-  plot datadir."/spring_exact.dat" using 1:2 with lines lw 4 lc rgb "#bbbbbb" title "exact", \
-       for [m in methods] datadir."/spring".(k-1)."_".m.".dat" using 1:2 with lines lw 1.2 title m
+set multiplot layout nfam,n
+do for [f=1:nfam] {
+  ms = value("fam".f)
+  do for [k=1:n] {
+    if (f == nfam) { set xlabel "t (s)" } else { unset xlabel }
+    if (k == 1) { set ylabel "y (m)" } else { unset ylabel }
+    if (k == n) { set key } else { unset key }
+    set title value("famname".f).", dt = ".word(springdts, k) noenhanced
+    stats datadir."/spring".(k-1)."_".word(ms, 1).".dat" using 1 nooutput
+    nth = STATS_records > 20 ? int(STATS_records / 12) : 1
+    plot datadir."/spring_exact.dat" using 1:2 with lines lw 4 lc rgb "#bbbbbb" title "exact", \
+         for [j=1:words(ms)] datadir."/spring".(k-1)."_".word(ms, j).".dat" using 1:2 with lines lt mlt(word(ms, j)) lw 1.2 notitle, \
+       for [j=1:words(ms)] datadir."/spring".(k-1)."_".word(ms, j).".dat" using 1:2 every nth::((j - 1) * nth / words(ms)) with points lt mlt(word(ms, j)) notitle, \
+       for [j=1:words(ms)] keyentry with linespoints lt mlt(word(ms, j)) lw 1.2 title word(ms, j)
+  }
 }
 unset multiplot

@@ -1,12 +1,25 @@
-# Figure 4: energy ratio against time without damping at the large step, log scale.
-# Variables set by steplab report: datadir, outfile, format (png|pdf), methods, numeric, springdts, largedt.
-if (format eq "png") { set terminal pngcairo enhanced size 1100,680 font ",12" } else { set terminal pdfcairo enhanced size 16cm,9.6cm font ",8" }
+# Figure 4: energy ratio against time without damping at the large step, log scale, one panel per
+# family.
+# Variables set by steplab report: datadir, outfile, format (png|pdf), methods, numeric, springdts, largedt;
+# styles.gp (written beside this script): each method's style, the family panels nfam, fam1.., famname1..
+if (format eq "png") { set terminal pngcairo enhanced size 1100,760 font ",11" } else { set terminal pdfcairo enhanced size 16cm,11cm font ",7" }
 set output outfile
+load "styles.gp"
 set grid lc rgb "#dddddd"
-set key outside right top samplen 2 noenhanced  # method names have underscores
+set key top left samplen 3 noenhanced  # method names have underscores
+set offsets graph 0, graph 0, graph 0.35, graph 0  # room for the key above the curves
 set logscale y
 set format y "10^{%L}"
-set xlabel "t (s)"
-set ylabel "E / E0"
-set title "damping 0, dt = ".largedt
-plot for [m in methods] datadir."/energy_".m.".dat" using 1:2 with lines lw 1.5 title m
+set multiplot layout 2,3
+do for [f=1:nfam] {
+  ms = value("fam".f)
+  stats datadir."/energy_".word(ms, 1).".dat" using 1 nooutput
+  nth = STATS_records > 20 ? int(STATS_records / 10) : 1
+  set title value("famname".f).", damping 0, dt = ".largedt noenhanced
+  set xlabel (f > 3 || f + 3 > nfam ? "t (s)" : "")
+  set ylabel (f % 3 == 1 ? "E / E0" : "")
+  plot for [j=1:words(ms)] datadir."/energy_".word(ms, j).".dat" using 1:2 with lines lt mlt(word(ms, j)) notitle, \
+       for [j=1:words(ms)] datadir."/energy_".word(ms, j).".dat" using 1:2 every nth::((j - 1) * nth / words(ms)) with points lt mlt(word(ms, j)) notitle, \
+       for [j=1:words(ms)] keyentry with linespoints lt mlt(word(ms, j)) title word(ms, j)
+}
+unset multiplot

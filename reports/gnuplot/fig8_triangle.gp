@@ -1,9 +1,25 @@
-# Figure 8: the falling triangle: height of its centre against time, per method.
-# Variables set by steplab report: datadir, outfile, format (png|pdf), methods, numeric, springdts, largedt.
-if (format eq "png") { set terminal pngcairo enhanced size 1100,680 font ",12" } else { set terminal pdfcairo enhanced size 16cm,9.6cm font ",8" }
+# Figure 8: the falling triangle: height of its centre against time, per method, one panel per
+# family (the methods of the collision study: numeric).
+# Variables set by steplab report: datadir, outfile, format (png|pdf), methods, numeric, springdts, largedt;
+# styles.gp (written beside this script): each method's style, the family panels nfam, fam1.., famname1..
+if (format eq "png") { set terminal pngcairo enhanced size 1100,760 font ",11" } else { set terminal pdfcairo enhanced size 16cm,11cm font ",7" }
 set output outfile
+load "styles.gp"
 set grid lc rgb "#dddddd"
-set key outside right top samplen 2 noenhanced  # method names have underscores
-set xlabel "t (s)"
-set ylabel "centre height (m)"
-plot for [m in numeric] datadir."/triangle_".m.".dat" using 1:2 with lines lw 1.2 title m
+set key top right samplen 3 noenhanced  # method names have underscores
+set multiplot layout 2,3
+do for [f=1:nfam] {
+  ms = ""
+  do for [m in value("fam".f)] { if (in_list(m, numeric)) { ms = ms." ".m } }
+  set title value("famname".f) noenhanced
+  set xlabel (f > 3 || f + 3 > nfam ? "t (s)" : "")
+  set ylabel (f % 3 == 1 ? "centre height (m)" : "")
+  if (words(ms) > 0) {
+    stats datadir."/triangle_".word(ms, 1).".dat" using 1 nooutput
+    nth = STATS_records > 20 ? int(STATS_records / 10) : 1
+    plot for [j=1:words(ms)] datadir."/triangle_".word(ms, j).".dat" using 1:2 with lines lt mlt(word(ms, j)) lw 1.2 notitle, \
+       for [j=1:words(ms)] datadir."/triangle_".word(ms, j).".dat" using 1:2 every nth::((j - 1) * nth / words(ms)) with points lt mlt(word(ms, j)) notitle, \
+       for [j=1:words(ms)] keyentry with linespoints lt mlt(word(ms, j)) lw 1.2 title word(ms, j)
+  } else { set multiplot next }
+}
+unset multiplot

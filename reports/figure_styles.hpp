@@ -1,0 +1,32 @@
+// How every figure tells the methods apart: one style per method, the same in every figure, and
+// the family panels that keep each plot to a handful of curves. Written once per report as
+// figures/styles.gp, which every script loads.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace steplab {
+
+struct MethodStyle {
+  std::string colour;  // "#rrggbb"
+  int point;           // gnuplot point type
+  int dash;            // gnuplot dash type
+};
+
+// Colour: the family's hue from the Okabe-Ito palette (told apart with any colour vision),
+// darker with the order. Point and dash: by the order, so the members of one family panel differ
+// in all three, and in grey scale in point, dash and grey level.
+MethodStyle method_style(std::size_t method);
+
+// figures/styles.gp: `set linetype` per method (method k of the table is linetype k + 1),
+//   mlt(name)            the linetype of a method by name
+//   in_list(name, list)  whether a word is in a space-separated list
+//   nfam, fam1 .. famN, famname1 .. famnameN
+//                        the family panels over `methods`, in report order, each family's members
+//                        by order (explicit and implicit Euler also open Adams-Bashforth and BDF)
+std::string styles_gp(const std::vector<std::size_t>& methods);
+
+}  // namespace steplab

@@ -1,0 +1,74 @@
+// The methods' figure styles (reports/figure_styles.cpp): each method its own, members of a family
+// panel told apart without colour (grey-scale print, colour-blind readers), and the gnuplot side
+// (styles.gp) run through gnuplot itself.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <set>
+#include <string>
+#include <tuple>
+
+#include "cli_helpers.hpp"
+#include "core/methods.hpp"
+#include "reports/figure_styles.hpp"
+#include "reports/report_text.hpp"
+
+namespace steplab {
+namespace {
+
+std::vector<std::size_t> every_method() {
+  std::vector<std::size_t> all;
+  for (std::size_t m = 0; m < method_count; ++m) all.push_back(m);
+  return all;
+}
+
+TEST(FigureStyles, EachMethodHasItsOwn) {
+  std::set<std::tuple<std::string, int, int>> seen;
+  for (std::size_t m = 0; m < method_count; ++m) {
+    const MethodStyle s = method_style(m);
+    EXPECT_TRUE(seen.insert({s.colour, s.point, s.dash}).second) << name(m);
+  }
+}
+
+// Within a panel (a family, with explicit and implicit Euler opening Adams-Bashforth and BDF) no two
+// methods share a point type or a dash type, so the panel reads in grey scale.
+TEST(FigureStyles, APanelsMethodsDifferInPointAndDash) {
+  for (Family f : kReportFamilies) {
+    std::set<int> points, dashes;
+    const auto members = family_members(every_method(), f);
+    EXPECT_LE(members.size(), 6u) << to_string(f);  // at most about six curves a panel
+    for (std::size_t m : members) {
+      EXPECT_TRUE(points.insert(method_style(m).point).second) << name(m) << " in " << to_string(f);
+      EXPECT_TRUE(dashes.insert(method_style(m).dash).second) << name(m) << " in " << to_string(f);
+    }
+  }
+}
+
+// The family hues are Okabe-Ito's; the first member of a family carries the hue itself.
+TEST(FigureStyles, FamilyHuesAreOkabeIto) {
+  EXPECT_EQ(method_style(*find_method("explicit_euler")).colour, "#0072B2");
+  EXPECT_EQ(method_style(*find_method("symplectic_euler")).colour, "#D55E00");
+  EXPECT_EQ(method_style(*find_method("implicit_euler")).colour, "#009E73");
+  EXPECT_EQ(method_style(*find_method("rk4")).colour, "#003755");  // 0.48 x (00, 72, B2)
+}
+
+// gnuplot reads styles.gp: mlt() finds each method's linetype, the panels list the families.
+TEST(FigureStyles, GnuplotReadsTheStyles) {
+  TempDir dir;
+  std::ofstream(dir.path("styles.gp")) << styles_gp(every_method());
+  std::ofstream(dir.path("probe.gp")) << "load 'styles.gp'\n"
+                                         "print mlt('explicit_euler'), mlt('rk4'), mlt('bdf3'), mlt('nosuch')\n"
+                                         "print sprintf('%d|%s|%s', nfam, fam5, famname5)\n"
+                                         "print in_list('rk4', 'rk3 rk4'), in_list('rk', 'rk3 rk4')\n";
+  const std::string cmd = "cd '" + dir.root() + "' && gnuplot probe.gp 2>" + dir.path("out");
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << slurp(dir.path("out"));
+  const auto lines = split_lines(slurp(dir.path("out")));
+  ASSERT_EQ(lines.size(), 3u) << slurp(dir.path("out"));
+  EXPECT_EQ(lines[0], "1 6 14 0");
+  EXPECT_EQ(lines[1], "5|implicit_euler bdf2 bdf3|BDF");
+  EXPECT_EQ(lines[2], "1 0");
+}
+
+}  // namespace
+}  // namespace steplab
