@@ -43,8 +43,8 @@ class Collision : public Section {
                         r.bounces.empty() ? "-" : fmt::format("{:.4f}", r.bounces.front().energy_ratio),
                         r.bounces.empty() ? "-" : fmt::format("{:.4f}", r.bounces.back().energy_ratio), r.max_penetration);
     md += "\nOrders against the exact bounce (the contact's kink costs order):\n\n" + fits_table(d.conv_bounce) + "\n";
-    md += page.figure("fig8_triangle", fmt::format("falling triangle: height of its centre against time, dt {}", c.triangle_dt));
-    md += page.figure("fig9_bounce_energy", "bounce: energy ratio after the last bounce against dt");
+    md += page.figure("fig8_triangle", fmt::format("falling triangle: height of its centre against time, dt {}, a panel per family", c.triangle_dt));
+    md += page.figure("fig9_bounce_energy", "bounce: energy ratio after the last bounce against dt, a panel per family");
     return md;
   }
 };

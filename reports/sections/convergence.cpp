@@ -59,7 +59,7 @@ class Convergence : public Section {
         "q): a bound, not a confidence interval. The window's plain least-squares slope is shown beside it; its Student-t "
         "interval is not a statement about the order, because truncation error is smooth, not random.\n\n",
         d.conv_spring.dts.size(), c.conv_dt_max, c.conv_dt_min, c.conv_t_end);
-    md += page.figure("fig3_convergence", "error against dt on the spring, least-squares lines (solid) and reference slopes 1, 2, 4 (dashed)");
+    md += page.figure("fig3_convergence", "error against dt on the spring, a panel per family: least-squares lines (solid) and reference slopes 1, 2, 4 (grey, dashed)");
     int diverged = 0, runs = 0;
     for (const ConvergenceResult* r : {&d.conv_spring, &d.conv_cannonball, &d.conv_bounce})
       for (const ConvergenceRecord& rec : r->records) diverged += rec.status != RunStatus::Ok, ++runs;

@@ -13,7 +13,7 @@ class Cost : public Section {
   std::string markdown(Page& page) const override {
     std::string md = "## Cost\n\n";
     if (page.data.config.timing)
-      md += page.figure("fig7_work_precision", "work-precision on the spring: final error against the measured run time (integration only)");
+      md += page.figure("fig7_work_precision", "work-precision on the spring: final error against the measured run time (integration only), a panel per family");
     else
       md += "Work-precision is left out: the configuration turned timing off (`convergence.timing`).\n\n";
     return md;

@@ -43,8 +43,8 @@ class SceneFigures : public Section {
   std::string markdown(Page& page) const override {
     const ReportConfig& c = page.data.config;
     std::string md = "## The scenes\n\n";
-    md += page.figure("fig1_cannonball", fmt::format("cannon ball paths at dt {} beside the exact parabola", c.cannonball_dt));
-    md += page.figure("fig2_spring", fmt::format("spring height y(t) per method against the exact solution, dt {}", words(c.spring_figure_dts)));
+    md += page.figure("fig1_cannonball", fmt::format("cannon ball paths at dt {} beside the exact parabola, a panel per family", c.cannonball_dt));
+    md += page.figure("fig2_spring", fmt::format("spring height y(t) per method against the exact solution (grey), a row per family, a column per dt: {}", words(c.spring_figure_dts)));
     return md;
   }
 };

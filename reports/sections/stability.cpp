@@ -12,21 +12,6 @@
 namespace steplab {
 namespace {
 
-// The map panels, one row per family (explicit and implicit Euler also open the Adams-Bashforth
-// and BDF rows), as gnuplot variables: nrows=N; row1='m1 m2 ...'; label1='family'; ...
-std::string family_grid(const std::vector<std::size_t>& methods) {
-  std::string out;
-  int rows = 0;
-  for (Family f : kReportFamilies) {
-    const std::vector<std::size_t> members = family_members(methods, f);
-    if (members.empty()) continue;
-    const std::string row = method_words(members);
-    ++rows;
-    out += fmt::format("row{}='{}'; label{}='{}'; ", rows, row, rows, to_string(f));
-  }
-  return out + fmt::format("nrows={}", rows);
-}
-
 class Stability : public Section {
  public:
   void write_data(const ReportData& d, const DataDir& dat) const override {
@@ -58,8 +43,8 @@ class Stability : public Section {
     }
   }
 
-  std::vector<FigureSpec> figures(const ReportData& d) const override {
-    return {{"fig4_energy", ""}, {"fig5_damping", ""}, {"fig6_maps", family_grid(d.methods)}};
+  std::vector<FigureSpec> figures(const ReportData&) const override {
+    return {{"fig4_energy", ""}, {"fig5_damping", ""}, {"fig6_maps", ""}};
   }
 
   std::string markdown(Page& page) const override {
@@ -80,10 +65,10 @@ class Stability : public Section {
       if (d.energy[i].status != RunStatus::Ok)
         ended += fmt::format("{}`{}` at t = {:g}", ended.empty() ? "" : ", ", name(d.methods[i]), d.energy[i].failed_t);
     const int energy_fig = page.next_figure();
-    md += page.figure("fig4_energy", fmt::format("energy ratio E/E0 against time without damping at dt {} (log scale)", c.large_dt));
+    md += page.figure("fig4_energy", fmt::format("energy ratio E/E0 against time without damping at dt {} (log scale), a panel per family", c.large_dt));
     if (!ended.empty()) md += fmt::format("In figure {} the curves of runs that diverged end where they did: {}.\n\n", energy_fig, ended);
     md += page.figure("fig5_damping", fmt::format("energy growth rate against damping at dt {}: measured (points), predicted "
-                                                  "2 ln(rho)/h (lines)", c.large_dt));
+                                                  "2 ln(rho)/h (lines), a panel per family", c.large_dt));
     md += page.figure("fig6_maps", "measured stable (dark) and unstable (light) steps over (dt, damping), one row per family; "
                                    "predicted dt* (line). Cells that disagree with the prediction at that cell: see `data/stability.json`");
     std::size_t disagree = 0;
