@@ -24,9 +24,10 @@ std::string_view family_hue(Family f) {
   }
 }
 
-// The hue scaled towards black by the order: 1, 0.8, 0.62, 0.48 of its brightness.
+// The hue scaled towards black by the order: 1, 0.8, 0.62, 0.48, 0.38 of its brightness.
 std::string shade(std::string_view hue, int order) {
-  const double k = order <= 1 ? 1.0 : order == 2 ? 0.8 : order == 3 ? 0.62 : 0.48;
+  constexpr double scale[] = {1.0, 1.0, 0.8, 0.62, 0.48, 0.38};
+  const double k = scale[order];
   const auto channel = [&](int at) {
     return static_cast<int>(std::lround(k * std::stoi(std::string(hue.substr(at, 2)), nullptr, 16)));
   };
@@ -37,9 +38,10 @@ std::string shade(std::string_view hue, int order) {
 
 MethodStyle method_style(std::size_t method) {
   const MethodInfo& info = method_infos[method];
-  // by order: filled circle, square, triangle, diamond; solid, dashed, dash-dot, dotted
-  constexpr int points[] = {7, 7, 5, 9, 13}, dashes[] = {1, 1, 2, 4, 3};
-  const int o = std::clamp(info.order, 0, 4);
+  // by order: filled circle, square, triangle, diamond, triangle down; solid, dashed, dash-dot,
+  // dotted, dash-dot-dot
+  constexpr int points[] = {7, 7, 5, 9, 13, 11}, dashes[] = {1, 1, 2, 4, 3, 5};
+  const int o = std::clamp(info.order, 0, 5);
   return {shade(family_hue(info.family), std::max(o, 1)), points[o], dashes[o]};
 }
 
