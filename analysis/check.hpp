@@ -17,10 +17,11 @@
 //              the run, T d(ln E)/dt from its least-squares slope. A symplectic method keeps a
 //              modified energy exactly on a linear problem, so E only oscillates about it: the slope
 //              of a bounded oscillation of relative amplitude A over N periods is ~ 3 A / (pi N):
-//              measured |drift| <= 2.7e-5 (symplectic Euler; the other symplectic rows <= 6.4e-7).
+//              measured |drift| <= 1.5e-5 (symplectic Euler; the other symplectic rows <= 1e-6).
 //              A non-symplectic method's |R(i omega h)| != 1 changes ln E by 2 ln|R| every step:
-//              RK4, the smallest drift of the table, -0.088 over the run (theory: 1e5 ln(1 - y^6/72
-//              + y^8/576) at y = 0.2). kDriftBound sits 37x above the one and 88x below the other.
+//              Radau IIA, the smallest drift of the table, -0.428 over the run (theory: 1e5 ln|R(0.5 i)|^2
+//              = -0.4275), RK4 -21. kDriftBound sits 65x above the one and 428x below the other
+//              (at omega h = 0.2 Radau IIA's drift, -0.0018, would have been too close to call).
 //              The claim holds when "bounded" (|drift| <= kDriftBound) agrees with the declaration.
 //   stability  dt* on the spring at the dampings 0, 0.1, 1 and 4 (analysis/stability.hpp), predicted
 //              from the step matrix and measured from runs. A-stable: infinite at every damping,
@@ -47,7 +48,7 @@ namespace steplab {
 inline constexpr double kOrderTolerance = 0.1;
 inline constexpr double kConvergedRatio = 1e-2;
 inline constexpr long long kDriftSteps = 100'000;
-inline constexpr double kDriftOmegaH = 0.2;
+inline constexpr double kDriftOmegaH = 0.5;
 inline constexpr double kDriftBound = 1e-3;
 inline constexpr double kStableAgreement = 0.01;
 inline constexpr int kRestSteps = 10;

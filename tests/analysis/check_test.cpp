@@ -41,13 +41,16 @@ INSTANTIATE_TEST_SUITE_P(Table, EveryRow, ::testing::Range<std::size_t>(0, metho
 TEST(Check, EnergyDriftIsTheStabilityFunctionsModulus) {
   const double y = kDriftOmegaH, n = kDriftSteps;
   const double y2 = y * y, y4 = y2 * y2, y6 = y4 * y2, y8 = y4 * y4;
-  // RK4: |R(iy)|^2 = 1 - y^6/72 + y^8/576; RK3: 1 - y^4/12 + y^6/36; implicit Euler: 1 / (1 + y^2)
+  // RK4: |R(iy)|^2 = 1 - y^6/72 + y^8/576; RK3: 1 - y^4/12 + y^6/36; implicit Euler: 1 / (1 + y^2);
+  // Radau IIA: |(1 + 2z/5 + z^2/20) / (1 - 3z/5 + 3z^2/20 - z^3/60)|^2 at z = iy
+  const double radau = (std::pow(1 - y2 / 20, 2) + 0.16 * y2) / (std::pow(1 - 3 * y2 / 20, 2) + std::pow(-0.6 * y + y * y2 / 60, 2));
   const struct {
     const char* name;
     double theory;
   } cases[] = {{"rk4", n * std::log(1 - y6 / 72 + y8 / 576)},
                {"rk3", n * std::log(1 - y4 / 12 + y6 / 36)},
-               {"implicit_euler", -n * std::log(1 + y2)}};
+               {"implicit_euler", -n * std::log(1 + y2)},
+               {"radau_iia5", n * std::log(radau)}};
   for (const auto& c : cases) {
     const CheckResult r = check_as(c.name, method_infos[index_of(c.name)]);
     EXPECT_NEAR(r.energy.drift, c.theory, 1e-3 * std::abs(c.theory)) << c.name;
