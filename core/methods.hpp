@@ -24,6 +24,7 @@
 #include "core/methods/implicit_euler.hpp"
 #include "core/methods/gauss_legendre4.hpp"
 #include "core/methods/implicit_midpoint.hpp"
+#include "core/methods/radau_iia5.hpp"
 #include "core/methods/rk3.hpp"
 #include "core/methods/rk4.hpp"
 #include "core/methods/symplectic_euler.hpp"
@@ -36,6 +37,7 @@ using Methods = std::tuple<ExplicitEuler, SymplecticEuler, ExplicitMidpoint, Imp
                            VelocityVerlet, Rk4, ImplicitMidpoint,                            // order vs stability
                            Rk3, Yoshida4, GaussLegendre4,                                    // families: one-step
                            AdamsBashforth2, AdamsBashforth3, Bdf2, Bdf3,                     // families: multistep
+                           RadauIIA5,                                                        // stiff systems
                            Analytic>;
 
 inline constexpr std::size_t method_count = std::tuple_size_v<Methods>;

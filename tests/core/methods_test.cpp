@@ -239,20 +239,21 @@ TEST(Newton, ReportsNoConvergence) {
 }
 
 TEST(MethodTable, NamesAliasesAndFlags) {
-  EXPECT_EQ(method_count, 15u);
+  EXPECT_EQ(method_count, 16u);
   EXPECT_EQ(find_method("euler"), find_method("explicit_euler"));
   EXPECT_EQ(find_method("midpoint"), find_method("explicit_midpoint"));
   EXPECT_EQ(find_method("backwards_euler"), find_method("implicit_euler"));
   EXPECT_FALSE(find_method("backward_euler").has_value());
   for (const auto& info : method_infos) {
     const bool implicit = info.name == "implicit_euler" || info.name == "implicit_midpoint" ||
-                          info.name == "gauss_legendre4" || info.name == "bdf2" || info.name == "bdf3";
+                          info.name == "gauss_legendre4" || info.name == "radau_iia5" || info.name == "bdf2" || info.name == "bdf3";
     const bool symplectic = info.name == "symplectic_euler" || info.name == "velocity_verlet" || info.name == "yoshida4" ||
                             info.name == "implicit_midpoint" || info.name == "gauss_legendre4" || info.name == "analytic";
     // A-stable: |R(z)| <= 1 on the left half-plane (implicit Euler, implicit midpoint, Gauss-Legendre,
     // the exact flow) or the root condition there (BDF2); BDF3 is A(86 degrees)-stable only
     const bool a_stable = info.name == "implicit_euler" || info.name == "implicit_midpoint" ||
-                          info.name == "gauss_legendre4" || info.name == "bdf2" || info.name == "analytic";
+                          info.name == "gauss_legendre4" || info.name == "radau_iia5" || info.name == "bdf2" ||
+                          info.name == "analytic";
     EXPECT_EQ(info.implicit, implicit) << info.name;
     EXPECT_EQ(info.symplectic, symplectic) << info.name;
     EXPECT_EQ(info.a_stable, a_stable) << info.name;
@@ -265,7 +266,7 @@ TEST(MethodTable, NamesAliasesAndFlags) {
     std::set<int> orders;
     for (const auto& info : method_infos)
       if (info.family == f) orders.insert(info.order);
-    EXPECT_EQ(orders.size(), f == Family::ExplicitRungeKutta ? 4u : 3u) << to_string(f);
+    EXPECT_EQ(orders.size(), f == Family::Splitting ? 3u : 4u) << to_string(f);
   }
 }
 
