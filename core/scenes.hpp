@@ -13,12 +13,13 @@
 
 #include "core/scenes/bounce.hpp"
 #include "core/scenes/cannonball.hpp"
+#include "core/scenes/chain.hpp"
 #include "core/scenes/falling.hpp"
 #include "core/scenes/spring.hpp"
 
 namespace steplab {
 
-using Scenes = std::tuple<Cannonball, Spring, Falling, Bounce>;
+using Scenes = std::tuple<Cannonball, Spring, Falling, Bounce, Chain>;
 
 inline constexpr std::size_t scene_count = std::tuple_size_v<Scenes>;
 

@@ -1,0 +1,119 @@
+#pragma once
+#include <array>
+#include <cmath>
+#include <complex>
+#include <span>
+#include <string_view>
+
+#include <Eigen/Eigenvalues>
+#include <unsupported/Eigen/MatrixFunctions>
+
+#include "core/scene.hpp"
+
+namespace steplab {
+
+// A stiff two-mass chain on a line, no gravity:
+//
+//   wall --[k1, c1]-- m1 --[k2, c2]-- m2
+//
+// u1, u2 are the displacements from rest; M u'' = -K u - C u' with M = diag(m1, m2),
+//   K = [[k1 + k2, -k2], [-k2, k2]],   C = [[c1 + c2, -c2], [-c2, c2]].
+// Defaults: the sheet's soft spring (m 1, k 5, c 0.1) holding a second mass through a spring
+// 10^4 times stiffer (k2 = 5e4, damped by c2 = 10), started with both masses displaced by 1, which
+// is almost exactly the slow mode (the masses move together, omega^2 ~ k1 / (m1 + m2) = 2.5). The
+// fast mode (the masses against each other, omega^2 ~ k2 (1/m1 + 1/m2) = 1e5, so omega ~ 316,
+// eigenvalue ~ -10 +- 316i) carries almost none of the motion but bounds every explicit step:
+// accuracy alone would allow steps set by omega ~ 1.6, stability allows about 1/100 of that.
+struct Chain {
+  static constexpr int dim = 2;
+  static constexpr std::string_view name = "chain";
+  static constexpr std::array<ParamSpec, 8> params{{
+      {"mass1", 1.0, Bound::Positive, "mass m1 (next to the wall)"},
+      {"mass2", 1.0, Bound::Positive, "mass m2 (the free end)"},
+      {"stiffness1", 5.0, Bound::Positive, "stiffness k1 of the wall spring"},
+      {"stiffness2", 5e4, Bound::Positive, "stiffness k2 of the spring between the masses"},
+      {"damping1", 0.1, Bound::NonNegative, "damping c1 of the wall spring (force -c1 u1')"},
+      {"damping2", 10.0, Bound::NonNegative, "damping c2 between the masses"},
+      {"u1", 1.0, Bound::Any, "start displacement of m1 (at rest)"},
+      {"u2", 1.0, Bound::Any, "start displacement of m2 (at rest)"},
+  }};
+
+  using Mat4 = Eigen::Matrix4d;
+  using Vec4 = Eigen::Vector4d;
+  using CMat4 = Eigen::Matrix4cd;
+  using CVec4 = Eigen::Vector4cd;
+
+  Vec<2> m, inv_m, u0;
+  Mat<2> K, C;
+  // The first-order system z' = A z, z = (u1, u2, v1, v2): A = [[0, I], [-M^-1 K, -M^-1 C]].
+  Mat4 A;
+  // Its eigen-decomposition A = V diag(lambda) V^-1, so that z(t) = V diag(e^{lambda t}) V^-1 z0.
+  // Computed once in long double: in double the slow eigenvalues carry the backward error of the
+  // whole matrix, eps |A| ~ 1e-11 (|A| ~ k2 / m), and z(10) came out 3e-12 off (against a 50-digit
+  // matrix exponential, mpmath); from long double, evaluated in double, 1.0e-14. Where V is
+  // ill-conditioned (a mode at critical damping, where A is defective) the flow is e^{A t} from
+  // Eigen's matrix exponential in long double instead (Pade, scaling and squaring: slower, exact to
+  // round-off for every A; tests/core/chain_test.cpp checks both against the ODE).
+  using LMat4 = Eigen::Matrix<long double, 4, 4>;
+  using LCMat4 = Eigen::Matrix<std::complex<long double>, 4, 4>;
+  CMat4 V, V_inv;
+  CVec4 lambda, start;  // start: V^-1 z0
+  bool use_eigen = false;
+  static constexpr double kMaxCondition = 1e8;
+
+  explicit Chain(std::span<const double> p)
+      : m(p[0], p[1]), inv_m(1 / p[0], 1 / p[1]), u0(p[6], p[7]) {
+    const double k1 = p[2], k2 = p[3], c1 = p[4], c2 = p[5];
+    K << k1 + k2, -k2, -k2, k2;
+    C << c1 + c2, -c2, -c2, c2;
+    A.setZero();
+    A.topRightCorner<2, 2>().setIdentity();
+    A.bottomLeftCorner<2, 2>() = -(inv_m.asDiagonal() * K);
+    A.bottomRightCorner<2, 2>() = -(inv_m.asDiagonal() * C);
+    LMat4 a;  // A again, its entries rounded once from the parameters in long double
+    const long double lm1 = p[0], lm2 = p[1], lk1 = k1, lk2 = k2, lc1 = c1, lc2 = c2;
+    a << 0, 0, 1, 0, 0, 0, 0, 1, -(lk1 + lk2) / lm1, lk2 / lm1, -(lc1 + lc2) / lm1, lc2 / lm1, lk2 / lm2, -lk2 / lm2,
+        lc2 / lm2, -lc2 / lm2;
+    const Eigen::EigenSolver<LMat4> es(a);
+    if (es.info() == Eigen::Success) {
+      const LCMat4 v = es.eigenvectors(), v_inv = v.inverse();
+      const long double condition =
+          v.cwiseAbs().rowwise().sum().maxCoeff() * v_inv.cwiseAbs().rowwise().sum().maxCoeff();
+      use_eigen = std::isfinite(condition) && condition < kMaxCondition;
+      V = v.cast<std::complex<double>>();
+      V_inv = v_inv.cast<std::complex<double>>();
+      lambda = es.eigenvalues().cast<std::complex<double>>();
+      start = (v_inv * Eigen::Matrix<std::complex<long double>, 4, 1>(u0[0], u0[1], 0, 0)).cast<std::complex<double>>();
+    }
+  }
+
+  Vec<2> mass() const { return m; }
+  Vec<2> inverse_mass() const { return inv_m; }
+  Vec<2> force(const Vec<2>& x, const Vec<2>& v) const { return -(K * x) - C * v; }
+  Jacobians<2> jacobians(const Vec<2>&, const Vec<2>&) const { return {-K, -C}; }
+  bool velocity_dependent() const { return C.cwiseAbs().maxCoeff() != 0; }
+
+  // Kinetic energy plus the springs' potential: 1/2 v^T M v + 1/2 u^T K u.
+  double energy(const Vec<2>& x, const Vec<2>& v) const {
+    return 0.5 * v.dot(m.cwiseProduct(v)) + 0.5 * x.dot(K * x);
+  }
+
+  State<2> initial() const { return {u0, Vec<2>::Zero()}; }
+
+  State<2> exact_at(double t) const {
+    if (!use_eigen) return flow(initial(), t);
+    return to_state((V * (lambda * t).array().exp().matrix().cwiseProduct(start)).real());
+  }
+
+  State<2> flow(const State<2>& y, double t) const {
+    if (!use_eigen) return to_state(((A.cast<long double>() * t).exp() * to_z(y).cast<long double>()).cast<double>());
+    const CVec4 c = V_inv * to_z(y).cast<std::complex<double>>();
+    return to_state((V * (lambda * t).array().exp().matrix().cwiseProduct(c)).real());
+  }
+
+ private:
+  static Vec4 to_z(const State<2>& y) { return {y.x[0], y.x[1], y.v[0], y.v[1]}; }
+  static State<2> to_state(const Vec4& z) { return {z.head<2>(), z.tail<2>()}; }
+};
+
+}  // namespace steplab
