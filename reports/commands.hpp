@@ -19,6 +19,8 @@ struct RunArgs {
   SceneArgs scene;
   std::string method = "explicit_euler";
   std::string dt = "0.01";
+  bool dt_given = false;  // --dt on the command line (refused for the adaptive dopri5)
+  std::string rtol, atol;  // dopri5 only; empty: SciPy's defaults 1e-3 and 1e-6
   std::string t_end = "10";
   std::string samples = "10001";
   std::string json;  // write JSON here instead of CSV on stdout

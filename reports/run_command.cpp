@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "core/dopri5.hpp"
 #include "core/scenes.hpp"
 #include "core/simulate.hpp"
 #include "reports/commands.hpp"
@@ -41,7 +42,62 @@ bool stop_after_validation(const std::string& output_path) {
   return false;
 }
 
+namespace {
+
+// The adaptive Dormand-Prince: a tolerance instead of a step; its steps in the JSON.
+int run_dopri5(RunArgs& a) {
+  const std::size_t scene = a.scene.scene_index();
+  if (a.dt_given) throw UsageError("--dt does not apply to dopri5, which chooses its own steps; give --rtol and --atol");
+  const std::vector<double> params = a.scene.values(scene);
+  AdaptiveSpec spec;
+  spec.tol = read_tolerance(a.rtol, a.atol);
+  spec.t_end = parse_number("--t-end", a.t_end, Bound::NonNegative);
+  spec.max_samples = parse_count("--samples", a.samples, 2, 100'000'000);
+  if (stop_after_validation(a.json)) return 0;
+  return with_scene(scene, [&]<class S>() {
+    const S s(params);
+    const AdaptiveResult<S::dim> r = simulate_dopri5(s, spec);
+    if (a.json.empty()) {
+      std::fputs(csv(r.run).c_str(), stdout);
+    } else {
+      Json p = params_json<S>(params);
+      p["rtol"] = spec.tol.rtol;
+      p["atol"] = spec.tol.atol;
+      p["t_end"] = spec.t_end;
+      Json j = run_json<S::dim>(S::name, "dopri5", std::move(p), r.run);
+      j["adaptive"] = adaptive_json(r.stats);
+      write_atomic(a.json, j.dump(1) + "\n");
+    }
+    if (r.run.status != RunStatus::Ok)
+      fmt::print(stderr, "steplab: dopri5 {} at t = {}: the step size fell below round-off\n", to_string(r.run.status),
+                 r.run.failed_t);
+    return 0;
+  });
+}
+
+}  // namespace
+
+Tolerance read_tolerance(const std::string& rtol, const std::string& atol) {
+  Tolerance t;
+  if (!rtol.empty()) t.rtol = parse_number("--rtol", rtol, Bound::Positive);
+  if (t.rtol < 1e-13 || t.rtol > 1)
+    throw UsageError(fmt::format("--rtol {} is out of range; accepted: 1e-13 .. 1 (below, round-off decides the steps)", rtol));
+  if (!atol.empty()) t.atol = parse_number("--atol", atol, Bound::Positive);
+  return t;
+}
+
+Json adaptive_json(const AdaptiveStats& s) {
+  return {{"accepted_steps", s.accepted},
+          {"rejected_steps", s.rejected},
+          {"force_evaluations", s.force_evaluations},
+          {"h_min", s.accepted > 0 ? Json(s.h_min) : Json(nullptr)},
+          {"h_max", s.accepted > 0 ? Json(s.h_max) : Json(nullptr)}};
+}
+
 int run_command(RunArgs& a) {
+  if (a.method == "dopri5") return run_dopri5(a);
+  if (!a.rtol.empty() || !a.atol.empty())
+    throw UsageError(fmt::format("--rtol and --atol apply to the adaptive dopri5 only; --method {} takes --dt", a.method));
   const std::size_t scene = a.scene.scene_index();
   const std::size_t method = resolve_method(a.method);
   const std::vector<double> params = a.scene.values(scene);

@@ -9,6 +9,7 @@
 #include <boost/numeric/odeint.hpp>
 
 #include "analysis/convergence.hpp"
+#include "tests/core/chain_ode.hpp"
 #include "core/methods.hpp"
 #include "core/scenes.hpp"
 #include "core/simulate.hpp"
@@ -17,23 +18,12 @@ namespace steplab {
 namespace {
 
 namespace odeint = boost::numeric::odeint;
-using Z = std::array<double, 4>;  // (u1, u2, v1, v2)
 
 // mass1, mass2, stiffness1, stiffness2, damping1, damping2, u1, u2
 Chain chain(double c1 = 0.1, double c2 = 10, double k2 = 5e4) {
   const std::array<double, 8> p{1.0, 1.0, 5.0, k2, c1, c2, 1.0, 1.0};
   return Chain(p);
 }
-
-// M u'' = -K u - C u', written out here from the parameters rather than taken from the scene.
-struct ChainOde {
-  double m1, m2, k1, k2, c1, c2;
-  void operator()(const Z& z, Z& dz, double) const {
-    const double f1 = -k1 * z[0] - c1 * z[2] + k2 * (z[1] - z[0]) + c2 * (z[3] - z[2]);
-    const double f2 = -k2 * (z[1] - z[0]) - c2 * (z[3] - z[2]);
-    dz = {z[2], z[3], f1 / m1, f2 / m2};
-  }
-};
 
 // z(t) = expm(A t) z0 at 50 digits (mpmath 1.3, mp.dps = 50) for the default chain:
 //   A = [[0,0,1,0],[0,0,0,1],[-(k1+k2)/m1, k2/m1, -(c1+c2)/m1, c2/m1],[k2/m2, -k2/m2, c2/m2, -c2/m2]]

@@ -76,6 +76,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"run --scene cannonball --stiffness 3", "--stiffness"},
         BadInput{"run --scene falling --method analytic", "analytic"},
         BadInput{"run --json {dir}/no/such/folder/out.json", "no/such/folder"}, BadInput{"run --json {dir}", "directory"},
+        // run: the adaptive dopri5 takes tolerances, the fixed-step methods a step
+        BadInput{"run --method dopri5 --dt 0.1", "--dt"}, BadInput{"run --method rk4 --rtol 1e-6", "--rtol"},
+        BadInput{"run --method dopri5 --rtol 0", "--rtol"}, BadInput{"run --method dopri5 --rtol 1e-20", "--rtol"},
+        BadInput{"run --method dopri5 --atol -1", "--atol"}, BadInput{"run --method dopri5 --atol nan", "--atol"},
         // the old flags
         BadInput{"-testcase nosuch", "nosuch"}, BadInput{"-testcase spring1d -step -1", "-step"},
         BadInput{"-testcase spring1d -stiff -1", "-stiff"}, BadInput{"-method nosuch", "nosuch"},

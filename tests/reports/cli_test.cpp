@@ -43,6 +43,31 @@ TEST(Cli, RunWritesTheRunJson) {
   EXPECT_EQ(j["samples"][0]["x"][0], -5.0);
 }
 
+// The adaptive dopri5 takes tolerances; the JSON carries them instead of dt, and its step counts.
+// At rtol 1e-8, atol 1e-10 the chain ends within rtol |u(10)| + atol = 7.9e-9 of the exact solution.
+TEST(Cli, RunDopri5WritesToleranceAndSteps) {
+  TempDir dir;
+  const std::string out = dir.path("d.json");
+  const Result r = run_steplab("run --scene chain --method dopri5 --rtol 1e-8 --atol 1e-10 --samples 11 --json " + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(std::ifstream(out));
+  EXPECT_EQ(j["method"], "dopri5");
+  EXPECT_EQ(j["params"]["rtol"], 1e-8);
+  EXPECT_EQ(j["params"]["atol"], 1e-10);
+  EXPECT_FALSE(j["params"].contains("dt"));
+  EXPECT_EQ(j["status"], "ok");
+  EXPECT_DOUBLE_EQ(j["final"]["t"].get<double>(), 10.0);
+  EXPECT_LT(j["error"]["final"].get<double>(), 7.9e-9);
+  const auto& a = j["adaptive"];
+  EXPECT_EQ(a["accepted_steps"], j["steps"]);
+  EXPECT_EQ(a["force_evaluations"].get<long long>(),
+            2 + 6 * (a["accepted_steps"].get<long long>() + a["rejected_steps"].get<long long>()));
+  // the stiff spring's stability, not accuracy, bounds the steps: |h lambda| <~ 3.3 at |lambda| ~ 316
+  EXPECT_LT(a["h_max"].get<double>(), 3.4 / 316);
+  ASSERT_EQ(j["samples"].size(), 11u);
+  EXPECT_DOUBLE_EQ(j["samples"][5]["t"].get<double>(), 5.0);
+}
+
 TEST(Cli, BlowUpIsAResult) {
   TempDir dir;
   const std::string out = dir.path("d.json");
