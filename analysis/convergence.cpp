@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "analysis/parallel.hpp"
+#include "core/dopri5.hpp"
 #include "core/scenes.hpp"
 
 namespace steplab {
@@ -41,23 +42,58 @@ double roundoff_floor(double scale, long long steps) {
 namespace {
 
 constexpr double kBlownUp = 1e6;
+constexpr double kReferenceMargin = 100;  // a fitted error stands this far above the reference's
 
-template <HasExact S, class M> ConvergenceRecord one_run(const S& s, std::size_t method, double dt, double t_end) {
+template <Scene S, class M>
+ConvergenceRecord one_run(const S& s, std::size_t method, double dt, double t_end, const ConvergenceResult& study) {
   RunSpec spec;
   spec.dt = dt;
   spec.steps = steps_for(t_end, dt);
+  spec.errors = !study.uses_reference;
   const RunResult<S::dim> r = simulate<M>(s, spec);
-  const double scale = std::max(s.initial().x.norm(), exact(s, t_end).x.norm());
-  const double inf = std::numeric_limits<double>::infinity();
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  const State<S::dim> target = [&]() -> State<S::dim> {
+    if constexpr (HasExact<S>) {
+      if (!study.uses_reference) return exact(s, t_end);
+    }
+    return {Eigen::Map<const Vec<S::dim>>(study.reference.x.data()), Eigen::Map<const Vec<S::dim>>(study.reference.v.data())};
+  }();
+  const double scale = std::max(s.initial().x.norm(), target.x.norm());
+  double error_final = r.error_final, error_v = r.error_v_final, error_max = r.error_max, error_rms = r.error_rms;
+  if (study.uses_reference) {
+    error_final = error_max = (r.final.x - target.x).norm();  // the largest error seen: at t_end alone
+    error_v = (r.final.v - target.v).norm();
+    error_rms = nan;
+  }
   // A run that stays finite but whose error outgrows the solution a million times over has blown
   // up as surely as one that overflows (RK4 on the stiff chain at dt 0.5: 3e143 after 20 steps);
   // it is counted as diverged rather than fitted.
   RunStatus status = r.status;
-  if (status == RunStatus::Ok && !(r.error_max <= kBlownUp * std::max(scale, 1.0))) status = RunStatus::Diverged;
+  if (status == RunStatus::Ok && !(error_max <= kBlownUp * std::max(scale, 1.0))) status = RunStatus::Diverged;
   const bool ok = status == RunStatus::Ok;
   return {method, dt, spec.steps, status, r.failed_step,
-          ok ? r.error_final : inf, ok ? r.error_v_final : inf, ok ? r.error_max : inf, ok ? r.error_rms : inf,
-          roundoff_floor(scale, spec.steps)};
+          ok ? error_final : inf, ok ? error_v : inf, ok ? (study.uses_reference ? nan : error_max) : inf,
+          ok ? error_rms : inf, roundoff_floor(scale, spec.steps)};
+}
+
+template <Scene S> ReferenceSolution reference_solution(const S& s, double t_end) {
+  ReferenceSolution ref;
+  AdaptiveSpec spec;
+  spec.t_end = t_end;
+  spec.errors = false;
+  spec.tol = {ref.rtol, ref.rtol};
+  const AdaptiveResult<S::dim> fine = simulate_dopri5(s, spec);
+  spec.tol = {ref.check_rtol, ref.check_rtol};
+  const AdaptiveResult<S::dim> check = simulate_dopri5(s, spec);
+  if (fine.run.status != RunStatus::Ok || check.run.status != RunStatus::Ok)
+    throw std::runtime_error("the reference solution (dopri5 at rtol 1e-13) did not reach t_end");
+  ref.steps = fine.stats.accepted;
+  ref.check_steps = check.stats.accepted;
+  ref.estimated_error = (fine.run.final.x - check.run.final.x).norm();
+  ref.floor = kReferenceMargin * ref.estimated_error;
+  ref.x.assign(fine.run.final.x.data(), fine.run.final.x.data() + S::dim);
+  ref.v.assign(fine.run.final.v.data(), fine.run.final.v.data() + S::dim);
+  return ref;
 }
 
 }  // namespace
@@ -79,30 +115,28 @@ namespace {
 void time_runs(ConvergenceResult& out) {
   const ConvergenceConfig& c = out.config;
   with_scene(c.scene, [&]<class S>() {
-    if constexpr (HasExact<S>) {
-      const S scene(c.params);
-      for (ConvergenceRecord& rec : out.records) {
-        with_method(rec.method, [&]<class M>() {
-          if constexpr (applies<M, S>()) {
-            std::vector<double> times;
-            double total = 0;
-            while (total < kTimingSeconds || times.size() < 3) {
-              RunSpec spec;  // the integration alone: no exact solution evaluated along the way
-              spec.dt = rec.dt;
-              spec.steps = rec.steps;
-              spec.errors = false;
-              const auto start = std::chrono::steady_clock::now();
-              const RunResult<S::dim> r = simulate<M>(scene, spec);
-              const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-              if (r.steps == 0 && rec.steps > 0) throw std::logic_error("timed run took no step");
-              times.push_back(s);
-              total += s;
-            }
-            std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
-            rec.seconds = times[times.size() / 2];
+    const S scene(c.params);
+    for (ConvergenceRecord& rec : out.records) {
+      with_method(rec.method, [&]<class M>() {
+        if constexpr (applies<M, S>()) {
+          std::vector<double> times;
+          double total = 0;
+          while (total < kTimingSeconds || times.size() < 3) {
+            RunSpec spec;  // the integration alone: no exact solution evaluated along the way
+            spec.dt = rec.dt;
+            spec.steps = rec.steps;
+            spec.errors = false;
+            const auto start = std::chrono::steady_clock::now();
+            const RunResult<S::dim> r = simulate<M>(scene, spec);
+            const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            if (r.steps == 0 && rec.steps > 0) throw std::logic_error("timed run took no step");
+            times.push_back(s);
+            total += s;
           }
-        });
-      }
+          std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
+          rec.seconds = times[times.size() / 2];
+        }
+      });
     }
   });
 }
@@ -117,19 +151,19 @@ ConvergenceResult convergence_study(const ConvergenceConfig& config) {
   out.records.resize(nm * nd);
 
   with_scene(config.scene, [&]<class S>() {
-    if constexpr (!HasExact<S>) {
-      throw std::invalid_argument("scene " + std::string(S::name) + " has no exact solution");
-    } else {
-      const S scene(config.params);
-      parallel_for(nm * nd, config.threads, [&](std::size_t task) {
-        const std::size_t m = task / nd, i = task % nd;
-        // the most expensive runs (small dt) first would balance better; the queue is dynamic anyway
-        out.records[task] = with_method(config.methods[m], [&]<class M>() {
-          if constexpr (!applies<M, S>()) return ConvergenceRecord{};
-          else return one_run<S, M>(scene, config.methods[m], out.dts[i], config.t_end);
-        });
+    const S scene(config.params);
+    out.uses_reference = config.reference || !HasExact<S>;
+    if (out.uses_reference && config.fit_error != ErrorKind::Final)
+      throw std::invalid_argument("a reference solution gives the final error only");
+    if (out.uses_reference) out.reference = reference_solution(scene, config.t_end);
+    parallel_for(nm * nd, config.threads, [&](std::size_t task) {
+      const std::size_t m = task / nd, i = task % nd;
+      // the most expensive runs (small dt) first would balance better; the queue is dynamic anyway
+      out.records[task] = with_method(config.methods[m], [&]<class M>() {
+        if constexpr (!applies<M, S>()) return ConvergenceRecord{};
+        else return one_run<S, M>(scene, config.methods[m], out.dts[i], config.t_end, out);
       });
-    }
+    });
   });
 
   if (config.timing) time_runs(out);
@@ -138,7 +172,8 @@ ConvergenceResult convergence_study(const ConvergenceConfig& config) {
     std::vector<ErrorPoint> pts;
     for (std::size_t i = 0; i < nd; ++i) {
       const ConvergenceRecord& r = out.records[m * nd + i];
-      pts.push_back({r.dt, error_of(r, config.fit_error), r.floor, r.status != RunStatus::Ok});
+      const double floor = out.uses_reference ? std::max(r.floor, out.reference.floor) : r.floor;
+      pts.push_back({r.dt, error_of(r, config.fit_error), floor, r.status != RunStatus::Ok});
     }
     out.fits.push_back({config.methods[m], fit_order(pts)});
   }

@@ -1,5 +1,13 @@
-// Convergence study: every method over a geometric dt sweep on a scene with an exact solution,
-// errors against it, and the fitted order per method (analysis/order_fit.hpp).
+// Convergence study: every method over a geometric dt sweep, errors against the exact solution
+// (or, on a scene without one, against a reference solution), and the fitted order per method
+// (analysis/order_fit.hpp).
+//
+// The reference: the adaptive Dormand-Prince 5(4) (core/dopri5.hpp) at rtol = atol = 1e-13, its
+// steps as fine as the contacts need, computed once per study. Its own error is estimated from a
+// second resolution, rtol = atol = 1e-12: |u(1e-12) - u(1e-13)| bounds the error of the finer one
+// (about 10x above it, the error following the tolerance). A run's error counts only where it is
+// 100x above that estimate: points below it are left out of the fit like those at the round-off
+// floor, so the reference's error never shapes a fitted order.
 #pragma once
 
 #include <cstddef>
@@ -27,6 +35,17 @@ struct ConvergenceConfig {
   // runs and at least 3 repetitions; the median is kept. Wall-clock times differ from run to
   // run: the only part of the output that is not reproducible, so it is off by default.
   bool timing = false;
+  // Converge against the reference solution even where the scene has an exact one (a scene
+  // without one always does). Only the final error: the reference is known at t_end alone.
+  bool reference = false;
+};
+
+struct ReferenceSolution {
+  double rtol = 1e-13, check_rtol = 1e-12;  // the reference's tolerance, and the second resolution's
+  long long steps = 0, check_steps = 0;     // accepted steps of each
+  double estimated_error = 0;               // |u(check) - u(reference)| at t_end
+  double floor = 0;                         // 100 x estimated_error: errors below are not fitted
+  std::vector<double> x, v;                 // the reference state at t_end
 };
 
 inline constexpr double kTimingSeconds = 0.02;
@@ -52,6 +71,8 @@ struct ConvergenceResult {
   std::vector<double> dts;
   std::vector<ConvergenceRecord> records;  // method-major: records[m * dts.size() + i]
   std::vector<ConvergenceFit> fits;
+  bool uses_reference = false;  // errors against `reference`, not the exact solution
+  ReferenceSolution reference;
 };
 
 // The record's error of that kind (the one the order is fitted to).
@@ -66,7 +87,8 @@ std::vector<double> sweep_steps(double t_end, double dt_max, double dt_min, int 
 // linearly: eps scale n. Measured there: the exact methods' errors stay 5-7x below it.
 double roundoff_floor(double scale, long long steps);
 
-// Throws std::invalid_argument if the scene has no exact solution.
+// Throws std::invalid_argument if the errors asked for need the exact solution the scene lacks
+// (max or rms error against a reference).
 ConvergenceResult convergence_study(const ConvergenceConfig& config);
 
 }  // namespace steplab

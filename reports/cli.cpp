@@ -155,7 +155,11 @@ int cli_main(int argc, const char* const* argv) {
   conv_cmd->add_option("--dt-max", conv.dt_max, "largest step")->capture_default_str();
   conv_cmd->add_option("--dt-min", conv.dt_min, "smallest step")->capture_default_str();
   conv_cmd->add_option("--points", conv.points, "steps in the geometric sweep (>= 3)")->capture_default_str();
-  conv_cmd->add_option("--t-end", conv.t_end, "simulated time of every run")->capture_default_str();
+  conv_cmd->add_option("--t-end", conv.t_end,
+                       "simulated time of every run (default 10; 1 against a reference solution, as on falling)");
+  conv_cmd->add_flag("--reference", conv.reference,
+                     "errors against a reference solution (dopri5 at rtol 1e-13) even where an exact one exists; "
+                     "a scene without one always uses it");
   conv_cmd->add_option("--error", conv.error, "error the order is fitted to: final, max, rms")->capture_default_str();
   conv_cmd->add_option("--threads", conv.threads, "worker threads, 0 = all cores")->capture_default_str();
   conv_cmd->add_flag("--timing", conv.timing, "also time every run (work-precision; not reproducible byte for byte)");

@@ -35,8 +35,10 @@ namespace steplab {
 struct ConvergenceArgs {
   SceneArgs scene;
   std::string methods;  // comma-separated; empty: every numerical method
-  std::string dt_max = "0.1", dt_min = "1e-4", points = "16", t_end = "10";
+  std::string dt_max = "0.1", dt_min = "1e-4", points = "16";
+  std::string t_end;  // empty: 10, or 1 against a reference solution (contacts make longer runs chaotic)
   std::string error = "final";
+  bool reference = false;
   std::string threads = "0";
   bool timing = false;
   std::string json;

@@ -38,11 +38,10 @@ int convergence_command(ConvergenceArgs& a) {
   ConvergenceConfig c;
   c.scene = a.scene.scene_index();
   const bool has_exact = with_scene(c.scene, [&]<class S>() { return HasExact<S>; });
-  if (!has_exact)
-    throw UsageError(fmt::format("--scene {} has no exact solution to converge to; accepted: the scenes with one", a.scene.scene));
+  c.reference = a.reference || !has_exact;
   c.params = a.scene.values(c.scene);
   c.methods = resolve_methods(a.methods, false);
-  c.t_end = parse_number("--t-end", a.t_end, Bound::Positive);
+  c.t_end = a.t_end.empty() ? (c.reference ? 1.0 : 10.0) : parse_number("--t-end", a.t_end, Bound::Positive);
   c.dt_max = parse_number("--dt-max", a.dt_max, Bound::Positive);
   c.dt_min = parse_number("--dt-min", a.dt_min, Bound::Positive);
   if (c.dt_min >= c.dt_max)
@@ -55,6 +54,10 @@ int convergence_command(ConvergenceArgs& a) {
   else if (a.error == "max") c.fit_error = ErrorKind::Max;
   else if (a.error == "rms") c.fit_error = ErrorKind::Rms;
   else throw UsageError(fmt::format("--error '{}' is unknown; accepted: final, max, rms", a.error));
+  if (c.reference && c.fit_error != ErrorKind::Final)
+    throw UsageError(fmt::format("--error {} needs the exact solution along the run; against the reference solution "
+                                 "(--scene {}{}) accepted: final",
+                                 a.error, a.scene.scene, a.reference ? ", --reference" : ""));
   c.threads = resolve_thread_count(a.threads);
   c.timing = a.timing;
   if (sweep_steps(c.t_end, c.dt_max, c.dt_min, c.points).size() < 3)

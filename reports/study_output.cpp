@@ -32,6 +32,15 @@ Json convergence_json(const ConvergenceResult& r) {
   p["fit_error"] = to_string(c.fit_error);
   p["timing"] = c.timing;
   j["params"] = std::move(p);
+  if (r.uses_reference) {
+    const ReferenceSolution& ref = r.reference;
+    j["reference"] = {{"method", "dopri5"},          {"rtol", ref.rtol},
+                      {"atol", ref.rtol},            {"steps", ref.steps},
+                      {"check_rtol", ref.check_rtol}, {"check_steps", ref.check_steps},
+                      {"estimated_error", ref.estimated_error}, {"floor", ref.floor}};
+  } else {
+    j["reference"] = "exact";
+  }
   Json results = Json::array();
   for (const ConvergenceRecord& rec : r.records) {
     Json e;
@@ -90,6 +99,11 @@ std::string convergence_table(const ConvergenceResult& r) {
   std::string out = fmt::format("Convergence on {}: t_end {}, {} steps from {:.3g} to {:.3g}; {} position error\n\n",
                                 scene_names[c.scene], c.t_end, r.dts.size(), r.dts.front(), r.dts.back(),
                                 to_string(c.fit_error));
+  if (r.uses_reference)
+    out += fmt::format("Errors against a reference solution: dopri5 at rtol = atol = {:g} ({} steps); its error, from "
+                       "a second one at {:g}, is {:.2e}; errors below {:.2e} are not fitted.\n\n",
+                       r.reference.rtol, r.reference.steps, r.reference.check_rtol, r.reference.estimated_error,
+                       r.reference.floor);
   out += fmt::format("{:>10}", "dt");
   for (const auto& f : r.fits) out += fmt::format(" {:>18}", method_infos[f.method].name);
   out += "\n";

@@ -86,7 +86,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"-testcase error_measurement -step 0", "-step"}, BadInput{"-testcase spring1d -mass nan", "-mass"},
         // studies
         BadInput{"study", "subcommand"}, BadInput{"study convergence --dt-min 0.2 --dt-max 0.1", "--dt-min"},
-        BadInput{"study convergence --points 2", "--points"}, BadInput{"study convergence --scene falling", "falling"},
+        BadInput{"study convergence --points 2", "--points"}, BadInput{"study convergence --scene falling --error max", "--error"},
         BadInput{"study convergence --methods rk4,rk4", "rk4"}, BadInput{"study convergence --methods rk4,foo", "foo"},
         BadInput{"study convergence --error median", "median"}, BadInput{"study convergence --dt-min 1e-12", "steps"},
         BadInput{"study convergence --threads -1", "--threads"}, BadInput{"study convergence --dt-max 100", "--dt-max"},

@@ -29,6 +29,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values("run --scene falling --method implicit_midpoint --dt 0.001 --t-end 3",
                       "study convergence --scene spring --dt-min 1e-3",
                       "study convergence --scene bounce --dt-min 1e-3 --error rms",
+                      "study convergence --scene falling --dt-min 1e-3",
                       "study damping --dts 0.05",
                       "study stability --map-dt-points 12 --map-damping-points 8 --threshold-dampings 0,1",
                       "study collision --dts 0.002,0.004 --t-end 3"));
