@@ -171,6 +171,14 @@ int cli_main(int argc, const char* const* argv) {
   CLI::App* stab_cmd = study->add_subcommand("stability", "spring: stability thresholds dt* predicted and measured, and a (dt, damping) map");
   add_stability_options(stab_cmd, stab, false, true);
 
+  WorkPrecisionArgs wp;
+  CLI::App* wp_cmd = study->add_subcommand("work-precision", "cost against error on the spring and the stiff chain; "
+                                                             "cheapest method per error level; stiffness crossover");
+  wp_cmd->add_option("--methods", wp.methods, "comma-separated fixed-step methods (default: every numerical method)");
+  wp_cmd->add_option("--threads", wp.threads, "worker threads for the error runs (timings run one at a time)")
+      ->capture_default_str();
+  wp_cmd->add_flag("--no-timing", wp.no_timing, "cost by force and Jacobian evaluations only (reproducible byte for byte)");
+  wp_cmd->add_option("--json", wp.json, "write JSON (schema steplab.work_precision/1) to this file");
   CollisionArgs coll;
   CLI::App* coll_cmd = study->add_subcommand("collision", "the bounce and the falling triangle on the penalty ground");
   coll.scene.add_to(coll_cmd, false);
@@ -208,6 +216,7 @@ int cli_main(int argc, const char* const* argv) {
     if (damp_cmd->parsed()) return damping_command(damp);
     if (stab_cmd->parsed()) return stability_command(stab);
     if (coll_cmd->parsed()) return collision_command(coll);
+    if (wp_cmd->parsed()) return work_precision_command(wp);
     if (rep_cmd->parsed()) return report_command(rep);
     if (check_cmd->parsed()) return check_command(check);
     if (legacy) return legacy_command(legacy_args);

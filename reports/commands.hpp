@@ -88,6 +88,15 @@ struct CollisionArgs {
 
 int collision_command(CollisionArgs& args);
 
+struct WorkPrecisionArgs {
+  std::string methods;  // empty: every numerical method
+  std::string threads = "0";
+  bool no_timing = false;  // cost by evaluations only: reproducible byte for byte
+  std::string json;
+};
+
+int work_precision_command(WorkPrecisionArgs& args);
+
 }  // namespace steplab
 
 namespace steplab {

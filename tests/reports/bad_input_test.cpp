@@ -99,6 +99,7 @@ INSTANTIATE_TEST_SUITE_P(
         // check
         BadInput{"check", "--method"}, BadInput{"check --method heun", "heun"},
         BadInput{"check --method rk4 --threads -1", "--threads"},
+        BadInput{"study work-precision --methods rk4,heun", "heun"}, BadInput{"study work-precision --threads x", "--threads"},
         // the report's configuration file
         BadInput{"report --config {dir}/missing.json --out {dir}/r", "missing.json"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "not valid JSON", "{ not json"},

@@ -1,0 +1,91 @@
+// Work-precision: what each method pays for an error, on the one-frequency spring and on the stiff
+// chain (core/scenes/chain.hpp), and where on the stiffness axis implicit methods start to pay.
+//
+// A point is one run to t_end: its largest position error against the exact solution at its steps
+// (not the final one alone, which a lucky phase can make small), and its cost
+// counted two ways: force and Jacobian evaluations (exact and repeatable: the run is made once more
+// through a counting scene), and run time, the minimum over repeated timings (at least
+// kMinRepeats, and kMinSeconds in all), the integration alone, one run at a time. The minimum, not
+// the median: a timing can only be slowed by the machine, never sped up, so the minimum is the
+// estimate least disturbed by other load.
+//
+// Fixed-step methods run over a dt sweep; steplab's dopri5 (core/dopri5.hpp) and its peer,
+// Boost.Odeint's controlled runge_kutta_dopri5 (the same tableau, odeint's own controller), over a
+// tolerance sweep with rtol = atol = tol.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "core/simulate.hpp"
+
+namespace steplab {
+
+struct WorkPoint {
+  std::string method;    // a table method, "dopri5", or "odeint_dopri5"
+  bool adaptive = false;
+  double setting = 0;    // dt, or the tolerance of an adaptive method
+  RunStatus status = RunStatus::Ok;
+  double error = 0;      // largest position error at the steps; inf if diverged
+  long long steps = 0, force_evaluations = 0, jacobian_evaluations = 0;
+  double seconds = -1;   // minimum of the timings; -1 without timing
+};
+
+struct Cheapest {
+  double error_level;
+  std::string by_time, by_evaluations;  // empty: no run reached the level
+  double seconds = -1;
+  long long evaluations = 0;           // force + Jacobian evaluations
+};
+
+// On the chain: where each explicit method's steps stop being stable, against the step its
+// accuracy alone would allow for the error level (the largest dt whose error is below it, on the
+// slow mode alone: a chain whose stiff spring is replaced by a rigid link, k2 -> k2 / 1e4).
+struct StableStep {
+  std::string method;
+  double largest_stable_dt;   // the largest dt of the sweep that did not diverge
+  double accuracy_dt;         // the largest dt of the sweep reaching kLimitErrorLevel on the soft chain
+};
+
+struct SceneWork {
+  std::size_t scene;
+  std::vector<double> params;
+  std::vector<WorkPoint> points;
+  std::vector<Cheapest> cheapest;  // one per error level
+};
+
+struct StiffnessRow {
+  double stiffness2, ratio;  // k2 and k2 / k1
+  std::string best_explicit, best_implicit;
+  double explicit_seconds = -1, implicit_seconds = -1;  // cheapest run with error <= crossover_error
+  long long explicit_evaluations = 0, implicit_evaluations = 0;
+};
+
+struct WorkPrecisionConfig {
+  std::vector<std::size_t> methods;  // fixed-step methods (indices into the table)
+  std::vector<double> tolerances{1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11};
+  std::vector<double> error_levels{1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8};
+  std::vector<double> stiffnesses{5, 5e1, 5e2, 5e3, 5e4, 5e5, 5e6};  // k2 of the stiffness sweep
+  double crossover_error = 1e-4;
+  double t_end = 10, sweep_t_end = 2;  // the two scenes; the stiffness sweep
+  int points = 14;                     // dt sweep points per decade range below
+  bool timing = true;
+  unsigned threads = 0;
+};
+
+inline constexpr int kMinRepeats = 5;
+inline constexpr double kMinSeconds = 0.002;
+inline constexpr double kLimitErrorLevel = 1e-4;
+
+struct WorkPrecisionResult {
+  WorkPrecisionConfig config;
+  std::vector<SceneWork> scenes;       // spring, chain
+  std::vector<StableStep> limits;      // chain, explicit methods
+  std::vector<StiffnessRow> stiffness;
+  double crossover_ratio = -1;         // smallest k2/k1 from which on implicit is cheaper; -1: never
+};
+
+WorkPrecisionResult work_precision_study(const WorkPrecisionConfig& config);
+
+}  // namespace steplab
