@@ -14,15 +14,10 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-template <class S> std::vector<double> defaults_of() {
-  const auto p = default_params<S>();
-  return {p.begin(), p.end()};
-}
-
 template <class S> OrderCheck order_check(std::size_t method, const MethodInfo& claims, unsigned threads) {
   ConvergenceConfig c;
   c.scene = *find_scene(S::name);
-  c.params = defaults_of<S>();
+  c.params = default_param_values<S>();
   c.methods = {method};
   c.threads = threads;
   const ConvergenceResult r = convergence_study(c);
@@ -43,7 +38,7 @@ template <class S> OrderCheck order_check(std::size_t method, const MethodInfo& 
 }
 
 EnergyCheck energy_check(std::size_t method, const MethodInfo& claims) {
-  const Spring s = linear_spring(defaults_of<Spring>(), 0);
+  const Spring s = linear_spring(default_param_values<Spring>(), 0);
   EnergyCheck e{kDriftOmegaH / s.omega(), kDriftSteps, kInf, false, false};
   const RateRun run = measure_rate(method, s, e.h, e.steps);
   if (run.status == RunStatus::Ok) e.drift = std::isnan(run.rate) ? -kInf : run.rate * e.h * static_cast<double>(e.steps);
@@ -88,7 +83,7 @@ CheckResult check_method(std::size_t method, const MethodInfo& claims, unsigned 
   r.energy = energy_check(method, claims);
 
   StabilityConfig c;
-  c.params = defaults_of<Spring>();
+  c.params = default_param_values<Spring>();
   c.methods = {method};
   c.threshold_dampings.assign(std::begin(kCheckDampings), std::end(kCheckDampings));
   c.threads = threads;

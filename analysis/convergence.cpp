@@ -1,12 +1,12 @@
 #include "analysis/convergence.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include "analysis/parallel.hpp"
+#include "analysis/timing.hpp"
 #include "core/dopri5.hpp"
 #include "core/scenes.hpp"
 
@@ -41,7 +41,6 @@ double roundoff_floor(double scale, long long steps) {
 
 namespace {
 
-constexpr double kBlownUp = 1e6;
 constexpr double kReferenceMargin = 100;  // a fitted error stands this far above the reference's
 
 template <Scene S, class M>
@@ -51,29 +50,26 @@ ConvergenceRecord one_run(const S& s, std::size_t method, double dt, double t_en
   spec.steps = steps_for(t_end, dt);
   spec.errors = !study.uses_reference;
   const RunResult<S::dim> r = simulate<M>(s, spec);
-  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
-  const State<S::dim> target = [&]() -> State<S::dim> {
-    if constexpr (HasExact<S>) {
-      if (!study.uses_reference) return exact(s, t_end);
-    }
-    return {Eigen::Map<const Vec<S::dim>>(study.reference.x.data()), Eigen::Map<const Vec<S::dim>>(study.reference.v.data())};
-  }();
-  const double scale = std::max(s.initial().x.norm(), target.x.norm());
-  double error_final = r.error_final, error_v = r.error_v_final, error_max = r.error_max, error_rms = r.error_rms;
+  ConvergenceRecord rec{method,         dt,          spec.steps,  r.status, r.failed_step, r.error_final,
+                        r.error_v_final, r.error_max, r.error_rms, 0};
+  double target_norm = 0;  // |x(t_end)|, exact or reference
   if (study.uses_reference) {
-    error_final = error_max = (r.final.x - target.x).norm();  // the largest error seen: at t_end alone
-    error_v = (r.final.v - target.v).norm();
-    error_rms = nan;
+    const Vec<S::dim> x = Eigen::Map<const Vec<S::dim>>(study.reference.x.data());
+    const Vec<S::dim> v = Eigen::Map<const Vec<S::dim>>(study.reference.v.data());
+    rec.error_final = (r.final.x - x).norm();
+    rec.error_v_final = (r.final.v - v).norm();
+    rec.error_max = rec.error_rms = std::numeric_limits<double>::quiet_NaN();  // known at t_end alone
+    target_norm = x.norm();
+  } else {
+    if constexpr (HasExact<S>) target_norm = exact(s, t_end).x.norm();
   }
-  // A run that stays finite but whose error outgrows the solution a million times over has blown
-  // up as surely as one that overflows (RK4 on the stiff chain at dt 0.5: 3e143 after 20 steps);
-  // it is counted as diverged rather than fitted.
-  RunStatus status = r.status;
-  if (status == RunStatus::Ok && !(error_max <= kBlownUp * std::max(scale, 1.0))) status = RunStatus::Diverged;
-  const bool ok = status == RunStatus::Ok;
-  return {method, dt, spec.steps, status, r.failed_step,
-          ok ? error_final : inf, ok ? error_v : inf, ok ? (study.uses_reference ? nan : error_max) : inf,
-          ok ? error_rms : inf, roundoff_floor(scale, spec.steps)};
+  const double scale = std::max(s.initial().x.norm(), target_norm);
+  rec.floor = roundoff_floor(scale, spec.steps);
+  const double largest = study.uses_reference ? rec.error_final : rec.error_max;
+  if (rec.status == RunStatus::Ok && blown_up(largest, scale)) rec.status = RunStatus::Diverged;
+  if (rec.status != RunStatus::Ok)
+    rec.error_final = rec.error_v_final = rec.error_max = rec.error_rms = std::numeric_limits<double>::infinity();
+  return rec;
 }
 
 template <Scene S> ReferenceSolution reference_solution(const S& s, double t_end) {
@@ -119,20 +115,15 @@ void time_runs(ConvergenceResult& out) {
     for (ConvergenceRecord& rec : out.records) {
       with_method(rec.method, [&]<class M>() {
         if constexpr (applies<M, S>()) {
-          std::vector<double> times;
-          double total = 0;
-          while (total < kTimingSeconds || times.size() < 3) {
-            RunSpec spec;  // the integration alone: no exact solution evaluated along the way
-            spec.dt = rec.dt;
-            spec.steps = rec.steps;
-            spec.errors = false;
-            const auto start = std::chrono::steady_clock::now();
-            const RunResult<S::dim> r = simulate<M>(scene, spec);
-            const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            if (r.steps == 0 && rec.steps > 0) throw std::logic_error("timed run took no step");
-            times.push_back(s);
-            total += s;
-          }
+          RunSpec spec;  // the integration alone: no exact solution evaluated along the way
+          spec.dt = rec.dt;
+          spec.steps = rec.steps;
+          spec.errors = false;
+          std::vector<double> times = repeated_timings(
+              [&] {
+                if (simulate<M>(scene, spec).steps == 0 && rec.steps > 0) throw std::logic_error("timed run took no step");
+              },
+              3, kTimingSeconds);
           std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
           rec.seconds = times[times.size() / 2];
         }

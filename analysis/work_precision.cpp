@@ -1,7 +1,6 @@
 #include "analysis/work_precision.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -9,7 +8,9 @@
 #include <boost/numeric/odeint.hpp>
 
 #include "analysis/convergence.hpp"
+#include "analysis/fit.hpp"
 #include "analysis/parallel.hpp"
+#include "analysis/timing.hpp"
 #include "core/dopri5.hpp"
 #include "core/scenes.hpp"
 
@@ -35,15 +36,8 @@ template <Scene S> struct Counted : S {
 
 // Minimum of repeated timings of `run` (kMinRepeats, and kMinSeconds in all).
 template <class F> double min_time(F&& run) {
-  double best = kInf, total = 0;
-  for (int k = 0; k < kMinRepeats || total < kMinSeconds; ++k) {
-    const auto start = std::chrono::steady_clock::now();
-    run();
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    best = std::min(best, s);
-    total += s;
-  }
-  return best;
+  const std::vector<double> times = repeated_timings(run, kMinRepeats, kMinSeconds);
+  return *std::min_element(times.begin(), times.end());
 }
 
 // Boost.Odeint's controlled runge_kutta_dopri5 on the scene's own first-order system z = (x, v).
@@ -86,7 +80,7 @@ template <HasExact S, class M> WorkPoint fixed_point(const S& s, std::size_t m, 
   const State<S::dim> ex = exact(s, t_end);
   p.error = r.error_max;
   p.status = r.status;
-  if (p.status == RunStatus::Ok && !(p.error <= 1e6 * std::max(1.0, ex.x.norm()))) p.status = RunStatus::Diverged;
+  if (p.status == RunStatus::Ok && blown_up(p.error, std::max(s.initial().x.norm(), ex.x.norm()))) p.status = RunStatus::Diverged;
   if (p.status != RunStatus::Ok) p.error = kInf;
   p.steps = r.steps;
   p.force_evaluations = counted.forces;
@@ -161,6 +155,12 @@ std::vector<WorkPoint> scene_points(const S& s, const WorkPrecisionConfig& c, co
 
 long long evaluations(const WorkPoint& p) { return p.force_evaluations + p.jacobian_evaluations; }
 
+// Whether a run of (seconds, evaluations) is cheaper than one of (than_seconds, than_evaluations):
+// by time where the study times its runs, else by evaluations.
+bool cheaper(bool timing, double seconds, long long evals, double than_seconds, long long than_evals) {
+  return timing ? seconds < than_seconds : evals < than_evals;
+}
+
 // The cheapest run of `points` whose error is at most `level`, by time and by evaluations.
 Cheapest cheapest_at(const std::vector<WorkPoint>& points, double level) {
   Cheapest c{level, "", ""};
@@ -179,25 +179,23 @@ bool is_implicit(const std::string& method) {
 
 // The chain's explicit methods: the largest stable dt of the sweep, and the dt their own error
 // line (least squares of ln error on ln dt over the stable runs) puts at kLimitErrorLevel.
-std::vector<StableStep> stable_steps(const std::vector<WorkPoint>& points) {
+std::vector<StableStep> stable_steps(const std::vector<std::size_t>& methods, const std::vector<WorkPoint>& points) {
   std::vector<StableStep> out;
-  for (const WorkPoint& p : points) {
-    if (p.adaptive || is_implicit(p.method)) continue;
-    if (std::none_of(out.begin(), out.end(), [&](const StableStep& s) { return s.method == p.method; }))
-      out.push_back({p.method, 0, 0});
-  }
-  for (StableStep& s : out) {
-    double largest = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
-    int n = 0;
+  for (const std::size_t m : methods) {
+    if (method_infos[m].implicit) continue;
+    StableStep s{std::string(method_infos[m].name), 0, -1};
+    std::vector<double> ln_dt, ln_error;
     for (const WorkPoint& p : points) {
       if (p.method != s.method || p.status != RunStatus::Ok || !(p.error > 1e-13)) continue;
-      largest = std::max(largest, p.setting);
-      const double x = std::log(p.setting), y = std::log(p.error);
-      sx += x, sy += y, sxx += x * x, sxy += x * y, ++n;
+      s.largest_stable_dt = std::max(s.largest_stable_dt, p.setting);
+      ln_dt.push_back(std::log(p.setting));
+      ln_error.push_back(std::log(p.error));
     }
-    s.largest_stable_dt = largest;
-    const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx), icept = (sy - slope * sx) / n;
-    s.accuracy_dt = n >= 2 ? std::exp((std::log(kLimitErrorLevel) - icept) / slope) : -1;
+    if (ln_dt.size() >= 2) {
+      const LineFit line = fit_line(ln_dt, ln_error);
+      s.accuracy_dt = std::exp((std::log(kLimitErrorLevel) - line.intercept) / line.slope);
+    }
+    out.push_back(std::move(s));
   }
   return out;
 }
@@ -205,25 +203,26 @@ std::vector<StableStep> stable_steps(const std::vector<WorkPoint>& points) {
 // One stiffness: for each method, the first run of a falling dt (or tolerance) sweep whose error is
 // at most crossover_error; then the cheapest explicit and implicit ones.
 StiffnessRow stiffness_row(const WorkPrecisionConfig& c, double k2) {
-  auto p = default_params<Chain>();
-  p[3] = k2;
+  std::vector<double> p = default_param_values<Chain>();
+  p[3] = k2;  // Chain::params: mass1, mass2, stiffness1, stiffness2, ...
   const Chain s(p);
   const std::vector<double> dts = sweep_steps(c.sweep_t_end, 0.5, 1e-7, 57);  // 8 per decade
-  std::vector<WorkPoint> found(c.methods.size() + 1);
+  const auto reaches = [&](const WorkPoint& w) { return w.status == RunStatus::Ok && w.error <= c.crossover_error; };
+  std::vector<WorkPoint> found(c.methods.size() + 1);  // the methods, then dopri5
   parallel_for(found.size(), c.threads, [&](std::size_t task) {
+    const auto first_reaching = [&](const std::vector<double>& settings, auto&& run) {
+      for (const double setting : settings)
+        if (WorkPoint w = run(setting); reaches(w)) return w;
+      return WorkPoint{};
+    };
     if (task == c.methods.size()) {
-      for (const double tol : c.tolerances)
-        if (const WorkPoint w = dopri5_point(s, tol, c.sweep_t_end); w.status == RunStatus::Ok && w.error <= c.crossover_error)
-          return void(found[task] = w);
-      return;
+      found[task] = first_reaching(c.tolerances, [&](double tol) { return dopri5_point(s, tol, c.sweep_t_end); });
+    } else {
+      const std::size_t m = c.methods[task];
+      found[task] = with_method(m, [&]<class M>() {
+        return first_reaching(dts, [&](double dt) { return fixed_point<Chain, M>(s, m, dt, c.sweep_t_end); });
+      });
     }
-    const std::size_t m = c.methods[task];
-    with_method(m, [&]<class M>() {
-      for (const double dt : dts)
-        if (const WorkPoint w = fixed_point<Chain, M>(s, m, dt, c.sweep_t_end);
-            w.status == RunStatus::Ok && w.error <= c.crossover_error)
-          return void(found[task] = w);
-    });
   });
   StiffnessRow row{k2, k2 / p[2], "", ""};
   for (WorkPoint& w : found) {
@@ -233,8 +232,8 @@ StiffnessRow stiffness_row(const WorkPrecisionConfig& c, double k2) {
     std::string& best = implicit ? row.best_implicit : row.best_explicit;
     double& secs = implicit ? row.implicit_seconds : row.explicit_seconds;
     long long& evals = implicit ? row.implicit_evaluations : row.explicit_evaluations;
-    const bool better = best.empty() || (c.timing ? w.seconds < secs : evaluations(w) < evals);
-    if (better) best = w.method, secs = w.seconds, evals = evaluations(w);
+    if (best.empty() || cheaper(c.timing, w.seconds, evaluations(w), secs, evals))
+      best = w.method, secs = w.seconds, evals = evaluations(w);
   }
   return row;
 }
@@ -249,8 +248,7 @@ WorkPrecisionResult work_precision_study(const WorkPrecisionConfig& config) {
     SceneWork w{scene, {}, {}, {}};
     with_scene(scene, [&]<class S>() {
       if constexpr (HasExact<S>) {
-        const auto p = default_params<S>();
-        w.params.assign(p.begin(), p.end());
+        w.params = default_param_values<S>();
         const S s(w.params);
         const bool chain = name == "chain";
         const auto dts = sweep_steps(config.t_end, chain ? 0.5 : 0.1, chain ? 1e-5 : 1e-4, config.points);
@@ -260,15 +258,16 @@ WorkPrecisionResult work_precision_study(const WorkPrecisionConfig& config) {
     for (const double level : config.error_levels) w.cheapest.push_back(cheapest_at(w.points, level));
     out.scenes.push_back(std::move(w));
   }
-  out.limits = stable_steps(out.scenes[1].points);
+  out.limits = stable_steps(config.methods, out.scenes[1].points);
   for (const double k2 : config.stiffnesses) out.stiffness.push_back(stiffness_row(config, k2));
   // The crossover: the smallest ratio from which on, at every larger one, the best implicit run is
   // cheaper than the best explicit one.
   for (std::size_t i = out.stiffness.size(); i-- > 0;) {
     const StiffnessRow& r = out.stiffness[i];
-    const bool implicit_wins = !r.best_implicit.empty() &&
-                               (r.best_explicit.empty() || (config.timing ? r.implicit_seconds < r.explicit_seconds
-                                                                          : r.implicit_evaluations < r.explicit_evaluations));
+    const bool implicit_wins =
+        !r.best_implicit.empty() &&
+        (r.best_explicit.empty() || cheaper(config.timing, r.implicit_seconds, r.implicit_evaluations,
+                                            r.explicit_seconds, r.explicit_evaluations));
     if (!implicit_wins) break;
     out.crossover_ratio = r.ratio;
   }

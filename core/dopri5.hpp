@@ -11,7 +11,8 @@
 // and the step accepted when |err| <= 1. The next step is h * clamp(0.9 |err|^(-1/5), 0.2, 10)
 // (no growth right after a rejection), as in SciPy's RK45 (scipy/integrate/_ivp/rk.py); the first
 // step by Hairer's rule (Hairer, Norsett, Wanner, Solving ODEs I, II.4; SciPy select_initial_step).
-// Coefficients: Dormand & Prince (1980), as printed in Hairer's dopri5.f.
+// Coefficients: Dormand & Prince (1980), as printed in Hairer's dopri5.f (the nodes c_i are left
+// out: every scene here is autonomous).
 //
 // Output at chosen times comes from the method's own continuous extension (dopri5.f CONTD5),
 // fourth order between the steps, so sampling never changes the steps taken.
@@ -51,7 +52,6 @@ template <int D> struct AdaptiveResult {
 };
 
 namespace dp5 {
-inline constexpr double c2 = 1.0 / 5, c3 = 3.0 / 10, c4 = 4.0 / 5, c5 = 8.0 / 9;
 inline constexpr double a21 = 1.0 / 5;
 inline constexpr double a31 = 3.0 / 40, a32 = 9.0 / 40;
 inline constexpr double a41 = 44.0 / 45, a42 = -56.0 / 15, a43 = 32.0 / 9;
@@ -186,14 +186,7 @@ AdaptiveResult<S::dim> simulate_dopri5(const S& s, const AdaptiveSpec& spec, Obs
       ratio_max = std::max(ratio_max, ratio);
     }
     if constexpr (HasExact<S>) {
-      if (spec.errors) {
-        const State<D> ex = tracker.at(t);
-        const double er = (y.x - ex.x).norm();
-        r.error_max = std::max(r.error_max, er);
-        err_sq_sum += er * er;
-        r.error_final = er;
-        r.error_v_final = (y.v - ex.v).norm();
-      }
+      if (spec.errors) track_error(tracker, t, y, r, err_sq_sum);
     }
     observe(t, y);
     const double grow = en == 0 ? max_factor : std::min(max_factor, safety * std::pow(en, -0.2));
@@ -203,11 +196,7 @@ AdaptiveResult<S::dim> simulate_dopri5(const S& s, const AdaptiveSpec& spec, Obs
   r.steps = st.accepted;
   r.t_final = t;
   r.final = y;
-  r.has_exact = HasExact<S> && spec.errors;
-  if (r.steps > 0) r.error_rms = std::sqrt(err_sq_sum / static_cast<double>(r.steps));
-  if (e0 == 0) ratio = ratio_max = std::numeric_limits<double>::quiet_NaN();
-  r.energy_ratio_final = ratio;
-  r.energy_ratio_max = ratio_max;
+  finish_run(r, HasExact<S> && spec.errors, err_sq_sum, ratio, ratio_max);
   return out;
 }
 

@@ -21,6 +21,7 @@
 #include <concepts>
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "core/state.hpp"
 
@@ -97,6 +98,12 @@ template <Scene S> auto default_params() {
   std::array<double, S::params.size()> p{};
   for (std::size_t i = 0; i < p.size(); ++i) p[i] = S::params[i].fallback;
   return p;
+}
+
+// The same as a vector: what the studies' configurations hold.
+template <Scene S> std::vector<double> default_param_values() {
+  const auto p = default_params<S>();
+  return {p.begin(), p.end()};
 }
 
 template <Scene S> S make_default_scene() {

@@ -138,7 +138,7 @@ int cli_main(int argc, const char* const* argv) {
   run.scene.add_to(run_cmd);
   run_cmd->add_option("--method", run.method, "integrator: " + method_names() + ", or the adaptive dopri5")
       ->capture_default_str();
-  CLI::Option* dt_opt = run_cmd->add_option("--dt", run.dt, "time step h (> 0); fixed-step methods only")->capture_default_str();
+  run_cmd->add_option("--dt", run.dt, "time step h (> 0; default 0.01); fixed-step methods only");
   run_cmd->add_option("--rtol", run.rtol, "dopri5: relative tolerance, 1e-13 .. 1 (default 1e-3, as SciPy's RK45)");
   run_cmd->add_option("--atol", run.atol, "dopri5: absolute tolerance, > 0 (default 1e-6)");
   run_cmd->add_option("--t-end", run.t_end, "simulated time; t_end / dt steps, rounded up")->capture_default_str();
@@ -208,10 +208,7 @@ int cli_main(int argc, const char* const* argv) {
   for (const auto& a : args) cargv.push_back(a.c_str());
   try {
     app.parse(static_cast<int>(cargv.size()), cargv.data());
-    if (run_cmd->parsed()) {
-      run.dt_given = dt_opt->count() > 0;
-      return run_command(run);
-    }
+    if (run_cmd->parsed()) return run_command(run);
     if (conv_cmd->parsed()) return convergence_command(conv);
     if (damp_cmd->parsed()) return damping_command(damp);
     if (stab_cmd->parsed()) return stability_command(stab);

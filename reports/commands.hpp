@@ -18,8 +18,7 @@ bool stop_after_validation(const std::string& output_path);
 struct RunArgs {
   SceneArgs scene;
   std::string method = "explicit_euler";
-  std::string dt = "0.01";
-  bool dt_given = false;  // --dt on the command line (refused for the adaptive dopri5)
+  std::string dt;  // empty: 0.01 (dopri5 refuses a --dt given)
   std::string rtol, atol;  // dopri5 only; empty: SciPy's defaults 1e-3 and 1e-6
   std::string t_end = "10";
   std::string samples = "10001";

@@ -14,11 +14,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-template <class S> std::vector<double> defaults_of() {
-  const auto p = default_params<S>();
-  return {p.begin(), p.end()};
-}
-
 std::string keys_of(const Json& j) {
   std::string out;
   for (const auto& [k, _] : j.items()) out += (out.empty() ? "" : ", ") + k;
@@ -78,10 +73,10 @@ template <class S> std::vector<double> scene_values(const Json& j, const std::st
 
 ReportConfig default_report_config() {
   ReportConfig c;
-  c.spring = defaults_of<Spring>();
-  c.cannonball = defaults_of<Cannonball>();
-  c.bounce = defaults_of<Bounce>();
-  c.falling = defaults_of<Falling>();
+  c.spring = default_param_values<Spring>();
+  c.cannonball = default_param_values<Cannonball>();
+  c.bounce = default_param_values<Bounce>();
+  c.falling = default_param_values<Falling>();
   return c;
 }
 

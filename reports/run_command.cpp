@@ -44,10 +44,29 @@ bool stop_after_validation(const std::string& output_path) {
 
 namespace {
 
+// --rtol and --atol (empty: the defaults), checked.
+Tolerance read_tolerance(const std::string& rtol, const std::string& atol) {
+  Tolerance t;
+  if (!rtol.empty()) t.rtol = parse_number("--rtol", rtol, Bound::Positive);
+  if (t.rtol < 1e-13 || t.rtol > 1)
+    throw UsageError(fmt::format("--rtol {} is out of range; accepted: 1e-13 .. 1 (below, round-off decides the steps)", rtol));
+  if (!atol.empty()) t.atol = parse_number("--atol", atol, Bound::Positive);
+  return t;
+}
+
+// dopri5's counts: "adaptive": {accepted_steps, rejected_steps, force_evaluations, h_min, h_max}.
+Json adaptive_json(const AdaptiveStats& s) {
+  return {{"accepted_steps", s.accepted},
+          {"rejected_steps", s.rejected},
+          {"force_evaluations", s.force_evaluations},
+          {"h_min", s.accepted > 0 ? Json(s.h_min) : Json(nullptr)},
+          {"h_max", s.accepted > 0 ? Json(s.h_max) : Json(nullptr)}};
+}
+
 // The adaptive Dormand-Prince: a tolerance instead of a step; its steps in the JSON.
 int run_dopri5(RunArgs& a) {
   const std::size_t scene = a.scene.scene_index();
-  if (a.dt_given) throw UsageError("--dt does not apply to dopri5, which chooses its own steps; give --rtol and --atol");
+  if (!a.dt.empty()) throw UsageError("--dt does not apply to dopri5, which chooses its own steps; give --rtol and --atol");
   const std::vector<double> params = a.scene.values(scene);
   AdaptiveSpec spec;
   spec.tol = read_tolerance(a.rtol, a.atol);
@@ -77,23 +96,6 @@ int run_dopri5(RunArgs& a) {
 
 }  // namespace
 
-Tolerance read_tolerance(const std::string& rtol, const std::string& atol) {
-  Tolerance t;
-  if (!rtol.empty()) t.rtol = parse_number("--rtol", rtol, Bound::Positive);
-  if (t.rtol < 1e-13 || t.rtol > 1)
-    throw UsageError(fmt::format("--rtol {} is out of range; accepted: 1e-13 .. 1 (below, round-off decides the steps)", rtol));
-  if (!atol.empty()) t.atol = parse_number("--atol", atol, Bound::Positive);
-  return t;
-}
-
-Json adaptive_json(const AdaptiveStats& s) {
-  return {{"accepted_steps", s.accepted},
-          {"rejected_steps", s.rejected},
-          {"force_evaluations", s.force_evaluations},
-          {"h_min", s.accepted > 0 ? Json(s.h_min) : Json(nullptr)},
-          {"h_max", s.accepted > 0 ? Json(s.h_max) : Json(nullptr)}};
-}
-
 int run_command(RunArgs& a) {
   if (a.method == "dopri5") return run_dopri5(a);
   if (!a.rtol.empty() || !a.atol.empty())
@@ -102,7 +104,7 @@ int run_command(RunArgs& a) {
   const std::size_t method = resolve_method(a.method);
   const std::vector<double> params = a.scene.values(scene);
   RunSpec spec;
-  spec.dt = parse_number("--dt", a.dt, Bound::Positive);
+  spec.dt = a.dt.empty() ? 0.01 : parse_number("--dt", a.dt, Bound::Positive);
   const double t_end = parse_number("--t-end", a.t_end, Bound::NonNegative);
   spec.steps = step_count(t_end, spec.dt);
   spec.max_samples = parse_count("--samples", a.samples, 2, 100'000'000);

@@ -54,11 +54,4 @@ Json run_json(std::string_view scene, std::string_view method, Json params, cons
   return j;
 }
 
-struct AdaptiveStats;
-struct Tolerance;
-// dopri5's counts in a run's JSON: "adaptive": {accepted_steps, rejected_steps, force_evaluations, h_min, h_max}.
-Json adaptive_json(const AdaptiveStats& s);
-// --rtol and --atol (empty: the defaults), checked.
-Tolerance read_tolerance(const std::string& rtol, const std::string& atol);
-
 }  // namespace steplab

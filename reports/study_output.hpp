@@ -16,10 +16,6 @@ Json scene_params_json(std::size_t scene, const std::vector<double>& values);
 Json convergence_json(const ConvergenceResult& r);   // schema steplab.convergence/2
 std::string convergence_table(const ConvergenceResult& r);
 
-struct WorkPrecisionResult;
-Json work_precision_json(const WorkPrecisionResult& r);
-std::string work_precision_table(const WorkPrecisionResult& r);
-
 }  // namespace steplab
 
 #include "analysis/local_error.hpp"
@@ -27,10 +23,6 @@ std::string work_precision_table(const WorkPrecisionResult& r);
 namespace steplab {
 // The old framework's error_measurement tables, %.5e.
 std::string local_error_tables(const LocalErrorResult& r);
-struct WorkPrecisionResult;
-Json work_precision_json(const WorkPrecisionResult& r);
-std::string work_precision_table(const WorkPrecisionResult& r);
-
 }  // namespace steplab
 
 #include "analysis/stability.hpp"
@@ -43,10 +35,6 @@ std::string thresholds_table(const std::vector<ThresholdRow>& rows);
 std::string sweep_table(const std::vector<SweepRow>& rows);
 std::string map_summary(const StabilityMap& map);
 std::string amplitude_table_text(const AmplitudeTable& t);
-struct WorkPrecisionResult;
-Json work_precision_json(const WorkPrecisionResult& r);
-std::string work_precision_table(const WorkPrecisionResult& r);
-
 }  // namespace steplab
 
 #include "analysis/collision.hpp"
@@ -54,8 +42,11 @@ std::string work_precision_table(const WorkPrecisionResult& r);
 namespace steplab {
 Json collision_json(const CollisionResult& r);   // schema steplab.collision/1
 std::string collision_table(const CollisionResult& r);
-struct WorkPrecisionResult;
-Json work_precision_json(const WorkPrecisionResult& r);
-std::string work_precision_table(const WorkPrecisionResult& r);
+}  // namespace steplab
 
+#include "analysis/work_precision.hpp"
+
+namespace steplab {
+Json work_precision_json(const WorkPrecisionResult& r);   // schema steplab.work_precision/1
+std::string work_precision_table(const WorkPrecisionResult& r);
 }  // namespace steplab

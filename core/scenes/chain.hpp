@@ -38,15 +38,18 @@ struct Chain {
       {"u2", 1.0, Bound::Any, "start displacement of m2 (at rest)"},
   }};
 
-  using Mat4 = Eigen::Matrix4d;
   using Vec4 = Eigen::Vector4d;
   using CMat4 = Eigen::Matrix4cd;
   using CVec4 = Eigen::Vector4cd;
 
+  using LMat4 = Eigen::Matrix<long double, 4, 4>;
+  using LCMat4 = Eigen::Matrix<std::complex<long double>, 4, 4>;
+
   Vec<2> m, inv_m, u0;
   Mat<2> K, C;
-  // The first-order system z' = A z, z = (u1, u2, v1, v2): A = [[0, I], [-M^-1 K, -M^-1 C]].
-  Mat4 A;
+  // The first-order system z' = A z, z = (u1, u2, v1, v2): A = [[0, I], [-M^-1 K, -M^-1 C]],
+  // its entries rounded once from the parameters in long double.
+  LMat4 A;
   // Its eigen-decomposition A = V diag(lambda) V^-1, so that z(t) = V diag(e^{lambda t}) V^-1 z0.
   // Computed once in long double: in double the slow eigenvalues carry the backward error of the
   // whole matrix, eps |A| ~ 1e-11 (|A| ~ k2 / m), and z(10) came out 3e-12 off (against a 50-digit
@@ -54,8 +57,6 @@ struct Chain {
   // ill-conditioned (a mode at critical damping, where A is defective) the flow is e^{A t} from
   // Eigen's matrix exponential in long double instead (Pade, scaling and squaring: slower, exact to
   // round-off for every A; tests/core/chain_test.cpp checks both against the ODE).
-  using LMat4 = Eigen::Matrix<long double, 4, 4>;
-  using LCMat4 = Eigen::Matrix<std::complex<long double>, 4, 4>;
   CMat4 V, V_inv;
   CVec4 lambda, start;  // start: V^-1 z0
   bool use_eigen = false;
@@ -66,15 +67,10 @@ struct Chain {
     const double k1 = p[2], k2 = p[3], c1 = p[4], c2 = p[5];
     K << k1 + k2, -k2, -k2, k2;
     C << c1 + c2, -c2, -c2, c2;
-    A.setZero();
-    A.topRightCorner<2, 2>().setIdentity();
-    A.bottomLeftCorner<2, 2>() = -(inv_m.asDiagonal() * K);
-    A.bottomRightCorner<2, 2>() = -(inv_m.asDiagonal() * C);
-    LMat4 a;  // A again, its entries rounded once from the parameters in long double
     const long double lm1 = p[0], lm2 = p[1], lk1 = k1, lk2 = k2, lc1 = c1, lc2 = c2;
-    a << 0, 0, 1, 0, 0, 0, 0, 1, -(lk1 + lk2) / lm1, lk2 / lm1, -(lc1 + lc2) / lm1, lc2 / lm1, lk2 / lm2, -lk2 / lm2,
+    A << 0, 0, 1, 0, 0, 0, 0, 1, -(lk1 + lk2) / lm1, lk2 / lm1, -(lc1 + lc2) / lm1, lc2 / lm1, lk2 / lm2, -lk2 / lm2,
         lc2 / lm2, -lc2 / lm2;
-    const Eigen::EigenSolver<LMat4> es(a);
+    const Eigen::EigenSolver<LMat4> es(A);
     if (es.info() == Eigen::Success) {
       const LCMat4 v = es.eigenvectors(), v_inv = v.inverse();
       const long double condition =
@@ -100,18 +96,18 @@ struct Chain {
 
   State<2> initial() const { return {u0, Vec<2>::Zero()}; }
 
-  State<2> exact_at(double t) const {
-    if (!use_eigen) return flow(initial(), t);
-    return to_state((V * (lambda * t).array().exp().matrix().cwiseProduct(start)).real());
-  }
+  State<2> exact_at(double t) const { return use_eigen ? modal(start, t) : flow(initial(), t); }
 
   State<2> flow(const State<2>& y, double t) const {
-    if (!use_eigen) return to_state(((A.cast<long double>() * t).exp() * to_z(y).cast<long double>()).cast<double>());
-    const CVec4 c = V_inv * to_z(y).cast<std::complex<double>>();
-    return to_state((V * (lambda * t).array().exp().matrix().cwiseProduct(c)).real());
+    if (!use_eigen) return to_state(((A * t).exp() * to_z(y).cast<long double>()).cast<double>());
+    return modal(V_inv * to_z(y).cast<std::complex<double>>(), t);
   }
 
  private:
+  // z(t) = V diag(e^{lambda t}) c for modal coordinates c = V^-1 z(0).
+  State<2> modal(const CVec4& c, double t) const {
+    return to_state((V * (lambda * t).array().exp().matrix().cwiseProduct(c)).real());
+  }
   static Vec4 to_z(const State<2>& y) { return {y.x[0], y.x[1], y.v[0], y.v[1]}; }
   static State<2> to_state(const Vec4& z) { return {z.head<2>(), z.tail<2>()}; }
 };

@@ -10,11 +10,6 @@
 namespace steplab {
 namespace {
 
-template <class S> std::vector<double> defaults() {
-  const auto p = default_params<S>();
-  return {p.begin(), p.end()};
-}
-
 std::vector<std::size_t> numerical_methods() {
   std::vector<std::size_t> m;
   for (std::size_t i = 0; i < method_count; ++i)
@@ -26,8 +21,8 @@ class CollisionStudy : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     CollisionConfig c;
-    c.bounce_params = defaults<Bounce>();
-    c.falling_params = defaults<Falling>();
+    c.bounce_params = default_param_values<Bounce>();
+    c.falling_params = default_param_values<Falling>();
     c.methods = numerical_methods();
     c.dts = {0.001, 0.004};
     result = new CollisionResult(collision_study(c));
@@ -90,7 +85,7 @@ TEST_F(CollisionStudy, TriangleRunsTenSecondsForEveryMethod) {
 TEST(BounceConvergence, OrdersWithIntervals) {
   ConvergenceConfig c;
   c.scene = *find_scene("bounce");
-  c.params = defaults<Bounce>();
+  c.params = default_param_values<Bounce>();
   c.methods = numerical_methods();
   const ConvergenceResult r = convergence_study(c);
   for (const ConvergenceFit& f : r.fits) {

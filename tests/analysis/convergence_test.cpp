@@ -13,10 +13,7 @@ namespace {
 ConvergenceConfig defaults(std::string_view scene) {
   ConvergenceConfig c;
   c.scene = *find_scene(scene);
-  c.params = with_scene(c.scene, [&]<class S>() {
-    const auto p = default_params<S>();
-    return std::vector<double>(p.begin(), p.end());
-  });
+  c.params = with_scene(c.scene, [&]<class S>() { return default_param_values<S>(); });
   for (std::size_t m = 0; m < method_count; ++m)
     if (!method_infos[m].exact_flow) c.methods.push_back(m);
   return c;

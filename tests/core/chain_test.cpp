@@ -92,17 +92,22 @@ TEST(Chain, ExactFlowKeepsTheEnergyWithoutDampingAndLosesItWith) {
   EXPECT_DOUBLE_EQ(damped.energy(y0.x, y0.v), 2.5);
 }
 
+// The convergence study on the default chain, for these methods, on two threads.
+ConvergenceConfig convergence_on_chain(std::initializer_list<std::string_view> methods) {
+  ConvergenceConfig c;
+  c.scene = *find_scene("chain");
+  c.params = default_param_values<Chain>();
+  for (const std::string_view m : methods) c.methods.push_back(*find_method(m));
+  c.threads = 2;
+  return c;
+}
+
 // Stiffness in numbers: Radau IIA keeps its order 5 at steps up to 0.5 (omega_fast h ~ 160), where
 // RK4, limited to |h lambda_fast| <~ 2.8 (h <~ 0.009), diverges at every step of the sweep above 0.01.
 TEST(Chain, ImplicitMethodsKeepTheirOrderFarAboveTheExplicitLimit) {
-  ConvergenceConfig c;
-  c.scene = *find_scene("chain");
-  const auto p = default_params<Chain>();
-  c.params.assign(p.begin(), p.end());
-  c.methods = {*find_method("radau_iia5"), *find_method("rk4")};
+  ConvergenceConfig c = convergence_on_chain({"radau_iia5", "rk4"});
   c.dt_max = 0.5;
   c.dt_min = 0.005;
-  c.threads = 2;
   const ConvergenceResult r = convergence_study(c);
   const OrderFit& radau = r.fits[0].fit;
   ASSERT_TRUE(radau.fitted);
@@ -116,13 +121,7 @@ TEST(Chain, ImplicitMethodsKeepTheirOrderFarAboveTheExplicitLimit) {
 }
 
 TEST(Chain, BdfAndImplicitEulerFitTheirOrders) {
-  ConvergenceConfig c;
-  c.scene = *find_scene("chain");
-  const auto p = default_params<Chain>();
-  c.params.assign(p.begin(), p.end());
-  c.methods = {*find_method("bdf2"), *find_method("implicit_euler")};
-  c.threads = 2;
-  const ConvergenceResult r = convergence_study(c);
+  const ConvergenceResult r = convergence_study(convergence_on_chain({"bdf2", "implicit_euler"}));
   EXPECT_NEAR(r.fits[0].fit.order, 2, 0.02);
   EXPECT_NEAR(r.fits[1].fit.order, 1, 0.02);
 }
