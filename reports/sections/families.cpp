@@ -145,32 +145,39 @@ class Families : public Section {
  private:
   RegionResult regions_;
 
-  // Family x order: each cell the method, its measured dt* undamped / at the spring's damping.
+  // Family x order: each cell the measured dt* undamped / at the spring's damping of the family's
+  // method of that order; the family cell names its methods, in order. (The names stay out of the
+  // order cells: pandoc gives pipe-table columns the widths of the separator's dashes, and a
+  // method's name in code font does not wrap, so it ran into the next column.)
   static std::string family_table(const ReportData& d, double gamma) {
     int top = 0;
     for (std::size_t m : d.methods)
       if (!method_infos[m].exact_flow) top = std::max(top, method_infos[m].order);
-    std::string md = "| family |", rule = "|---|";
+    std::string md = "| family and its methods, by order |", rule = "|----------|";
     for (int p = 1; p <= top; ++p) md += fmt::format(" order {} |", p), rule += "---|";
     md += "\n" + rule + "\n";
     for (Family f : kReportFamilies) {
-      const std::vector<std::size_t> fam = family_members(d.methods, f);
+      std::vector<std::size_t> fam = family_members(d.methods, f);
       if (fam.empty()) continue;
-      md += "| " + std::string(to_string(f)) + " |";
+      std::stable_sort(fam.begin(), fam.end(),
+                       [](std::size_t a, std::size_t b) { return method_infos[a].order < method_infos[b].order; });
+      std::string names;
+      for (std::size_t m : fam) names += fmt::format("{}`{}`", names.empty() ? "" : ", ", name(m));
+      md += fmt::format("| {}: {} |", to_string(f), names);
       for (int p = 1; p <= top; ++p) {
         std::string cell;
         for (std::size_t m : fam)
           if (method_infos[m].order == p) {
             const ThresholdRow *u = find_threshold(d, m, 0), *g = find_threshold(d, m, gamma);
-            cell += fmt::format("{}`{}` {} / {}", cell.empty() ? "" : "; ", name(m), u ? dt_text(u->dt_measured) : "-",
+            cell += fmt::format("{}{} / {}", cell.empty() ? "" : "; ", u ? dt_text(u->dt_measured) : "-",
                                 g ? dt_text(g->dt_measured) : "-");
           }
         md += " " + cell + " |";
       }
       md += "\n";
     }
-    return md + fmt::format("\nEach cell: method, measured dt* undamped / at damping {}. Fitted orders and energy growth "
-                            "are in the Summary.\n\n", gamma);
+    return md + fmt::format("\nEach cell: the measured dt* of the family's method of that order, undamped / at damping "
+                            "{}. Fitted orders and energy growth are in the Summary.\n\n", gamma);
   }
 
   // Dahlquist's second barrier: an A-stable linear multistep method has order at most 2.
