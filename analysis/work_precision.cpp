@@ -5,11 +5,10 @@
 #include <limits>
 #include <stdexcept>
 
-#include <boost/numeric/odeint.hpp>
-
 #include "analysis/convergence.hpp"
 #include "analysis/fit.hpp"
 #include "analysis/parallel.hpp"
+#include "analysis/peers.hpp"
 #include "analysis/timing.hpp"
 #include "core/dopri5.hpp"
 #include "core/scenes.hpp"
@@ -39,36 +38,6 @@ template <class F> double min_time(F&& run) {
   const std::vector<double> times = repeated_timings(run, kMinRepeats, kMinSeconds);
   return *std::min_element(times.begin(), times.end());
 }
-
-// Boost.Odeint's controlled runge_kutta_dopri5 on the scene's own first-order system z = (x, v).
-template <HasExact S> struct OdeintRun {
-  using Z = std::array<double, 2 * S::dim>;
-  // error_max: the largest position error at the accepted steps (null: not computed, for timing)
-  static State<S::dim> run(const S& s, double tol, double t_end, long long& steps, long long& evaluations,
-                           double* error_max = nullptr) {
-    constexpr int D = S::dim;
-    const State<D> y0 = s.initial();
-    Z z{};
-    for (int i = 0; i < D; ++i) z[i] = y0.x[i], z[D + i] = y0.v[i];
-    steps = evaluations = 0;
-    const auto rhs = [&](const Z& a, Z& da, double) {
-      ++evaluations;
-      const Vec<D> x = Eigen::Map<const Vec<D>>(a.data()), v = Eigen::Map<const Vec<D>>(a.data() + D);
-      const Vec<D> acc = acceleration(s, x, v);
-      for (int i = 0; i < D; ++i) da[i] = v[i], da[D + i] = acc[i];
-    };
-    namespace odeint = boost::numeric::odeint;
-    odeint::integrate_adaptive(odeint::make_controlled(tol, tol, odeint::runge_kutta_dopri5<Z>()), rhs, z, 0.0, t_end,
-                               1e-6 * t_end, [&](const Z& a, double t) {
-                                 steps += t > 0;
-                                 if (error_max) {
-                                   const double e = (Eigen::Map<const Vec<D>>(a.data()) - exact(s, t).x).norm();
-                                   *error_max = std::max(*error_max, e);
-                                 }
-                               });
-    return {Eigen::Map<const Vec<D>>(z.data()), Eigen::Map<const Vec<D>>(z.data() + D)};
-  }
-};
 
 template <HasExact S, class M> WorkPoint fixed_point(const S& s, std::size_t m, double dt, double t_end) {
   WorkPoint p{std::string(method_infos[m].name), false, dt};
@@ -101,11 +70,16 @@ template <HasExact S> WorkPoint dopri5_point(const S& s, double tol, double t_en
   return p;
 }
 
-template <HasExact S> WorkPoint odeint_point(const S& s, double tol, double t_end) {
-  WorkPoint p{"odeint_dopri5", true, tol};
+// A peer's point (analysis/peers.hpp): "odeint_dopri5" or "cvode_bdf".
+template <class Peer, HasExact S> WorkPoint peer_point(const char* name, const S& s, double tol, double t_end) {
+  WorkPoint p{name, true, tol};
   p.error = 0;
-  OdeintRun<S>::run(s, tol, t_end, p.steps, p.force_evaluations, &p.error);
-  if (!std::isfinite(p.error)) p.status = RunStatus::Diverged, p.error = kInf;
+  PeerCounts n;
+  Peer::run(s, tol, t_end, n, &p.error);
+  p.steps = n.steps;
+  p.force_evaluations = n.evaluations;
+  p.jacobian_evaluations = n.jacobian_evaluations;
+  if (n.failed || !std::isfinite(p.error)) p.status = RunStatus::Diverged, p.error = kInf;
   return p;
 }
 
@@ -118,10 +92,9 @@ template <HasExact S> double time_point(const S& s, const WorkPoint& p, double t
     spec.errors = false;
     return min_time([&] { simulate_dopri5(s, spec); });
   }
-  if (p.method == "odeint_dopri5") {
-    long long a = 0, b = 0;
-    return min_time([&] { OdeintRun<S>::run(s, p.setting, t_end, a, b); });
-  }
+  PeerCounts n;
+  if (p.method == "odeint_dopri5") return min_time([&] { OdeintDopri5<S>::run(s, p.setting, t_end, n); });
+  if (p.method == "cvode_bdf") return min_time([&] { CvodeBdf<S>::run(s, p.setting, t_end, n); });
   return with_method(*find_method(p.method), [&]<class M>() {
     RunSpec spec;
     spec.dt = p.setting;
@@ -136,15 +109,17 @@ template <HasExact S>
 std::vector<WorkPoint> scene_points(const S& s, const WorkPrecisionConfig& c, const std::vector<double>& dts,
                                     double t_end, const std::vector<std::size_t>& methods) {
   const std::size_t nf = methods.size() * dts.size(), nt = c.tolerances.size();
-  std::vector<WorkPoint> points(nf + 2 * nt);
+  std::vector<WorkPoint> points(nf + 3 * nt);
   parallel_for(points.size(), c.threads, [&](std::size_t task) {
     if (task < nf) {
       const std::size_t m = methods[task / dts.size()];
       points[task] = with_method(m, [&]<class M>() { return fixed_point<S, M>(s, m, dts[task % dts.size()], t_end); });
     } else if (task < nf + nt) {
       points[task] = dopri5_point(s, c.tolerances[task - nf], t_end);
+    } else if (task < nf + 2 * nt) {
+      points[task] = peer_point<OdeintDopri5<S>>("odeint_dopri5", s, c.tolerances[task - nf - nt], t_end);
     } else {
-      points[task] = odeint_point(s, c.tolerances[task - nf - nt], t_end);
+      points[task] = peer_point<CvodeBdf<S>>("cvode_bdf", s, c.tolerances[task - nf - 2 * nt], t_end);
     }
   });
   if (c.timing)
@@ -177,26 +152,52 @@ bool is_implicit(const std::string& method) {
   return m && method_infos[*m].implicit;
 }
 
-// The chain's explicit methods: the largest stable dt of the sweep, and the dt their own error
-// line (least squares of ln error on ln dt over the stable runs) puts at kLimitErrorLevel.
-std::vector<StableStep> stable_steps(const std::vector<std::size_t>& methods, const std::vector<WorkPoint>& points) {
-  std::vector<StableStep> out;
-  for (const std::size_t m : methods) {
-    if (method_infos[m].implicit) continue;
-    StableStep s{std::string(method_infos[m].name), 0, -1};
-    std::vector<double> ln_dt, ln_error;
-    for (const WorkPoint& p : points) {
-      if (p.method != s.method || p.status != RunStatus::Ok || !(p.error > 1e-13)) continue;
-      s.largest_stable_dt = std::max(s.largest_stable_dt, p.setting);
-      ln_dt.push_back(std::log(p.setting));
-      ln_error.push_back(std::log(p.error));
-    }
-    if (ln_dt.size() >= 2) {
-      const LineFit line = fit_line(ln_dt, ln_error);
-      s.accuracy_dt = std::exp((std::log(kLimitErrorLevel) - line.intercept) / line.slope);
-    }
-    out.push_back(std::move(s));
+// The chain's slow mode alone: its limit k2 -> inf, where the two masses move as one,
+// (m1 + m2) u'' = -k1 u - c1 u', as the spring scene (which starts at rest, m g / k above its
+// equilibrium: g is chosen for the amplitude of the chain's mass-weighted mean displacement,
+// times sqrt 2, the norm of (u, u), so that errors compare with the chain's two-coordinate ones).
+Spring slow_mode_spring(const std::vector<double>& chain) {
+  // Chain::params: mass1, mass2, stiffness1, stiffness2, damping1, damping2, u1, u2
+  const double m = chain[0] + chain[1], u = (chain[0] * chain[6] + chain[1] * chain[7]) / m;
+  std::vector<double> p = default_param_values<Spring>();  // mass, stiffness, damping, rest length, g
+  p[0] = m, p[1] = chain[2], p[2] = chain[4], p[4] = chain[2] * std::sqrt(2.0) * std::abs(u) / m;
+  return Spring(p);
+}
+
+// Where the error of a dt sweep (points sorted by falling dt) first reaches `level`: the dt
+// interpolated linearly in (ln dt, ln error) between the last run above it and the first at or
+// below it; the largest dt if every run reaches it; -1 if none does.
+double dt_reaching(const std::vector<WorkPoint>& points, double level) {
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!(points[i].error <= level)) continue;
+    if (i == 0 || !std::isfinite(points[i - 1].error)) return points[i].setting;
+    const WorkPoint &hi = points[i - 1], &lo = points[i];
+    const double w = std::log(level / lo.error) / std::log(hi.error / lo.error);
+    return std::exp(std::log(lo.setting) + w * std::log(hi.setting / lo.setting));
   }
+  return -1;
+}
+
+// The chain's explicit methods: the largest stable dt of the chain's sweep, against the dt at
+// which the same method reaches kLimitErrorLevel on the slow mode alone (what accuracy would
+// allow if the stiff mode did not have to be kept stable).
+std::vector<StableStep> stable_steps(const WorkPrecisionConfig& c, const std::vector<double>& chain,
+                                     const std::vector<double>& dts, const std::vector<WorkPoint>& points) {
+  std::vector<StableStep> out;
+  for (const std::size_t m : c.methods)
+    if (!method_infos[m].implicit) out.push_back({std::string(method_infos[m].name), 0, -1});
+  const Spring slow = slow_mode_spring(chain);
+  parallel_for(out.size(), c.threads, [&](std::size_t task) {
+    StableStep& s = out[task];
+    for (const WorkPoint& p : points)
+      if (p.method == s.method && p.status == RunStatus::Ok) s.largest_stable_dt = std::max(s.largest_stable_dt, p.setting);
+    const std::size_t m = *find_method(s.method);
+    std::vector<WorkPoint> sweep;
+    with_method(m, [&]<class M>() {
+      for (const double dt : dts) sweep.push_back(fixed_point<Spring, M>(slow, m, dt, c.t_end));
+    });
+    s.accuracy_dt = dt_reaching(sweep, kLimitErrorLevel);
+  });
   return out;
 }
 
@@ -253,12 +254,12 @@ WorkPrecisionResult work_precision_study(const WorkPrecisionConfig& config) {
         const bool chain = name == "chain";
         const auto dts = sweep_steps(config.t_end, chain ? 0.5 : 0.1, chain ? 1e-5 : 1e-4, config.points);
         w.points = scene_points(s, config, dts, config.t_end, config.methods);
+        if (chain) out.limits = stable_steps(config, w.params, dts, w.points);
       }
     });
     for (const double level : config.error_levels) w.cheapest.push_back(cheapest_at(w.points, level));
     out.scenes.push_back(std::move(w));
   }
-  out.limits = stable_steps(config.methods, out.scenes[1].points);
   for (const double k2 : config.stiffnesses) out.stiffness.push_back(stiffness_row(config, k2));
   // The crossover: the smallest ratio from which on, at every larger one, the best implicit run is
   // cheaper than the best explicit one.

@@ -9,21 +9,27 @@
 // the median: a timing can only be slowed by the machine, never sped up, so the minimum is the
 // estimate least disturbed by other load.
 //
-// Fixed-step methods run over a dt sweep; steplab's dopri5 (core/dopri5.hpp) and its peer,
-// Boost.Odeint's controlled runge_kutta_dopri5 (the same tableau, odeint's own controller), over a
-// tolerance sweep with rtol = atol = tol.
+// Fixed-step methods run over a dt sweep; steplab's dopri5 (core/dopri5.hpp) and the peers users
+// would pick instead (analysis/peers.hpp), Boost.Odeint's controlled runge_kutta_dopri5 (the same
+// tableau, odeint's own controller) and SUNDIALS CVODE's variable-order BDF, over a tolerance
+// sweep with rtol = atol = tol.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/simulate.hpp"
 
 namespace steplab {
 
+// The adaptive solvers' names in the points, steplab's first, then the peers.
+inline constexpr std::array<std::string_view, 3> kAdaptiveSolvers{"dopri5", "odeint_dopri5", "cvode_bdf"};
+
 struct WorkPoint {
-  std::string method;    // a table method, "dopri5", or "odeint_dopri5"
+  std::string method;    // a table method, "dopri5", "odeint_dopri5" or "cvode_bdf"
   bool adaptive = false;
   double setting = 0;    // dt, or the tolerance of an adaptive method
   RunStatus status = RunStatus::Ok;
@@ -40,12 +46,12 @@ struct Cheapest {
 };
 
 // On the chain: where each explicit method's steps stop being stable, against the step its
-// accuracy alone would allow for the error level (the largest dt whose error is below it, on the
-// slow mode alone: a chain whose stiff spring is replaced by a rigid link, k2 -> k2 / 1e4).
+// accuracy alone would allow for kLimitErrorLevel: the dt at which its error reaches that level
+// on the chain's slow mode alone (the limit k2 -> inf: the masses move as one on spring k1).
 struct StableStep {
   std::string method;
-  double largest_stable_dt;   // the largest dt of the sweep that did not diverge
-  double accuracy_dt;         // the largest dt of the sweep reaching kLimitErrorLevel on the soft chain
+  double largest_stable_dt;   // the largest dt of the chain's sweep that did not diverge
+  double accuracy_dt;         // on the slow mode, interpolated in the same dt sweep; -1: not reached
 };
 
 struct SceneWork {

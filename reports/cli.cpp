@@ -175,6 +175,9 @@ int cli_main(int argc, const char* const* argv) {
   CLI::App* wp_cmd = study->add_subcommand("work-precision", "cost against error on the spring and the stiff chain; "
                                                              "cheapest method per error level; stiffness crossover");
   wp_cmd->add_option("--methods", wp.methods, "comma-separated fixed-step methods (default: every numerical method)");
+  wp_cmd->add_option("--points", wp.points, "fixed-step methods: steps in each scene's dt sweep, 3 .. 100")->capture_default_str();
+  wp_cmd->add_option("--stiffnesses", wp.stiffnesses, "comma-separated k2 of the stiffness sweep (the chain's k1 is 5)")
+      ->capture_default_str();
   wp_cmd->add_option("--threads", wp.threads, "worker threads for the error runs (timings run one at a time)")
       ->capture_default_str();
   wp_cmd->add_flag("--no-timing", wp.no_timing, "cost by force and Jacobian evaluations only (reproducible byte for byte)");

@@ -89,6 +89,8 @@ int collision_command(CollisionArgs& args);
 
 struct WorkPrecisionArgs {
   std::string methods;  // empty: every numerical method
+  std::string points = "14";                              // dt sweep points per scene
+  std::string stiffnesses = "5,50,500,5000,50000,5e5,5e6";  // k2 of the stiffness sweep
   std::string threads = "0";
   bool no_timing = false;  // cost by evaluations only: reproducible byte for byte
   std::string json;

@@ -64,4 +64,10 @@ long long step_count(double t_end, double dt) {
   return steps_for(t_end, dt);
 }
 
+std::vector<double> number_list(std::string_view what, const std::string& text, Bound bound) {
+  std::vector<double> out;
+  for (const std::string& item : split_list(text)) out.push_back(parse_number(what, item, bound));
+  return out;
+}
+
 }  // namespace steplab

@@ -77,12 +77,6 @@ int convergence_command(ConvergenceArgs& a) {
 namespace steplab {
 namespace {
 
-std::vector<double> number_list(std::string_view what, const std::string& text, Bound bound) {
-  std::vector<double> out;
-  for (const std::string& item : split_list(text)) out.push_back(parse_number(what, item, bound));
-  return out;
-}
-
 StabilityConfig stability_config(StabilityArgs& a) {
   a.scene.scene = "spring";
   StabilityConfig c;

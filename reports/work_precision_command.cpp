@@ -87,11 +87,16 @@ std::string work_precision_table(const WorkPrecisionResult& r) {
                          ch.by_evaluations.empty() ? "none" : fmt::format("{} {}", ch.by_evaluations, ch.evaluations));
     out += "\n";
   }
-  out += fmt::format("Chain: largest stable step of each explicit method, and the step its error line puts at {:.0e}:\n",
-                     kLimitErrorLevel);
+  out += fmt::format(
+      "Chain: largest stable step of each explicit method, and the step at which it reaches error {:.0e} on the slow mode\n"
+      "alone (the masses moving as one), which is what accuracy alone would ask:\n",
+      kLimitErrorLevel);
   for (const StableStep& l : r.limits)
-    out += fmt::format("  {:<18} stable to {:<10.3g} accuracy alone {:<10.3g} ({:.3g}x)\n", l.method, l.largest_stable_dt,
-                       l.accuracy_dt, l.accuracy_dt / l.largest_stable_dt);
+    out += l.accuracy_dt < 0
+               ? fmt::format("  {:<18} stable to {:<10.3g} accuracy alone: below the sweep's smallest step\n", l.method,
+                             l.largest_stable_dt)
+               : fmt::format("  {:<18} stable to {:<10.3g} accuracy alone {:<10.3g} ({:.3g}x the stable step)\n", l.method,
+                             l.largest_stable_dt, l.accuracy_dt, l.accuracy_dt / l.largest_stable_dt);
   out += fmt::format("\nStiffness sweep (chain, t_end {}): cheapest run reaching error {:.0e}, {}\n", r.config.sweep_t_end,
                      r.config.crossover_error, timed ? "by run time" : "by evaluations");
   for (const StiffnessRow& s : r.stiffness)
@@ -108,6 +113,8 @@ std::string work_precision_table(const WorkPrecisionResult& r) {
 int work_precision_command(WorkPrecisionArgs& a) {
   WorkPrecisionConfig c;
   c.methods = resolve_methods(a.methods, false);
+  c.points = static_cast<int>(parse_count("--points", a.points, 3, 100));
+  c.stiffnesses = number_list("--stiffnesses", a.stiffnesses, Bound::Positive);
   c.threads = resolve_thread_count(a.threads);
   c.timing = !a.no_timing;
   if (stop_after_validation(a.json)) return 0;

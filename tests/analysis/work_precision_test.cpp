@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "analysis/peers.hpp"
 #include "analysis/work_precision.hpp"
 #include "core/methods.hpp"
 #include "core/scenes.hpp"
@@ -46,18 +47,99 @@ TEST(WorkPrecision, CountsWhatTheFormulasSay) {
   }
 }
 
-// Both adaptive solvers reach errors that follow the tolerance on the spring: at tol 1e-9 both are
-// below 1e-7 (measured: steplab 1.5e-8, odeint 3e-9 -- odeint's max norm is the stricter).
+// Every adaptive solver reaches errors that follow the tolerance on both scenes. A tolerance
+// bounds the local error per step, weighted by rtol |z| + atol, not the global one, so a margin is
+// needed: the Dormand-Prince pair within 100x at every tolerance (measured on the spring at tol
+// 1e-9: steplab 1.5e-8, odeint 3e-9 -- odeint's max norm is the stricter); CVODE's BDF, whose
+// error constants are larger and whose RMS norm is looser, within 1e4x (measured up to 2200x, on
+// the spring at 1e-11), and its error falls at least 1e5-fold over the 9 decades of tolerance.
 TEST(WorkPrecision, AdaptiveErrorsFollowTheTolerance) {
-  for (const WorkPoint& p : study().scenes[0].points) {
-    if (!p.adaptive) continue;
-    EXPECT_EQ(p.status, RunStatus::Ok) << p.method;
-    EXPECT_LT(p.error, 100 * p.setting) << p.method << " " << p.setting;
+  for (const SceneWork& w : study().scenes) {
+    double loosest = 0, tightest = 0;
+    for (const WorkPoint& p : w.points) {
+      if (!p.adaptive) continue;
+      EXPECT_EQ(p.status, RunStatus::Ok) << p.method;
+      const bool bdf = p.method == "cvode_bdf";
+      EXPECT_LT(p.error, (bdf ? 1e4 : 100) * p.setting) << p.method << " " << p.setting << " scene " << w.scene;
+      if (bdf && p.setting == 1e-2) loosest = p.error;
+      if (bdf && p.setting == 1e-11) tightest = p.error;
+    }
+    EXPECT_GT(loosest, 1e5 * tightest) << w.scene;
   }
 }
 
-// On the stiff chain an implicit method is the cheapest at 1e-4 (by evaluations), on the spring
-// an explicit one; the stiffness sweep finds a crossover between ratio 10 and 1e5 (measured 1000).
+// CVODE is handed the chain's Jacobian df/dz of the first-order system: it must be the derivative
+// of the right side it is handed, checked against central differences (step 1e-6 on entries of
+// order 1 .. 1e5: truncation ~1e-12 relative for this linear f, round-off ~1e-16 / 1e-6 x |f| ~ 1e-5
+// of the largest entry, hence the tolerance 1e-6 of the largest entry).
+TEST(WorkPrecision, CvodeGetsTheJacobianOfItsRightSide) {
+  using Peer = CvodeBdf<Chain>;
+  Chain s(default_param_values<Chain>());
+  SUNContext ctx = nullptr;
+  ASSERT_EQ(SUNContext_Create(nullptr, &ctx), 0);
+  N_Vector z = N_VNew_Serial(4, ctx), f0 = N_VNew_Serial(4, ctx), f1 = N_VNew_Serial(4, ctx);
+  SUNMatrix J = SUNDenseMatrix(4, 4, ctx);
+  const double at[4] = {0.3, -0.2, 1.5, 0.7};
+  for (int i = 0; i < 4; ++i) N_VGetArrayPointer(z)[i] = at[i];
+  ASSERT_EQ(Peer::jacobian(0, z, f0, J, &s, nullptr, nullptr, nullptr), 0);
+  const double h = 1e-6;
+  double largest = 0;
+  for (int i = 0; i < 16; ++i) largest = std::max(largest, std::abs(SUNDenseMatrix_Data(J)[i]));
+  for (int col = 0; col < 4; ++col) {
+    N_VGetArrayPointer(z)[col] = at[col] + h;
+    Peer::rhs(0, z, f1, &s);
+    N_VGetArrayPointer(z)[col] = at[col] - h;
+    Peer::rhs(0, z, f0, &s);
+    N_VGetArrayPointer(z)[col] = at[col];
+    for (int row = 0; row < 4; ++row) {
+      const double fd = (N_VGetArrayPointer(f1)[row] - N_VGetArrayPointer(f0)[row]) / (2 * h);
+      EXPECT_NEAR(SM_ELEMENT_D(J, row, col), fd, 1e-6 * largest) << row << "," << col;
+    }
+  }
+  SUNMatDestroy(J);
+  N_VDestroy(z);
+  N_VDestroy(f0);
+  N_VDestroy(f1);
+  SUNContext_Free(&ctx);
+}
+
+// On the stiff chain at a loose tolerance CVODE stays at low BDF orders (1, 2: A-stable) and steps
+// over the stiff mode, while dopri5 is held to the fast mode's stability limit (about 2.8 / 316
+// at k2 = 5e4: >= 10 / 0.009 ~ 1100 steps at any tolerance): at tol 1e-2 CVODE takes fewer than a
+// tenth of dopri5's steps (measured 52 against 1424). At tighter tolerances it raises its order
+// to 3 .. 5, whose stability wedges (86 deg down to 51 deg) miss the stiff mode at 88 deg from the
+// negative real axis, and it needs thousands of steps too (measured 4624 at 1e-3): a finding of
+// the study, not asserted here.
+TEST(WorkPrecision, BdfStepsOverTheStiffModeAtALooseTolerance) {
+  const auto steps = [](const std::string& method, double tol) {
+    for (const WorkPoint& p : study().scenes[1].points)
+      if (p.method == method && p.setting == tol) return p.steps;
+    return -1LL;
+  };
+  EXPECT_GT(steps("dopri5", 1e-2), 1100);
+  EXPECT_GT(steps("cvode_bdf", 1e-2), 0);
+  EXPECT_LT(10 * steps("cvode_bdf", 1e-2), steps("dopri5", 1e-2));
+}
+
+// The step accuracy alone would allow RK4 on the chain, from theory: on the slow mode (mass 2 on
+// spring 5, damping 0.1, amplitude sqrt 2 in the chain's norm), RK4's phase error grows as
+// omega t (omega h)^4 / 120 times the decaying amplitude, largest at t = 10:
+// sqrt 2 * omega * 10 e^{-0.25} (omega h)^4 / 120 = 1e-4 at h = 0.1025 (omega = 1.5809). The
+// study interpolates between sweep steps 3 per decade apart: within 10 %.
+TEST(WorkPrecision, Rk4AccuracyStepOnTheChainMatchesItsPhaseError) {
+  for (const StableStep& l : study().limits) {
+    if (l.method != "rk4") continue;
+    const double omega = std::sqrt(2.5 - 0.025 * 0.025);
+    const double h = std::pow(1e-4 * 120 / (std::sqrt(2.0) * omega * 10 * std::exp(-0.25)), 0.25) / omega;
+    EXPECT_NEAR(l.accuracy_dt, h, 0.1 * h);
+    EXPECT_GT(l.accuracy_dt, 10 * l.largest_stable_dt);  // the stiff mode, not accuracy, limits it
+  }
+}
+
+// On the stiff chain one of steplab's implicit methods is the cheapest at 1e-4 (by evaluations), on
+// the spring none of them is (an explicit method, or a peer: CVODE's variable-order BDF takes the
+// fewest evaluations there); the stiffness sweep finds a crossover between ratio 10 and 1e5
+// (measured 100 by evaluations, 1000 by time).
 TEST(WorkPrecision, ImplicitPaysOnlyOnTheStiffChain) {
   const WorkPrecisionResult& r = study();
   const auto at = [](const SceneWork& w, double level) {
@@ -68,7 +150,7 @@ TEST(WorkPrecision, ImplicitPaysOnlyOnTheStiffChain) {
   const std::string spring = at(r.scenes[0], 1e-4), chain = at(r.scenes[1], 1e-4);
   ASSERT_FALSE(spring.empty());
   ASSERT_FALSE(chain.empty());
-  EXPECT_TRUE(spring == "dopri5" || spring == "odeint_dopri5" || !method_infos[*find_method(spring)].implicit) << spring;
+  EXPECT_TRUE(!find_method(spring) || !method_infos[*find_method(spring)].implicit) << spring;
   ASSERT_TRUE(find_method(chain)) << chain;
   EXPECT_TRUE(method_infos[*find_method(chain)].implicit) << chain;
   EXPECT_GE(r.crossover_ratio, 10);
