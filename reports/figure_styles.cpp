@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "analysis/work_precision.hpp"
 #include "core/methods.hpp"
 #include "reports/report_text.hpp"
 
@@ -58,7 +59,16 @@ std::string styles_gp(const std::vector<std::size_t>& methods) {
     if (!names.empty()) names += ' ';
     names += name(m);
   }
+  // the adaptive solvers of the work-precision figure: black and greys, and the sky blue the
+  // families leave free, with points and dashes of their own
+  const MethodStyle adaptive[] = {{"#000000", 7, 1}, {"#777777", 6, 2}, {"#56B4E9", 15, 4}};
+  for (std::size_t k = 0; k < kAdaptiveSolvers.size(); ++k) {
+    out += fmt::format("set linetype {} lc rgb \"{}\" pt {} dt {} lw 1.5 ps 0.6  # {}\n", method_count + k + 1,
+                       adaptive[k].colour, adaptive[k].point, adaptive[k].dash, kAdaptiveSolvers[k]);
+    names += fmt::format(" {}", kAdaptiveSolvers[k]);
+  }
   out += fmt::format("style_names = \"{}\"\n", names);
+  out += fmt::format("adaptive = \"{} {} {}\"\n", kAdaptiveSolvers[0], kAdaptiveSolvers[1], kAdaptiveSolvers[2]);
   out += "mlt(m) = sum [k=1:words(style_names)] (word(style_names, k) eq m ? k : 0)\n";
   out += "in_list(m, list) = strstrt(\" \".list.\" \", \" \".m.\" \") > 0\n";
   int n = 0;

@@ -24,6 +24,7 @@ MethodStyle method_style(std::size_t method);
 // figures/styles.gp: `set linetype` per method (method k of the table is linetype k + 1),
 //   mlt(name)            the linetype of a method by name
 //   in_list(name, list)  whether a word is in a space-separated list
+//   adaptive             the adaptive solvers of the work-precision study (linetypes after the table's)
 //   nfam, fam1 .. famN, famname1 .. famnameN
 //                        the family panels over `methods`, in report order, each family's members
 //                        by order (explicit and implicit Euler also open Adams-Bashforth and BDF)

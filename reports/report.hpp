@@ -15,6 +15,7 @@
 #include "analysis/collision.hpp"
 #include "analysis/convergence.hpp"
 #include "analysis/stability.hpp"
+#include "analysis/work_precision.hpp"
 #include "reports/report_config.hpp"
 
 namespace steplab {
@@ -27,6 +28,7 @@ struct ReportData {
   std::vector<SweepRow> sweep;
   StabilityMap map;
   CollisionResult collision;
+  WorkPrecisionResult work;  // spring and chain, with the peers; the stiffness sweep
   // figure data
   std::vector<RunResult<2>> cannon;               // [method]
   std::vector<std::vector<RunResult<1>>> spring;  // [figure dt][method]

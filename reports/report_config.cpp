@@ -87,7 +87,8 @@ Json report_config_json(const ReportConfig& c) {
   j["bounce"] = params_json<Bounce>(c.bounce);
   j["falling"] = params_json<Falling>(c.falling);
   j["convergence"] = {{"dt_max", c.conv_dt_max}, {"dt_min", c.conv_dt_min}, {"points", c.conv_points},
-                      {"t_end", c.conv_t_end}, {"timing", c.timing}};
+                      {"t_end", c.conv_t_end}};
+  j["work_precision"] = {{"points", c.wp_points}, {"stiffnesses", c.wp_stiffnesses}, {"timing", c.timing}};
   j["stability"] = {{"threshold_dampings", c.threshold_dampings}, {"sweep_dts", c.sweep_dts},
                     {"map_dt_points", c.map_dt_points},           {"map_damping_points", c.map_damping_points},
                     {"map_dt_min", c.map_dt_min},                 {"map_dt_max", c.map_dt_max},
@@ -115,13 +116,16 @@ ReportConfig report_config_from_json(const Json& user) {
   c.conv_dt_min = num(cv["dt_min"], "convergence.dt_min", Bound::Positive);
   c.conv_points = count(cv["points"], "convergence.points", 3, 1000);
   c.conv_t_end = num(cv["t_end"], "convergence.t_end", Bound::Positive);
-  c.timing = cv["timing"].get<bool>();
   if (c.conv_dt_min >= c.conv_dt_max)
     throw UsageError(fmt::format("config: convergence.dt_min {} is not below dt_max {}; accepted: dt_min < dt_max",
                                  c.conv_dt_min, c.conv_dt_max));
   if (c.conv_dt_max > c.conv_t_end)
     throw UsageError("config: convergence.dt_max is longer than convergence.t_end; accepted: dt_max <= t_end");
   step_count(c.conv_t_end, c.conv_dt_min);
+  const Json& wp = j["work_precision"];
+  c.wp_points = count(wp["points"], "work_precision.points", 3, 100);
+  c.wp_stiffnesses = nums(wp["stiffnesses"], "work_precision.stiffnesses", Bound::Positive);
+  c.timing = wp["timing"].get<bool>();
   const Json& st = j["stability"];
   c.threshold_dampings = nums(st["threshold_dampings"], "stability.threshold_dampings", Bound::NonNegative);
   c.sweep_dts = nums(st["sweep_dts"], "stability.sweep_dts", Bound::Positive);

@@ -16,7 +16,11 @@ struct ReportConfig {
   // convergence (every scene with an exact solution)
   double conv_dt_max = 0.1, conv_dt_min = 1e-4, conv_t_end = 10;
   int conv_points = 16;
-  bool timing = true;  // work-precision (figure 7)
+  // work-precision (spring and chain): dt sweep points, the stiffness sweep's k2, and whether runs
+  // are timed (else costed by force and Jacobian evaluations alone, reproducible byte for byte)
+  int wp_points = 14;
+  std::vector<double> wp_stiffnesses{5, 5e1, 5e2, 5e3, 5e4, 5e5, 5e6};
+  bool timing = true;
   // stability (spring)
   std::vector<double> threshold_dampings{0, 0.1, 1, 4};
   std::vector<double> sweep_dts{0.01, 0.05, 0.2};

@@ -48,9 +48,7 @@ ReportData run_report_studies(const ReportConfig& c) {
   for (std::size_t m = 0; m < method_count; ++m) d.methods.push_back(m);
   const double gamma = c.spring[2];
 
-  ConvergenceConfig spring_conv = convergence_config(c, "spring", c.spring, d.methods);
-  spring_conv.timing = c.timing;
-  d.conv_spring = convergence_study(spring_conv);
+  d.conv_spring = convergence_study(convergence_config(c, "spring", c.spring, d.methods));
   d.conv_cannonball = convergence_study(convergence_config(c, "cannonball", c.cannonball, d.methods));
   d.conv_bounce = convergence_study(convergence_config(c, "bounce", c.bounce, d.methods));
 
@@ -79,6 +77,15 @@ ReportData run_report_studies(const ReportConfig& c) {
   cc.triangle_dt = c.triangle_dt;
   cc.threads = c.threads;
   d.collision = collision_study(cc);
+
+  WorkPrecisionConfig wc;
+  for (std::size_t m : d.methods)
+    if (!method_infos[m].exact_flow) wc.methods.push_back(m);
+  wc.points = c.wp_points;
+  wc.stiffnesses = c.wp_stiffnesses;
+  wc.timing = c.timing;
+  wc.threads = c.threads;
+  d.work = work_precision_study(wc);
 
   // Figures: the cannon ball's path, the spring's y(t), the undamped energy at the large step,
   // and the predicted growth rate against damping on a fine grid.

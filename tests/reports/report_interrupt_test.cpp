@@ -49,7 +49,8 @@ int interrupted_report(const std::string& config, const std::string& out, int si
 // A report with small studies (about a second), then gnuplot and pandoc; returns the config's path.
 std::string small_config(const TempDir& dir) {
   const std::string path = dir.path("small.json");
-  std::ofstream(path) << R"({"convergence": {"points": 8, "dt_min": 0.001, "timing": false},
+  std::ofstream(path) << R"({"convergence": {"points": 8, "dt_min": 0.001},
+                             "work_precision": {"points": 4, "stiffnesses": [5, 5e4], "timing": false},
                              "stability": {"map_dt_points": 16, "map_damping_points": 16},
                              "collision": {"t_end": 2}, "figures": {"energy_t_end": 10}})";
   return path;

@@ -23,6 +23,8 @@ ReportConfig small_config() {
   c.conv_points = 8;
   c.conv_dt_min = 1e-3;
   c.timing = false;
+  c.wp_points = 4;
+  c.wp_stiffnesses = {5, 5e4};
   c.map_dt_points = 6;
   c.map_damping_points = 4;
   c.collision_dts = {0.002};
@@ -50,6 +52,7 @@ std::string line_starting(const std::string& md, const std::string& prefix) {
 }
 
 void expect_family_sentences_follow_data(const ReportData& d, const std::string& md);
+void expect_cost_sentences_follow_data(const ReportData& d, const std::string& md);
 
 void expect_sentences_follow_data(const ReportConfig& c) {
   const Report report = build_report(c);
@@ -91,11 +94,44 @@ void expect_sentences_follow_data(const ReportConfig& c) {
   EXPECT_NE(md.find(fmt::format("is **{:.2f}**", rho)), std::string::npos) << rho;
 
   expect_family_sentences_follow_data(d, md);
+  expect_cost_sentences_follow_data(d, md);
 }
 
 // Each family's sentence says, at every damping measured, whether dt* rises, falls or stays
 // infinite along the family's orders; recomputed here from the thresholds. Dahlquist's sentence
 // names the multistep methods measured stable at every step at every damping.
+// The cost section (timing off: costs are evaluations): the cheapest run per error level in the
+// table, and the crossover, recomputed from the work-precision points and stiffness rows.
+void expect_cost_sentences_follow_data(const ReportData& d, const std::string& md) {
+  const WorkPrecisionResult& r = d.work;
+  ASSERT_EQ(r.scenes.size(), 2u);
+  for (const double level : r.config.error_levels) {
+    std::string row = fmt::format("| {:.0e} |", level);
+    for (const SceneWork& w : r.scenes) {
+      std::string best;
+      long long cost = 0;
+      for (const WorkPoint& p : w.points)
+        if (p.status == RunStatus::Ok && p.error <= level && (best.empty() || p.force_evaluations + p.jacobian_evaluations < cost))
+          best = p.method, cost = p.force_evaluations + p.jacobian_evaluations;
+      row += best.empty() ? " none |" : fmt::format(" `{}` {} |", best, cost);
+    }
+    EXPECT_NE(md.find(row + "\n"), std::string::npos) << row;
+  }
+  // the crossover: the smallest ratio from which on the cheapest implicit run beats every explicit one
+  double crossover = -1;
+  for (std::size_t i = r.stiffness.size(); i-- > 0;) {
+    const StiffnessRow& s = r.stiffness[i];
+    if (s.best_implicit.empty() || (!s.best_explicit.empty() && s.implicit_evaluations >= s.explicit_evaluations)) break;
+    crossover = s.ratio;
+  }
+  const std::string line = line_starting(md, "- The crossover:");
+  if (crossover > 0) {
+    EXPECT_NE(line.find(fmt::format("k2 / k1 = {:g} on", crossover)), std::string::npos) << line;
+  } else {
+    EXPECT_NE(md.find("- No stiffness ratio of the sweep"), std::string::npos);
+  }
+}
+
 void expect_family_sentences_follow_data(const ReportData& d, const std::string& md) {
   std::vector<double> dampings;
   for (const ThresholdRow& r : d.thresholds)
@@ -197,7 +233,7 @@ TEST(ReportConfigJson, DefaultsRoundTripAndOverrides) {
 TEST(ReportConfigJson, RefusesBadConfigs) {
   for (const char* bad : {R"({"spring": {"stifness": 3}})", R"({"sprung": {}})", R"({"spring": {"damping": "a lot"}})",
                           R"({"spring": {"mass": 0}})", R"({"stability": {"sweep_dts": []}})", R"({"convergence": {"points": 2.5}})",
-                          R"({"convergence": {"dt_min": 0.5, "dt_max": 0.1}})", R"([1, 2])", R"({"convergence": {"timing": 1}})"}) {
+                          R"({"convergence": {"dt_min": 0.5, "dt_max": 0.1}})", R"([1, 2])", R"({"work_precision": {"timing": 1}})"}) {
     EXPECT_THROW(report_config_from_json(nlohmann::ordered_json::parse(bad)), UsageError) << bad;
   }
 }
