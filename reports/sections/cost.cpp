@@ -167,7 +167,7 @@ class Cost : public Section {
       const double cv = cheapest_of(chain, "cvode_bdf", level, timed);
       if (best.empty() || !std::isfinite(cv)) continue;
       md += fmt::format("- On the chain at error {:.0e}: steplab's cheapest implicit method, `{}`, costs {}; CVODE's BDF {} "
-                        "({:.2g} times as much).\n",
+                        "({:.3g} times as much).\n",
                         level, best, cost_text(timed, cost, static_cast<long long>(cost)),
                         cost_text(timed, cv, static_cast<long long>(cv)), cv / cost);
     }
