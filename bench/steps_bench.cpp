@@ -28,6 +28,8 @@
 #include "core/stepper.hpp"
 
 void register_odeint_implicit_euler();
+// throughput_bench.cpp: registers the throughput rows; returns their lanes and trajectory-steps per iteration
+std::pair<int, long long> register_throughput();
 
 namespace {
 
@@ -280,6 +282,8 @@ std::string flag_value(int argc, char** argv, const std::string& flag, const std
   return v;
 }
 
+std::pair<int, long long> throughput_work{1, 1};  // lanes, trajectory-steps per iteration
+
 std::string ratio_table(const std::map<std::string, double>& t) {
   std::string out = "| scene/method | steplab ns/step | odeint ns/step | baseline ns/step | steplab/odeint | steplab/baseline |\n"
                     "|---|---:|---:|---:|---:|---:|\n";
@@ -297,6 +301,19 @@ std::string ratio_table(const std::map<std::string, double>& t) {
     if (od == t.end() && base == t.end()) continue;
     out += "| " + rest + " | " + cell(name) + " | " + cell("odeint/" + rest) + " | " + cell("baseline/" + rest) + " | " + r1 +
            " | " + r2 + " |\n";
+  }
+  // Throughput (throughput_bench.cpp): the same trajectory-steps per iteration in all three.
+  const auto lanes = t.find("throughput/spring/explicit_euler"), hand = t.find("throughput_baseline/spring/explicit_euler"),
+             alone = t.find("throughput_scalar/spring/explicit_euler");
+  if (lanes != t.end() && hand != t.end() && alone != t.end()) {
+    const double per = 1.0 / static_cast<double>(throughput_work.second);
+    char line[400];
+    std::snprintf(line, sizeof line,
+                  "\nthroughput/spring/explicit_euler (%d lanes): %.3f ns per trajectory-step; hand-written baseline %.3f; "
+                  "one run at a time %.3f; throughput steplab/baseline %.2f, lanes/one at a time %.2f\n",
+                  throughput_work.first, lanes->second * per, hand->second * per, alone->second * per, hand->second / lanes->second,
+                  alone->second / lanes->second);
+    out += line;
   }
   return out;
 }
@@ -316,6 +333,7 @@ int main(int argc, char** argv) {
   register_steplab();
   register_baselines();
   register_odeint_all();
+  throughput_work = register_throughput();
   // Read before Initialize, which takes the flags it knows out of argv.
   const std::string format = flag_value(argc, argv, "--benchmark_format", "console");
   if (format != "console" && format != "json" && format != "csv") {

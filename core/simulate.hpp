@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "core/methods.hpp"
@@ -58,7 +59,7 @@ template <int D> struct RunResult {
   long long failed_step = -1;   // the step (1-based) that diverged or did not converge
   double failed_t = 0;
   double t_final = 0;
-  State<D> final{};
+  State<D> final{Vec<D>::Zero(), Vec<D>::Zero()};
   bool has_exact = false;
   double error_final = 0, error_max = 0, error_rms = 0, error_v_final = 0;
   double energy0 = 0, energy_ratio_final = 1, energy_ratio_max = 1;
@@ -112,89 +113,131 @@ template <int D> void finish_run(RunResult<D>& r, bool has_exact, double err_sq_
   r.energy_ratio_max = ratio_max;
 }
 
-// `observe(i, t, state)` is called after every completed step (i = 1 .. steps), for studies that
-// need more than the summary (bounces, penetration); it must not allocate.
-template <class M, Scene S, class Observer = NoObserver>
-RunResult<S::dim> simulate(const S& scene, const RunSpec& spec, Observer&& observe = {}) {
-  constexpr int D = S::dim;
-  State<D> y = scene.initial();
-  RunResult<D> r;
-  const double h = spec.dt;
-  const SamplePlan plan{spec.steps, spec.max_samples};
-  if (plan.size() > 0) r.samples.reserve(static_cast<std::size_t>(plan.size()) + 1);
-  long long next_sample = 0, sample_k = 0;
+// One run, step by step: the state of a run between steps (the accumulators above) and the
+// step itself. simulate() below drives one to its end; simulate_lanes (core/lanes.hpp) drives
+// several in lockstep, each lane doing exactly what a run alone does, in the same order (the
+// results are the same bit for bit). `observe(i, t, state)` is called after every completed
+// step (i = 1 .. steps), for studies that need more than the summary (bounces, penetration); it
+// must not allocate. The scene and the result `out` must outlive the run; a Run is not copied or
+// moved. The result lives outside the Run so that a run alone keeps its own state in registers
+// (the sample buffer's address escapes to the allocator; were it a member, the whole Run would
+// live in memory: +7 instructions a step of explicit Euler, callgrind).
+template <class M, Scene S, class Observer = NoObserver> class Run {
+ public:
+  static constexpr int D = S::dim;
 
-  const double e0 = scene.energy(y.x, y.v);
-  r.energy0 = e0;
-  double ratio_max = 1, ratio = 1;
-  // Welford accumulators for the slope of ln E on t.
-  double n_fit = 0, mean_t = 0, mean_l = 0, c_tl = 0, m2_t = 0;
-  const auto fit_point = [&](double t, double e) {
-    if (!(e > 0) || !std::isfinite(e)) return;
-    const double l = std::log(e);
-    n_fit += 1;
-    const double dt_ = t - mean_t;
-    mean_t += dt_ / n_fit;
-    mean_l += (l - mean_l) / n_fit;
-    c_tl += dt_ * (l - mean_l);
-    m2_t += dt_ * (t - mean_t);
-  };
-  const auto keep = [&](long long i, double t, const State<D>& s, double e) {
-    if (i == next_sample && sample_k < plan.size()) {
-      r.samples.push_back({t, s.x, s.v, e});
-      next_sample = plan.at(++sample_k);
+  Run(const S& scene, const RunSpec& spec, RunResult<D>& out, Observer observe = {})
+      : scene_(scene), spec_(spec), observe_(observe), plan_{spec.steps, spec.max_samples}, y_(scene.initial()), r_(out),
+        tracker_(make_tracker(scene)) {
+    if (plan_.size() > 0) r_.samples.reserve(static_cast<std::size_t>(plan_.size()) + 1);
+    e0_ = scene.energy(y_.x, y_.v);
+    r_.energy0 = e0_;
+    keep(0, 0.0, y_, e0_);
+    if (spec.energy_rate) fit_point(0.0, e0_);
+  }
+  Run(const Run&) = delete;
+  Run& operator=(const Run&) = delete;
+
+  // Takes step i_ (1-based); false once the run has ended (all steps taken, diverged, Newton
+  // failed, or stopped early), and then it takes no more.
+  [[gnu::always_inline]] inline bool advance() {
+    if (done_) return false;
+    const double h = spec_.dt;
+    const double t_prev = (i_ - 1) * h, t = i_ * h;
+    State<D> next = y_;
+    const StepStatus st = stepper_.step(scene_, next, t_prev, h);
+    if (!all_finite(next) || st != StepStatus::Ok) {
+      r_.status = st != StepStatus::Ok ? RunStatus::NoConvergence : RunStatus::Diverged;
+      r_.failed_step = i_;
+      r_.failed_t = t;
+      return end();
     }
-  };
-  keep(0, 0.0, y, e0);
-  if (spec.energy_rate) fit_point(0.0, e0);
+    y_ = next;
+    const double e = scene_.energy(y_.x, y_.v);
+    if (e0_ != 0) {
+      ratio_ = e / e0_;
+      ratio_max_ = std::max(ratio_max_, ratio_);
+    }
+    if (spec_.energy_rate) fit_point(t, e);
+    if constexpr (HasExact<S>) {
+      if (spec_.errors) track_error(tracker_, t, y_, r_, err_sq_sum_);
+    }
+    keep(i_, t, y_, e);
+    observe_(i_, t, y_);
+    ++i_;
+    if (ratio_ > spec_.stop_above || ratio_ < spec_.stop_below) {
+      if (ratio_ > spec_.stop_above) {
+        r_.status = RunStatus::Diverged;
+        r_.failed_step = i_ - 1;
+        r_.failed_t = t;
+      }
+      return end();
+    }
+    if (i_ > spec_.steps) return end();
+    return true;
+  }
 
-  double err_sq_sum = 0;
-  long long i = 0;
-  [[maybe_unused]] auto tracker = [&] {
+  // Completes the result, once advance() has returned false. Call once.
+  void finish() {
+    r_.steps = i_ - 1;
+    r_.t_final = r_.steps * spec_.dt;
+    r_.final = y_;
+    finish_run(r_, HasExact<S> && spec_.errors, err_sq_sum_, ratio_, ratio_max_);
+    if (spec_.energy_rate && m2_t_ > 0) r_.energy_rate = c_tl_ / m2_t_;
+    // The last finite state is always kept, also when the run ended early.
+    if (plan_.size() > 0 && (r_.samples.empty() || r_.samples.back().t != r_.t_final))
+      r_.samples.push_back({r_.t_final, y_.x, y_.v, scene_.energy(y_.x, y_.v)});
+  }
+
+ private:
+  static auto make_tracker(const S& scene) {
     if constexpr (HasExact<S>) return ExactTracker<S>(scene);
     else return 0;
-  }();
-  Stepper<M, S> stepper;  // a multistep method's memory; nothing for a one-step method
-  for (i = 1; i <= spec.steps; ++i) {
-    const double t_prev = (i - 1) * h, t = i * h;
-    State<D> next = y;
-    const StepStatus st = stepper.step(scene, next, t_prev, h);
-    if (!all_finite(next) || st != StepStatus::Ok) {
-      r.status = st != StepStatus::Ok ? RunStatus::NoConvergence : RunStatus::Diverged;
-      r.failed_step = i;
-      r.failed_t = t;
-      break;
-    }
-    y = next;
-    const double e = scene.energy(y.x, y.v);
-    if (e0 != 0) {
-      ratio = e / e0;
-      ratio_max = std::max(ratio_max, ratio);
-    }
-    if (spec.energy_rate) fit_point(t, e);
-    if constexpr (HasExact<S>) {
-      if (spec.errors) track_error(tracker, t, y, r, err_sq_sum);
-    }
-    keep(i, t, y, e);
-    observe(i, t, y);
-    if (ratio > spec.stop_above || ratio < spec.stop_below) {
-      if (ratio > spec.stop_above) {
-        r.status = RunStatus::Diverged;
-        r.failed_step = i;
-        r.failed_t = t;
-      }
-      ++i;
-      break;
+  }
+  bool end() {  // i_ - 1 stays the number of steps completed
+    done_ = true;
+    return false;
+  }
+  // Welford accumulators for the slope of ln E on t.
+  void fit_point(double t, double e) {
+    if (!(e > 0) || !std::isfinite(e)) return;
+    const double l = std::log(e);
+    n_fit_ += 1;
+    const double dt_ = t - mean_t_;
+    mean_t_ += dt_ / n_fit_;
+    mean_l_ += (l - mean_l_) / n_fit_;
+    c_tl_ += dt_ * (l - mean_l_);
+    m2_t_ += dt_ * (t - mean_t_);
+  }
+  void keep(long long i, double t, const State<D>& s, double e) {
+    if (i == next_sample_ && sample_k_ < plan_.size()) {
+      r_.samples.push_back({t, s.x, s.v, e});
+      next_sample_ = plan_.at(++sample_k_);
     }
   }
-  r.steps = i - 1;
-  r.t_final = r.steps * h;
-  r.final = y;
-  finish_run(r, HasExact<S> && spec.errors, err_sq_sum, ratio, ratio_max);
-  if (spec.energy_rate && m2_t > 0) r.energy_rate = c_tl / m2_t;
-  // The last finite state is always kept, also when the run ended early.
-  if (plan.size() > 0 && (r.samples.empty() || r.samples.back().t != r.t_final))
-    r.samples.push_back({r.t_final, y.x, y.v, scene.energy(y.x, y.v)});
+
+  const S& scene_;
+  const RunSpec spec_;
+  Observer observe_;
+  const SamplePlan plan_;
+  State<D> y_;
+  RunResult<D>& r_;
+  double e0_ = 0, ratio_max_ = 1, ratio_ = 1;
+  double n_fit_ = 0, mean_t_ = 0, mean_l_ = 0, c_tl_ = 0, m2_t_ = 0;
+  double err_sq_sum_ = 0;
+  long long i_ = 1, next_sample_ = 0, sample_k_ = 0;
+  bool done_ = spec_.steps <= 0;
+  [[no_unique_address]] decltype(make_tracker(std::declval<const S&>())) tracker_;
+  [[no_unique_address]] Stepper<M, S> stepper_;  // a multistep method's memory; nothing for a one-step method
+};
+
+template <class M, Scene S, class Observer = NoObserver>
+RunResult<S::dim> simulate(const S& scene, const RunSpec& spec, Observer&& observe = {}) {
+  RunResult<S::dim> r;
+  Run<M, S, Observer> run(scene, spec, r, std::forward<Observer>(observe));
+  while (run.advance()) {
+  }
+  run.finish();
   return r;
 }
 

@@ -31,10 +31,13 @@ struct Spring {
   double m, k, gamma, L, g;
   double inv_m = 1 / m;  // initialized after m (declaration order)
   double weight = m * g;
+  // Stored, not recomputed in each energy(): in a lane (core/lanes.hpp) the compiler cannot hoist
+  // the division out of the stepping loop.
+  double equilibrium_y = -L - m * g / k;
 
   explicit Spring(std::span<const double> p) : m(p[0]), k(p[1]), gamma(p[2]), L(p[3]), g(p[4]) {}
 
-  double equilibrium() const { return -L - m * g / k; }
+  double equilibrium() const { return equilibrium_y; }
   double omega() const { return std::sqrt(k / m); }              // undamped angular frequency
   double critical_damping() const { return 2 * std::sqrt(k * m); }  // gamma^2 = 4 k m
   // An eigenvalue of m u'' + gamma u' + k u = 0 (notation of flow below): alpha + i beta when

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <new>
 
+#include "core/lanes.hpp"
 #include "core/methods.hpp"
 #include "core/scenes.hpp"
 #include "core/simulate.hpp"
@@ -50,6 +51,34 @@ template <class M, class S> long allocations_in_run(long long steps, long long s
   const long used = g_allocations.load() - before;
   EXPECT_EQ(r.steps, steps);
   return used;
+}
+
+// Runs in lanes (core/lanes.hpp): the lanes are allocated once, before stepping, so 9 runs of
+// 4000 steps through 4 lanes allocate what 9 runs of 200 steps do.
+template <class M, class S> long allocations_in_lanes(long long steps) {
+  const S scene = make_default_scene<S>();
+  RunSpec spec;
+  spec.dt = 0.001;
+  spec.steps = steps;
+  spec.energy_rate = true;
+  long long taken = 0;
+  const long before = g_allocations.load();
+  simulate_lanes<M, S>(
+      9, 4, [&](std::size_t) { return std::pair(scene, spec); },
+      [&](std::size_t, const RunResult<S::dim>& r, const S&) { taken += r.steps; });
+  const long used = g_allocations.load() - before;
+  EXPECT_EQ(taken, 9 * steps);
+  return used;
+}
+
+TEST(Allocation, LanesAllocateOnlyBeforeStepping) {
+  [&]<std::size_t... J>(std::index_sequence<J...>) {
+    (([&]<class M>() {
+       EXPECT_EQ((allocations_in_lanes<M, Spring>(200)), (allocations_in_lanes<M, Spring>(4000))) << M::info.name;
+       EXPECT_LE((allocations_in_lanes<M, Spring>(200)), 1) << M::info.name;
+     }.template operator()<std::tuple_element_t<J, Methods>>()),
+     ...);
+  }(std::make_index_sequence<method_count>{});
 }
 
 TEST(Allocation, NoneInAnyStepOfAnyMethodOnAnyScene) {
