@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "analysis/parallel.hpp"
+#include "analysis/shard.hpp"
 #include "core/scenes.hpp"
 
 namespace steplab {
@@ -71,20 +71,20 @@ CollisionResult collision_study(const CollisionConfig& c) {
   const Bounce bounce(c.bounce_params);
   const Falling falling(c.falling_params);
   const std::size_t nm = c.methods.size(), nd = c.dts.size();
-  out.bounce.resize(nm * nd);
-  out.triangle.resize(nm);
-  parallel_for(nm * nd + nm, c.threads, [&](std::size_t task) {
+  std::vector<CollisionRun> runs = study_map<CollisionRun>(nm * nd + nm, c.threads, [&](std::size_t task) {
     if (task < nm * nd) {
       const std::size_t m = c.methods[task / nd];
-      out.bounce[task] = with_method(m, [&]<class M>() { return bounce_run<M>(bounce, m, c.dts[task % nd], c.t_end); });
-    } else {
-      const std::size_t i = task - nm * nd, m = c.methods[i];
-      out.triangle[i] = with_method(m, [&]<class M>() -> CollisionRun {
-        if constexpr (!applies<M, Falling>()) return {};
-        else return triangle_run<M>(falling, m, c.triangle_dt, c.t_end, c.path_samples);
-      });
+      return with_method(m, [&]<class M>() { return bounce_run<M>(bounce, m, c.dts[task % nd], c.t_end); });
     }
+    const std::size_t m = c.methods[task - nm * nd];
+    return with_method(m, [&]<class M>() -> CollisionRun {
+      if constexpr (!applies<M, Falling>()) return {};
+      else return triangle_run<M>(falling, m, c.triangle_dt, c.t_end, c.path_samples);
+    });
   });
+  out.triangle.assign(std::make_move_iterator(runs.begin() + static_cast<std::ptrdiff_t>(nm * nd)), std::make_move_iterator(runs.end()));
+  runs.resize(nm * nd);
+  out.bounce = std::move(runs);
   return out;
 }
 

@@ -30,6 +30,11 @@ struct CollisionRun {
   std::vector<Sample<6>> path;        // falling scene only
 };
 
+template <class F> void encode_fields(CollisionRun& r, F&& f) {  // analysis/shard.hpp
+  f(r.method), f(r.dt), f(r.status), f(r.failed_step), f(r.failed_t), f(r.energy_ratio_final), f(r.energy_ratio_max);
+  f(r.max_penetration), f(r.bounces), f(r.path);
+}
+
 struct CollisionConfig {
   std::vector<double> bounce_params, falling_params;  // table order
   std::vector<std::size_t> methods;

@@ -5,7 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "analysis/parallel.hpp"
+#include "analysis/lanes.hpp"
+#include "analysis/shard.hpp"
 #include "analysis/timing.hpp"
 #include "core/dopri5.hpp"
 #include "core/scenes.hpp"
@@ -43,14 +44,21 @@ namespace {
 
 constexpr double kReferenceMargin = 100;  // a fitted error stands this far above the reference's
 
-template <Scene S, class M>
-ConvergenceRecord one_run(const S& s, std::size_t method, double dt, double t_end, const ConvergenceResult& study) {
+RunSpec convergence_spec(double dt, double t_end, const ConvergenceResult& study) {
   RunSpec spec;
   spec.dt = dt;
   spec.steps = steps_for(t_end, dt);
   spec.errors = !study.uses_reference;
-  const RunResult<S::dim> r = simulate<M>(s, spec);
-  ConvergenceRecord rec{method,         dt,          spec.steps,  r.status, r.failed_step, r.error_final,
+  return spec;
+}
+
+// The record of a run of `method` at dt: its errors against the exact solution or the
+// reference, its round-off floor, and Diverged if it blew up.
+template <Scene S>
+ConvergenceRecord record_of(const S& s, std::size_t method, double dt, double t_end, const RunResult<S::dim>& r,
+                            const ConvergenceResult& study) {
+  const long long steps = steps_for(t_end, dt);
+  ConvergenceRecord rec{method,         dt,          steps,       r.status, r.failed_step, r.error_final,
                         r.error_v_final, r.error_max, r.error_rms, 0};
   double target_norm = 0;  // |x(t_end)|, exact or reference
   if (study.uses_reference) {
@@ -64,7 +72,7 @@ ConvergenceRecord one_run(const S& s, std::size_t method, double dt, double t_en
     if constexpr (HasExact<S>) target_norm = exact(s, t_end).x.norm();
   }
   const double scale = std::max(s.initial().x.norm(), target_norm);
-  rec.floor = roundoff_floor(scale, spec.steps);
+  rec.floor = roundoff_floor(scale, steps);
   const double largest = study.uses_reference ? rec.error_final : rec.error_max;
   if (rec.status == RunStatus::Ok && blown_up(largest, scale)) rec.status = RunStatus::Diverged;
   if (rec.status != RunStatus::Ok)
@@ -147,14 +155,21 @@ ConvergenceResult convergence_study(const ConvergenceConfig& config) {
     if (out.uses_reference && config.fit_error != ErrorKind::Final)
       throw std::invalid_argument("a reference solution gives the final error only");
     if (out.uses_reference) out.reference = reference_solution(scene, config.t_end);
-    parallel_for(nm * nd, config.threads, [&](std::size_t task) {
-      const std::size_t m = task / nd, i = task % nd;
-      // the most expensive runs (small dt) first would balance better; the queue is dynamic anyway
-      out.records[task] = with_method(config.methods[m], [&]<class M>() {
-        if constexpr (!applies<M, S>()) return ConvergenceRecord{};
-        else return one_run<S, M>(scene, config.methods[m], out.dts[i], config.t_end, out);
-      });
+    // a task per method: its dt sweep in lanes, the smallest dt (the longest run) first, so that
+    // the short runs fill the lanes while it runs
+    const auto sweeps = study_map<std::vector<ConvergenceRecord>>(nm, config.threads, [&](std::size_t m) {
+      const std::size_t method = config.methods[m];
+      std::vector<ConvergenceRecord> sweep(nd);
+      run_batch<S>(
+          method, nd, config.lanes,
+          [&](std::size_t k) { return std::pair(scene, convergence_spec(out.dts[nd - 1 - k], config.t_end, out)); },
+          [&](std::size_t k, const RunResult<S::dim>& r, const S&) {
+            const std::size_t i = nd - 1 - k;
+            sweep[i] = record_of(scene, method, out.dts[i], config.t_end, r, out);
+          });
+      return sweep;
     });
+    for (std::size_t m = 0; m < nm; ++m) std::copy(sweeps[m].begin(), sweeps[m].end(), out.records.begin() + static_cast<std::ptrdiff_t>(m * nd));
   });
 
   if (config.timing) time_runs(out);

@@ -5,7 +5,8 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "analysis/parallel.hpp"
+#include "analysis/lanes.hpp"
+#include "analysis/shard.hpp"
 #include "core/methods.hpp"
 #include "analysis/step_map.hpp"
 
@@ -26,6 +27,17 @@ constexpr double kAnchorShift = 1000;
 // undamped has some), so both scan by 1.05 there.
 constexpr double kPredictFactor = 1.05, kMeasureFactor = 2, kAgainFactor = 1.05;
 
+// A map row's task: the predicted dt* at its damping, and each cell measured and predicted.
+struct MapRow {
+  double boundary = 0;
+  std::vector<char> stable, predicted;
+};
+template <class F> void encode_fields(MapRow& r, F&& f) {
+  f(r.boundary);
+  f(r.stable);
+  f(r.predicted);
+}
+
 }  // namespace
 
 Spring linear_spring(const std::vector<double>& params, double gamma) {
@@ -42,31 +54,71 @@ namespace {
 // step, then by kAgainFactor), each edge then bisected (in log h) down to relative `precision`:
 //   dt*    the largest h with every step in [lo, h] stable: 0 if unstable at lo, inf if never;
 //   again  the smallest h > dt* from which the scan finds stable steps again (inf if none up to hi).
+// unstable(hs) gives a verdict per step (a vector of char); it is asked `width` steps at a time:
+// the next steps of a scan (those past the first that decides are wasted), or the midpoints of
+// the next log2(width + 1) rounds of bisection, one for each way the rounds before could go
+// (the walk through them takes exactly the midpoints, in order, that one-at-a-time bisection
+// would). So the set found is the same for every width; width 1 is plain bisection.
 template <class Unstable>
-StableSet stable_set(double lo, double hi, double factor, double precision, Unstable unstable) {
+StableSet stable_set(double lo, double hi, double factor, double precision, int width, Unstable unstable) {
+  const double top = hi * (1 + 1e-12);
+  const auto wide = [&](double a, double b) { return std::max(a, b) / std::min(a, b) - 1 > precision; };
   const auto bisect = [&](double good, double bad) {  // the edge between a stable and an unstable h
-    while (std::max(good, bad) / std::min(good, bad) - 1 > precision) {
-      const double mid = std::sqrt(good * bad);
-      (unstable(mid) ? bad : good) = mid;
+    int depth = 1;
+    while ((2 << depth) - 1 <= width) ++depth;  // 2^depth - 1 midpoints per round
+    struct Node {
+      double mid;
+      int if_unstable, if_stable;  // the nodes of the next round, -1 if none
+    };
+    std::vector<Node> nodes;
+    const auto tree = [&](const auto& self, double g, double b, int d) -> int {
+      if (d == 0 || !wide(g, b)) return -1;
+      const double mid = std::sqrt(g * b);
+      const int k = static_cast<int>(nodes.size());
+      nodes.push_back({mid, -1, -1});
+      nodes[k].if_unstable = self(self, g, mid, d - 1);
+      nodes[k].if_stable = self(self, mid, b, d - 1);
+      return k;
+    };
+    while (wide(good, bad)) {
+      nodes.clear();
+      tree(tree, good, bad, depth);
+      std::vector<double> hs;
+      for (const Node& n : nodes) hs.push_back(n.mid);
+      const std::vector<char> verdict = unstable(hs);
+      for (int k = 0; k >= 0 && wide(good, bad);) {
+        const bool up = verdict[k];
+        (up ? bad : good) = nodes[k].mid;
+        k = up ? nodes[k].if_unstable : nodes[k].if_stable;
+      }
     }
     return good;
   };
+  // The first h of lo, lo f, lo f^2, ... (up to top) whose verdict is `want`, and the one before
+  // it (0 if none); h > top if there is none.
+  const auto first = [&](double h, double f, bool want, double& before) {
+    before = 0;
+    for (;;) {
+      std::vector<double> hs;
+      for (double x = h; hs.size() < static_cast<std::size_t>(std::max(width, 1)) && x <= top; x *= f) hs.push_back(x);
+      if (hs.empty()) return h;
+      const std::vector<char> verdict = unstable(hs);
+      for (std::size_t k = 0; k < hs.size(); ++k) {
+        if (static_cast<bool>(verdict[k]) == want) return hs[k];
+        before = hs[k];
+      }
+      h = hs.back() * f;
+    }
+  };
   StableSet out{kInf, kInf};
-  double h = lo, last_good = 0;
-  for (; h <= hi * (1 + 1e-12); h *= factor) {
-    if (unstable(h)) break;
-    last_good = h;
-  }
-  if (h > hi * (1 + 1e-12)) return out;  // stable everywhere scanned
+  double last_good = 0;
+  const double h = first(lo, factor, true, last_good);
+  if (h > top) return out;  // stable everywhere scanned
   out.dt_star = last_good == 0 ? 0 : bisect(last_good, h);
   double last_bad = h;
-  for (h *= kAgainFactor; h <= hi * (1 + 1e-12); h *= kAgainFactor) {
-    if (!unstable(h)) {
-      out.again = bisect(h, last_bad);
-      break;
-    }
-    last_bad = h;
-  }
+  const double again = first(h * kAgainFactor, kAgainFactor, false, last_bad);
+  if (last_bad == 0) last_bad = h;
+  if (again <= top) out.again = bisect(again, last_bad);
   return out;
 }
 
@@ -138,28 +190,54 @@ bool predicted_stable(std::size_t method, const Spring& s, double h) {
 
 StableSet predicted_stable_set(std::size_t method, const Spring& s) {
   const double w = s.omega();
-  return stable_set(kPredictMinWh / w, kMaxWh / w, kPredictFactor, 1e-10, [&](double h) { return !predicted_stable(method, s, h); });
+  return stable_set(kPredictMinWh / w, kMaxWh / w, kPredictFactor, 1e-10, 1, [&](const std::vector<double>& hs) {
+    std::vector<char> out;
+    for (double h : hs) out.push_back(!predicted_stable(method, s, h));
+    return out;
+  });
 }
 
-RateRun measure_rate(std::size_t method, const Spring& s, double h, long long steps) {
+namespace {
+
+RunSpec rate_spec(double h, long long steps, bool errors) {
   RunSpec spec;
   spec.dt = h;
   spec.steps = steps;
   spec.energy_rate = true;
+  spec.errors = errors;
   spec.stop_above = 0.01 * kAnchorShift * kAnchorShift;  // well before the anchor
   spec.stop_below = 1e-20;
-  return with_method(method, [&]<class M>() {
-    const RunResult<1> r = simulate<M>(s, spec);
-    const bool ok = r.status == RunStatus::Ok;
-    return RateRun{r.energy_rate, r.energy_ratio_final, r.energy_ratio_max, ok ? r.error_final : kInf,
-                   r.status, r.steps, r.failed_step};
-  });
+  return spec;
 }
 
-StableSet measured_stable_set(std::size_t method, const Spring& s) {
+RateRun rate_run(const RunResult<1>& r) {
+  const bool ok = r.status == RunStatus::Ok;
+  return RateRun{r.energy_rate, r.energy_ratio_final, r.energy_ratio_max, ok ? r.error_final : kInf,
+                 r.status,      r.steps,             r.failed_step};
+}
+
+}  // namespace
+
+RateRun measure_rate(std::size_t method, const Spring& s, double h, long long steps) {
+  return with_method(method, [&]<class M>() { return rate_run(simulate<M>(s, rate_spec(h, steps, true))); });
+}
+
+std::vector<RateRun> measure_rates(std::size_t method, const std::vector<Spring>& s, const std::vector<double>& h,
+                                   long long steps, bool errors, int lanes) {
+  std::vector<RateRun> out(h.size());
+  run_batch<Spring>(method, h.size(), lanes, [&](std::size_t i) { return std::pair(s[i], rate_spec(h[i], steps, errors)); },
+                    [&](std::size_t i, const RunResult<1>& r, const Spring&) { out[i] = rate_run(r); });
+  return out;
+}
+
+StableSet measured_stable_set(std::size_t method, const Spring& s, int lanes) {
   const double w = s.omega();
-  return stable_set(kMeasureMinWh / w, kMaxWh / w, kMeasureFactor, 1e-4,
-                        [&](double h) { return !measure_rate(method, s, h).stable(); });
+  return stable_set(kMeasureMinWh / w, kMaxWh / w, kMeasureFactor, 1e-4, lanes, [&](const std::vector<double>& hs) {
+    const std::vector<RateRun> runs = measure_rates(method, std::vector<Spring>(hs.size(), s), hs, kRateSteps, false, lanes);
+    std::vector<char> out;
+    for (const RateRun& r : runs) out.push_back(!r.stable());
+    return out;
+  });
 }
 
 std::vector<double> default_dampings(const Spring& s) {
@@ -173,28 +251,32 @@ std::vector<double> default_dampings(const Spring& s) {
 
 std::vector<ThresholdRow> threshold_study(const StabilityConfig& c) {
   const std::size_t nm = c.methods.size(), ng = c.threshold_dampings.size();
-  std::vector<ThresholdRow> rows(nm * ng);
-  parallel_for(nm * ng, c.threads, [&](std::size_t task) {
+  return study_map<ThresholdRow>(nm * ng, c.threads, [&](std::size_t task) {
     const std::size_t m = c.methods[task / ng];
     const double gamma = c.threshold_dampings[task % ng];
     const Spring s = linear_spring(c.params, gamma);
-    const StableSet predicted = predicted_stable_set(m, s), measured = measured_stable_set(m, s);
-    rows[task] = {m, gamma, predicted.dt_star, measured.dt_star, predicted.again, measured.again};
+    const StableSet predicted = predicted_stable_set(m, s), measured = measured_stable_set(m, s, c.lanes);
+    return ThresholdRow{m, gamma, predicted.dt_star, measured.dt_star, predicted.again, measured.again};
   });
-  return rows;
 }
 
 std::vector<SweepRow> damping_sweep(const StabilityConfig& c) {
   const std::vector<double> gammas =
       c.sweep_dampings.empty() ? default_dampings(linear_spring(c.params, c.params[2])) : c.sweep_dampings;
   const std::size_t nm = c.methods.size(), nd = c.sweep_dts.size(), ng = gammas.size();
-  std::vector<SweepRow> rows(nm * nd * ng);
-  parallel_for(rows.size(), c.threads, [&](std::size_t task) {
-    const std::size_t m = c.methods[task / (nd * ng)];
-    const double dt = c.sweep_dts[(task / ng) % nd], gamma = gammas[task % ng];
-    const Spring s = linear_spring(c.params, gamma);
-    rows[task] = {m, dt, gamma, measure_rate(m, s, dt), predicted_rate(m, s, dt)};
+  std::vector<Spring> springs;
+  for (double gamma : gammas) springs.push_back(linear_spring(c.params, gamma));
+  // a task per (method, dt): its dampings in lanes
+  const auto parts = study_map<std::vector<SweepRow>>(nm * nd, c.threads, [&](std::size_t task) {
+    const std::size_t m = c.methods[task / nd];
+    const double dt = c.sweep_dts[task % nd];
+    const std::vector<RateRun> runs = measure_rates(m, springs, std::vector<double>(ng, dt), kRateSteps, true, c.lanes);
+    std::vector<SweepRow> rows;
+    for (std::size_t g = 0; g < ng; ++g) rows.push_back({m, dt, gammas[g], runs[g], predicted_rate(m, springs[g], dt)});
+    return rows;
   });
+  std::vector<SweepRow> rows;
+  for (const auto& part : parts) rows.insert(rows.end(), part.begin(), part.end());
   return rows;
 }
 
@@ -207,24 +289,29 @@ StabilityMap stability_map(const StabilityConfig& c) {
     map.dt.push_back(c.map_dt_min * std::pow(c.map_dt_max / c.map_dt_min, i / double(std::max(1, c.map_dt_points - 1))));
   for (int j = 0; j < c.map_damping_points; ++j) map.damping.push_back(gmax * j / double(std::max(1, c.map_damping_points - 1)));
   const std::size_t nm = c.methods.size(), ng = map.damping.size(), nd = map.dt.size();
-  std::vector<char> cells(nm * ng * nd);
-  map.boundary.assign(nm, std::vector<double>(ng));
-  std::vector<char> predicted(cells.size());
   // one task per (method, damping) row: its predicted dt* and every cell of the row
-  parallel_for(nm * ng, c.threads, [&](std::size_t task) {
+  const std::vector<MapRow> rows = study_map<MapRow>(nm * ng, c.threads, [&](std::size_t task) {
     const std::size_t mi = task / ng, gi = task % ng;
     const Spring s = linear_spring(c.params, map.damping[gi]);
-    map.boundary[mi][gi] = predicted_stable_set(c.methods[mi], s).dt_star;
+    MapRow row{predicted_stable_set(c.methods[mi], s).dt_star, {}, {}};
+    const std::vector<RateRun> runs = measure_rates(c.methods[mi], std::vector<Spring>(nd, s), map.dt, c.map_steps, false, c.lanes);
     for (std::size_t di = 0; di < nd; ++di) {
-      cells[task * nd + di] = measure_rate(c.methods[mi], s, map.dt[di], c.map_steps).stable();
-      predicted[task * nd + di] = predicted_stable(c.methods[mi], s, map.dt[di]);
+      row.stable.push_back(runs[di].stable());
+      row.predicted.push_back(predicted_stable(c.methods[mi], s, map.dt[di]));
     }
+    return row;
   });
+  map.boundary.assign(nm, std::vector<double>(ng));
   map.stable.assign(nm, std::vector<std::vector<bool>>(ng, std::vector<bool>(nd)));
   map.predicted = map.stable;
-  for (std::size_t i = 0; i < cells.size(); ++i) {
-    map.stable[i / (ng * nd)][(i / nd) % ng][i % nd] = cells[i];
-    map.predicted[i / (ng * nd)][(i / nd) % ng][i % nd] = predicted[i];
+  for (std::size_t task = 0; task < rows.size(); ++task) {
+    if (rows[task].stable.size() != nd) continue;  // another shard's row (analysis/shard.hpp)
+    const std::size_t mi = task / ng, gi = task % ng;
+    map.boundary[mi][gi] = rows[task].boundary;
+    for (std::size_t di = 0; di < nd; ++di) {
+      map.stable[mi][gi][di] = rows[task].stable[di];
+      map.predicted[mi][gi][di] = rows[task].predicted[di];
+    }
   }
   return map;
 }

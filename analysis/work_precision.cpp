@@ -7,7 +7,8 @@
 
 #include "analysis/convergence.hpp"
 #include "analysis/fit.hpp"
-#include "analysis/parallel.hpp"
+#include "analysis/lanes.hpp"
+#include "analysis/shard.hpp"
 #include "analysis/peers.hpp"
 #include "analysis/timing.hpp"
 #include "core/dopri5.hpp"
@@ -39,13 +40,18 @@ template <class F> double min_time(F&& run) {
   return *std::min_element(times.begin(), times.end());
 }
 
-template <HasExact S, class M> WorkPoint fixed_point(const S& s, std::size_t m, double dt, double t_end) {
-  WorkPoint p{std::string(method_infos[m].name), false, dt};
-  const Counted<S> counted(s);
+RunSpec fixed_spec(double dt, double t_end) {
   RunSpec spec;
   spec.dt = dt;
   spec.steps = steps_for(t_end, dt);
-  const RunResult<S::dim> r = simulate<M>(counted, spec);
+  return spec;
+}
+
+// The point of a run of method m at dt on the counting scene.
+template <HasExact S> WorkPoint fixed_point_of(const Counted<S>& counted, std::size_t m, double dt, double t_end,
+                                               const RunResult<S::dim>& r) {
+  const S& s = counted;
+  WorkPoint p{std::string(method_infos[m].name), false, dt};
   const State<S::dim> ex = exact(s, t_end);
   p.error = r.error_max;
   p.status = r.status;
@@ -55,6 +61,25 @@ template <HasExact S, class M> WorkPoint fixed_point(const S& s, std::size_t m, 
   p.force_evaluations = counted.forces;
   p.jacobian_evaluations = counted.jacobian_calls;
   return p;
+}
+
+// Method m's points at each of dts, run in lanes (analysis/lanes.hpp).
+template <HasExact S> std::vector<WorkPoint> fixed_points(const S& s, std::size_t m, const std::vector<double>& dts,
+                                                          double t_end, int lanes) {
+  std::vector<WorkPoint> out(dts.size());
+  const std::size_t n = dts.size();  // the smallest dt (the longest run) first
+  run_batch<Counted<S>>(
+      m, n, lanes, [&](std::size_t k) { return std::pair(Counted<S>(s), fixed_spec(dts[n - 1 - k], t_end)); },
+      [&](std::size_t k, const RunResult<S::dim>& r, const Counted<S>& counted) {
+        out[n - 1 - k] = fixed_point_of(counted, m, dts[n - 1 - k], t_end, r);
+      });
+  return out;
+}
+
+template <HasExact S, class M> WorkPoint fixed_point(const S& s, std::size_t m, double dt, double t_end) {
+  const Counted<S> counted(s);
+  const RunResult<S::dim> r = simulate<M>(counted, fixed_spec(dt, t_end));
+  return fixed_point_of(counted, m, dt, t_end, r);
 }
 
 template <HasExact S> WorkPoint dopri5_point(const S& s, double tol, double t_end) {
@@ -108,20 +133,17 @@ template <HasExact S> double time_point(const S& s, const WorkPoint& p, double t
 template <HasExact S>
 std::vector<WorkPoint> scene_points(const S& s, const WorkPrecisionConfig& c, const std::vector<double>& dts,
                                     double t_end, const std::vector<std::size_t>& methods) {
-  const std::size_t nf = methods.size() * dts.size(), nt = c.tolerances.size();
-  std::vector<WorkPoint> points(nf + 3 * nt);
-  parallel_for(points.size(), c.threads, [&](std::size_t task) {
-    if (task < nf) {
-      const std::size_t m = methods[task / dts.size()];
-      points[task] = with_method(m, [&]<class M>() { return fixed_point<S, M>(s, m, dts[task % dts.size()], t_end); });
-    } else if (task < nf + nt) {
-      points[task] = dopri5_point(s, c.tolerances[task - nf], t_end);
-    } else if (task < nf + 2 * nt) {
-      points[task] = peer_point<OdeintDopri5<S>>("odeint_dopri5", s, c.tolerances[task - nf - nt], t_end);
-    } else {
-      points[task] = peer_point<CvodeBdf<S>>("cvode_bdf", s, c.tolerances[task - nf - 2 * nt], t_end);
-    }
+  const std::size_t nm = methods.size(), nf = nm * dts.size(), nt = c.tolerances.size();
+  // tasks: a method's dt sweep (in lanes), then one per tolerance and adaptive solver
+  const auto parts = study_map<std::vector<WorkPoint>>(nm + 3 * nt, c.threads, [&](std::size_t job) {
+    if (job < nm) return fixed_points(s, methods[job], dts, t_end, c.lanes);
+    const std::size_t task = job - nm + nf;
+    if (task < nf + nt) return std::vector{dopri5_point(s, c.tolerances[task - nf], t_end)};
+    if (task < nf + 2 * nt) return std::vector{peer_point<OdeintDopri5<S>>("odeint_dopri5", s, c.tolerances[task - nf - nt], t_end)};
+    return std::vector{peer_point<CvodeBdf<S>>("cvode_bdf", s, c.tolerances[task - nf - 2 * nt], t_end)};
   });
+  std::vector<WorkPoint> points;
+  for (const auto& part : parts) points.insert(points.end(), part.begin(), part.end());
   if (c.timing)
     for (WorkPoint& p : points)
       if (p.status == RunStatus::Ok) p.seconds = time_point(s, p, t_end);
@@ -187,17 +209,15 @@ std::vector<StableStep> stable_steps(const WorkPrecisionConfig& c, const std::ve
   for (const std::size_t m : c.methods)
     if (!method_infos[m].implicit) out.push_back({std::string(method_infos[m].name), 0, -1});
   const Spring slow = slow_mode_spring(chain);
-  parallel_for(out.size(), c.threads, [&](std::size_t task) {
+  const std::vector<double> accuracy = study_map<double>(out.size(), c.threads, [&](std::size_t task) {
+    return dt_reaching(fixed_points(slow, *find_method(out[task].method), dts, c.t_end, c.lanes), kLimitErrorLevel);
+  });
+  for (std::size_t task = 0; task < out.size(); ++task) {
     StableStep& s = out[task];
     for (const WorkPoint& p : points)
       if (p.method == s.method && p.status == RunStatus::Ok) s.largest_stable_dt = std::max(s.largest_stable_dt, p.setting);
-    const std::size_t m = *find_method(s.method);
-    std::vector<WorkPoint> sweep;
-    with_method(m, [&]<class M>() {
-      for (const double dt : dts) sweep.push_back(fixed_point<Spring, M>(slow, m, dt, c.t_end));
-    });
-    s.accuracy_dt = dt_reaching(sweep, kLimitErrorLevel);
-  });
+    s.accuracy_dt = accuracy[task];
+  }
   return out;
 }
 
@@ -209,21 +229,19 @@ StiffnessRow stiffness_row(const WorkPrecisionConfig& c, double k2) {
   const Chain s(p);
   const std::vector<double> dts = sweep_steps(c.sweep_t_end, 0.5, 1e-7, 57);  // 8 per decade
   const auto reaches = [&](const WorkPoint& w) { return w.status == RunStatus::Ok && w.error <= c.crossover_error; };
-  std::vector<WorkPoint> found(c.methods.size() + 1);  // the methods, then dopri5
-  parallel_for(found.size(), c.threads, [&](std::size_t task) {
+  // the methods, then dopri5
+  std::vector<WorkPoint> found = study_map<WorkPoint>(c.methods.size() + 1, c.threads, [&](std::size_t task) {
     const auto first_reaching = [&](const std::vector<double>& settings, auto&& run) {
       for (const double setting : settings)
         if (WorkPoint w = run(setting); reaches(w)) return w;
       return WorkPoint{};
     };
-    if (task == c.methods.size()) {
-      found[task] = first_reaching(c.tolerances, [&](double tol) { return dopri5_point(s, tol, c.sweep_t_end); });
-    } else {
-      const std::size_t m = c.methods[task];
-      found[task] = with_method(m, [&]<class M>() {
-        return first_reaching(dts, [&](double dt) { return fixed_point<Chain, M>(s, m, dt, c.sweep_t_end); });
-      });
-    }
+    if (task == c.methods.size())
+      return first_reaching(c.tolerances, [&](double tol) { return dopri5_point(s, tol, c.sweep_t_end); });
+    const std::size_t m = c.methods[task];
+    return with_method(m, [&]<class M>() {
+      return first_reaching(dts, [&](double dt) { return fixed_point<Chain, M>(s, m, dt, c.sweep_t_end); });
+    });
   });
   StiffnessRow row{k2, k2 / p[2], "", ""};
   for (WorkPoint& w : found) {

@@ -21,6 +21,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/lanes.hpp"
 #include "core/simulate.hpp"
 
 namespace steplab {
@@ -37,6 +38,11 @@ struct WorkPoint {
   long long steps = 0, force_evaluations = 0, jacobian_evaluations = 0;
   double seconds = -1;   // minimum of the timings; -1 without timing
 };
+
+template <class F> void encode_fields(WorkPoint& p, F&& f) {  // analysis/shard.hpp
+  f(p.method), f(p.adaptive), f(p.setting), f(p.status), f(p.error), f(p.steps), f(p.force_evaluations);
+  f(p.jacobian_evaluations), f(p.seconds);
+}
 
 struct Cheapest {
   double error_level;
@@ -78,6 +84,7 @@ struct WorkPrecisionConfig {
   int points = 14;                     // dt sweep points per decade range below
   bool timing = true;
   unsigned threads = 0;
+  int lanes = kDefaultLanes;  // runs stepped together (core/lanes.hpp); 1: one at a time
 };
 
 inline constexpr int kMinRepeats = 5;

@@ -13,6 +13,7 @@
 #include "reports/commands.hpp"
 #include "core/methods.hpp"
 #include "reports/inputs.hpp"
+#include "reports/shard.hpp"
 #include "reports/study_output.hpp"
 #include "analysis/parallel.hpp"
 #include "analysis/local_error.hpp"
@@ -82,6 +83,7 @@ int legacy_command(const LegacyArgs& l) {
 std::string_view value_kind(std::string_view option) {
   static constexpr std::pair<std::string_view, std::string_view> kinds[] = {
       {"--samples", "WHOLE"},         {"--points", "WHOLE"},          {"--threads", "WHOLE"},
+      {"--lanes", "WHOLE"},           {"--shard", "i/N"},
       {"--map-dt-points", "WHOLE"},   {"--map-damping-points", "WHOLE"},
       {"--methods", "NAME,..."},      {"--dts", "NUMBER,..."},        {"--threshold-dampings", "NUMBER,..."},
       {"--dampings", "NUMBER,..."},   {"--method", "NAME"},           {"--scene", "NAME"},
@@ -162,6 +164,8 @@ int cli_main(int argc, const char* const* argv) {
                      "a scene without one always uses it");
   conv_cmd->add_option("--error", conv.error, "error the order is fitted to: final, max, rms")->capture_default_str();
   conv_cmd->add_option("--threads", conv.threads, "worker threads, 0 = all cores")->capture_default_str();
+  add_lanes_option(conv_cmd, conv.lanes);
+  add_shard_option(conv_cmd, conv.shard);
   conv_cmd->add_flag("--timing", conv.timing, "also time every run (work-precision; not reproducible byte for byte)");
   conv_cmd->add_option("--json", conv.json, "write JSON (schema steplab.convergence/2) to this file");
 
@@ -180,6 +184,8 @@ int cli_main(int argc, const char* const* argv) {
       ->capture_default_str();
   wp_cmd->add_option("--threads", wp.threads, "worker threads for the error runs (timings run one at a time)")
       ->capture_default_str();
+  add_lanes_option(wp_cmd, wp.lanes);
+  add_shard_option(wp_cmd, wp.shard);
   wp_cmd->add_flag("--no-timing", wp.no_timing, "cost by force and Jacobian evaluations only (reproducible byte for byte)");
   wp_cmd->add_option("--json", wp.json, "write JSON (schema steplab.work_precision/1) to this file");
   CollisionArgs coll;
@@ -190,6 +196,7 @@ int cli_main(int argc, const char* const* argv) {
   coll_cmd->add_option("--t-end", coll.t_end, "simulated time")->capture_default_str();
   coll_cmd->add_option("--triangle-dt", coll.triangle_dt, "step for the falling triangle")->capture_default_str();
   coll_cmd->add_option("--threads", coll.threads, "worker threads, 0 = all cores")->capture_default_str();
+  add_shard_option(coll_cmd, coll.shard);
   coll_cmd->add_option("--json", coll.json, "write JSON (schema steplab.collision/1) to this file");
 
   ReportArgs rep;
@@ -205,7 +212,11 @@ int cli_main(int argc, const char* const* argv) {
   check_cmd->add_option("--method", check.method, "integrator: " + method_names());
   check_cmd->add_option("--threads", check.threads, "worker threads, 0 = all cores")->capture_default_str();
 
+  MergeArgs merge;
+  add_merge_command(app, merge);
+
   name_value_kinds(app);
+  invocation = args;
 
   std::vector<const char*> cargv{argv[0]};
   for (const auto& a : args) cargv.push_back(a.c_str());
@@ -219,6 +230,7 @@ int cli_main(int argc, const char* const* argv) {
     if (wp_cmd->parsed()) return work_precision_command(wp);
     if (rep_cmd->parsed()) return report_command(rep);
     if (check_cmd->parsed()) return check_command(check);
+    if (app.got_subcommand("merge")) return merge_command(merge);
     if (legacy) return legacy_command(legacy_args);
     throw UsageError("no command given; accepted: run, study, report, check, or the old flags -testcase ... (see steplab --help)");
   } catch (const CLI::CallForHelp&) {

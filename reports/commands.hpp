@@ -39,6 +39,8 @@ struct ConvergenceArgs {
   std::string error = "final";
   bool reference = false;
   std::string threads = "0";
+  std::string lanes = "8";
+  std::string shard;  // i/N: write part i of N to --json (reports/shard.hpp)
   bool timing = false;
   std::string json;
 };
@@ -49,6 +51,9 @@ int convergence_command(ConvergenceArgs& args);
 std::size_t resolve_method(std::string_view name);
 std::vector<std::size_t> resolve_methods(const std::string& list, bool with_analytic);
 unsigned resolve_thread_count(const std::string& text);
+int resolve_lanes(const std::string& text);
+// --lanes on a study command.
+void add_lanes_option(CLI::App* app, std::string& lanes);
 
 }  // namespace steplab
 
@@ -63,6 +68,8 @@ struct StabilityArgs {
   std::string threshold_dampings = "0,0.1,1,4";
   std::string map_dt_points = "64", map_damping_points = "64", map_dt_min = "0.01", map_dt_max = "10";
   std::string threads = "0";
+  std::string lanes = "8";
+  std::string shard;  // i/N: write part i of N to --json (reports/shard.hpp)
   std::string json;
 };
 
@@ -82,6 +89,7 @@ struct CollisionArgs {
   std::string t_end = "10";
   std::string triangle_dt = "0.001";
   std::string threads = "0";
+  std::string shard;
   std::string json;
 };
 
@@ -92,6 +100,8 @@ struct WorkPrecisionArgs {
   std::string points = "14";                              // dt sweep points per scene
   std::string stiffnesses = "5,50,500,5000,50000,5e5,5e6";  // k2 of the stiffness sweep
   std::string threads = "0";
+  std::string lanes = "8";
+  std::string shard;  // i/N: write part i of N to --json (reports/shard.hpp)
   bool no_timing = false;  // cost by evaluations only: reproducible byte for byte
   std::string json;
 };

@@ -10,6 +10,7 @@
 #include "reports/commands.hpp"
 #include "reports/inputs.hpp"
 #include "reports/output.hpp"
+#include "reports/shard.hpp"
 #include "reports/study_output.hpp"
 
 namespace steplab {
@@ -32,6 +33,14 @@ std::vector<std::size_t> resolve_methods(const std::string& list, bool with_anal
 
 unsigned resolve_thread_count(const std::string& text) {
   return static_cast<unsigned>(parse_count("--threads", text, 0, 1024));
+}
+
+int resolve_lanes(const std::string& text) { return static_cast<int>(parse_count("--lanes", text, 1, kMaxLanes)); }
+
+void add_lanes_option(CLI::App* app, std::string& lanes) {
+  app->add_option("--lanes", lanes,
+                  fmt::format("runs stepped together on each thread, 1 .. {} (1: one at a time; the output is the same)", kMaxLanes))
+      ->capture_default_str();
 }
 
 int convergence_command(ConvergenceArgs& a) {
@@ -59,12 +68,15 @@ int convergence_command(ConvergenceArgs& a) {
                                  "(--scene {}{}) accepted: final",
                                  a.error, a.scene.scene, a.reference ? ", --reference" : ""));
   c.threads = resolve_thread_count(a.threads);
+  c.lanes = resolve_lanes(a.lanes);
   c.timing = a.timing;
   if (sweep_steps(c.t_end, c.dt_max, c.dt_min, c.points).size() < 3)
     throw UsageError("--dt-max, --dt-min and --t-end leave fewer than 3 distinct steps; accepted: a wider range");
+  begin_shard(a.shard, a.json, c.timing);
   if (stop_after_validation(a.json)) return 0;
 
   const ConvergenceResult r = convergence_study(c);
+  if (finish_shard(a.json)) return 0;
   std::fputs(convergence_table(r).c_str(), stdout);
   if (!a.json.empty()) write_atomic(a.json, convergence_json(r).dump(1) + "\n");
   return 0;
@@ -83,6 +95,7 @@ StabilityConfig stability_config(StabilityArgs& a) {
   c.params = a.scene.values(a.scene.scene_index());
   c.methods = resolve_methods(a.methods, false);
   c.threads = resolve_thread_count(a.threads);
+  c.lanes = resolve_lanes(a.lanes);
   return c;
 }
 
@@ -104,6 +117,8 @@ void add_stability_options(CLI::App* app, StabilityArgs& a, bool sweep, bool map
     app->add_option("--map-dt-max", a.map_dt_max, "map: largest step")->capture_default_str();
   }
   app->add_option("--threads", a.threads, "worker threads, 0 = all cores")->capture_default_str();
+  add_lanes_option(app, a.lanes);
+  add_shard_option(app, a.shard);
   app->add_option("--json", a.json, "write JSON (schema steplab.stability/1) to this file");
 }
 
@@ -111,8 +126,10 @@ int damping_command(StabilityArgs& a) {
   StabilityConfig c = stability_config(a);
   c.sweep_dts = number_list("--dts", a.dts, Bound::Positive);
   if (!a.dampings.empty()) c.sweep_dampings = number_list("--dampings", a.dampings, Bound::NonNegative);
+  begin_shard(a.shard, a.json, false);
   if (stop_after_validation(a.json)) return 0;
   const std::vector<SweepRow> rows = damping_sweep(c);
+  if (finish_shard(a.json)) return 0;
   std::fputs(sweep_table(rows).c_str(), stdout);
   if (!a.json.empty()) write_atomic(a.json, stability_json(c.params, {}, rows, nullptr).dump(1) + "\n");
   return 0;
@@ -127,10 +144,12 @@ int stability_command(StabilityArgs& a) {
   c.map_dt_max = parse_number("--map-dt-max", a.map_dt_max, Bound::Positive);
   if (c.map_dt_min >= c.map_dt_max)
     throw UsageError(fmt::format("--map-dt-min {} is not below --map-dt-max {}; accepted: min < max", c.map_dt_min, c.map_dt_max));
+  begin_shard(a.shard, a.json, false);
   if (stop_after_validation(a.json)) return 0;
   const std::vector<ThresholdRow> rows = threshold_study(c);
-  std::fputs(thresholds_table(rows).c_str(), stdout);
   const StabilityMap map = stability_map(c);
+  if (finish_shard(a.json)) return 0;
+  std::fputs(thresholds_table(rows).c_str(), stdout);
   std::fputs(("\n" + map_summary(map)).c_str(), stdout);
   if (!a.json.empty()) write_atomic(a.json, stability_json(c.params, rows, {}, &map).dump(1) + "\n");
   return 0;
@@ -182,8 +201,10 @@ int collision_command(CollisionArgs& a) {
   for (double dt : c.dts) step_count(c.t_end, dt);
   step_count(c.t_end, c.triangle_dt);
   c.threads = resolve_thread_count(a.threads);
+  begin_shard(a.shard, a.json, false);
   if (stop_after_validation(a.json)) return 0;
   const CollisionResult r = collision_study(c);
+  if (finish_shard(a.json)) return 0;
   std::fputs(collision_table(r).c_str(), stdout);
   if (!a.json.empty()) write_atomic(a.json, collision_json(r).dump(1) + "\n");
   return 0;

@@ -10,6 +10,7 @@
 #include "reports/commands.hpp"
 #include "reports/inputs.hpp"
 #include "reports/output.hpp"
+#include "reports/shard.hpp"
 #include "reports/study_output.hpp"
 
 namespace steplab {
@@ -116,9 +117,12 @@ int work_precision_command(WorkPrecisionArgs& a) {
   c.points = static_cast<int>(parse_count("--points", a.points, 3, 100));
   c.stiffnesses = number_list("--stiffnesses", a.stiffnesses, Bound::Positive);
   c.threads = resolve_thread_count(a.threads);
+  c.lanes = resolve_lanes(a.lanes);
   c.timing = !a.no_timing;
+  begin_shard(a.shard, a.json, c.timing);
   if (stop_after_validation(a.json)) return 0;
   const WorkPrecisionResult r = work_precision_study(c);
+  if (finish_shard(a.json)) return 0;
   std::fputs(work_precision_table(r).c_str(), stdout);
   if (!a.json.empty()) write_atomic(a.json, work_precision_json(r).dump(1) + "\n");
   return 0;

@@ -84,6 +84,16 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"-testcase nosuch", "nosuch"}, BadInput{"-testcase spring1d -step -1", "-step"},
         BadInput{"-testcase spring1d -stiff -1", "-stiff"}, BadInput{"-method nosuch", "nosuch"},
         BadInput{"-testcase error_measurement -step 0", "-step"}, BadInput{"-testcase spring1d -mass nan", "-mass"},
+        // lanes, shards and merge
+        BadInput{"study stability --lanes 0", "--lanes"}, BadInput{"study convergence --lanes 65", "--lanes"},
+        BadInput{"study damping --shard 2", "--shard"}, BadInput{"study damping --shard 0/3 --json {dir}/p.json", "--shard"},
+        BadInput{"study stability --shard 4/3 --json {dir}/p.json", "--shard"},
+        BadInput{"study collision --shard 1/3", "--json"},
+        BadInput{"study convergence --timing --shard 1/2 --json {dir}/p.json", "--timing"},
+        BadInput{"study work-precision --shard 1/2 --json {dir}/p.json", "--no-timing"},
+        BadInput{"merge --json {dir}/out.json", "parts"}, BadInput{"merge {dir}/config.json", "--json"},
+        BadInput{"merge {dir}/config.json --json {dir}/out.json", "not a steplab part", "{\"schema\": \"steplab.stability/1\"}"},
+        BadInput{"merge {dir}/nosuch.json --json {dir}/out.json", "nosuch.json"},
         // studies
         BadInput{"study", "subcommand"}, BadInput{"study convergence --dt-min 0.2 --dt-max 0.1", "--dt-min"},
         BadInput{"study convergence --points 2", "--points"}, BadInput{"study convergence --scene falling --error max", "--error"},
