@@ -27,10 +27,17 @@
 
 namespace steplab {
 
-// The lanes the studies use unless told otherwise (--lanes): the fewest at which the batched
-// explicit Euler on the spring reaches its best throughput on the 2-core AMD EPYC of
-// README.md (more lanes change little, and a study's last lanes drain alone).
-inline constexpr int kDefaultLanes = 8;
+// The lanes the studies use unless told otherwise (--lanes): one, a run at a time. Measured on
+// the 2-core AMD EPYC of README.md, lanes pay only where a run's step is a short dependency
+// chain with little else per step: explicit Euler on the spring without the energy-rate fit,
+// 8 lanes 1.2x one at a time (make bench, throughput rows). In the studies a lane carries
+// its whole run loop with its state in memory (88 instructions a step of that explicit Euler
+// against 54 alone, callgrind) and the loop alone already keeps the core busy, so 8 lanes made
+// `study stability` 0.89x and `study convergence` 0.98x as fast. Lanes that pay need the step
+// and the run loop on packs of lanes (SIMD with per-lane masks); see README.md, Speed.
+inline constexpr int kDefaultLanes = 1;
+// The lanes of the throughput benchmark and the best measured there.
+inline constexpr int kBenchLanes = 8;
 inline constexpr int kMaxLanes = 64;
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)

@@ -39,7 +39,9 @@ int resolve_lanes(const std::string& text) { return static_cast<int>(parse_count
 
 void add_lanes_option(CLI::App* app, std::string& lanes) {
   app->add_option("--lanes", lanes,
-                  fmt::format("runs stepped together on each thread, 1 .. {} (1: one at a time; the output is the same)", kMaxLanes))
+                  fmt::format("runs stepped together on each thread, 1 .. {} (1: one at a time; the output is the same; "
+                              "see README, Speed, for when more pay)",
+                              kMaxLanes))
       ->capture_default_str();
 }
 

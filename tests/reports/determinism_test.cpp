@@ -1,7 +1,7 @@
 // The same inputs give byte-identical JSON across runs, thread counts and lane counts, for every
 // study and for a run: each command twice with one thread and twice with two, all four files
 // equal; and a study that steps runs in lanes gives the same bytes with --lanes 1 (one run at a
-// time), the default, 3 (lanes that end out of step) and 2 threads of 5 lanes.
+// time, the default), 8, 3 (lanes that end out of step) and 2 threads of 5 lanes.
 #include <gtest/gtest.h>
 
 #include "cli_helpers.hpp"
@@ -31,7 +31,7 @@ class LanesDeterminism : public ::testing::TestWithParam<const char*> {};
 TEST_P(LanesDeterminism, SameBytesForAnyLanes) {
   TempDir dir;
   std::vector<std::string> docs;
-  for (const char* opts : {"--lanes 1 --threads 1", "", "--lanes 3 --threads 1", "--lanes 5 --threads 2"}) {
+  for (const char* opts : {"--lanes 1 --threads 1", "--lanes 8", "--lanes 3 --threads 1", "--lanes 5 --threads 2"}) {
     const std::string out = dir.path(std::string("out") + std::to_string(docs.size()) + ".json");
     const std::string args = std::string(GetParam()) + " " + opts + " --json " + out;
     const Result r = run_steplab(args);
