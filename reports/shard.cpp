@@ -147,7 +147,7 @@ bool finish_shard(const std::string& json) {
 void add_merge_command(CLI::App& app, MergeArgs& a) {
   CLI::App* cmd = app.add_subcommand("merge", "put the parts of a study run with --shard i/N together: the JSON one "
                                               "process would have written");
-  cmd->add_option("parts", a.parts, "the N part files, in any order")->type_name("FILE...");
+  cmd->add_option("parts", a.parts, "the N part files, in any order")->type_name("FILE");
   cmd->add_option("--json", a.json, "write the study's JSON to this file");
 }
 
