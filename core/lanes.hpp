@@ -45,13 +45,20 @@ inline constexpr int kMaxLanes = 64;
 #else
 #define STEPLAB_MULTIVERSION
 #endif
+// Everything a round calls inlined into it. Not under AddressSanitizer: there the flattened
+// rounds of every method on every scene grow until GCC runs out of memory (convergence.cpp).
+#if defined(__GNUC__) && !defined(__SANITIZE_ADDRESS__)
+#define STEPLAB_FLATTEN [[gnu::flatten]]
+#else
+#define STEPLAB_FLATTEN
+#endif
 
 // One round: each lane's run takes a step; ended[k] says whether lane k's run has ended.
 // Flattened (every call inside inlined: the method's step, the scene's force, the run's
 // bookkeeping) so that the lanes' independent work sits side by side for the core to overlap,
 // and compiled for plain x86-64 and for AVX2.
 template <class Lane>
-[[gnu::flatten]] STEPLAB_MULTIVERSION std::size_t advance_lanes(Lane* lane, std::size_t count, unsigned char* ended) {
+STEPLAB_FLATTEN STEPLAB_MULTIVERSION std::size_t advance_lanes(Lane* lane, std::size_t count, unsigned char* ended) {
   std::size_t n = 0;
   for (std::size_t k = 0; k < count; ++k) {
     ended[k] = lane[k].run && !lane[k].run->advance();
