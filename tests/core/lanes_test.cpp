@@ -1,6 +1,8 @@
 // Runs in lanes (core/lanes.hpp) give what the same runs give one at a time, bit for bit, for
-// every method on every scene: 7 runs through 3 lanes, each with its own step, length and stop
-// rule, some ending early (diverged or stopped) while the others go on.
+// every method on three scenes (1, 4 and 6 coordinates; the JSON of every study with lanes is
+// compared on the others in tests/reports/determinism_test.cpp): 7 runs through 3 lanes, each
+// with its own step, length and stop rule, some ending early (diverged or stopped) while the
+// others go on. Three scenes, not six: under AddressSanitizer this file takes minutes to compile.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -48,7 +50,9 @@ RunSpec spec_of(std::size_t i) {
   return spec;
 }
 
-TEST(Lanes, EveryMethodOnEverySceneGivesTheSameBitsAsOneRunAtATime) {
+using LaneScenes = std::tuple<Spring, Chain, Falling>;
+
+TEST(Lanes, EveryMethodOnThreeScenesGivesTheSameBitsAsOneRunAtATime) {
   constexpr std::size_t n = 7;
   [&]<std::size_t... I>(std::index_sequence<I...>) {
     (([&]<class S>() {
@@ -73,9 +77,9 @@ TEST(Lanes, EveryMethodOnEverySceneGivesTheSameBitsAsOneRunAtATime) {
           }.template operator()<std::tuple_element_t<J, Methods>>()),
           ...);
        }(std::make_index_sequence<method_count>{});
-     }.template operator()<std::tuple_element_t<I, Scenes>>()),
+     }.template operator()<std::tuple_element_t<I, LaneScenes>>()),
      ...);
-  }(std::make_index_sequence<scene_count>{});
+  }(std::make_index_sequence<std::tuple_size_v<LaneScenes>>{});
 }
 
 // A lane's end is its own: explicit Euler on the undamped spring grows at every step, so the
