@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <stdexcept>
 
 #include "analysis/lanes.hpp"
@@ -158,13 +157,8 @@ ConvergenceResult convergence_study(const ConvergenceConfig& config) {
     if (out.uses_reference) out.reference = reference_solution(scene, config.t_end);
     // a task per method: its dt sweep in lanes, the smallest dt (the longest run) first, so that
     // the short runs fill the lanes while it runs
-    // the implicit methods' sweeps (the dearest) first, so that none of them starts last and
-    // runs alone while the other threads idle
-    std::vector<std::size_t> order(nm);
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::stable_partition(order.begin(), order.end(), [&](std::size_t m) { return method_infos[config.methods[m]].implicit; });
-    const auto sweeps = study_map<std::vector<ConvergenceRecord>>(nm, config.threads, [&](std::size_t task) {
-      const std::size_t method = config.methods[order[task]];
+    const auto sweeps = study_map<std::vector<ConvergenceRecord>>(nm, config.threads, [&](std::size_t m) {
+      const std::size_t method = config.methods[m];
       std::vector<ConvergenceRecord> sweep(nd);
       run_batch<S>(
           method, nd, config.lanes,
@@ -174,9 +168,9 @@ ConvergenceResult convergence_study(const ConvergenceConfig& config) {
             sweep[i] = record_of(scene, method, out.dts[i], config.t_end, r, out);
           });
       return sweep;
-    });
-    for (std::size_t task = 0; task < nm; ++task)
-      std::copy(sweeps[task].begin(), sweeps[task].end(), out.records.begin() + static_cast<std::ptrdiff_t>(order[task] * nd));
+    }, implicit_first(config.methods));
+    for (std::size_t m = 0; m < nm; ++m)
+      std::copy(sweeps[m].begin(), sweeps[m].end(), out.records.begin() + static_cast<std::ptrdiff_t>(m * nd));
   });
 
   if (config.timing) time_runs(out);

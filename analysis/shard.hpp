@@ -127,24 +127,31 @@ template <class T> T decode(const std::string& bytes) {
   return x;
 }
 
-// task(i) for i in [0, n) on `threads` threads (parallel.hpp), as work_log says.
-template <class T, class Task> std::vector<T> study_map(std::size_t n, unsigned threads, Task&& task) {
+// task(i) for i in [0, n) on `threads` threads (parallel.hpp), as work_log says; out[i] is
+// task i's result. `order` (a permutation of [0, n), or empty for 0 .. n-1) is the order in which
+// the tasks start: the dearest first, so that none starts last and runs alone while the other
+// threads idle. It changes no result.
+template <class T, class Task>
+std::vector<T> study_map(std::size_t n, unsigned threads, Task&& task, const std::vector<std::size_t>& order = {}) {
   std::vector<T> out(n);
   WorkLog& log = work_log;
-  if (log.mode == WorkMode::All) {
-    parallel_for(n, threads, [&](std::size_t i) { out[i] = task(i); });
-    return out;
-  }
-  const std::size_t call = log.next_call++;
-  if (log.mode == WorkMode::Shard) {
-    log.calls.emplace_back(n);
-    const std::size_t lo = shard_begin(n, log.index, log.count), hi = shard_begin(n, log.index + 1, log.count);
-    parallel_for(hi - lo, threads, [&](std::size_t k) {
-      out[lo + k] = task(lo + k);
-      log.calls[call][lo + k] = encode(out[lo + k]);
+  if (log.mode != WorkMode::Replay) {
+    const bool shard = log.mode == WorkMode::Shard;
+    const std::size_t lo = shard ? shard_begin(n, log.index, log.count) : 0;
+    const std::size_t hi = shard ? shard_begin(n, log.index + 1, log.count) : n;
+    std::vector<std::size_t> runs;  // the tasks this process runs, in the order they start
+    for (std::size_t k = 0; k < n; ++k)
+      if (const std::size_t i = order.empty() ? k : order[k]; lo <= i && i < hi) runs.push_back(i);
+    const std::size_t call = shard ? log.next_call++ : 0;
+    if (shard) log.calls.emplace_back(n);
+    parallel_for(runs.size(), threads, [&](std::size_t k) {
+      const std::size_t i = runs[k];
+      out[i] = task(i);
+      if (shard) log.calls[call][i] = encode(out[i]);
     });
     return out;
   }
+  const std::size_t call = log.next_call++;
   if (call >= log.calls.size() || log.calls[call].size() != n)
     throw PartMismatch("the parts hold other work than this study makes (call " + std::to_string(call + 1) + ")");
   for (std::size_t i = 0; i < n; ++i) {
@@ -152,6 +159,16 @@ template <class T, class Task> std::vector<T> study_map(std::size_t n, unsigned 
     out[i] = decode<T>(*log.calls[call][i]);
   }
   return out;
+}
+
+// The positions of `methods` (indices into the method table), the implicit methods' first (the
+// dearest per step): a study_map order for tasks that are one method each.
+inline std::vector<std::size_t> implicit_first(const std::vector<std::size_t>& methods) {
+  std::vector<std::size_t> order;
+  for (const bool implicit : {true, false})
+    for (std::size_t k = 0; k < methods.size(); ++k)
+      if (method_infos[methods[k]].implicit == implicit) order.push_back(k);
+  return order;
 }
 
 }  // namespace steplab

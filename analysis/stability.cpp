@@ -61,6 +61,7 @@ namespace {
 // would). So the set found is the same for every width; width 1 is plain bisection.
 template <class Unstable>
 StableSet stable_set(double lo, double hi, double factor, double precision, int width, Unstable unstable) {
+  width = std::max(width, 1);
   const double top = hi * (1 + 1e-12);
   const auto wide = [&](double a, double b) { return std::max(a, b) / std::min(a, b) - 1 > precision; };
   const auto bisect = [&](double good, double bad) {  // the edge between a stable and an unstable h
@@ -94,13 +95,12 @@ StableSet stable_set(double lo, double hi, double factor, double precision, int 
     }
     return good;
   };
-  // The first h of lo, lo f, lo f^2, ... (up to top) whose verdict is `want`, and the one before
-  // it (0 if none); h > top if there is none.
+  // The first h of h, h f, h f^2, ... (up to top) whose verdict is `want`; h > top if there is
+  // none. `before` becomes the step tried last before it (left as given if it is the first).
   const auto first = [&](double h, double f, bool want, double& before) {
-    before = 0;
     for (;;) {
       std::vector<double> hs;
-      for (double x = h; hs.size() < static_cast<std::size_t>(std::max(width, 1)) && x <= top; x *= f) hs.push_back(x);
+      for (double x = h; hs.size() < static_cast<std::size_t>(width) && x <= top; x *= f) hs.push_back(x);
       if (hs.empty()) return h;
       const std::vector<char> verdict = unstable(hs);
       for (std::size_t k = 0; k < hs.size(); ++k) {
@@ -117,7 +117,6 @@ StableSet stable_set(double lo, double hi, double factor, double precision, int 
   out.dt_star = last_good == 0 ? 0 : bisect(last_good, h);
   double last_bad = h;
   const double again = first(h * kAgainFactor, kAgainFactor, false, last_bad);
-  if (last_bad == 0) last_bad = h;
   if (again <= top) out.again = bisect(again, last_bad);
   return out;
 }
@@ -305,10 +304,9 @@ StabilityMap stability_map(const StabilityConfig& c) {
   map.stable.assign(nm, std::vector<std::vector<bool>>(ng, std::vector<bool>(nd)));
   map.predicted = map.stable;
   for (std::size_t task = 0; task < rows.size(); ++task) {
-    if (rows[task].stable.size() != nd) continue;  // another shard's row (analysis/shard.hpp)
     const std::size_t mi = task / ng, gi = task % ng;
     map.boundary[mi][gi] = rows[task].boundary;
-    for (std::size_t di = 0; di < nd; ++di) {
+    for (std::size_t di = 0; di < rows[task].stable.size(); ++di) {  // none in another shard's row
       map.stable[mi][gi][di] = rows[task].stable[di];
       map.predicted[mi][gi][di] = rows[task].predicted[di];
     }

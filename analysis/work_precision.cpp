@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <stdexcept>
 
 #include "analysis/convergence.hpp"
@@ -135,24 +134,19 @@ template <HasExact S>
 std::vector<WorkPoint> scene_points(const S& s, const WorkPrecisionConfig& c, const std::vector<double>& dts,
                                     double t_end, const std::vector<std::size_t>& methods) {
   const std::size_t nm = methods.size(), nf = nm * dts.size(), nt = c.tolerances.size();
-  // tasks: a method's dt sweep (in lanes; the implicit methods', the dearest, first), then one per
-  // tolerance and adaptive solver
-  std::vector<std::size_t> order(nm);
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_partition(order.begin(), order.end(), [&](std::size_t m) { return method_infos[methods[m]].implicit; });
+  // tasks: a method's dt sweep (in lanes), then one per tolerance and adaptive solver; the
+  // implicit methods' sweeps start first
+  std::vector<std::size_t> order = implicit_first(methods);
+  for (std::size_t job = nm; job < nm + 3 * nt; ++job) order.push_back(job);
   const auto parts = study_map<std::vector<WorkPoint>>(nm + 3 * nt, c.threads, [&](std::size_t job) {
-    if (job < nm) return fixed_points(s, methods[order[job]], dts, t_end, c.lanes);
+    if (job < nm) return fixed_points(s, methods[job], dts, t_end, c.lanes);
     const std::size_t task = job - nm + nf;
     if (task < nf + nt) return std::vector{dopri5_point(s, c.tolerances[task - nf], t_end)};
     if (task < nf + 2 * nt) return std::vector{peer_point<OdeintDopri5<S>>("odeint_dopri5", s, c.tolerances[task - nf - nt], t_end)};
     return std::vector{peer_point<CvodeBdf<S>>("cvode_bdf", s, c.tolerances[task - nf - 2 * nt], t_end)};
-  });
-  std::vector<WorkPoint> points;  // in the order of `methods`, then the adaptive solvers
-  for (std::size_t m = 0; m < nm; ++m) {
-    const std::size_t job = static_cast<std::size_t>(std::find(order.begin(), order.end(), m) - order.begin());
-    points.insert(points.end(), parts[job].begin(), parts[job].end());
-  }
-  for (std::size_t job = nm; job < parts.size(); ++job) points.insert(points.end(), parts[job].begin(), parts[job].end());
+  }, order);
+  std::vector<WorkPoint> points;
+  for (const auto& part : parts) points.insert(points.end(), part.begin(), part.end());
   if (c.timing)
     for (WorkPoint& p : points)
       if (p.status == RunStatus::Ok) p.seconds = time_point(s, p, t_end);

@@ -27,17 +27,11 @@
 
 namespace steplab {
 
-// The lanes the studies use unless told otherwise (--lanes): one, a run at a time. Measured on
-// the 2-core AMD EPYC of README.md, lanes pay only where a run's step is a short dependency
-// chain with little else per step: explicit Euler on the spring without the energy-rate fit,
-// 8 lanes 1.2x one at a time (make bench, throughput rows). In the studies a lane carries
-// its whole run loop with its state in memory (88 instructions a step of that explicit Euler
-// against 54 alone, callgrind) and the loop alone already keeps the core busy, so 8 lanes made
-// `study stability` 0.89x and `study convergence` 0.98x as fast. Lanes that pay need the step
-// and the run loop on packs of lanes (SIMD with per-lane masks); see README.md, Speed.
+// The lanes the studies use unless told otherwise (--lanes): one, a run at a time. A lane carries
+// its whole run loop with its state in memory, and a run alone already keeps the core busy, so
+// on the machine of README.md (Speed: measured there) more lanes made the studies slower; lanes
+// that pay need the step and the run loop on packs of lanes (SIMD with per-lane masks).
 inline constexpr int kDefaultLanes = 1;
-// The lanes of the throughput benchmark and the best measured there.
-inline constexpr int kBenchLanes = 8;
 inline constexpr int kMaxLanes = 64;
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
@@ -76,7 +70,6 @@ template <class M, Scene S, class Job, class Done>
 void simulate_lanes(std::size_t n, int lanes, Job&& job, Done&& done) {
   struct Lane {
     std::optional<S> scene;
-    std::optional<RunResult<S::dim>> result;
     std::optional<Run<M, S>> run;
     std::size_t index = 0;
   };
@@ -86,12 +79,11 @@ void simulate_lanes(std::size_t n, int lanes, Job&& job, Done&& done) {
   std::size_t next = 0, active = 0;
   const auto load = [&](Lane& l) {
     l.run.reset();
-    l.result.reset();
     l.scene.reset();
     if (next == n) return false;
     auto [scene, spec] = job(next);
     l.index = next++;
-    l.run.emplace(l.scene.emplace(std::move(scene)), spec, l.result.emplace());
+    l.run.emplace(l.scene.emplace(std::move(scene)), spec);
     return true;
   };
   for (std::size_t k = 0; k < count; ++k) active += load(lane[k]);
@@ -99,8 +91,7 @@ void simulate_lanes(std::size_t n, int lanes, Job&& job, Done&& done) {
     if (advance_lanes(lane.get(), count, ended) == 0) continue;
     for (std::size_t k = 0; k < count; ++k) {
       if (!ended[k]) continue;
-      lane[k].run->finish();
-      done(lane[k].index, std::move(*lane[k].result), *lane[k].scene);
+      done(lane[k].index, lane[k].run->finish(), *lane[k].scene);
       if (!load(lane[k])) --active;
     }
   }

@@ -118,16 +118,13 @@ template <int D> void finish_run(RunResult<D>& r, bool has_exact, double err_sq_
 // several in lockstep, each lane doing exactly what a run alone does, in the same order (the
 // results are the same bit for bit). `observe(i, t, state)` is called after every completed
 // step (i = 1 .. steps), for studies that need more than the summary (bounces, penetration); it
-// must not allocate. The scene and the result `out` must outlive the run; a Run is not copied or
-// moved. The result lives outside the Run so that a run alone keeps its own state in registers
-// (the sample buffer's address escapes to the allocator; were it a member, the whole Run would
-// live in memory: +7 instructions a step of explicit Euler, callgrind).
+// must not allocate. The scene must outlive the run; a Run is not copied or moved.
 template <class M, Scene S, class Observer = NoObserver> class Run {
  public:
   static constexpr int D = S::dim;
 
-  Run(const S& scene, const RunSpec& spec, RunResult<D>& out, Observer observe = {})
-      : scene_(scene), spec_(spec), observe_(observe), plan_{spec.steps, spec.max_samples}, y_(scene.initial()), r_(out),
+  Run(const S& scene, const RunSpec& spec, Observer observe = {})
+      : scene_(scene), spec_(spec), observe_(observe), plan_{spec.steps, spec.max_samples}, y_(scene.initial()),
         tracker_(make_tracker(scene)) {
     if (plan_.size() > 0) r_.samples.reserve(static_cast<std::size_t>(plan_.size()) + 1);
     e0_ = scene.energy(y_.x, y_.v);
@@ -138,10 +135,10 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
   Run(const Run&) = delete;
   Run& operator=(const Run&) = delete;
 
-  // Takes step i_ (1-based); false once the run has ended (all steps taken, diverged, Newton
-  // failed, or stopped early), and then it takes no more.
+  // Takes step i_ (1-based); false when the run has ended (all steps taken, diverged, Newton
+  // failed, or stopped early). After false, call finish(), not advance().
   [[gnu::always_inline]] inline bool advance() {
-    if (done_) return false;
+    if (i_ > spec_.steps) return false;
     const double h = spec_.dt;
     const double t_prev = (i_ - 1) * h, t = i_ * h;
     State<D> next = y_;
@@ -150,7 +147,7 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
       r_.status = st != StepStatus::Ok ? RunStatus::NoConvergence : RunStatus::Diverged;
       r_.failed_step = i_;
       r_.failed_t = t;
-      return end();
+      return false;
     }
     y_ = next;
     const double e = scene_.energy(y_.x, y_.v);
@@ -171,14 +168,14 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
         r_.failed_step = i_ - 1;
         r_.failed_t = t;
       }
-      return end();
+      return false;
     }
-    if (i_ > spec_.steps) return end();
     return true;
   }
 
-  // Completes the result, once advance() has returned false. Call once.
-  void finish() {
+  // The result, once advance() has returned false (i_ - 1 steps completed). Call once: it hands
+  // over the samples.
+  RunResult<D> finish() {
     r_.steps = i_ - 1;
     r_.t_final = r_.steps * spec_.dt;
     r_.final = y_;
@@ -187,16 +184,13 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
     // The last finite state is always kept, also when the run ended early.
     if (plan_.size() > 0 && (r_.samples.empty() || r_.samples.back().t != r_.t_final))
       r_.samples.push_back({r_.t_final, y_.x, y_.v, scene_.energy(y_.x, y_.v)});
+    return std::move(r_);
   }
 
  private:
   static auto make_tracker(const S& scene) {
     if constexpr (HasExact<S>) return ExactTracker<S>(scene);
     else return 0;
-  }
-  bool end() {  // i_ - 1 stays the number of steps completed
-    done_ = true;
-    return false;
   }
   // Welford accumulators for the slope of ln E on t.
   void fit_point(double t, double e) {
@@ -221,24 +215,21 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
   Observer observe_;
   const SamplePlan plan_;
   State<D> y_;
-  RunResult<D>& r_;
+  RunResult<D> r_;
   double e0_ = 0, ratio_max_ = 1, ratio_ = 1;
   double n_fit_ = 0, mean_t_ = 0, mean_l_ = 0, c_tl_ = 0, m2_t_ = 0;
   double err_sq_sum_ = 0;
   long long i_ = 1, next_sample_ = 0, sample_k_ = 0;
-  bool done_ = spec_.steps <= 0;
   [[no_unique_address]] decltype(make_tracker(std::declval<const S&>())) tracker_;
   [[no_unique_address]] Stepper<M, S> stepper_;  // a multistep method's memory; nothing for a one-step method
 };
 
 template <class M, Scene S, class Observer = NoObserver>
 RunResult<S::dim> simulate(const S& scene, const RunSpec& spec, Observer&& observe = {}) {
-  RunResult<S::dim> r;
-  Run<M, S, Observer> run(scene, spec, r, std::forward<Observer>(observe));
+  Run<M, S, Observer> run(scene, spec, std::forward<Observer>(observe));
   while (run.advance()) {
   }
-  run.finish();
-  return r;
+  return run.finish();
 }
 
 }  // namespace steplab

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -63,17 +65,23 @@ std::string command_text(const Json& command) {
   return out;
 }
 
+struct Call {
+  std::size_t tasks;
+  std::vector<std::pair<std::size_t, std::string>> results;  // task, its result's bytes
+};
+
 struct Part {
   std::string path;
   Json doc;
   int index = 0, count = 0;
+  std::vector<Call> calls;  // decoded from doc["calls"]
 };
 
 // A part read and its form checked; a UsageError naming the file otherwise.
 Part read_part(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw UsageError(fmt::format("{}: cannot be read; accepted: part files written by --shard", path));
-  Part p{path, Json::parse(in, nullptr, false)};
+  Part p{path, Json::parse(in, nullptr, false), 0, 0, {}};
   const Json& d = p.doc;
   const auto bad = [&](std::string_view what) {
     return UsageError(fmt::format("{}: {}; accepted: a part written by steplab study ... --shard i/N (schema {})", path, what, kSchema));
@@ -92,11 +100,16 @@ Part read_part(const std::string& path) {
     if (!c.is_object() || !c.contains("tasks") || !c["tasks"].is_number_unsigned() || !c.contains("results") ||
         !c["results"].is_object())
       throw bad("a call without tasks and results");
-    for (const auto& [task, bytes] : c["results"].items())
-      if (task.empty() || task.find_first_not_of("0123456789") != std::string::npos || !bytes.is_string() ||
-          std::stoull(task) >= c["tasks"].get<std::size_t>() || !unhex(bytes.get<std::string>()))
+    Call& call = p.calls.emplace_back(Call{c["tasks"].get<std::size_t>(), {}});
+    for (const auto& [task, text] : c["results"].items()) {
+      const bool number = !task.empty() && task.find_first_not_of("0123456789") == std::string::npos;
+      std::optional<std::string> bytes = text.is_string() ? unhex(text.get<std::string>()) : std::nullopt;
+      if (!number || !bytes || std::stoull(task) >= call.tasks)
         throw bad(fmt::format("a result of task '{}' that is not hex bytes of a task of its call", task));
+      call.results.emplace_back(std::stoull(task), std::move(*bytes));
+    }
   }
+  p.doc.erase("calls");  // held decoded in p.calls
   return p;
 }
 
@@ -170,9 +183,8 @@ int merge_command(MergeArgs& a) {
     if (!fresh)
       throw UsageError(fmt::format("{} and {} are both shard {}/{}; accepted: each shard once", it->second->path, p.path,
                                    p.index, p.count));
-    const Json &calls = p.doc["calls"], &first_calls = first.doc["calls"];
-    bool same = calls.size() == first_calls.size();
-    for (std::size_t k = 0; same && k < calls.size(); ++k) same = calls[k]["tasks"] == first_calls[k]["tasks"];
+    bool same = p.calls.size() == first.calls.size();
+    for (std::size_t k = 0; same && k < p.calls.size(); ++k) same = p.calls[k].tasks == first.calls[k].tasks;
     if (!same)
       throw UsageError(fmt::format("{} holds other work than {} (other task lists); accepted: the parts of one command line",
                                    p.path, first.path));
@@ -182,13 +194,13 @@ int merge_command(MergeArgs& a) {
       throw UsageError(fmt::format("shard {}/{} is missing; accepted: all {} parts", i, first.count, first.count));
 
   WorkLog log{WorkMode::Replay, 1, first.count, {}, 0};
-  for (const Json& call : first.doc["calls"]) log.calls.emplace_back(call["tasks"].get<std::size_t>());
-  for (const Part& p : parts)
+  for (const Call& call : first.calls) log.calls.emplace_back(call.tasks);
+  for (Part& p : parts)
     for (std::size_t k = 0; k < log.calls.size(); ++k)
-      for (const auto& [task, bytes] : p.doc["calls"][k]["results"].items()) {
-        auto& slot = log.calls[k][std::stoull(task)];
+      for (auto& [task, bytes] : p.calls[k].results) {
+        auto& slot = log.calls[k][task];
         if (slot) throw UsageError(fmt::format("{}: task {} of call {} is in two parts; accepted: parts of one split", p.path, task, k + 1));
-        slot = unhex(bytes.get<std::string>());
+        slot = std::move(bytes);
       }
   work_log = std::move(log);
 

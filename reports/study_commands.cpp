@@ -38,6 +38,7 @@ unsigned resolve_thread_count(const std::string& text) {
 int resolve_lanes(const std::string& text) { return static_cast<int>(parse_count("--lanes", text, 1, kMaxLanes)); }
 
 void add_lanes_option(CLI::App* app, std::string& lanes) {
+  lanes = std::to_string(kDefaultLanes);
   app->add_option("--lanes", lanes,
                   fmt::format("runs stepped together on each thread, 1 .. {} (1: one at a time; the output is the same; "
                               "see README, Speed, for when more pay)",
