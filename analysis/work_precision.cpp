@@ -76,12 +76,6 @@ template <HasExact S> std::vector<WorkPoint> fixed_points(const S& s, std::size_
   return out;
 }
 
-template <HasExact S, class M> WorkPoint fixed_point(const S& s, std::size_t m, double dt, double t_end) {
-  const Counted<S> counted(s);
-  const RunResult<S::dim> r = simulate<M>(counted, fixed_spec(dt, t_end));
-  return fixed_point_of(counted, m, dt, t_end, r);
-}
-
 template <HasExact S> WorkPoint dopri5_point(const S& s, double tol, double t_end) {
   WorkPoint p{"dopri5", true, tol};
   AdaptiveSpec spec;
@@ -224,40 +218,81 @@ std::vector<StableStep> stable_steps(const WorkPrecisionConfig& c, const std::ve
   return out;
 }
 
-// One stiffness: for each method, the first run of a falling dt (or tolerance) sweep whose error is
-// at most crossover_error; then the cheapest explicit and implicit ones.
-StiffnessRow stiffness_row(const WorkPrecisionConfig& c, double k2) {
+Chain stiffness_chain(double k2) {
   std::vector<double> p = default_param_values<Chain>();
   p[3] = k2;  // Chain::params: mass1, mass2, stiffness1, stiffness2, ...
-  const Chain s(p);
-  const std::vector<double> dts = sweep_steps(c.sweep_t_end, 0.5, 1e-7, 57);  // 8 per decade
-  const auto reaches = [&](const WorkPoint& w) { return w.status == RunStatus::Ok && w.error <= c.crossover_error; };
-  // the methods, then dopri5
-  std::vector<WorkPoint> found = study_map<WorkPoint>(c.methods.size() + 1, c.threads, [&](std::size_t task) {
-    const auto first_reaching = [&](const std::vector<double>& settings, auto&& run) {
-      for (const double setting : settings)
-        if (WorkPoint w = run(setting); reaches(w)) return w;
-      return WorkPoint{};
-    };
-    if (task == c.methods.size())
-      return first_reaching(c.tolerances, [&](double tol) { return dopri5_point(s, tol, c.sweep_t_end); });
-    const std::size_t m = c.methods[task];
-    return with_method(m, [&]<class M>() {
-      return first_reaching(dts, [&](double dt) { return fixed_point<Chain, M>(s, m, dt, c.sweep_t_end); });
-    });
-  });
-  StiffnessRow row{k2, k2 / p[2], "", ""};
-  for (WorkPoint& w : found) {
-    if (w.method.empty()) continue;
-    if (c.timing) w.seconds = time_point(s, w, c.sweep_t_end);
-    const bool implicit = is_implicit(w.method);
-    std::string& best = implicit ? row.best_implicit : row.best_explicit;
-    double& secs = implicit ? row.implicit_seconds : row.explicit_seconds;
-    long long& evals = implicit ? row.implicit_evaluations : row.explicit_evaluations;
-    if (best.empty() || cheaper(c.timing, w.seconds, evaluations(w), secs, evals))
-      best = w.method, secs = w.seconds, evals = evaluations(w);
+  return Chain(p);
+}
+
+// Method m's search at every stiffness: for each, the first run of the falling dt sweep `dts`
+// whose error is at most crossover_error (a default WorkPoint if none). The searches go in
+// lockstep, a round being the next dt of every stiffness still searching, run in lanes: each
+// search runs the same dts, in the same order, as alone.
+std::vector<WorkPoint> first_reaching(const WorkPrecisionConfig& c, std::size_t m, const std::vector<double>& dts) {
+  const std::size_t ns = c.stiffnesses.size();
+  std::vector<WorkPoint> found(ns);
+  std::vector<std::size_t> next(ns, 0), round;  // each stiffness's next dt; the stiffnesses of a round
+  for (;;) {
+    round.clear();
+    for (std::size_t s = 0; s < ns; ++s)
+      if (found[s].method.empty() && next[s] < dts.size()) round.push_back(s);
+    if (round.empty()) return found;
+    std::size_t ran = 0;
+    run_batch<Counted<Chain>>(
+        m, round.size(), c.lanes,
+        [&](std::size_t k) {
+          const std::size_t s = round[k];
+          return std::pair(Counted<Chain>(stiffness_chain(c.stiffnesses[s])), fixed_spec(dts[next[s]], c.sweep_t_end));
+        },
+        [&](std::size_t k, const RunResult<Chain::dim>& r, const Counted<Chain>& counted) {
+          const std::size_t s = round[k];
+          const WorkPoint w = fixed_point_of(counted, m, dts[next[s]++], c.sweep_t_end, r);
+          if (w.status == RunStatus::Ok && w.error <= c.crossover_error) found[s] = w;
+          ++ran;
+        });
+    if (ran == 0) return found;  // m does not apply to the chain
   }
-  return row;
+}
+
+// The stiffness sweep: at each stiffness, for each method (and dopri5 over the tolerances), the
+// first run of a falling dt (or tolerance) sweep whose error is at most crossover_error; then the
+// cheapest explicit and implicit ones.
+std::vector<StiffnessRow> stiffness_rows(const WorkPrecisionConfig& c) {
+  const std::vector<double> dts = sweep_steps(c.sweep_t_end, 0.5, 1e-7, 57);  // 8 per decade
+  const std::size_t nm = c.methods.size(), ns = c.stiffnesses.size();
+  // tasks: a method's searches at every stiffness (the implicit methods' first), then dopri5's at each
+  std::vector<std::size_t> order = implicit_first(c.methods);
+  for (std::size_t task = nm; task < nm + ns; ++task) order.push_back(task);
+  const auto found = study_map<std::vector<WorkPoint>>(nm + ns, c.threads, [&](std::size_t task) {
+    if (task < nm) return first_reaching(c, c.methods[task], dts);
+    const Chain s = stiffness_chain(c.stiffnesses[task - nm]);
+    for (const double tol : c.tolerances)
+      if (WorkPoint w = dopri5_point(s, tol, c.sweep_t_end); w.status == RunStatus::Ok && w.error <= c.crossover_error)
+        return std::vector{w};
+    return std::vector{WorkPoint{}};
+  }, order);
+  std::vector<StiffnessRow> rows;
+  for (std::size_t i = 0; i < ns; ++i) {
+    const Chain s = stiffness_chain(c.stiffnesses[i]);
+    StiffnessRow row{c.stiffnesses[i], c.stiffnesses[i] / default_param_values<Chain>()[2], "", ""};
+    // the methods', then dopri5's (a shard's run leaves the other shards' tasks empty)
+    const auto at = [&](std::size_t task, std::size_t k) { return k < found[task].size() ? found[task][k] : WorkPoint{}; };
+    std::vector<WorkPoint> points;
+    for (std::size_t task = 0; task < nm; ++task) points.push_back(at(task, i));
+    points.push_back(at(nm + i, 0));
+    for (WorkPoint& w : points) {
+      if (w.method.empty()) continue;
+      if (c.timing) w.seconds = time_point(s, w, c.sweep_t_end);
+      const bool implicit = is_implicit(w.method);
+      std::string& best = implicit ? row.best_implicit : row.best_explicit;
+      double& secs = implicit ? row.implicit_seconds : row.explicit_seconds;
+      long long& evals = implicit ? row.implicit_evaluations : row.explicit_evaluations;
+      if (best.empty() || cheaper(c.timing, w.seconds, evaluations(w), secs, evals))
+        best = w.method, secs = w.seconds, evals = evaluations(w);
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
 }
 
 }  // namespace
@@ -281,7 +316,7 @@ WorkPrecisionResult work_precision_study(const WorkPrecisionConfig& config) {
     for (const double level : config.error_levels) w.cheapest.push_back(cheapest_at(w.points, level));
     out.scenes.push_back(std::move(w));
   }
-  for (const double k2 : config.stiffnesses) out.stiffness.push_back(stiffness_row(config, k2));
+  out.stiffness = stiffness_rows(config);
   // The crossover: the smallest ratio from which on, at every larger one, the best implicit run is
   // cheaper than the best explicit one.
   for (std::size_t i = out.stiffness.size(); i-- > 0;) {
