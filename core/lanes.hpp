@@ -70,6 +70,7 @@ template <class M, Scene S, class Job, class Done>
 void simulate_lanes(std::size_t n, int lanes, Job&& job, Done&& done) {
   struct Lane {
     std::optional<S> scene;
+    std::optional<RunResult<S::dim>> result;
     std::optional<Run<M, S>> run;
     std::size_t index = 0;
   };
@@ -79,11 +80,12 @@ void simulate_lanes(std::size_t n, int lanes, Job&& job, Done&& done) {
   std::size_t next = 0, active = 0;
   const auto load = [&](Lane& l) {
     l.run.reset();
+    l.result.reset();
     l.scene.reset();
     if (next == n) return false;
     auto [scene, spec] = job(next);
     l.index = next++;
-    l.run.emplace(l.scene.emplace(std::move(scene)), spec);
+    l.run.emplace(l.scene.emplace(std::move(scene)), spec, l.result.emplace());
     return true;
   };
   for (std::size_t k = 0; k < count; ++k) active += load(lane[k]);
@@ -91,7 +93,8 @@ void simulate_lanes(std::size_t n, int lanes, Job&& job, Done&& done) {
     if (advance_lanes(lane.get(), count, ended) == 0) continue;
     for (std::size_t k = 0; k < count; ++k) {
       if (!ended[k]) continue;
-      done(lane[k].index, lane[k].run->finish(), *lane[k].scene);
+      lane[k].run->finish();
+      done(lane[k].index, std::move(*lane[k].result), *lane[k].scene);
       if (!load(lane[k])) --active;
     }
   }
