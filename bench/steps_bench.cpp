@@ -315,6 +315,16 @@ std::string ratio_table(const std::map<std::string, double>& t) {
                   alone->second / lanes->second);
     out += line;
   }
+  const auto lanes_rate = t.find("throughput_rate/spring/explicit_euler"), alone_rate = t.find("throughput_scalar_rate/spring/explicit_euler");
+  if (lanes_rate != t.end() && alone_rate != t.end()) {
+    const double per = 1.0 / static_cast<double>(throughput_work.second);
+    char line[300];
+    std::snprintf(line, sizeof line,
+                  "with the energy-rate fit of study stability: %.3f ns per trajectory-step in lanes, %.3f one at a time; "
+                  "lanes/one at a time %.2f\n",
+                  lanes_rate->second * per, alone_rate->second * per, alone_rate->second / lanes_rate->second);
+    out += line;
+  }
   return out;
 }
 

@@ -7,6 +7,9 @@
 //   throughput_baseline/spring/explicit_euler  the same update written by hand over the same
 //                                              number of interleaved trajectories, nothing else
 //   throughput_scalar/spring/explicit_euler    the same runs one at a time (simulate, --lanes 1)
+//   throughput_rate/..., throughput_scalar_rate/...
+//                                              the same two with the energy-rate fit, as in
+//                                              `study stability` (ln E and its slope, a log a step)
 //
 // Each iteration runs every trajectory kSteps steps from the initial state, each with its own
 // step (no error against the exact solution: the runs of `study stability` do without it).
@@ -15,6 +18,7 @@
 #include <array>
 #include <cmath>
 #include <span>
+#include <string>
 
 #include "core/lanes.hpp"
 #include "core/methods.hpp"
@@ -30,11 +34,12 @@ constexpr std::size_t kLanes = 8;  // the best measured here (1.2x one at a time
 // Trajectory i's step: each its own (a compiler given identical lanes computes one and copies it).
 double step_of(std::size_t i) { return kDt * (1 + 1e-3 * static_cast<double>(i)); }
 
-RunSpec throughput_spec(std::size_t i) {
+RunSpec throughput_spec(std::size_t i, bool rate) {
   RunSpec spec;
   spec.dt = step_of(i);
   spec.steps = kSteps;
   spec.errors = false;
+  spec.energy_rate = rate;
   return spec;
 }
 
@@ -62,29 +67,34 @@ void set_rate(benchmark::State& st) {
       benchmark::Counter(static_cast<double>(st.iterations() * kLanes * kSteps), benchmark::Counter::kIsRate);
 }
 
-}  // namespace
-
-std::pair<int, long long> register_throughput() {
-  benchmark::RegisterBenchmark("throughput/spring/explicit_euler", [](benchmark::State& st) {
+void register_steplab_throughput(const std::string& suffix, bool rate) {
+  benchmark::RegisterBenchmark(("throughput" + suffix + "/spring/explicit_euler").c_str(), [rate](benchmark::State& st) {
     const Spring s = make_default_scene<Spring>();
     double sink = 0;
     for (auto _ : st) {
       simulate_lanes<ExplicitEuler, Spring>(
-          kLanes, kLanes, [&](std::size_t i) { return std::pair(s, throughput_spec(i)); },
+          kLanes, kLanes, [&](std::size_t i) { return std::pair(s, throughput_spec(i, rate)); },
           [&](std::size_t, const RunResult<1>& r, const Spring&) { sink += r.final.x[0]; });
       benchmark::DoNotOptimize(sink);
     }
     set_rate(st);
   });
-  benchmark::RegisterBenchmark("throughput_scalar/spring/explicit_euler", [](benchmark::State& st) {
+  benchmark::RegisterBenchmark(("throughput_scalar" + suffix + "/spring/explicit_euler").c_str(), [rate](benchmark::State& st) {
     const Spring s = make_default_scene<Spring>();
     double sink = 0;
     for (auto _ : st) {
-      for (std::size_t l = 0; l < kLanes; ++l) sink += simulate<ExplicitEuler>(s, throughput_spec(l)).final.x[0];
+      for (std::size_t l = 0; l < kLanes; ++l) sink += simulate<ExplicitEuler>(s, throughput_spec(l, rate)).final.x[0];
       benchmark::DoNotOptimize(sink);
     }
     set_rate(st);
   });
+}
+
+}  // namespace
+
+std::pair<int, long long> register_throughput() {
+  register_steplab_throughput("", false);
+  register_steplab_throughput("_rate", true);
   benchmark::RegisterBenchmark("throughput_baseline/spring/explicit_euler", [](benchmark::State& st) {
     std::array<double, kLanes> y, v, h;
     for (std::size_t l = 0; l < kLanes; ++l) h[l] = step_of(l);
