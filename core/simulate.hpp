@@ -128,7 +128,7 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
 
   Run(const S& scene, const RunSpec& spec, RunResult<D>& out, Observer observe = {})
       : scene_(scene), spec_(spec), observe_(observe), plan_{spec.steps, spec.max_samples}, y_(scene.initial()), r_(out),
-        tracker_(make_tracker(scene)) {
+        tracker_(make_tracker(scene, spec)) {
     if (plan_.size() > 0) r_.samples.reserve(static_cast<std::size_t>(plan_.size()) + 1);
     e0_ = scene.energy(y_.x, y_.v);
     r_.energy0 = e0_;
@@ -189,8 +189,8 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
   }
 
  private:
-  static auto make_tracker(const S& scene) {
-    if constexpr (HasExact<S>) return ExactTracker<S>(scene);
+  static auto make_tracker(const S& scene, const RunSpec& spec) {
+    if constexpr (HasExact<S>) return ExactTracker<S>(scene, spec.errors ? spec.dt : 0);  // steps of dt
     else return 0;
   }
   // Welford accumulators for the slope of ln E on t.
@@ -221,7 +221,7 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
   double n_fit_ = 0, mean_t_ = 0, mean_l_ = 0, c_tl_ = 0, m2_t_ = 0;
   double err_sq_sum_ = 0;
   long long i_ = 1, next_sample_ = 0, sample_k_ = 0;
-  [[no_unique_address]] decltype(make_tracker(std::declval<const S&>())) tracker_;
+  [[no_unique_address]] decltype(make_tracker(std::declval<const S&>(), RunSpec{})) tracker_;
   [[no_unique_address]] Stepper<M, S> stepper_;  // a multistep method's memory; nothing for a one-step method
 };
 

@@ -27,6 +27,7 @@ namespace steplab {
 struct Chain {
   static constexpr int dim = 2;
   static constexpr std::string_view name = "chain";
+  static constexpr bool affine_flow = true;  // flow(y, h) = e^{A h} y (core/scene.hpp)
   static constexpr std::array<ParamSpec, 8> params{{
       {"mass1", 1.0, Bound::Positive, "mass m1 (next to the wall)"},
       {"mass2", 1.0, Bound::Positive, "mass m2 (the free end)"},
