@@ -8,15 +8,9 @@
 
 #include <vector>
 
-#include "core/simulate.hpp"
+#include "analysis/kernel.hpp"
 
 namespace steplab {
-
-struct BounceEvent {
-  double t;               // time the mass left the ground
-  double energy_ratio;    // E/E0 then
-  double rebound_height;  // apex of the flight that follows (above the drop height 0: energy gained); NaN if cut off
-};
 
 struct CollisionRun {
   std::size_t method;

@@ -5,11 +5,9 @@
 #include <limits>
 #include <stdexcept>
 
-#include "analysis/lanes.hpp"
+#include "analysis/kernel.hpp"
 #include "analysis/shard.hpp"
 #include "analysis/timing.hpp"
-#include "core/dopri5.hpp"
-#include "core/scenes.hpp"
 
 namespace steplab {
 
@@ -54,24 +52,23 @@ RunSpec convergence_spec(double dt, double t_end, const ConvergenceResult& study
 
 // The record of a run of `method` at dt: its errors against the exact solution or the
 // reference, its round-off floor, and Diverged if it blew up.
-template <Scene S>
-ConvergenceRecord record_of(const S& s, std::size_t method, double dt, double t_end, const RunResult<S::dim>& r,
-                            const ConvergenceResult& study) {
+ConvergenceRecord record_of(std::size_t method, double dt, double t_end, const AnyResult& r, const ConvergenceResult& study) {
+  const ConvergenceConfig& c = study.config;
+  const SceneKernel& s = scene_kernel(c.scene);
   const long long steps = steps_for(t_end, dt);
   ConvergenceRecord rec{method,         dt,          steps,       r.status, r.failed_step, r.error_final,
                         r.error_v_final, r.error_max, r.error_rms, 0};
   double target_norm = 0;  // |x(t_end)|, exact or reference
   if (study.uses_reference) {
-    const Vec<S::dim> x = Eigen::Map<const Vec<S::dim>>(study.reference.x.data());
-    const Vec<S::dim> v = Eigen::Map<const Vec<S::dim>>(study.reference.v.data());
-    rec.error_final = (r.final.x - x).norm();
-    rec.error_v_final = (r.final.v - v).norm();
+    const Eigen::Map<const Eigen::VectorXd> x(study.reference.x.data(), s.dim), v(study.reference.v.data(), s.dim);
+    rec.error_final = s.norm(r.final.x - x);
+    rec.error_v_final = s.norm(r.final.v - v);
     rec.error_max = rec.error_rms = std::numeric_limits<double>::quiet_NaN();  // known at t_end alone
-    target_norm = x.norm();
+    target_norm = s.norm(x);
   } else {
-    if constexpr (HasExact<S>) target_norm = exact(s, t_end).x.norm();
+    if (s.has_exact) target_norm = s.norm(s.exact(c.params, t_end).x);
   }
-  const double scale = std::max(s.initial().x.norm(), target_norm);
+  const double scale = std::max(s.norm(s.initial(c.params).x), target_norm);
   rec.floor = roundoff_floor(scale, steps);
   const double largest = study.uses_reference ? rec.error_final : rec.error_max;
   if (rec.status == RunStatus::Ok && blown_up(largest, scale)) rec.status = RunStatus::Diverged;
@@ -80,23 +77,23 @@ ConvergenceRecord record_of(const S& s, std::size_t method, double dt, double t_
   return rec;
 }
 
-template <Scene S> ReferenceSolution reference_solution(const S& s, double t_end) {
+ReferenceSolution reference_solution(const SceneKernel& s, const std::vector<double>& params, double t_end) {
   ReferenceSolution ref;
   AdaptiveSpec spec;
   spec.t_end = t_end;
   spec.errors = false;
   spec.tol = {ref.rtol, ref.rtol};
-  const AdaptiveResult<S::dim> fine = simulate_dopri5(s, spec);
+  const AnyAdaptiveResult fine = s.dopri5(params, spec);
   spec.tol = {ref.check_rtol, ref.check_rtol};
-  const AdaptiveResult<S::dim> check = simulate_dopri5(s, spec);
+  const AnyAdaptiveResult check = s.dopri5(params, spec);
   if (fine.run.status != RunStatus::Ok || check.run.status != RunStatus::Ok)
     throw std::runtime_error("the reference solution (dopri5 at rtol 1e-13) did not reach t_end");
   ref.steps = fine.stats.accepted;
   ref.check_steps = check.stats.accepted;
-  ref.estimated_error = (fine.run.final.x - check.run.final.x).norm();
+  ref.estimated_error = s.norm(fine.run.final.x - check.run.final.x);
   ref.floor = kReferenceMargin * ref.estimated_error;
-  ref.x.assign(fine.run.final.x.data(), fine.run.final.x.data() + S::dim);
-  ref.v.assign(fine.run.final.v.data(), fine.run.final.v.data() + S::dim);
+  ref.x.assign(fine.run.final.x.data(), fine.run.final.x.data() + s.dim);
+  ref.v.assign(fine.run.final.v.data(), fine.run.final.v.data() + s.dim);
   return ref;
 }
 
@@ -118,26 +115,21 @@ namespace {
 // repeated until kTimingSeconds and 3 repetitions; the median is kept.
 void time_runs(ConvergenceResult& out) {
   const ConvergenceConfig& c = out.config;
-  with_scene(c.scene, [&]<class S>() {
-    const S scene(c.params);
-    for (ConvergenceRecord& rec : out.records) {
-      with_method(rec.method, [&]<class M>() {
-        if constexpr (applies<M, S>()) {
-          RunSpec spec;  // the integration alone: no exact solution evaluated along the way
-          spec.dt = rec.dt;
-          spec.steps = rec.steps;
-          spec.errors = false;
-          std::vector<double> times = repeated_timings(
-              [&] {
-                if (simulate<M>(scene, spec).steps == 0 && rec.steps > 0) throw std::logic_error("timed run took no step");
-              },
-              3, kTimingSeconds);
-          std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
-          rec.seconds = times[times.size() / 2];
-        }
-      });
-    }
-  });
+  for (ConvergenceRecord& rec : out.records) {
+    if (!applies(rec.method, c.scene)) continue;
+    const PairKernel& k = pair_kernel(rec.method, c.scene);
+    RunSpec spec;  // the integration alone: no exact solution evaluated along the way
+    spec.dt = rec.dt;
+    spec.steps = rec.steps;
+    spec.errors = false;
+    std::vector<double> times = repeated_timings(
+        [&] {
+          if (k.run(c.params, spec).steps == 0 && rec.steps > 0) throw std::logic_error("timed run took no step");
+        },
+        3, kTimingSeconds);
+    std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
+    rec.seconds = times[times.size() / 2];
+  }
 }
 
 }  // namespace
@@ -149,29 +141,24 @@ ConvergenceResult convergence_study(const ConvergenceConfig& config) {
   const std::size_t nd = out.dts.size(), nm = config.methods.size();
   out.records.resize(nm * nd);
 
-  with_scene(config.scene, [&]<class S>() {
-    const S scene(config.params);
-    out.uses_reference = config.reference || !HasExact<S>;
-    if (out.uses_reference && config.fit_error != ErrorKind::Final)
-      throw std::invalid_argument("a reference solution gives the final error only");
-    if (out.uses_reference) out.reference = reference_solution(scene, config.t_end);
-    // a task per method: its dt sweep in lanes, the smallest dt (the longest run) first, so that
-    // the short runs fill the lanes while it runs
-    const auto sweeps = study_map<std::vector<ConvergenceRecord>>(nm, config.threads, [&](std::size_t m) {
-      const std::size_t method = config.methods[m];
-      std::vector<ConvergenceRecord> sweep(nd);
-      run_batch<S>(
-          method, nd, config.lanes,
-          [&](std::size_t k) { return std::pair(scene, convergence_spec(out.dts[nd - 1 - k], config.t_end, out)); },
-          [&](std::size_t k, const RunResult<S::dim>& r, const S&) {
-            const std::size_t i = nd - 1 - k;
-            sweep[i] = record_of(scene, method, out.dts[i], config.t_end, r, out);
-          });
-      return sweep;
-    }, implicit_first(config.methods));
-    for (std::size_t m = 0; m < nm; ++m)
-      std::copy(sweeps[m].begin(), sweeps[m].end(), out.records.begin() + static_cast<std::ptrdiff_t>(m * nd));
-  });
+  const SceneKernel& scene = scene_kernel(config.scene);
+  out.uses_reference = config.reference || !scene.has_exact;
+  if (out.uses_reference && config.fit_error != ErrorKind::Final)
+    throw std::invalid_argument("a reference solution gives the final error only");
+  if (out.uses_reference) out.reference = reference_solution(scene, config.params, config.t_end);
+  // a task per method: its dt sweep, the smallest dt (the longest run) first; a method that does
+  // not apply to the scene leaves its records empty
+  const auto sweeps = study_map<std::vector<ConvergenceRecord>>(nm, config.threads, [&](std::size_t m) {
+    const std::size_t method = config.methods[m];
+    std::vector<ConvergenceRecord> sweep(nd);
+    if (!applies(method, config.scene)) return sweep;
+    const PairKernel& k = pair_kernel(method, config.scene);
+    for (std::size_t i = nd; i-- > 0;)
+      sweep[i] = record_of(method, out.dts[i], config.t_end, k.run(config.params, convergence_spec(out.dts[i], config.t_end, out)), out);
+    return sweep;
+  }, implicit_first(config.methods));
+  for (std::size_t m = 0; m < nm; ++m)
+    std::copy(sweeps[m].begin(), sweeps[m].end(), out.records.begin() + static_cast<std::ptrdiff_t>(m * nd));
 
   if (config.timing) time_runs(out);
 

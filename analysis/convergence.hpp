@@ -16,7 +16,6 @@
 #include <vector>
 
 #include "analysis/order_fit.hpp"
-#include "core/lanes.hpp"
 #include "core/simulate.hpp"
 
 namespace steplab {
@@ -33,7 +32,6 @@ struct ConvergenceConfig {
   int points = 16;
   ErrorKind fit_error = ErrorKind::Final;  // which error the order is fitted to
   unsigned threads = 0;                    // 0: all cores
-  int lanes = kDefaultLanes;               // runs stepped together (core/lanes.hpp); 1: one at a time
   // Work-precision: time every run again, one at a time, repeated until kTimingSeconds of
   // runs and at least 3 repetitions; the median is kept. Wall-clock times differ from run to
   // run: the only part of the output that is not reproducible, so it is off by default.

@@ -20,8 +20,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "analysis/kernel.hpp"
 #include "analysis/parallel.hpp"
-#include "core/simulate.hpp"
 
 namespace steplab {
 
@@ -167,7 +167,7 @@ inline std::vector<std::size_t> implicit_first(const std::vector<std::size_t>& m
   std::vector<std::size_t> order;
   for (const bool implicit : {true, false})
     for (std::size_t k = 0; k < methods.size(); ++k)
-      if (method_infos[methods[k]].implicit == implicit) order.push_back(k);
+      if (method_info(methods[k]).implicit == implicit) order.push_back(k);
   return order;
 }
 

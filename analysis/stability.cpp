@@ -5,10 +5,8 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "analysis/lanes.hpp"
+#include "analysis/kernel.hpp"
 #include "analysis/shard.hpp"
-#include "core/methods.hpp"
-#include "analysis/step_map.hpp"
 
 namespace steplab {
 namespace {
@@ -121,20 +119,22 @@ StableSet stable_set(double lo, double hi, double factor, double precision, int 
   return out;
 }
 
-template <class M> Eigen::MatrixXd differenced_matrix(const Spring& s, double h, double delta_x) {
+// The spring's step map (analysis/step_map.hpp) through the kernel table, differenced.
+Eigen::MatrixXd differenced_matrix(std::size_t method, const Spring& s, double h, double delta_x) {
   // An implicit method's Newton starts from x0 + h v0: the velocity perturbation must not carry
   // that guess past the anchor either, or Newton may settle on the other linear branch.
   const double delta_v = std::min(delta_x, 0.1 * std::abs(s.equilibrium()) / std::max(1.0, h));
-  const State<1> eq{Vec<1>::Constant(s.equilibrium()), Vec<1>::Zero()};
-  constexpr int n = map_size<M>();
-  const Eigen::VectorXd rest = at_rest_flat<M>(s, eq);
-  const Eigen::VectorXd base = step_flat<M>(s, rest, h);
+  const PairKernel& k = pair_kernel(method, scene_index(Spring::name));
+  const std::array<double, 5> p = s.values();
+  const int n = method_kernel(method).map_size;
+  const Eigen::VectorXd rest = k.at_rest_flat(p, s.equilibrium(), 0.0);
+  const Eigen::VectorXd base = k.step_flat(p, rest, h);
   Eigen::MatrixXd m(n, n);
   for (int j = 0; j < n; ++j) {
-    Eigen::VectorXd p = rest;
+    Eigen::VectorXd z = rest;
     const double delta = j % 2 == 0 ? delta_x : delta_v;
-    p[j] += delta;
-    m.col(j) = (step_flat<M>(s, p, h) - base) / delta;
+    z[j] += delta;
+    m.col(j) = (k.step_flat(p, z, h) - base) / delta;
   }
   return m;
 }
@@ -156,13 +156,11 @@ bool trusted(const Eigen::MatrixXd& m) { return m.cwiseAbs().maxCoeff() <= kTrus
 // and resolves M to ~eps |y_eq| / delta ~ 1e-14.
 Eigen::MatrixXd step_matrix(std::size_t method, const Spring& s, double h) {
   const double room = 0.1 * std::max(std::abs(s.equilibrium()), 1e-6);
-  return with_method(method, [&]<class M>() {
-    const Eigen::MatrixXd rough = differenced_matrix<M>(s, h, 1e-6 * room);
-    // so large that the second pass's perturbation would vanish in y_eq's rounding: past any
-    // trust (predicted_stable), and the rough matrix already says so
-    if (!trusted(rough)) return rough;
-    return differenced_matrix<M>(s, h, room / std::max(1.0, rough.cwiseAbs().maxCoeff()));
-  });
+  const Eigen::MatrixXd rough = differenced_matrix(method, s, h, 1e-6 * room);
+  // so large that the second pass's perturbation would vanish in y_eq's rounding: past any
+  // trust (predicted_stable), and the rough matrix already says so
+  if (!trusted(rough)) return rough;
+  return differenced_matrix(method, s, h, room / std::max(1.0, rough.cwiseAbs().maxCoeff()));
 }
 
 // 2 x 2: eigenvalues of [[a, b], [c, d]] are tr/2 +- sqrt(tr^2/4 - det), and a complex pair has
@@ -209,7 +207,7 @@ RunSpec rate_spec(double h, long long steps, bool errors) {
   return spec;
 }
 
-RateRun rate_run(const RunResult<1>& r) {
+RateRun rate_run(const AnyResult& r) {
   const bool ok = r.status == RunStatus::Ok;
   return RateRun{r.energy_rate, r.energy_ratio_final, r.energy_ratio_max, ok ? r.error_final : kInf,
                  r.status,      r.steps,             r.failed_step};
@@ -218,21 +216,21 @@ RateRun rate_run(const RunResult<1>& r) {
 }  // namespace
 
 RateRun measure_rate(std::size_t method, const Spring& s, double h, long long steps) {
-  return with_method(method, [&]<class M>() { return rate_run(simulate<M>(s, rate_spec(h, steps, true))); });
+  return rate_run(pair_kernel(method, scene_index(Spring::name)).run(s.values(), rate_spec(h, steps, true)));
 }
 
 std::vector<RateRun> measure_rates(std::size_t method, const std::vector<Spring>& s, const std::vector<double>& h,
-                                   long long steps, bool errors, int lanes) {
+                                   long long steps, bool errors) {
   std::vector<RateRun> out(h.size());
-  run_batch<Spring>(method, h.size(), lanes, [&](std::size_t i) { return std::pair(s[i], rate_spec(h[i], steps, errors)); },
-                    [&](std::size_t i, const RunResult<1>& r, const Spring&) { out[i] = rate_run(r); });
+  const PairKernel& k = pair_kernel(method, scene_index(Spring::name));
+  for (std::size_t i = 0; i < h.size(); ++i) out[i] = rate_run(k.run(s[i].values(), rate_spec(h[i], steps, errors)));
   return out;
 }
 
-StableSet measured_stable_set(std::size_t method, const Spring& s, int lanes) {
+StableSet measured_stable_set(std::size_t method, const Spring& s) {
   const double w = s.omega();
-  return stable_set(kMeasureMinWh / w, kMaxWh / w, kMeasureFactor, 1e-4, lanes, [&](const std::vector<double>& hs) {
-    const std::vector<RateRun> runs = measure_rates(method, std::vector<Spring>(hs.size(), s), hs, kRateSteps, false, lanes);
+  return stable_set(kMeasureMinWh / w, kMaxWh / w, kMeasureFactor, 1e-4, 1, [&](const std::vector<double>& hs) {
+    const std::vector<RateRun> runs = measure_rates(method, std::vector<Spring>(hs.size(), s), hs, kRateSteps, false);
     std::vector<char> out;
     for (const RateRun& r : runs) out.push_back(!r.stable());
     return out;
@@ -254,7 +252,7 @@ std::vector<ThresholdRow> threshold_study(const StabilityConfig& c) {
     const std::size_t m = c.methods[task / ng];
     const double gamma = c.threshold_dampings[task % ng];
     const Spring s = linear_spring(c.params, gamma);
-    const StableSet predicted = predicted_stable_set(m, s), measured = measured_stable_set(m, s, c.lanes);
+    const StableSet predicted = predicted_stable_set(m, s), measured = measured_stable_set(m, s);
     return ThresholdRow{m, gamma, predicted.dt_star, measured.dt_star, predicted.again, measured.again};
   });
 }
@@ -265,11 +263,11 @@ std::vector<SweepRow> damping_sweep(const StabilityConfig& c) {
   const std::size_t nm = c.methods.size(), nd = c.sweep_dts.size(), ng = gammas.size();
   std::vector<Spring> springs;
   for (double gamma : gammas) springs.push_back(linear_spring(c.params, gamma));
-  // a task per (method, dt): its dampings in lanes
+  // a task per (method, dt): its dampings
   const auto parts = study_map<std::vector<SweepRow>>(nm * nd, c.threads, [&](std::size_t task) {
     const std::size_t m = c.methods[task / nd];
     const double dt = c.sweep_dts[task % nd];
-    const std::vector<RateRun> runs = measure_rates(m, springs, std::vector<double>(ng, dt), kRateSteps, true, c.lanes);
+    const std::vector<RateRun> runs = measure_rates(m, springs, std::vector<double>(ng, dt), kRateSteps, true);
     std::vector<SweepRow> rows;
     for (std::size_t g = 0; g < ng; ++g) rows.push_back({m, dt, gammas[g], runs[g], predicted_rate(m, springs[g], dt)});
     return rows;
@@ -293,7 +291,7 @@ StabilityMap stability_map(const StabilityConfig& c) {
     const std::size_t mi = task / ng, gi = task % ng;
     const Spring s = linear_spring(c.params, map.damping[gi]);
     MapRow row{predicted_stable_set(c.methods[mi], s).dt_star, {}, {}};
-    const std::vector<RateRun> runs = measure_rates(c.methods[mi], std::vector<Spring>(nd, s), map.dt, c.map_steps, false, c.lanes);
+    const std::vector<RateRun> runs = measure_rates(c.methods[mi], std::vector<Spring>(nd, s), map.dt, c.map_steps, false);
     for (std::size_t di = 0; di < nd; ++di) {
       row.stable.push_back(runs[di].stable());
       row.predicted.push_back(predicted_stable(c.methods[mi], s, map.dt[di]));
@@ -337,10 +335,9 @@ AmplitudeTable amplitude_table(const std::vector<double>& params, const std::vec
       spec.steps = n;
       spec.errors = false;
       // |y - L| with y < 0 is |y| + L: the largest |y| reached (from the rest start, |y| = L), plus L
-      double max_abs_y = s.L;
-      const auto observe = [&](long long, double, const State<1>& y) { max_abs_y = std::max(max_abs_y, std::abs(y.x[0])); };
-      const RunResult<1> r = with_method(m, [&]<class M>() { return simulate<M>(s, spec, observe); });
-      row.push_back(r.status == RunStatus::Ok ? max_abs_y + s.L : kInf);
+      Observed o;
+      const AnyResult r = pair_kernel(m, scene_index(Spring::name)).run_observed(params, spec, o);
+      row.push_back(r.status == RunStatus::Ok ? std::max(s.L, o.max_abs_x) + s.L : kInf);
     }
     t.amplitude.push_back(std::move(row));
   }

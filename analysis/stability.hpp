@@ -27,7 +27,6 @@
 #include <vector>
 
 #include "core/scenes/spring.hpp"
-#include "core/lanes.hpp"
 #include "core/simulate.hpp"
 
 namespace steplab {
@@ -79,15 +78,14 @@ struct RateRun {
 };
 
 RateRun measure_rate(std::size_t method, const Spring& s, double h, long long steps = kRateSteps);
-// Runs (s[i], h[i]) in `lanes` (analysis/lanes.hpp; 1: one at a time), with the position error
-// against the exact solution along each run or (errors false) without it (error_final 0).
+// Runs (s[i], h[i]), with the position error against the exact solution along each run or
+// (errors false) without it (error_final 0).
 std::vector<RateRun> measure_rates(std::size_t method, const std::vector<Spring>& s, const std::vector<double>& h,
-                                   long long steps, bool errors, int lanes);
+                                   long long steps, bool errors);
 
 // From runs (measure_rates): h scanned by factors of 2 from kMeasureMinWh/omega up to dt*, by
-// 1.05 beyond it, each edge bisected to 1e-4 relative; `lanes` steps tried at a time (the same
-// set whatever the lanes).
-StableSet measured_stable_set(std::size_t method, const Spring& s, int lanes = 1);
+// 1.05 beyond it, each edge bisected to 1e-4 relative.
+StableSet measured_stable_set(std::size_t method, const Spring& s);
 
 inline double predicted_threshold(std::size_t method, const Spring& s) { return predicted_stable_set(method, s).dt_star; }
 inline double measured_threshold(std::size_t method, const Spring& s) { return measured_stable_set(method, s).dt_star; }
@@ -129,7 +127,6 @@ struct StabilityConfig {
   double map_damping_max = 0;                  // 0: twice critical damping
   long long map_steps = kRateSteps;
   unsigned threads = 0;
-  int lanes = kDefaultLanes;                   // runs stepped together (core/lanes.hpp); 1: one at a time
 };
 
 // 0 through critical damping 2 sqrt(k m) to twice that (21 values), plus 0.1.

@@ -7,32 +7,28 @@
 
 #include "analysis/convergence.hpp"
 #include "analysis/fit.hpp"
-#include "analysis/lanes.hpp"
+#include "analysis/kernel.hpp"
 #include "analysis/shard.hpp"
 #include "analysis/peers.hpp"
 #include "analysis/timing.hpp"
-#include "core/dopri5.hpp"
-#include "core/scenes.hpp"
+#include "core/scenes/chain.hpp"
+#include "core/scenes/spring.hpp"
 
 namespace steplab {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// A scene that counts what a method asks of it; otherwise the scene itself.
-template <Scene S> struct Counted : S {
-  explicit Counted(const S& s) : S(s) {}
-  explicit Counted(std::span<const double> p) : S(p) {}
-  mutable long long forces = 0, jacobian_calls = 0;
-  Vec<S::dim> force(const Vec<S::dim>& x, const Vec<S::dim>& v) const {
-    ++forces;
-    return S::force(x, v);
-  }
-  Jacobians<S::dim> jacobians(const Vec<S::dim>& x, const Vec<S::dim>& v) const {
-    ++jacobian_calls;
-    return S::jacobians(x, v);
-  }
+// A scene of the study: its index in the kernel table and its parameter values.
+struct Where {
+  std::size_t scene;
+  std::vector<double> params;
 };
+
+Where spring_where(const Spring& s) {
+  const std::array<double, 5> p = s.values();
+  return {scene_index(Spring::name), {p.begin(), p.end()}};
+}
 
 // Minimum of repeated timings of `run` (kMinRepeats, and kMinSeconds in all).
 template <class F> double min_time(F&& run) {
@@ -47,41 +43,37 @@ RunSpec fixed_spec(double dt, double t_end) {
   return spec;
 }
 
-// The point of a run of method m at dt on the counting scene.
-template <HasExact S> WorkPoint fixed_point_of(const Counted<S>& counted, std::size_t m, double dt, double t_end,
-                                               const RunResult<S::dim>& r) {
-  const S& s = counted;
-  WorkPoint p{std::string(method_infos[m].name), false, dt};
-  const State<S::dim> ex = exact(s, t_end);
+// The point of a run of method m at dt, counting what it asked of the scene.
+WorkPoint fixed_point(const Where& w, std::size_t m, double dt, double t_end) {
+  const SceneKernel& s = scene_kernel(w.scene);
+  Counts n;
+  const AnyResult r = pair_kernel(m, w.scene).run_counted(w.params, fixed_spec(dt, t_end), n);
+  WorkPoint p{std::string(method_info(m).name), false, dt};
+  const AnyState ex = s.exact(w.params, t_end);
   p.error = r.error_max;
   p.status = r.status;
-  if (p.status == RunStatus::Ok && blown_up(p.error, std::max(s.initial().x.norm(), ex.x.norm()))) p.status = RunStatus::Diverged;
+  if (p.status == RunStatus::Ok && blown_up(p.error, std::max(s.norm(s.initial(w.params).x), s.norm(ex.x)))) p.status = RunStatus::Diverged;
   if (p.status != RunStatus::Ok) p.error = kInf;
   p.steps = r.steps;
-  p.force_evaluations = counted.forces;
-  p.jacobian_evaluations = counted.jacobian_calls;
+  p.force_evaluations = n.forces;
+  p.jacobian_evaluations = n.jacobians;
   return p;
 }
 
-// Method m's points at each of dts, run in lanes (analysis/lanes.hpp).
-template <HasExact S> std::vector<WorkPoint> fixed_points(const S& s, std::size_t m, const std::vector<double>& dts,
-                                                          double t_end, int lanes) {
+// Method m's points at each of dts (default points where m does not apply to the scene).
+std::vector<WorkPoint> fixed_points(const Where& w, std::size_t m, const std::vector<double>& dts, double t_end) {
   std::vector<WorkPoint> out(dts.size());
-  const std::size_t n = dts.size();  // the smallest dt (the longest run) first
-  run_batch<Counted<S>>(
-      m, n, lanes, [&](std::size_t k) { return std::pair(Counted<S>(s), fixed_spec(dts[n - 1 - k], t_end)); },
-      [&](std::size_t k, const RunResult<S::dim>& r, const Counted<S>& counted) {
-        out[n - 1 - k] = fixed_point_of(counted, m, dts[n - 1 - k], t_end, r);
-      });
+  if (!applies(m, w.scene)) return out;
+  for (std::size_t i = dts.size(); i-- > 0;) out[i] = fixed_point(w, m, dts[i], t_end);  // the longest run first
   return out;
 }
 
-template <HasExact S> WorkPoint dopri5_point(const S& s, double tol, double t_end) {
+WorkPoint dopri5_point(const Where& w, double tol, double t_end) {
   WorkPoint p{"dopri5", true, tol};
   AdaptiveSpec spec;
   spec.tol = {tol, tol};
   spec.t_end = t_end;
-  const AdaptiveResult<S::dim> r = simulate_dopri5(s, spec);
+  const AnyAdaptiveResult r = scene_kernel(w.scene).dopri5(w.params, spec);
   p.status = r.run.status;
   p.error = p.status == RunStatus::Ok ? r.run.error_max : kInf;
   p.steps = r.stats.accepted;
@@ -89,12 +81,23 @@ template <HasExact S> WorkPoint dopri5_point(const S& s, double tol, double t_en
   return p;
 }
 
-// A peer's point (analysis/peers.hpp): "odeint_dopri5" or "cvode_bdf".
-template <class Peer, HasExact S> WorkPoint peer_point(const char* name, const S& s, double tol, double t_end) {
+// The peers (analysis/peers.hpp) on the study's two scenes: f.template operator()<S>(scene).
+template <class F> auto on_peer_scene(const Where& w, F&& f) {
+  if (scene_name(w.scene) == Spring::name) return f(Spring(w.params));
+  if (scene_name(w.scene) == Chain::name) return f(Chain(w.params));
+  throw std::logic_error("the work-precision peers run on the spring and the chain only");
+}
+
+// A peer's point: "odeint_dopri5" or "cvode_bdf".
+WorkPoint peer_point(const char* name, const Where& w, double tol, double t_end) {
   WorkPoint p{name, true, tol};
   p.error = 0;
   PeerCounts n;
-  Peer::run(s, tol, t_end, n, &p.error);
+  on_peer_scene(w, [&]<class S>(const S& s) {
+    if (std::string_view(name) == "odeint_dopri5") OdeintDopri5<S>::run(s, tol, t_end, n, &p.error);
+    else CvodeBdf<S>::run(s, tol, t_end, n, &p.error);
+    return 0;
+  });
   p.steps = n.steps;
   p.force_evaluations = n.evaluations;
   p.jacobian_evaluations = n.jacobian_evaluations;
@@ -102,48 +105,50 @@ template <class Peer, HasExact S> WorkPoint peer_point(const char* name, const S
   return p;
 }
 
-// Times a point's run again, with the plain scene (no counting), one run at a time.
-template <HasExact S> double time_point(const S& s, const WorkPoint& p, double t_end) {
+// Times a point's run again, without counting or errors, one run at a time.
+double time_point(const Where& w, const WorkPoint& p, double t_end) {
   if (p.method == "dopri5") {
     AdaptiveSpec spec;
     spec.tol = {p.setting, p.setting};
     spec.t_end = t_end;
     spec.errors = false;
-    return min_time([&] { simulate_dopri5(s, spec); });
+    const SceneKernel& s = scene_kernel(w.scene);
+    return min_time([&] { s.dopri5(w.params, spec); });
   }
   PeerCounts n;
-  if (p.method == "odeint_dopri5") return min_time([&] { OdeintDopri5<S>::run(s, p.setting, t_end, n); });
-  if (p.method == "cvode_bdf") return min_time([&] { CvodeBdf<S>::run(s, p.setting, t_end, n); });
-  return with_method(*find_method(p.method), [&]<class M>() {
-    RunSpec spec;
-    spec.dt = p.setting;
-    spec.steps = steps_for(t_end, p.setting);
-    spec.errors = false;
-    return min_time([&] { simulate<M>(s, spec); });
-  });
+  if (p.method == "odeint_dopri5" || p.method == "cvode_bdf")
+    return on_peer_scene(w, [&]<class S>(const S& s) {
+      if (p.method == "odeint_dopri5") return min_time([&] { OdeintDopri5<S>::run(s, p.setting, t_end, n); });
+      return min_time([&] { CvodeBdf<S>::run(s, p.setting, t_end, n); });
+    });
+  RunSpec spec;
+  spec.dt = p.setting;
+  spec.steps = steps_for(t_end, p.setting);
+  spec.errors = false;
+  const PairKernel& k = pair_kernel(*find_method(p.method), w.scene);
+  return min_time([&] { k.run(w.params, spec); });
 }
 
 // Every point of one scene: the dt sweep of each fixed-step method, the tolerance sweeps.
-template <HasExact S>
-std::vector<WorkPoint> scene_points(const S& s, const WorkPrecisionConfig& c, const std::vector<double>& dts,
+std::vector<WorkPoint> scene_points(const Where& w, const WorkPrecisionConfig& c, const std::vector<double>& dts,
                                     double t_end, const std::vector<std::size_t>& methods) {
   const std::size_t nm = methods.size(), nf = nm * dts.size(), nt = c.tolerances.size();
-  // tasks: a method's dt sweep (in lanes), then one per tolerance and adaptive solver; the
-  // implicit methods' sweeps start first
+  // tasks: a method's dt sweep, then one per tolerance and adaptive solver; the implicit
+  // methods' sweeps start first
   std::vector<std::size_t> order = implicit_first(methods);
   for (std::size_t job = nm; job < nm + 3 * nt; ++job) order.push_back(job);
   const auto parts = study_map<std::vector<WorkPoint>>(nm + 3 * nt, c.threads, [&](std::size_t job) {
-    if (job < nm) return fixed_points(s, methods[job], dts, t_end, c.lanes);
+    if (job < nm) return fixed_points(w, methods[job], dts, t_end);
     const std::size_t task = job - nm + nf;
-    if (task < nf + nt) return std::vector{dopri5_point(s, c.tolerances[task - nf], t_end)};
-    if (task < nf + 2 * nt) return std::vector{peer_point<OdeintDopri5<S>>("odeint_dopri5", s, c.tolerances[task - nf - nt], t_end)};
-    return std::vector{peer_point<CvodeBdf<S>>("cvode_bdf", s, c.tolerances[task - nf - 2 * nt], t_end)};
+    if (task < nf + nt) return std::vector{dopri5_point(w, c.tolerances[task - nf], t_end)};
+    if (task < nf + 2 * nt) return std::vector{peer_point("odeint_dopri5", w, c.tolerances[task - nf - nt], t_end)};
+    return std::vector{peer_point("cvode_bdf", w, c.tolerances[task - nf - 2 * nt], t_end)};
   }, order);
   std::vector<WorkPoint> points;
   for (const auto& part : parts) points.insert(points.end(), part.begin(), part.end());
   if (c.timing)
     for (WorkPoint& p : points)
-      if (p.status == RunStatus::Ok) p.seconds = time_point(s, p, t_end);
+      if (p.status == RunStatus::Ok) p.seconds = time_point(w, p, t_end);
   return points;
 }
 
@@ -168,7 +173,7 @@ Cheapest cheapest_at(const std::vector<WorkPoint>& points, double level) {
 
 bool is_implicit(const std::string& method) {
   const auto m = find_method(method);
-  return m && method_infos[*m].implicit;
+  return m && method_info(*m).implicit;
 }
 
 // The chain's slow mode alone: its limit k2 -> inf, where the two masses move as one,
@@ -204,10 +209,10 @@ std::vector<StableStep> stable_steps(const WorkPrecisionConfig& c, const std::ve
                                      const std::vector<double>& dts, const std::vector<WorkPoint>& points) {
   std::vector<StableStep> out;
   for (const std::size_t m : c.methods)
-    if (!method_infos[m].implicit) out.push_back({std::string(method_infos[m].name), 0, -1});
-  const Spring slow = slow_mode_spring(chain);
+    if (!method_info(m).implicit) out.push_back({std::string(method_info(m).name), 0, -1});
+  const Where slow = spring_where(slow_mode_spring(chain));
   const std::vector<double> accuracy = study_map<double>(out.size(), c.threads, [&](std::size_t task) {
-    return dt_reaching(fixed_points(slow, *find_method(out[task].method), dts, c.t_end, c.lanes), kLimitErrorLevel);
+    return dt_reaching(fixed_points(slow, *find_method(out[task].method), dts, c.t_end), kLimitErrorLevel);
   });
   for (std::size_t task = 0; task < out.size(); ++task) {
     StableStep& s = out[task];
@@ -218,40 +223,35 @@ std::vector<StableStep> stable_steps(const WorkPrecisionConfig& c, const std::ve
   return out;
 }
 
-Chain stiffness_chain(double k2) {
-  std::vector<double> p = default_param_values<Chain>();
-  p[3] = k2;  // Chain::params: mass1, mass2, stiffness1, stiffness2, ...
-  return Chain(p);
+// The stiffness sweep's chains: the default chain with k2 = each of c.stiffnesses.
+std::vector<Where> stiffness_chains(const WorkPrecisionConfig& c) {
+  std::vector<Where> chains;
+  for (const double k2 : c.stiffnesses) {
+    std::vector<double> p = default_param_values<Chain>();
+    p[3] = k2;  // Chain::params: mass1, mass2, stiffness1, stiffness2, ...
+    chains.push_back({scene_index(Chain::name), p});
+  }
+  return chains;
 }
 
-// Method m's search at every stiffness: for each, the first run of the falling dt sweep `dts`
-// whose error is at most crossover_error (a default WorkPoint if none). The searches go in
-// lockstep, a round being the next dt of every stiffness still searching, run in lanes: each
-// search runs the same dts, in the same order, as alone.
-std::vector<WorkPoint> first_reaching(const WorkPrecisionConfig& c, std::size_t m, const std::vector<double>& dts) {
-  const std::size_t ns = c.stiffnesses.size();
-  std::vector<WorkPoint> found(ns);
-  std::vector<std::size_t> next(ns, 0), round;  // each stiffness's next dt; the stiffnesses of a round
-  for (;;) {
-    round.clear();
-    for (std::size_t s = 0; s < ns; ++s)
-      if (found[s].method.empty() && next[s] < dts.size()) round.push_back(s);
-    if (round.empty()) return found;
-    std::size_t ran = 0;
-    run_batch<Counted<Chain>>(
-        m, round.size(), c.lanes,
-        [&](std::size_t k) {
-          const std::size_t s = round[k];
-          return std::pair(Counted<Chain>(stiffness_chain(c.stiffnesses[s])), fixed_spec(dts[next[s]], c.sweep_t_end));
-        },
-        [&](std::size_t k, const RunResult<Chain::dim>& r, const Counted<Chain>& counted) {
-          const std::size_t s = round[k];
-          const WorkPoint w = fixed_point_of(counted, m, dts[next[s]++], c.sweep_t_end, r);
-          if (w.status == RunStatus::Ok && w.error <= c.crossover_error) found[s] = w;
-          ++ran;
-        });
-    if (ran == 0) return found;  // m does not apply to the chain
+bool reaches_crossover(const WorkPrecisionConfig& c, const WorkPoint& w) {
+  return w.status == RunStatus::Ok && w.error <= c.crossover_error;
+}
+
+// Method m's search on every chain: for each, the first run of the falling dt sweep `dts` whose
+// error is at most crossover_error (a default WorkPoint if none, or if m does not apply).
+std::vector<WorkPoint> first_reaching(const WorkPrecisionConfig& c, const std::vector<Where>& chains, std::size_t m,
+                                      const std::vector<double>& dts) {
+  std::vector<WorkPoint> found(chains.size());
+  for (std::size_t s = 0; s < chains.size(); ++s) {
+    if (!applies(m, chains[s].scene)) continue;
+    for (const double dt : dts)
+      if (const WorkPoint w = fixed_point(chains[s], m, dt, c.sweep_t_end); reaches_crossover(c, w)) {
+        found[s] = w;
+        break;
+      }
   }
+  return found;
 }
 
 // The stiffness sweep: at each stiffness, for each method (and dopri5 over the tolerances), the
@@ -259,22 +259,21 @@ std::vector<WorkPoint> first_reaching(const WorkPrecisionConfig& c, std::size_t 
 // cheapest explicit and implicit ones.
 std::vector<StiffnessRow> stiffness_rows(const WorkPrecisionConfig& c) {
   const std::vector<double> dts = sweep_steps(c.sweep_t_end, 0.5, 1e-7, 57);  // 8 per decade
-  const std::size_t nm = c.methods.size(), ns = c.stiffnesses.size();
-  // tasks: a method's searches at every stiffness (the implicit methods' first), then dopri5's at each
+  const std::vector<Where> chains = stiffness_chains(c);
+  const std::size_t nm = c.methods.size(), ns = chains.size();
+  // tasks: a method's searches on every chain (the implicit methods' first), then dopri5's on each
   std::vector<std::size_t> order = implicit_first(c.methods);
   for (std::size_t task = nm; task < nm + ns; ++task) order.push_back(task);
   const auto found = study_map<std::vector<WorkPoint>>(nm + ns, c.threads, [&](std::size_t task) {
-    if (task < nm) return first_reaching(c, c.methods[task], dts);
-    const Chain s = stiffness_chain(c.stiffnesses[task - nm]);
+    if (task < nm) return first_reaching(c, chains, c.methods[task], dts);
     for (const double tol : c.tolerances)
-      if (WorkPoint w = dopri5_point(s, tol, c.sweep_t_end); w.status == RunStatus::Ok && w.error <= c.crossover_error)
-        return std::vector{w};
+      if (WorkPoint w = dopri5_point(chains[task - nm], tol, c.sweep_t_end); reaches_crossover(c, w)) return std::vector{w};
     return std::vector{WorkPoint{}};
   }, order);
+  const double k1 = default_param_values<Chain>()[2];  // Chain::params: ..., stiffness1, ...
   std::vector<StiffnessRow> rows;
   for (std::size_t i = 0; i < ns; ++i) {
-    const Chain s = stiffness_chain(c.stiffnesses[i]);
-    StiffnessRow row{c.stiffnesses[i], c.stiffnesses[i] / default_param_values<Chain>()[2], "", ""};
+    StiffnessRow row{c.stiffnesses[i], c.stiffnesses[i] / k1, "", ""};
     // the methods', then dopri5's (a shard's run leaves the other shards' tasks empty)
     const auto at = [&](std::size_t task, std::size_t k) { return k < found[task].size() ? found[task][k] : WorkPoint{}; };
     std::vector<WorkPoint> points;
@@ -282,7 +281,7 @@ std::vector<StiffnessRow> stiffness_rows(const WorkPrecisionConfig& c) {
     points.push_back(at(nm + i, 0));
     for (WorkPoint& w : points) {
       if (w.method.empty()) continue;
-      if (c.timing) w.seconds = time_point(s, w, c.sweep_t_end);
+      if (c.timing) w.seconds = time_point(chains[i], w, c.sweep_t_end);
       const bool implicit = is_implicit(w.method);
       std::string& best = implicit ? row.best_implicit : row.best_explicit;
       double& secs = implicit ? row.implicit_seconds : row.explicit_seconds;
@@ -303,16 +302,11 @@ WorkPrecisionResult work_precision_study(const WorkPrecisionConfig& config) {
   for (const std::string_view name : {"spring", "chain"}) {
     const std::size_t scene = *find_scene(name);
     SceneWork w{scene, {}, {}, {}};
-    with_scene(scene, [&]<class S>() {
-      if constexpr (HasExact<S>) {
-        w.params = default_param_values<S>();
-        const S s(w.params);
-        const bool chain = name == "chain";
-        const auto dts = sweep_steps(config.t_end, chain ? 0.5 : 0.1, chain ? 1e-5 : 1e-4, config.points);
-        w.points = scene_points(s, config, dts, config.t_end, config.methods);
-        if (chain) out.limits = stable_steps(config, w.params, dts, w.points);
-      }
-    });
+    w.params = default_param_values(scene);
+    const bool chain = name == "chain";
+    const auto dts = sweep_steps(config.t_end, chain ? 0.5 : 0.1, chain ? 1e-5 : 1e-4, config.points);
+    w.points = scene_points({scene, w.params}, config, dts, config.t_end, config.methods);
+    if (chain) out.limits = stable_steps(config, w.params, dts, w.points);
     for (const double level : config.error_levels) w.cheapest.push_back(cheapest_at(w.points, level));
     out.scenes.push_back(std::move(w));
   }

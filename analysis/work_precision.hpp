@@ -21,7 +21,6 @@
 #include <string_view>
 #include <vector>
 
-#include "core/lanes.hpp"
 #include "core/simulate.hpp"
 
 namespace steplab {
@@ -84,7 +83,6 @@ struct WorkPrecisionConfig {
   int points = 14;                     // dt sweep points per decade range below
   bool timing = true;
   unsigned threads = 0;
-  int lanes = kDefaultLanes;  // runs stepped together (core/lanes.hpp); 1: one at a time
 };
 
 inline constexpr int kMinRepeats = 5;

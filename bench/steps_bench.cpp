@@ -23,12 +23,14 @@
 
 #include <boost/numeric/odeint.hpp>
 
-#include "core/methods.hpp"
-#include "core/scenes.hpp"
-#include "core/stepper.hpp"
+#include "analysis/kernel.hpp"
+#include "core/methods/explicit_euler.hpp"
+#include "core/methods/rk4.hpp"
+#include "core/scenes/falling.hpp"
+#include "core/scenes/spring.hpp"
 
 void register_odeint_implicit_euler();
-// throughput_bench.cpp: registers the throughput rows; returns their lanes and trajectory-steps per iteration
+// throughput_bench.cpp: registers the throughput rows; returns their trajectories and trajectory-steps per iteration
 std::pair<int, long long> register_throughput();
 
 namespace {
@@ -40,30 +42,14 @@ constexpr int kRestart = 10'000;
 
 // ---------------- steplab ----------------
 
-// One step of M on `scene`, timed; restarts from the initial state every kRestart steps (a
-// multistep method with a fresh memory, so its start-up steps are 2 in 10 000 at most).
-template <class M, class S> void step_loop(benchmark::State& st, const S& scene) {
-  State<S::dim> y = scene.initial();
-  Stepper<M, S> stepper;
-  int n = 0;
-  for (auto _ : st) {
-    stepper.step(scene, y, n * kDt, kDt);
-    benchmark::DoNotOptimize(y);
-    if (++n == kRestart) n = 0, y = scene.initial(), stepper = {};
-  }
-  st.counters["steps_per_second"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
-}
-
-template <class S, class M> void register_step() {
-  const std::string name = "step/" + std::string(S::name) + "/" + std::string(M::info.name);
-  benchmark::RegisterBenchmark(name.c_str(), [](benchmark::State& st) { step_loop<M>(st, make_default_scene<S>()); });
-}
-
-// The undamped spring: odeint's velocity_verlet and symplectic_euler take x'' = a(x) only.
-template <class M> void register_undamped_step() {
-  const std::string name = "step/spring_undamped/" + std::string(M::info.name);
-  benchmark::RegisterBenchmark(name.c_str(), [](benchmark::State& st) {
-    step_loop<M>(st, Spring(std::array<double, 5>{1.0, 5.0, 0.0, 5.0, 9.81}));
+// Steps of method m on scene s (with parameter values p), timed through the kernel table: the
+// kernel steps kRestart at a time in place, from the initial state (a multistep method with a
+// fresh memory, so its start-up steps are 2 in 10 000 at most); an iteration is one step.
+void register_step(const std::string& name, std::size_t m, std::size_t s, std::vector<double> p) {
+  benchmark::RegisterBenchmark(name.c_str(), [m, s, p](benchmark::State& st) {
+    const PairKernel& k = pair_kernel(m, s);
+    while (st.KeepRunningBatch(kRestart)) k.time_steps(p, kDt, kRestart, kRestart);
+    st.counters["steps_per_second"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
   });
 }
 
@@ -91,19 +77,14 @@ void register_steplab() {
   register_finite_check<Spring, ExplicitEuler, false>();
   register_finite_check<Falling, Rk4, true>();
   register_finite_check<Falling, Rk4, false>();
-  register_undamped_step<VelocityVerlet>();
-  register_undamped_step<SymplecticEuler>();
-  [&]<std::size_t... I>(std::index_sequence<I...>) {
-    (([&]<class S>() {
-       [&]<std::size_t... J>(std::index_sequence<J...>) {
-         (([&]<class M>() {
-            if constexpr (applies<M, S>()) register_step<S, M>();
-          }.template operator()<std::tuple_element_t<J, Methods>>()),
-          ...);
-       }(std::make_index_sequence<method_count>{});
-     }.template operator()<std::tuple_element_t<I, Scenes>>()),
-     ...);
-  }(std::make_index_sequence<scene_count>{});
+  // the undamped spring: odeint's velocity_verlet and symplectic_euler take x'' = a(x) only
+  const std::size_t spring = scene_index("spring");
+  for (const char* m : {"velocity_verlet", "symplectic_euler"})
+    register_step(std::string("step/spring_undamped/") + m, *find_method(m), spring, {1.0, 5.0, 0.0, 5.0, 9.81});
+  for (std::size_t s = 0; s < scene_count(); ++s)
+    for (std::size_t m = 0; m < method_count(); ++m)
+      if (applies(m, s))
+        register_step("step/" + std::string(scene_name(s)) + "/" + std::string(method_info(m).name), m, s, default_param_values(s));
 }
 
 // ---------------- the default spring, written by hand ----------------
@@ -282,7 +263,7 @@ std::string flag_value(int argc, char** argv, const std::string& flag, const std
   return v;
 }
 
-std::pair<int, long long> throughput_work{1, 1};  // lanes, trajectory-steps per iteration
+std::pair<int, long long> throughput_work{1, 1};  // trajectories, trajectory-steps per iteration
 
 std::string ratio_table(const std::map<std::string, double>& t) {
   std::string out = "| scene/method | steplab ns/step | odeint ns/step | baseline ns/step | steplab/odeint | steplab/baseline |\n"
@@ -302,27 +283,23 @@ std::string ratio_table(const std::map<std::string, double>& t) {
     out += "| " + rest + " | " + cell(name) + " | " + cell("odeint/" + rest) + " | " + cell("baseline/" + rest) + " | " + r1 +
            " | " + r2 + " |\n";
   }
-  // Throughput (throughput_bench.cpp): the same trajectory-steps per iteration in all three.
-  const auto lanes = t.find("throughput/spring/explicit_euler"), hand = t.find("throughput_baseline/spring/explicit_euler"),
-             alone = t.find("throughput_scalar/spring/explicit_euler");
-  if (lanes != t.end() && hand != t.end() && alone != t.end()) {
-    const double per = 1.0 / static_cast<double>(throughput_work.second);
-    char line[400];
+  // Throughput (throughput_bench.cpp): the same trajectory-steps per iteration in every row;
+  // ns per trajectory-step of a row, 0 if it did not run.
+  const auto per_step = [&](const std::string& row) {
+    const auto it = t.find(row + "/spring/explicit_euler");
+    return it == t.end() ? 0.0 : it->second / static_cast<double>(throughput_work.second);
+  };
+  const double table = per_step("throughput"), hand = per_step("throughput_baseline"), rate = per_step("throughput_rate");
+  char line[400];
+  if (table > 0 && hand > 0) {
     std::snprintf(line, sizeof line,
-                  "\nthroughput/spring/explicit_euler (%d lanes): %.3f ns per trajectory-step; hand-written baseline %.3f; "
-                  "one run at a time %.3f; throughput steplab/baseline %.2f, lanes/one at a time %.2f\n",
-                  throughput_work.first, lanes->second * per, hand->second * per, alone->second * per, hand->second / lanes->second,
-                  alone->second / lanes->second);
+                  "\nthroughput/spring/explicit_euler (%d trajectories, one run at a time through the kernel table): %.3f ns per "
+                  "trajectory-step; hand-written interleaved baseline %.3f; throughput steplab/baseline %.2f\n",
+                  throughput_work.first, table, hand, hand / table);
     out += line;
   }
-  const auto lanes_rate = t.find("throughput_rate/spring/explicit_euler"), alone_rate = t.find("throughput_scalar_rate/spring/explicit_euler");
-  if (lanes_rate != t.end() && alone_rate != t.end()) {
-    const double per = 1.0 / static_cast<double>(throughput_work.second);
-    char line[300];
-    std::snprintf(line, sizeof line,
-                  "with the energy-rate fit of study stability: %.3f ns per trajectory-step in lanes, %.3f one at a time; "
-                  "lanes/one at a time %.2f\n",
-                  lanes_rate->second * per, alone_rate->second * per, alone_rate->second / lanes_rate->second);
+  if (rate > 0) {
+    std::snprintf(line, sizeof line, "with the energy-rate fit of study stability: %.3f ns per trajectory-step\n", rate);
     out += line;
   }
   return out;

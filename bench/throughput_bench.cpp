@@ -1,14 +1,13 @@
 // Study throughput: many trajectories at once, in trajectory-steps per second.
 //
-//   throughput/spring/explicit_euler           steplab's batched path (core/lanes.hpp):
-//                                              kLanes runs of explicit Euler on the
-//                                              default spring, each kSteps steps, with the run
-//                                              loop's checks (non-finite state, energy ratio)
+//   throughput/spring/explicit_euler           a study's path: kLanes runs of explicit Euler on
+//                                              the default spring, one at a time through the
+//                                              kernel table (analysis/kernel.hpp), each kSteps
+//                                              steps, with the run loop's checks (non-finite
+//                                              state, energy ratio)
 //   throughput_baseline/spring/explicit_euler  the same update written by hand over the same
 //                                              number of interleaved trajectories, nothing else
-//   throughput_scalar/spring/explicit_euler    the same runs one at a time (simulate, --lanes 1)
-//   throughput_rate/..., throughput_scalar_rate/...
-//                                              the same two with the energy-rate fit, as in
+//   throughput_rate/spring/explicit_euler      the first with the energy-rate fit, as in
 //                                              `study stability` (ln E and its slope, a log a step)
 //
 // Each iteration runs every trajectory kSteps steps from the initial state, each with its own
@@ -20,16 +19,21 @@
 #include <span>
 #include <string>
 
-#include "core/lanes.hpp"
-#include "core/methods.hpp"
-#include "core/scenes/spring.hpp"
+#include "analysis/kernel.hpp"
 
 namespace {
 
 using namespace steplab;
 constexpr long long kSteps = 10'000;
 constexpr double kDt = 0.001;
-constexpr std::size_t kLanes = 8;  // the best measured here (1.2x one at a time)
+constexpr std::size_t kLanes = 8;  // trajectories per iteration
+
+// The baseline compiled for plain x86-64 and AVX2, the CPU picking at load time.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
+#define STEPLAB_MULTIVERSION __attribute__((target_clones("avx2", "default")))
+#else
+#define STEPLAB_MULTIVERSION
+#endif
 
 // Trajectory i's step: each its own (a compiler given identical lanes computes one and copies it).
 double step_of(std::size_t i) { return kDt * (1 + 1e-3 * static_cast<double>(i)); }
@@ -45,7 +49,7 @@ RunSpec throughput_spec(std::size_t i, bool rate) {
 
 // The baseline's loop: the spring's force as Spring::force (sign(y) as two selects, so that GCC
 // vectorises it across the lanes), a = F * (1/m), x += h v, v += h a; compiled for plain x86-64
-// and AVX2 like the lanes' driver.
+// and AVX2.
 STEPLAB_MULTIVERSION void baseline_steps(std::array<double, kLanes>& y_out, std::array<double, kLanes>& v_out,
                                          const std::array<double, kLanes>& h_in) {
   const double m = 1, k = 5, gamma = 0.1, L = 5, g = 9.81, inv_m = 1 / m, weight = m * g;
@@ -69,21 +73,12 @@ void set_rate(benchmark::State& st) {
 
 void register_steplab_throughput(const std::string& suffix, bool rate) {
   benchmark::RegisterBenchmark(("throughput" + suffix + "/spring/explicit_euler").c_str(), [rate](benchmark::State& st) {
-    const Spring s = make_default_scene<Spring>();
+    const std::size_t spring = scene_index("spring");
+    const PairKernel& k = pair_kernel(*find_method("explicit_euler"), spring);
+    const std::vector<double> p = default_param_values(spring);
     double sink = 0;
     for (auto _ : st) {
-      simulate_lanes<ExplicitEuler, Spring>(
-          kLanes, kLanes, [&](std::size_t i) { return std::pair(s, throughput_spec(i, rate)); },
-          [&](std::size_t, const RunResult<1>& r, const Spring&) { sink += r.final.x[0]; });
-      benchmark::DoNotOptimize(sink);
-    }
-    set_rate(st);
-  });
-  benchmark::RegisterBenchmark(("throughput_scalar" + suffix + "/spring/explicit_euler").c_str(), [rate](benchmark::State& st) {
-    const Spring s = make_default_scene<Spring>();
-    double sink = 0;
-    for (auto _ : st) {
-      for (std::size_t l = 0; l < kLanes; ++l) sink += simulate<ExplicitEuler>(s, throughput_spec(l, rate)).final.x[0];
+      for (std::size_t l = 0; l < kLanes; ++l) sink += k.run(p, throughput_spec(l, rate)).final.x[0];
       benchmark::DoNotOptimize(sink);
     }
     set_rate(st);

@@ -14,6 +14,13 @@
 
 namespace steplab {
 
+// A method file ends with STEPLAB_METHOD(<its type>), outside any namespace: the line CMake reads
+// to name the type in the method's generated translation unit (tools/kernels.cmake), and a
+// check that the type declares its MethodInfo.
+template <class M>
+concept MethodType = requires { M::info; };
+#define STEPLAB_METHOD(...) static_assert(::steplab::MethodType<__VA_ARGS__>, "STEPLAB_METHOD: a method declares info")
+
 // The families the report answers "is stability correlated with order?" for, one by one.
 // Explicit Euler and implicit Euler are also the first Adams-Bashforth and BDF methods (`also`).
 enum class Family { ExplicitRungeKutta, Splitting, ImplicitRungeKutta, AdamsBashforth, Bdf, Exact, None };

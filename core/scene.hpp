@@ -52,6 +52,17 @@ concept Scene = requires(const S& s, const Vec<S::dim>& x, const Vec<S::dim>& v,
   { s.initial() } -> std::convertible_to<State<S::dim>>;
 };
 
+// A scene file ends with STEPLAB_SCENE(<its type>), outside any namespace (tools/kernels.cmake).
+#define STEPLAB_SCENE(...) static_assert(::steplab::Scene<__VA_ARGS__>, "STEPLAB_SCENE: the type is not a Scene (core/scene.hpp)")
+
+// A scene with ground contact says how deep its deepest point is below the ground (negative
+// when above) and whether any point touches it; the collision study records both.
+template <class S>
+concept HasContact = Scene<S> && requires(const S& s, const Vec<S::dim>& x) {
+  { s.penetration(x) } -> std::convertible_to<double>;
+  { s.in_contact(x) } -> std::convertible_to<bool>;
+};
+
 template <class S>
 concept HasExact = Scene<S> && requires(const S& s, const State<S::dim>& y, double h) {
   { s.flow(y, h) } -> std::convertible_to<State<S::dim>>;
@@ -79,13 +90,14 @@ concept HasAffineFlow = HasExact<S> && requires { requires S::affine_flow; };
 // instructions a step, five times explicit Euler's step with its run loop (callgrind).
 template <HasExact S> class ExactTracker {
   static constexpr int D = S::dim;
+  static constexpr bool kCanStep = HasAffineFlow<S> && requires(const S& s) { s.exact_at(0.0); };
   using Block = Eigen::Matrix<double, D, D>;
 
  public:
   static constexpr int kResync = 32;
 
   explicit ExactTracker(const S& s, double h = 0) : s_(s), y_(s.initial()) {
-    if constexpr (HasAffineFlow<S> && requires { s.exact_at(0.0); }) {
+    if constexpr (kCanStep) {
       if (!(h > 0)) return;
       c_ = s.flow({Vec<D>::Zero(), Vec<D>::Zero()}, h);
       // Phi's columns from steps of size a, a power of two of the size of the states: a column's
@@ -101,18 +113,20 @@ template <HasExact S> class ExactTracker {
         xx_.col(i) = (from_x.x - c_.x) / a, vx_.col(i) = (from_x.v - c_.v) / a;
         xv_.col(i) = (from_v.x - c_.x) / a, vv_.col(i) = (from_v.v - c_.v) / a;
       }
-      stepped_ = true;
+      left_ = kResync;
     }
   }
 
   const State<D>& at(double t) {
-    if constexpr (HasAffineFlow<S> && requires { s_.exact_at(t); }) {
-      if (stepped_ && ++since_ % kResync != 0) {
+    if constexpr (kCanStep) {
+      if (left_ > 1) {
+        --left_;
         const Vec<D> x = c_.x + xx_ * y_.x + xv_ * y_.v;
         y_.v = c_.v + vx_ * y_.x + vv_ * y_.v;
         y_.x = x;
         return y_;
       }
+      if (left_ == 1) left_ = kResync;  // the closed form now, then kResync - 1 steps again
     }
     if constexpr (requires { s_.exact_at(t); }) y_ = s_.exact_at(t);
     else y_ = s_.flow(y_, t - t_);
@@ -125,8 +139,7 @@ template <HasExact S> class ExactTracker {
   State<D> y_;
   double t_ = 0;
   // the fixed step's affine map, in blocks: x <- c.x + xx x + xv v, v <- c.v + vx x + vv v
-  bool stepped_ = false;
-  long long since_ = 0;
+  int left_ = 0;  // 1 + the steps left before the closed form again; 0: not stepping
   State<D> c_{Vec<D>::Zero(), Vec<D>::Zero()};
   Block xx_ = Block::Zero(), xv_ = Block::Zero(), vx_ = Block::Zero(), vv_ = Block::Zero();
 };

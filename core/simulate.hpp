@@ -18,7 +18,6 @@
 #include <utility>
 #include <vector>
 
-#include "core/methods.hpp"
 #include "core/stepper.hpp"
 
 namespace steplab {
@@ -47,6 +46,12 @@ struct RunSpec {
   double stop_above = std::numeric_limits<double>::infinity();
 };
 
+// A zero state; empty for a state whose size is set at run time (D = Eigen::Dynamic).
+template <int D> State<D> zero_state() {
+  if constexpr (D == Eigen::Dynamic) return {};
+  else return {Vec<D>::Zero(), Vec<D>::Zero()};
+}
+
 template <int D> struct Sample {
   double t;
   Vec<D> x, v;
@@ -59,13 +64,44 @@ template <int D> struct RunResult {
   long long failed_step = -1;   // the step (1-based) that diverged or did not converge
   double failed_t = 0;
   double t_final = 0;
-  State<D> final{Vec<D>::Zero(), Vec<D>::Zero()};
+  State<D> final = zero_state<D>();
   bool has_exact = false;
   double error_final = 0, error_max = 0, error_rms = 0, error_v_final = 0;
   double energy0 = 0, energy_ratio_final = 1, energy_ratio_max = 1;
   double energy_rate = std::numeric_limits<double>::quiet_NaN();  // d ln E / dt, least squares
   std::vector<Sample<D>> samples;
 };
+
+// A run's result with its states as vectors of run-time size: what a kernel compiled for one
+// method and scene hands to the studies (analysis/kernel.hpp), which are not templates.
+using AnyResult = RunResult<Eigen::Dynamic>;
+
+template <int D> AnyResult to_any(RunResult<D>&& r) {
+  AnyResult a;
+  a.status = r.status, a.steps = r.steps, a.failed_step = r.failed_step, a.failed_t = r.failed_t, a.t_final = r.t_final;
+  a.final = {r.final.x, r.final.v};
+  a.has_exact = r.has_exact;
+  a.error_final = r.error_final, a.error_max = r.error_max, a.error_rms = r.error_rms, a.error_v_final = r.error_v_final;
+  a.energy0 = r.energy0, a.energy_ratio_final = r.energy_ratio_final, a.energy_ratio_max = r.energy_ratio_max;
+  a.energy_rate = r.energy_rate;
+  a.samples.reserve(r.samples.size());
+  for (const Sample<D>& s : r.samples) a.samples.push_back({s.t, s.x, s.v, s.energy});
+  return a;
+}
+
+// Back to a fixed size D (the caller knows the scene's): the same numbers.
+template <int D> RunResult<D> to_fixed(AnyResult&& a) {
+  RunResult<D> r;
+  r.status = a.status, r.steps = a.steps, r.failed_step = a.failed_step, r.failed_t = a.failed_t, r.t_final = a.t_final;
+  r.final = {a.final.x, a.final.v};
+  r.has_exact = a.has_exact;
+  r.error_final = a.error_final, r.error_max = a.error_max, r.error_rms = a.error_rms, r.error_v_final = a.error_v_final;
+  r.energy0 = a.energy0, r.energy_ratio_final = a.energy_ratio_final, r.energy_ratio_max = a.energy_ratio_max;
+  r.energy_rate = a.energy_rate;
+  r.samples.reserve(a.samples.size());
+  for (const Sample<Eigen::Dynamic>& s : a.samples) r.samples.push_back({s.t, s.x, s.v, s.energy});
+  return r;
+}
 
 // The step indices kept as samples: k (n / (N - 1)) rounded, k = 0 .. N-1.
 struct SamplePlan {
@@ -114,9 +150,7 @@ template <int D> void finish_run(RunResult<D>& r, bool has_exact, double err_sq_
 }
 
 // One run, step by step: the state of a run between steps (the accumulators above) and the
-// step itself. simulate() below drives one to its end; simulate_lanes (core/lanes.hpp) drives
-// several in lockstep, each lane doing exactly what a run alone does, in the same order (the
-// results are the same bit for bit). `observe(i, t, state)` is called after every completed
+// step itself; simulate() below drives one to its end. `observe(i, t, state)` is called after every completed
 // step (i = 1 .. steps), for studies that need more than the summary (bounces, penetration); it
 // must not allocate. The scene and the result `out` must outlive the run; a Run is not copied or
 // moved. The result lives outside the Run on purpose: with it as a member (its sample buffer's

@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "core/methods.hpp"
+#include "analysis/kernel.hpp"
 #include "reports/commands.hpp"
 #include "reports/inputs.hpp"
 
@@ -98,7 +98,7 @@ int check_command(CheckArgs& a) {
   const std::size_t method = resolve_method(a.method);
   const unsigned threads = resolve_thread_count(a.threads);
   if (stop_after_validation("")) return 0;
-  const CheckResult r = check_method(method, method_infos[method], threads);
+  const CheckResult r = check_method(method, method_info(method), threads);
   std::fputs(check_text(r).c_str(), stdout);
   return r.all_hold() ? 0 : 1;
 }

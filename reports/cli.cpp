@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdio>
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -11,7 +12,7 @@
 #include <fmt/format.h>
 
 #include "reports/commands.hpp"
-#include "core/methods.hpp"
+#include "analysis/kernel.hpp"
 #include "reports/inputs.hpp"
 #include "reports/shard.hpp"
 #include "reports/study_output.hpp"
@@ -246,6 +247,18 @@ int cli_main(int argc, const char* const* argv) {
   } catch (const UsageError& e) {
     fmt::print(stderr, "steplab: {}\n", e.what());
     return 2;
+  }
+}
+
+int program_main(int argc, char** argv) {
+  try {
+    return cli_main(argc, argv);
+  } catch (const Interrupted&) {
+    std::fputs("steplab: interrupted; nothing was written or replaced\n", stderr);
+    return 130;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "steplab: %s\n", e.what());
+    return 1;
   }
 }
 

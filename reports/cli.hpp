@@ -6,4 +6,8 @@ namespace steplab {
 // on stderr and exit status 2.
 int cli_main(int argc, const char* const* argv);
 
+// What main() does (reports/main.cpp, and the main of a tool made with steplab_add_executable):
+// cli_main, with an interrupt (exit 130) or an unexpected error (exit 1) reported in one line.
+int program_main(int argc, char** argv);
+
 }  // namespace steplab

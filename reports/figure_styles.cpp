@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "analysis/work_precision.hpp"
-#include "core/methods.hpp"
+#include "analysis/kernel.hpp"
 #include "reports/report_text.hpp"
 
 namespace steplab {
@@ -38,7 +38,7 @@ std::string shade(std::string_view hue, int order) {
 }  // namespace
 
 MethodStyle method_style(std::size_t method) {
-  const MethodInfo& info = method_infos[method];
+  const MethodInfo& info = method_info(method);
   // by order: filled circle, square, triangle, diamond, triangle down; solid, dashed, dash-dot,
   // dotted, dash-dot-dot
   constexpr int points[] = {7, 7, 5, 9, 13, 11}, dashes[] = {1, 1, 2, 4, 3, 5};
@@ -52,7 +52,7 @@ std::string styles_gp(const std::vector<std::size_t>& methods) {
       "# reports/figure_styles.cpp): colour by family (Okabe-Ito), darker, another point and another\n"
       "# dash with each order.\n";
   std::string names;
-  for (std::size_t m = 0; m < method_count; ++m) {
+  for (std::size_t m = 0; m < method_count(); ++m) {
     const MethodStyle s = method_style(m);
     out += fmt::format("set linetype {} lc rgb \"{}\" pt {} dt {} lw 1.5 ps 0.6  # {}\n", m + 1, s.colour, s.point,
                        s.dash, name(m));
@@ -63,7 +63,7 @@ std::string styles_gp(const std::vector<std::size_t>& methods) {
   // families leave free, with points and dashes of their own
   const MethodStyle adaptive[] = {{"#000000", 7, 1}, {"#777777", 6, 2}, {"#56B4E9", 15, 4}};
   for (std::size_t k = 0; k < kAdaptiveSolvers.size(); ++k) {
-    out += fmt::format("set linetype {} lc rgb \"{}\" pt {} dt {} lw 1.5 ps 0.6  # {}\n", method_count + k + 1,
+    out += fmt::format("set linetype {} lc rgb \"{}\" pt {} dt {} lw 1.5 ps 0.6  # {}\n", method_count() + k + 1,
                        adaptive[k].colour, adaptive[k].point, adaptive[k].dash, kAdaptiveSolvers[k]);
     names += fmt::format(" {}", kAdaptiveSolvers[k]);
   }

@@ -24,7 +24,7 @@
 #include <fmt/format.h>
 
 #include "analysis/parallel.hpp"
-#include "core/scenes.hpp"
+#include "analysis/kernel.hpp"
 #include "reports/figure_styles.hpp"
 #include "reports/gnuplot_scripts.hpp"
 #include "reports/output.hpp"

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "core/scenes.hpp"
+#include "analysis/kernel.hpp"
 #include "reports/inputs.hpp"
 #include "reports/run_json.hpp"
 
@@ -63,9 +63,9 @@ int count(const Json& j, const std::string& path, int lo, int hi) {
   return static_cast<int>(x);
 }
 
-template <class S> std::vector<double> scene_values(const Json& j, const std::string& section) {
+std::vector<double> scene_values(const Json& j, const std::string& section) {
   std::vector<double> out;
-  for (const ParamSpec& p : S::params) out.push_back(num(j[param_key(p)], section + "." + param_key(p), p.bound));
+  for (const ParamSpec& p : scene_kernel(scene_index(section)).params) out.push_back(num(j[param_key(p)], section + "." + param_key(p), p.bound));
   return out;
 }
 
@@ -73,19 +73,19 @@ template <class S> std::vector<double> scene_values(const Json& j, const std::st
 
 ReportConfig default_report_config() {
   ReportConfig c;
-  c.spring = default_param_values<Spring>();
-  c.cannonball = default_param_values<Cannonball>();
-  c.bounce = default_param_values<Bounce>();
-  c.falling = default_param_values<Falling>();
+  c.spring = default_param_values(scene_index("spring"));
+  c.cannonball = default_param_values(scene_index("cannonball"));
+  c.bounce = default_param_values(scene_index("bounce"));
+  c.falling = default_param_values(scene_index("falling"));
   return c;
 }
 
 Json report_config_json(const ReportConfig& c) {
   Json j;
-  j["spring"] = params_json<Spring>(c.spring);
-  j["cannonball"] = params_json<Cannonball>(c.cannonball);
-  j["bounce"] = params_json<Bounce>(c.bounce);
-  j["falling"] = params_json<Falling>(c.falling);
+  j["spring"] = params_json(scene_kernel(scene_index("spring")).params, c.spring);
+  j["cannonball"] = params_json(scene_kernel(scene_index("cannonball")).params, c.cannonball);
+  j["bounce"] = params_json(scene_kernel(scene_index("bounce")).params, c.bounce);
+  j["falling"] = params_json(scene_kernel(scene_index("falling")).params, c.falling);
   j["convergence"] = {{"dt_max", c.conv_dt_max}, {"dt_min", c.conv_dt_min}, {"points", c.conv_points},
                       {"t_end", c.conv_t_end}};
   j["work_precision"] = {{"points", c.wp_points}, {"stiffnesses", c.wp_stiffnesses}, {"timing", c.timing}};
@@ -107,10 +107,10 @@ ReportConfig report_config_from_json(const Json& user) {
   Json j = report_config_json(default_report_config());
   merge(j, user, "");
   ReportConfig c;
-  c.spring = scene_values<Spring>(j["spring"], "spring");
-  c.cannonball = scene_values<Cannonball>(j["cannonball"], "cannonball");
-  c.bounce = scene_values<Bounce>(j["bounce"], "bounce");
-  c.falling = scene_values<Falling>(j["falling"], "falling");
+  c.spring = scene_values(j["spring"], "spring");
+  c.cannonball = scene_values(j["cannonball"], "cannonball");
+  c.bounce = scene_values(j["bounce"], "bounce");
+  c.falling = scene_values(j["falling"], "falling");
   const Json& cv = j["convergence"];
   c.conv_dt_max = num(cv["dt_max"], "convergence.dt_max", Bound::Positive);
   c.conv_dt_min = num(cv["dt_min"], "convergence.dt_min", Bound::Positive);

@@ -4,7 +4,7 @@
 #include <numeric>
 
 #include "analysis/parallel.hpp"
-#include "core/scenes.hpp"
+#include "analysis/kernel.hpp"
 #include "reports/report.hpp"
 
 namespace steplab {
@@ -31,13 +31,15 @@ ConvergenceConfig convergence_config(const ReportConfig& c, std::string_view sce
   return cc;
 }
 
-template <class S> RunResult<S::dim> figure_run(std::size_t method, const S& s, double dt, double t_end, long long samples) {
+// A run of `method` on the scene `scene` with its parameter values, as a result of the scene's size D.
+template <int D> RunResult<D> figure_run(std::size_t method, std::string_view scene, const std::vector<double>& params,
+                                         double dt, double t_end, long long samples) {
   RunSpec spec;
   spec.dt = dt;
   spec.steps = steps_for(t_end, dt);
   spec.max_samples = samples;
   spec.errors = false;
-  return with_method(method, [&]<class M>() { return simulate<M>(s, spec); });
+  return to_fixed<D>(pair_kernel(method, scene_index(scene)).run(params, spec));
 }
 
 }  // namespace
@@ -45,7 +47,7 @@ template <class S> RunResult<S::dim> figure_run(std::size_t method, const S& s, 
 ReportData run_report_studies(const ReportConfig& c) {
   ReportData d;
   d.config = c;
-  for (std::size_t m = 0; m < method_count; ++m) d.methods.push_back(m);
+  for (std::size_t m = 0; m < method_count(); ++m) d.methods.push_back(m);
   const double gamma = c.spring[2];
 
   d.conv_spring = convergence_study(convergence_config(c, "spring", c.spring, d.methods));
@@ -71,7 +73,7 @@ ReportData run_report_studies(const ReportConfig& c) {
   cc.bounce_params = c.bounce;
   cc.falling_params = c.falling;
   for (std::size_t m : d.methods)
-    if (!method_infos[m].exact_flow) cc.methods.push_back(m);
+    if (!method_info(m).exact_flow) cc.methods.push_back(m);
   cc.dts = c.collision_dts;
   cc.t_end = c.collision_t_end;
   cc.triangle_dt = c.triangle_dt;
@@ -80,7 +82,7 @@ ReportData run_report_studies(const ReportConfig& c) {
 
   WorkPrecisionConfig wc;
   for (std::size_t m : d.methods)
-    if (!method_infos[m].exact_flow) wc.methods.push_back(m);
+    if (!method_info(m).exact_flow) wc.methods.push_back(m);
   wc.points = c.wp_points;
   wc.stiffnesses = c.wp_stiffnesses;
   wc.timing = c.timing;
@@ -89,11 +91,8 @@ ReportData run_report_studies(const ReportConfig& c) {
 
   // Figures: the cannon ball's path, the spring's y(t), the undamped energy at the large step,
   // and the predicted growth rate against damping on a fine grid.
-  const Cannonball cannon(c.cannonball);
-  const Spring spring(c.spring);
   std::vector<double> undamped = c.spring;
   undamped[2] = 0;
-  const Spring spring0(undamped);
   const std::size_t nm = d.methods.size(), nf = c.spring_figure_dts.size();
   d.cannon.resize(nm);
   d.spring.assign(nf, std::vector<RunResult<1>>(nm));
@@ -103,9 +102,10 @@ ReportData run_report_studies(const ReportConfig& c) {
   d.curve_rate.assign(nm, std::vector<double>(d.curve_damping.size()));
   parallel_for(nm * (2 + nf + 1), c.threads, [&](std::size_t task) {
     const std::size_t m = task % nm, kind = task / nm;
-    if (kind == 0) d.cannon[m] = figure_run(m, cannon, c.cannonball_dt, c.cannonball_t_end, 2001);
-    else if (kind == 1) d.energy[m] = figure_run(m, spring0, c.large_dt, c.energy_t_end, 2001);
-    else if (kind < 2 + nf) d.spring[kind - 2][m] = figure_run(m, spring, c.spring_figure_dts[kind - 2], c.spring_figure_t_end, 2001);
+    if (kind == 0) d.cannon[m] = figure_run<2>(m, "cannonball", c.cannonball, c.cannonball_dt, c.cannonball_t_end, 2001);
+    else if (kind == 1) d.energy[m] = figure_run<1>(m, "spring", undamped, c.large_dt, c.energy_t_end, 2001);
+    else if (kind < 2 + nf)
+      d.spring[kind - 2][m] = figure_run<1>(m, "spring", c.spring, c.spring_figure_dts[kind - 2], c.spring_figure_t_end, 2001);
     else {
       for (std::size_t g = 0; g < d.curve_damping.size(); ++g) {
         std::vector<double> p = c.spring;
@@ -183,7 +183,7 @@ Findings compute_findings(const ReportData& d) {
   // Order (the exact flow: infinite) against measured dt* over every method.
   std::vector<double> order, dt;
   for (const MethodFinding& r : f.rows) {
-    const MethodInfo& info = method_infos[r.method];
+    const MethodInfo& info = method_info(r.method);
     order.push_back(info.exact_flow ? INFINITY : info.order);
     dt.push_back(r.dt_measured);
   }

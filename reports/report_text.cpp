@@ -7,17 +7,16 @@
 
 #include <fmt/format.h>
 
-#include "core/methods.hpp"
-#include "core/scenes.hpp"
+#include "analysis/kernel.hpp"
 
 namespace steplab {
 
-std::string name(std::size_t m) { return std::string(method_infos[m].name); }
+std::string name(std::size_t m) { return std::string(method_info(m).name); }
 std::string dt_text(double x) { return std::isinf(x) ? "inf" : std::isnan(x) ? "-" : fmt::format("{:.4g}", x); }
 std::string num(double x) { return std::isfinite(x) ? fmt::format("{}", x) : "NaN"; }
 
 std::string order_text(std::size_t m) {
-  const MethodInfo& info = method_infos[m];
+  const MethodInfo& info = method_info(m);
   return info.exact_flow ? "exact" : std::to_string(info.order);
 }
 
@@ -48,7 +47,7 @@ std::string fits_table(const ConvergenceResult& r) {
       "| method | declared | order | bound | window slope [95 % t] | R² | points | dt range |\n"
       "|------------------|-----:|------:|-----------------|-----------------------|-------:|-----:|-------------------|\n";
   for (const ConvergenceFit& f : r.fits) {
-    const MethodInfo& info = method_infos[f.method];
+    const MethodInfo& info = method_info(f.method);
     const std::string declared = order_text(f.method);
     if (f.fit.exact) out += fmt::format("| `{}` | {} | exact | - | - | - | - | - |\n", info.name, declared);
     else if (!f.fit.fitted) out += fmt::format("| `{}` | {} | - ({}) | - | - | - | - | - |\n", info.name, declared, f.fit.note);
@@ -61,11 +60,10 @@ std::string fits_table(const ConvergenceResult& r) {
 }
 
 std::string params_text(std::size_t scene, const std::vector<double>& v) {
-  return with_scene(scene, [&]<class S>() {
-    std::string out;
-    for (std::size_t i = 0; i < S::params.size(); ++i) out += fmt::format("{}{} {}", i ? ", " : "", S::params[i].name, v[i]);
-    return out;
-  });
+  const std::span<const ParamSpec> params = scene_kernel(scene).params;
+  std::string out;
+  for (std::size_t i = 0; i < params.size(); ++i) out += fmt::format("{}{} {}", i ? ", " : "", params[i].name, v[i]);
+  return out;
 }
 
 std::string wrapped(const std::string& cmd) {
@@ -109,15 +107,15 @@ std::string method_words(const std::vector<std::size_t>& methods) {
 std::vector<std::size_t> family_members(const std::vector<std::size_t>& methods, Family f) {
   std::vector<std::size_t> out;
   for (std::size_t m : methods)
-    if (method_infos[m].family == f || method_infos[m].also == f) out.push_back(m);
+    if (method_info(m).family == f || method_info(m).also == f) out.push_back(m);
   std::sort(out.begin(), out.end(), [](std::size_t a, std::size_t b) {
-    return std::pair(method_infos[a].order, a) < std::pair(method_infos[b].order, b);
+    return std::pair(method_info(a).order, a) < std::pair(method_info(b).order, b);
   });
   return out;
 }
 
 bool family_order_less(std::size_t a, std::size_t b) {
-  const MethodInfo &x = method_infos[a], &y = method_infos[b];
+  const MethodInfo &x = method_info(a), &y = method_info(b);
   return std::tuple(x.family, x.order, a) < std::tuple(y.family, y.order, b);
 }
 

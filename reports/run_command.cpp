@@ -4,8 +4,7 @@
 #include <fmt/format.h>
 
 #include "core/dopri5.hpp"
-#include "core/scenes.hpp"
-#include "core/simulate.hpp"
+#include "analysis/kernel.hpp"
 #include "reports/commands.hpp"
 #include "reports/inputs.hpp"
 #include "reports/output.hpp"
@@ -14,7 +13,8 @@
 namespace steplab {
 namespace {
 
-template <int D> std::string csv(const RunResult<D>& r) {
+// The scene's dim D coordinates: x (D = 1) or x0, x1, ...
+std::string csv(const AnyResult& r, int D) {
   std::string out = "t";
   for (int i = 0; i < D; ++i) out += D == 1 ? ",x" : fmt::format(",x{}", i);
   for (int i = 0; i < D; ++i) out += D == 1 ? ",v" : fmt::format(",v{}", i);
@@ -73,25 +73,23 @@ int run_dopri5(RunArgs& a) {
   spec.t_end = parse_number("--t-end", a.t_end, Bound::NonNegative);
   spec.max_samples = parse_count("--samples", a.samples, 2, 100'000'000);
   if (stop_after_validation(a.json)) return 0;
-  return with_scene(scene, [&]<class S>() {
-    const S s(params);
-    const AdaptiveResult<S::dim> r = simulate_dopri5(s, spec);
-    if (a.json.empty()) {
-      std::fputs(csv(r.run).c_str(), stdout);
-    } else {
-      Json p = params_json<S>(params);
-      p["rtol"] = spec.tol.rtol;
-      p["atol"] = spec.tol.atol;
-      p["t_end"] = spec.t_end;
-      Json j = run_json<S::dim>(S::name, "dopri5", std::move(p), r.run);
-      j["adaptive"] = adaptive_json(r.stats);
-      write_atomic(a.json, j.dump(1) + "\n");
-    }
-    if (r.run.status != RunStatus::Ok)
-      fmt::print(stderr, "steplab: dopri5 {} at t = {}: the step size fell below round-off\n", to_string(r.run.status),
-                 r.run.failed_t);
-    return 0;
-  });
+  const SceneKernel& s = scene_kernel(scene);
+  const AnyAdaptiveResult r = s.dopri5(params, spec);
+  if (a.json.empty()) {
+    std::fputs(csv(r.run, s.dim).c_str(), stdout);
+  } else {
+    Json p = params_json(s.params, params);
+    p["rtol"] = spec.tol.rtol;
+    p["atol"] = spec.tol.atol;
+    p["t_end"] = spec.t_end;
+    Json j = run_json(s.name, "dopri5", std::move(p), r.run);
+    j["adaptive"] = adaptive_json(r.stats);
+    write_atomic(a.json, j.dump(1) + "\n");
+  }
+  if (r.run.status != RunStatus::Ok)
+    fmt::print(stderr, "steplab: dopri5 {} at t = {}: the step size fell below round-off\n", to_string(r.run.status),
+               r.run.failed_t);
+  return 0;
 }
 
 }  // namespace
@@ -110,29 +108,22 @@ int run_command(RunArgs& a) {
   spec.max_samples = parse_count("--samples", a.samples, 2, 100'000'000);
   if (stop_after_validation(a.json)) return 0;
 
-  return with_scene(scene, [&]<class S>() {
-    const S s(params);
-    return with_method(method, [&]<class M>() {
-      if constexpr (!applies<M, S>()) {
-        throw UsageError(fmt::format("--method {} needs a scene with an exact solution; scene {} has none", M::info.name,
-                                     S::name));
-        return 2;
-      } else {
-        const auto r = simulate<M>(s, spec);
-        if (a.json.empty()) {
-          std::fputs(csv(r).c_str(), stdout);
-        } else {
-          Json p = params_json<S>(params);
-          p["dt"] = spec.dt;
-          p["t_end"] = t_end;
-          write_atomic(a.json, run_json<S::dim>(S::name, M::info.name, std::move(p), r).dump(1) + "\n");
-        }
-        if (r.status != RunStatus::Ok)
-          fmt::print(stderr, "steplab: {} {} at step {} (t = {})\n", M::info.name, to_string(r.status), r.failed_step, r.failed_t);
-        return 0;
-      }
-    });
-  });
+  const SceneKernel& s = scene_kernel(scene);
+  const std::string_view name = method_info(method).name;
+  if (!applies(method, scene))
+    throw UsageError(fmt::format("--method {} needs a scene with an exact solution; scene {} has none", name, s.name));
+  const AnyResult r = pair_kernel(method, scene).run(params, spec);
+  if (a.json.empty()) {
+    std::fputs(csv(r, s.dim).c_str(), stdout);
+  } else {
+    Json p = params_json(s.params, params);
+    p["dt"] = spec.dt;
+    p["t_end"] = t_end;
+    write_atomic(a.json, run_json(s.name, name, std::move(p), r).dump(1) + "\n");
+  }
+  if (r.status != RunStatus::Ok)
+    fmt::print(stderr, "steplab: {} {} at step {} (t = {})\n", name, to_string(r.status), r.failed_step, r.failed_t);
+  return 0;
 }
 
 }  // namespace steplab

@@ -15,7 +15,7 @@ using Json = nlohmann::ordered_json;
 
 template <int D> Json vec_json(const Vec<D>& v) {
   Json a = Json::array();
-  for (int i = 0; i < D; ++i) a.push_back(v[i]);
+  for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(v[i]);
   return a;
 }
 
@@ -26,9 +26,10 @@ inline std::string param_key(const ParamSpec& p) {
   return key;
 }
 
-template <Scene S> Json params_json(std::span<const double> values) {
+// A scene's parameters {key: value} from its table (SceneKernel::params) and values in that order.
+inline Json params_json(std::span<const ParamSpec> spec, std::span<const double> values) {
   Json p = Json::object();
-  for (std::size_t i = 0; i < S::params.size(); ++i) p[param_key(S::params[i])] = values[i];
+  for (std::size_t i = 0; i < spec.size(); ++i) p[param_key(spec[i])] = values[i];
   return p;
 }
 

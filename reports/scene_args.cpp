@@ -4,29 +4,26 @@
 
 #include <fmt/format.h>
 
-#include "core/scenes.hpp"
+#include "analysis/kernel.hpp"
 #include "reports/inputs.hpp"
 
 namespace steplab {
 
 std::vector<std::string> all_scene_parameters() {
   std::vector<std::string> out;
-  for (std::size_t s = 0; s < scene_count; ++s)
-    with_scene(s, [&]<class S>() {
-      for (const ParamSpec& p : S::params)
-        if (std::find(out.begin(), out.end(), p.name) == out.end()) out.emplace_back(p.name);
-    });
+  for (std::size_t s = 0; s < scene_count(); ++s)
+    for (const ParamSpec& p : scene_kernel(s).params)
+      if (std::find(out.begin(), out.end(), p.name) == out.end()) out.emplace_back(p.name);
   return out;
 }
 
 std::string scene_parameters_help() {
   std::string out = "Scene parameters (each a NUMBER), by scene:\n";
-  for (std::size_t s = 0; s < scene_count; ++s)
-    with_scene(s, [&]<class S>() {
-      out += fmt::format("  {}:\n", S::name);
-      for (const ParamSpec& p : S::params)
-        out += fmt::format("    {:<28}{} (default {})\n", fmt::format("--{} NUMBER", p.name), p.help, p.fallback);
-    });
+  for (std::size_t s = 0; s < scene_count(); ++s) {
+    out += fmt::format("  {}:\n", scene_name(s));
+    for (const ParamSpec& p : scene_kernel(s).params)
+      out += fmt::format("    {:<28}{} (default {})\n", fmt::format("--{} NUMBER", p.name), p.help, p.fallback);
+  }
   return out;
 }
 
@@ -52,24 +49,23 @@ std::size_t SceneArgs::scene_index() const {
 }
 
 std::vector<double> SceneArgs::values(std::size_t index) const {
-  return with_scene(index, [&]<class S>() {
-    for (const auto& [name, value] : text) {
-      if (!given(name)) continue;
-      if (!has_param<S>(name)) {
-        std::string list;
-        for (const ParamSpec& p : S::params) list += (list.empty() ? "--" : ", --") + std::string(p.name);
-        throw UsageError(fmt::format("--{} does not apply to scene {}; accepted: {}", name, S::name, list));
-      }
+  const SceneKernel& s = scene_kernel(index);
+  for (const auto& [name, value] : text) {
+    if (!given(name)) continue;
+    if (!has_param(index, name)) {
+      std::string list;
+      for (const ParamSpec& p : s.params) list += (list.empty() ? "--" : ", --") + std::string(p.name);
+      throw UsageError(fmt::format("--{} does not apply to scene {}; accepted: {}", name, s.name, list));
     }
-    std::vector<double> v;
-    for (const ParamSpec& p : S::params) {
-      const std::string option = "--" + std::string(p.name);
-      if (given(p.name)) v.push_back(parse_number(option, text.at(std::string(p.name)), p.bound));
-      else if (auto f = fallback.find(p.name); f != fallback.end()) v.push_back(f->second);
-      else v.push_back(p.fallback);
-    }
-    return v;
-  });
+  }
+  std::vector<double> v;
+  for (const ParamSpec& p : s.params) {
+    const std::string option = "--" + std::string(p.name);
+    if (given(p.name)) v.push_back(parse_number(option, text.at(std::string(p.name)), p.bound));
+    else if (auto f = fallback.find(p.name); f != fallback.end()) v.push_back(f->second);
+    else v.push_back(p.fallback);
+  }
+  return v;
 }
 
 }  // namespace steplab

@@ -103,10 +103,11 @@ Part read_part(const std::string& path) {
     Call& call = p.calls.emplace_back(Call{c["tasks"].get<std::size_t>(), {}});
     for (const auto& [task, text] : c["results"].items()) {
       const bool number = !task.empty() && task.find_first_not_of("0123456789") == std::string::npos;
+      const std::size_t i = number ? std::stoull(task) : call.tasks;
       std::optional<std::string> bytes = text.is_string() ? unhex(text.get<std::string>()) : std::nullopt;
-      if (!number || !bytes || std::stoull(task) >= call.tasks)
+      if (i >= call.tasks || !bytes)
         throw bad(fmt::format("a result of task '{}' that is not hex bytes of a task of its call", task));
-      call.results.emplace_back(std::stoull(task), std::move(*bytes));
+      call.results.emplace_back(i, std::move(*bytes));
     }
   }
   p.doc.erase("calls");  // held decoded in p.calls

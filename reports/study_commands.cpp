@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "analysis/convergence.hpp"
-#include "core/scenes.hpp"
+#include "analysis/kernel.hpp"
 #include "reports/commands.hpp"
 #include "reports/inputs.hpp"
 #include "reports/output.hpp"
@@ -18,8 +18,8 @@ namespace steplab {
 std::vector<std::size_t> resolve_methods(const std::string& list, bool with_analytic) {
   std::vector<std::size_t> out;
   if (list.empty()) {
-    for (std::size_t i = 0; i < method_count; ++i)
-      if (with_analytic || !method_infos[i].exact_flow) out.push_back(i);
+    for (std::size_t i = 0; i < method_count(); ++i)
+      if (with_analytic || !method_info(i).exact_flow) out.push_back(i);
     return out;
   }
   for (const std::string& name : split_list(list)) {
@@ -35,21 +35,20 @@ unsigned resolve_thread_count(const std::string& text) {
   return static_cast<unsigned>(parse_count("--threads", text, 0, 1024));
 }
 
-int resolve_lanes(const std::string& text) { return static_cast<int>(parse_count("--lanes", text, 1, kMaxLanes)); }
+int resolve_lanes(const std::string& text) { return static_cast<int>(parse_count("--lanes", text, 1, 64)); }
 
 void add_lanes_option(CLI::App* app, std::string& lanes) {
-  lanes = std::to_string(kDefaultLanes);
+  lanes = "1";
   app->add_option("--lanes", lanes,
-                  fmt::format("runs stepped together on each thread, 1 .. {} (1: one at a time; the output is the same; "
-                              "see README, Speed, for when more pay)",
-                              kMaxLanes))
+                  "1 .. 64, accepted and checked for scripts written for 0.2; runs go one at a time on each thread "
+                  "whatever it says (README, Speed), and the output is the same")
       ->capture_default_str();
 }
 
 int convergence_command(ConvergenceArgs& a) {
   ConvergenceConfig c;
   c.scene = a.scene.scene_index();
-  const bool has_exact = with_scene(c.scene, [&]<class S>() { return HasExact<S>; });
+  const bool has_exact = scene_kernel(c.scene).has_exact;
   c.reference = a.reference || !has_exact;
   c.params = a.scene.values(c.scene);
   c.methods = resolve_methods(a.methods, false);
@@ -71,7 +70,7 @@ int convergence_command(ConvergenceArgs& a) {
                                  "(--scene {}{}) accepted: final",
                                  a.error, a.scene.scene, a.reference ? ", --reference" : ""));
   c.threads = resolve_thread_count(a.threads);
-  c.lanes = resolve_lanes(a.lanes);
+  resolve_lanes(a.lanes);  // checked; runs go one at a time
   c.timing = a.timing;
   if (sweep_steps(c.t_end, c.dt_max, c.dt_min, c.points).size() < 3)
     throw UsageError("--dt-max, --dt-min and --t-end leave fewer than 3 distinct steps; accepted: a wider range");
@@ -98,7 +97,7 @@ StabilityConfig stability_config(StabilityArgs& a) {
   c.params = a.scene.values(a.scene.scene_index());
   c.methods = resolve_methods(a.methods, false);
   c.threads = resolve_thread_count(a.threads);
-  c.lanes = resolve_lanes(a.lanes);
+  resolve_lanes(a.lanes);  // checked; runs go one at a time
   return c;
 }
 
@@ -170,7 +169,6 @@ int amplitude_command(const std::vector<double>& spring_params, double step) {
 }  // namespace steplab
 
 #include "analysis/collision.hpp"
-#include "core/scenes.hpp"
 
 namespace steplab {
 
@@ -182,18 +180,17 @@ int collision_command(CollisionArgs& a) {
     SceneArgs only = a.scene;
     only.scene = std::string(scene);
     const std::size_t index = only.scene_index();
-    return with_scene(index, [&]<class S>() {
-      for (auto& [name, text] : only.text)
-        if (!has_param<S>(name)) text.clear();
-      only.app = nullptr;
-      return only.values(index);
-    });
+    for (auto& [name, text] : only.text)
+      if (!has_param(index, name)) text.clear();
+    only.app = nullptr;
+    return only.values(index);
   };
+  const std::size_t bounce = scene_index("bounce"), falling = scene_index("falling");
   std::string accepted;  // the parameters of either collision scene
   for (const auto& [name, text] : a.scene.text)
-    if (has_param<Bounce>(name) || has_param<Falling>(name)) accepted += (accepted.empty() ? "--" : ", --") + name;
+    if (has_param(bounce, name) || has_param(falling, name)) accepted += (accepted.empty() ? "--" : ", --") + name;
   for (const auto& [name, text] : a.scene.text)
-    if (a.scene.given(name) && !has_param<Bounce>(name) && !has_param<Falling>(name))
+    if (a.scene.given(name) && !has_param(bounce, name) && !has_param(falling, name))
       throw UsageError(fmt::format("--{} does not apply to the collision scenes; accepted: {}", name, accepted));
   c.bounce_params = values_for("bounce");
   c.falling_params = values_for("falling");

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "core/scenes.hpp"
+#include "analysis/kernel.hpp"
 #include "reports/run_json.hpp"
 
 namespace steplab {
@@ -16,14 +16,14 @@ Json number_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr
 }  // namespace
 
 Json scene_params_json(std::size_t scene, const std::vector<double>& values) {
-  return with_scene(scene, [&]<class S>() { return params_json<S>(values); });
+  return params_json(scene_kernel(scene).params, values);
 }
 
 Json convergence_json(const ConvergenceResult& r) {
   const ConvergenceConfig& c = r.config;
   Json j;
   j["schema"] = "steplab.convergence/2";
-  j["scene"] = scene_names[c.scene];
+  j["scene"] = scene_name(c.scene);
   Json p = scene_params_json(c.scene, c.params);
   p["t_end"] = c.t_end;
   p["dt_max"] = c.dt_max;
@@ -44,7 +44,7 @@ Json convergence_json(const ConvergenceResult& r) {
   Json results = Json::array();
   for (const ConvergenceRecord& rec : r.records) {
     Json e;
-    e["method"] = method_infos[rec.method].name;
+    e["method"] = method_info(rec.method).name;
     e["dt"] = rec.dt;
     e["status"] = to_string(rec.status);
     e["steps"] = rec.steps;
@@ -60,7 +60,7 @@ Json convergence_json(const ConvergenceResult& r) {
   j["results"] = std::move(results);
   Json fits = Json::array();
   for (const ConvergenceFit& f : r.fits) {
-    const MethodInfo& info = method_infos[f.method];
+    const MethodInfo& info = method_info(f.method);
     Json e;
     e["method"] = info.name;
     e["declared_order"] = info.exact_flow ? Json(nullptr) : Json(info.order);
@@ -97,7 +97,7 @@ Json convergence_json(const ConvergenceResult& r) {
 std::string convergence_table(const ConvergenceResult& r) {
   const ConvergenceConfig& c = r.config;
   std::string out = fmt::format("Convergence on {}: t_end {}, {} steps from {:.3g} to {:.3g}; {} position error\n\n",
-                                scene_names[c.scene], c.t_end, r.dts.size(), r.dts.front(), r.dts.back(),
+                                scene_name(c.scene), c.t_end, r.dts.size(), r.dts.front(), r.dts.back(),
                                 to_string(c.fit_error));
   if (r.uses_reference)
     out += fmt::format("Errors against a reference solution: dopri5 at rtol = atol = {:g} ({} steps); its error, from "
@@ -105,7 +105,7 @@ std::string convergence_table(const ConvergenceResult& r) {
                        r.reference.rtol, r.reference.steps, r.reference.check_rtol, r.reference.estimated_error,
                        r.reference.floor);
   out += fmt::format("{:>10}", "dt");
-  for (const auto& f : r.fits) out += fmt::format(" {:>18}", method_infos[f.method].name);
+  for (const auto& f : r.fits) out += fmt::format(" {:>18}", method_info(f.method).name);
   out += "\n";
   for (std::size_t i = 0; i < r.dts.size(); ++i) {
     out += fmt::format("{:>10.4g}", r.dts[i]);
@@ -121,7 +121,7 @@ std::string convergence_table(const ConvergenceResult& r) {
   int skipped = 0;
   for (const auto& f : r.fits) skipped += f.fit.diverged_skipped;
   for (const auto& f : r.fits) {
-    const MethodInfo& info = method_infos[f.method];
+    const MethodInfo& info = method_info(f.method);
     const std::string declared = info.exact_flow ? "exact" : std::to_string(info.order);
     if (f.fit.exact) {
       out += fmt::format("{:<18} {:>8} {:>8}   every error at the round-off floor\n", info.name, declared, "exact");
@@ -146,7 +146,7 @@ namespace steplab {
 std::string local_error_tables(const LocalErrorResult& r) {
   const auto header = [&](const char* first) {
     std::string h = fmt::format("{:>12} {:>12}", "step", first);
-    for (const auto& c : r.columns) h += fmt::format(" {:>17}", method_infos[c.method].name);
+    for (const auto& c : r.columns) h += fmt::format(" {:>17}", method_info(c.method).name);
     return h + "\n";
   };
   const auto table = [&](const char* title, const std::vector<double>& exact_col, auto member) {
@@ -169,7 +169,7 @@ std::string local_error_tables(const LocalErrorResult& r) {
   }
   out += e + "\nobserved local order (expected: global order + 1)\n";
   for (const auto& c : r.columns) {
-    const MethodInfo& info = method_infos[c.method];
+    const MethodInfo& info = method_info(c.method);
     if (c.order.exact) out += fmt::format("{:<18} exact (every error at the round-off floor)\n", info.name);
     else if (!c.order.fitted) out += fmt::format("{:<18} - ({})\n", info.name, c.order.note);
     else
@@ -201,14 +201,14 @@ Json stability_json(const std::vector<double>& params, const std::vector<Thresho
   j["params"] = std::move(p);
   Json t = Json::array();
   for (const ThresholdRow& r : thresholds)
-    t.push_back({{"method", method_infos[r.method].name}, {"damping", r.damping}, {"dt_theory", threshold_json(r.dt_theory)},
+    t.push_back({{"method", method_info(r.method).name}, {"damping", r.damping}, {"dt_theory", threshold_json(r.dt_theory)},
                  {"dt_measured", threshold_json(r.dt_measured)},
                  {"stable_again_theory", threshold_json(r.again_theory)},
                  {"stable_again_measured", threshold_json(r.again_measured)}});
   j["thresholds"] = std::move(t);
   Json s = Json::array();
   for (const SweepRow& r : sweep)
-    s.push_back({{"method", method_infos[r.method].name},
+    s.push_back({{"method", method_info(r.method).name},
                  {"dt", r.dt},
                  {"damping", r.damping},
                  {"rate_measured", number_or_null(r.run.rate)},
@@ -231,7 +231,7 @@ Json stability_json(const std::vector<double>& params, const std::vector<Thresho
       return rows;
     };
     for (std::size_t i = 0; i < map->methods.size(); ++i) {
-      const std::string name(method_infos[map->methods[i]].name);
+      const std::string name(method_info(map->methods[i]).name);
       stable[name] = grid(map->stable[i]);
       predicted[name] = grid(map->predicted[i]);
       Json b = Json::array();
@@ -255,7 +255,7 @@ std::string thresholds_table(const std::vector<ThresholdRow>& rows) {
     const std::string again = std::isinf(r.again_theory) && std::isinf(r.again_measured)
                                   ? "-"
                                   : threshold_text(r.again_theory) + " / " + threshold_text(r.again_measured);
-    out += fmt::format("{:<18} {:>8g} {:>12} {:>12} {:>10}  {}\n", method_infos[r.method].name, r.damping,
+    out += fmt::format("{:<18} {:>8g} {:>12} {:>12} {:>10}  {}\n", method_info(r.method).name, r.damping,
                        threshold_text(r.dt_theory), threshold_text(r.dt_measured),
                        finite ? fmt::format("{:+.1e}", r.dt_measured / r.dt_theory - 1) : "-", again);
   }
@@ -268,7 +268,7 @@ std::string sweep_table(const std::vector<SweepRow>& rows) {
                                 "method", "dt", "damping", "measured", "predicted", "E(T)/E0", "max E/E0", "error", "stable");
   for (const SweepRow& r : rows)
     out += fmt::format("{:<18} {:>6g} {:>8.4g} {:>13.5e} {:>13.5e} {:>11.3e} {:>11.3e} {:>11.3e} {:>7}\n",
-                       method_infos[r.method].name, r.dt, r.damping, r.run.rate, r.rate_theory, r.run.energy_ratio_final,
+                       method_info(r.method).name, r.dt, r.damping, r.run.rate, r.rate_theory, r.run.energy_ratio_final,
                        r.run.energy_ratio_max, r.run.error_final, r.run.stable() ? "yes" : "no");
   return out;
 }
@@ -281,7 +281,7 @@ std::string map_summary(const StabilityMap& map) {
     int stable = 0;
     for (const auto& row : map.stable[i])
       for (bool cell : row) stable += cell;
-    out += fmt::format("{:<18} {:>14} {:>22}\n", method_infos[map.methods[i]].name,
+    out += fmt::format("{:<18} {:>14} {:>22}\n", method_info(map.methods[i]).name,
                        fmt::format("{}/{}", stable, map.dt.size() * map.damping.size()), disagreeing_cells(map, i));
   }
   return out;
@@ -289,7 +289,7 @@ std::string map_summary(const StabilityMap& map) {
 
 std::string amplitude_table_text(const AmplitudeTable& t) {
   std::string out = "max amplitude max |p_y - L| over N = (int)(10 / step) steps\n" + fmt::format("{:>12}", "step");
-  for (std::size_t m : t.methods) out += fmt::format(" {:>17}", method_infos[m].name);
+  for (std::size_t m : t.methods) out += fmt::format(" {:>17}", method_info(m).name);
   out += "\n";
   for (std::size_t i = 0; i < t.steps.size(); ++i) {
     out += fmt::format("{:>12.5e}", t.steps[i]);
@@ -306,7 +306,7 @@ namespace {
 
 Json collision_run_json(const CollisionRun& run, bool bounce) {
   Json j;
-  j["method"] = method_infos[run.method].name;
+  j["method"] = method_info(run.method).name;
   j["dt"] = run.dt;
   j["status"] = to_string(run.status);
   j["diverged_at"] = run.status == RunStatus::Ok ? Json(nullptr) : Json{{"step", run.failed_step}, {"t", run.failed_t}};
@@ -354,7 +354,7 @@ std::string collision_table(const CollisionResult& r) {
     double rebound = NAN;  // the last completed apex
     for (const BounceEvent& e : run.bounces)
       if (std::isfinite(e.rebound_height)) rebound = e.rebound_height;
-    out += fmt::format("{:<18} {:>7g} {:>8} {:>11.6f} {:>11.6f} {:>11.6f} {:>12.5f} {:>10.5f}{}\n", method_infos[run.method].name,
+    out += fmt::format("{:<18} {:>7g} {:>8} {:>11.6f} {:>11.6f} {:>11.6f} {:>12.5f} {:>10.5f}{}\n", method_info(run.method).name,
                        run.dt, run.bounces.size(), any ? run.bounces.front().energy_ratio : NAN,
                        any ? run.bounces.back().energy_ratio : NAN, run.energy_ratio_max,
                        rebound, run.max_penetration,
@@ -363,7 +363,7 @@ std::string collision_table(const CollisionResult& r) {
   out += fmt::format("\nFalling triangle over {} s at dt {}\n\n{:<18} {:>16} {:>11} {:>11} {:>10}\n", r.config.t_end,
                      r.config.triangle_dt, "method", "status", "E/E0 end", "max E/E0", "max depth");
   for (const CollisionRun& run : r.triangle)
-    out += fmt::format("{:<18} {:>16} {:>11.5f} {:>11.5f} {:>10.5f}\n", method_infos[run.method].name,
+    out += fmt::format("{:<18} {:>16} {:>11.5f} {:>11.5f} {:>10.5f}\n", method_info(run.method).name,
                        run.status == RunStatus::Ok ? "ok" : fmt::format("{} @{}", to_string(run.status), run.failed_step),
                        run.energy_ratio_final, run.energy_ratio_max, run.max_penetration);
   return out;

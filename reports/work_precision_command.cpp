@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "analysis/work_precision.hpp"
-#include "core/scenes.hpp"
+#include "analysis/kernel.hpp"
 #include "reports/commands.hpp"
 #include "reports/inputs.hpp"
 #include "reports/output.hpp"
@@ -31,7 +31,7 @@ Json work_precision_json(const WorkPrecisionResult& r) {
   Json scenes = Json::array();
   for (const SceneWork& w : r.scenes) {
     Json s;
-    s["scene"] = scene_names[w.scene];
+    s["scene"] = scene_name(w.scene);
     s["params"] = scene_params_json(w.scene, w.params);
     Json pts = Json::array();
     for (const WorkPoint& p : w.points)
@@ -79,7 +79,7 @@ std::string work_precision_table(const WorkPrecisionResult& r) {
   const bool timed = r.config.timing;
   std::string out;
   for (const SceneWork& w : r.scenes) {
-    out += fmt::format("Cheapest run with its largest error at most the level, {} (t_end {}):\n", scene_names[w.scene],
+    out += fmt::format("Cheapest run with its largest error at most the level, {} (t_end {}):\n", scene_name(w.scene),
                        r.config.t_end);
     out += fmt::format("{:>8}  {:<34} {}\n", "error", timed ? "by run time (minimum of repeats)" : "", "by force + Jacobian evaluations");
     for (const Cheapest& ch : w.cheapest)
@@ -117,7 +117,7 @@ int work_precision_command(WorkPrecisionArgs& a) {
   c.points = static_cast<int>(parse_count("--points", a.points, 3, 100));
   c.stiffnesses = number_list("--stiffnesses", a.stiffnesses, Bound::Positive);
   c.threads = resolve_thread_count(a.threads);
-  c.lanes = resolve_lanes(a.lanes);
+  resolve_lanes(a.lanes);  // checked; runs go one at a time
   c.timing = !a.no_timing;
   begin_shard(a.shard, a.json, c.timing);
   if (stop_after_validation(a.json)) return 0;

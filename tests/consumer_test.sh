@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # steplab as a package: install the build into a temporary prefix, build tests/consumer/ (a
 # project outside the tree) against it with find_package(steplab 0.2), run its two programs
-# (steplab::core and steplab::analysis), and run the installed CLI.
+# (steplab::core and steplab::analysis, their headers included as <steplab/...>), and run the
+# installed CLI.
 # Usage: consumer_test.sh BUILD_DIR SOURCE_DIR [extra cmake arguments for the consumer]
 set -euo pipefail
 build=$1 src=$2
@@ -9,8 +10,8 @@ shift 2
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cmake --install "$build" --prefix "$tmp/prefix" >/dev/null
-for f in include/steplab/core/methods.hpp include/steplab/analysis/convergence.hpp bin/steplab \
-         lib/cmake/steplab/steplabConfig.cmake lib/cmake/steplab/steplabConfigVersion.cmake; do
+for f in include/steplab/core/methods/rk4.hpp include/steplab/analysis/kernel.hpp include/steplab/reports/cli.hpp bin/steplab \
+         lib/cmake/steplab/steplabConfig.cmake lib/cmake/steplab/steplabConfigVersion.cmake lib/cmake/steplab/steplabTools.cmake; do
   [[ -e $tmp/prefix/$f ]] || { echo "not installed: $f"; exit 1; }
 done
 cmake -S "$src/tests/consumer" -B "$tmp/consumer" -DCMAKE_PREFIX_PATH="$tmp/prefix" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null

@@ -13,3 +13,5 @@ struct AdamsBashforth2 : AdamsBashforthMethod<std::array{3.0 / 2, -1.0 / 2}> {
 };
 
 }  // namespace steplab
+
+STEPLAB_METHOD(steplab::AdamsBashforth2);

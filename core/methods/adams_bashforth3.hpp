@@ -13,3 +13,5 @@ struct AdamsBashforth3 : AdamsBashforthMethod<std::array{23.0 / 12, -16.0 / 12, 
 };
 
 }  // namespace steplab
+
+STEPLAB_METHOD(steplab::AdamsBashforth3);

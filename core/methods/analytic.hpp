@@ -16,3 +16,5 @@ struct Analytic {
 };
 
 }  // namespace steplab
+
+STEPLAB_METHOD(steplab::Analytic);

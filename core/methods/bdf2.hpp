@@ -14,3 +14,5 @@ struct Bdf2 : BdfMethod<std::array{4.0 / 3, -1.0 / 3}, 2.0 / 3> {
 };
 
 }  // namespace steplab
+
+STEPLAB_METHOD(steplab::Bdf2);

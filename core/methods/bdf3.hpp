@@ -16,3 +16,5 @@ struct Bdf3 : BdfMethod<std::array{18.0 / 11, -9.0 / 11, 2.0 / 11}, 6.0 / 11> {
 };
 
 }  // namespace steplab
+
+STEPLAB_METHOD(steplab::Bdf3);

@@ -19,3 +19,5 @@ struct ExplicitEuler {
 };
 
 }  // namespace steplab
+
+STEPLAB_METHOD(steplab::ExplicitEuler);

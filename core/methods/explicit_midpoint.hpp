@@ -20,3 +20,5 @@ struct ExplicitMidpoint {
 };
 
 }  // namespace steplab
+
+STEPLAB_METHOD(steplab::ExplicitMidpoint);

@@ -21,3 +21,5 @@ struct GaussLegendre4 {
 };
 
 }  // namespace steplab
+
+STEPLAB_METHOD(steplab::GaussLegendre4);

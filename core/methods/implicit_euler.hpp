@@ -22,3 +22,5 @@ struct ImplicitEuler {
 };
 
 }  // namespace steplab
+
+STEPLAB_METHOD(steplab::ImplicitEuler);

@@ -22,3 +22,5 @@ struct ImplicitMidpoint {
 };
 
 }  // namespace steplab
+
+STEPLAB_METHOD(steplab::ImplicitMidpoint);

@@ -26,3 +26,5 @@ struct RadauIIA5 {
 };
 
 }  // namespace steplab
+
+STEPLAB_METHOD(steplab::RadauIIA5);

@@ -23,3 +23,5 @@ struct Rk3 {
 };
 
 }  // namespace steplab
+
+STEPLAB_METHOD(steplab::Rk3);

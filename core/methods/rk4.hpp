@@ -23,3 +23,5 @@ struct Rk4 {
 };
 
 }  // namespace steplab
+
+STEPLAB_METHOD(steplab::Rk4);

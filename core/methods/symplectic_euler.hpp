@@ -19,3 +19,5 @@ struct SymplecticEuler {
 };
 
 }  // namespace steplab
+
+STEPLAB_METHOD(steplab::SymplecticEuler);

@@ -28,3 +28,5 @@ struct VelocityVerlet {
 };
 
 }  // namespace steplab
+
+STEPLAB_METHOD(steplab::VelocityVerlet);

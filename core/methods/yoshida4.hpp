@@ -23,3 +23,5 @@ struct Yoshida4 {
 };
 
 }  // namespace steplab
+
+STEPLAB_METHOD(steplab::Yoshida4);

@@ -49,6 +49,8 @@ struct Bounce {
     return {Mat<1>::Constant(ground.dforce_dy(x[0])), Mat<1>::Constant(ground.dforce_dv(x[0]))};
   }
   bool velocity_dependent() const { return ground.c != 0; }
+  double penetration(const Vec<1>& x) const { return ground.penetration(x[0]); }
+  bool in_contact(const Vec<1>& x) const { return ground.touching(x[0]); }
 
   // Total mechanical energy, height measured from the ground (so E0 = m g > 0 at the drop):
   // 1/2 m v^2 + m g (y + 1) + 1/2 k_g p^2.
@@ -104,3 +106,5 @@ struct Bounce {
 };
 
 }  // namespace steplab
+
+STEPLAB_SCENE(steplab::Bounce);

@@ -49,3 +49,5 @@ struct Cannonball {
 };
 
 }  // namespace steplab
+
+STEPLAB_SCENE(steplab::Cannonball);

@@ -5,9 +5,6 @@
 #include <span>
 #include <string_view>
 
-#include <Eigen/Eigenvalues>
-#include <unsupported/Eigen/MatrixFunctions>
-
 #include "core/scene.hpp"
 
 namespace steplab {
@@ -63,26 +60,8 @@ struct Chain {
   bool use_eigen = false;
   static constexpr double kMaxCondition = 1e8;
 
-  explicit Chain(std::span<const double> p)
-      : m(p[0], p[1]), inv_m(1 / p[0], 1 / p[1]), u0(p[6], p[7]) {
-    const double k1 = p[2], k2 = p[3], c1 = p[4], c2 = p[5];
-    K << k1 + k2, -k2, -k2, k2;
-    C << c1 + c2, -c2, -c2, c2;
-    const long double lm1 = p[0], lm2 = p[1], lk1 = k1, lk2 = k2, lc1 = c1, lc2 = c2;
-    A << 0, 0, 1, 0, 0, 0, 0, 1, -(lk1 + lk2) / lm1, lk2 / lm1, -(lc1 + lc2) / lm1, lc2 / lm1, lk2 / lm2, -lk2 / lm2,
-        lc2 / lm2, -lc2 / lm2;
-    const Eigen::EigenSolver<LMat4> es(A);
-    if (es.info() == Eigen::Success) {
-      const LCMat4 v = es.eigenvectors(), v_inv = v.inverse();
-      const long double condition =
-          v.cwiseAbs().rowwise().sum().maxCoeff() * v_inv.cwiseAbs().rowwise().sum().maxCoeff();
-      use_eigen = std::isfinite(condition) && condition < kMaxCondition;
-      V = v.cast<std::complex<double>>();
-      V_inv = v_inv.cast<std::complex<double>>();
-      lambda = es.eigenvalues().cast<std::complex<double>>();
-      start = (v_inv * Eigen::Matrix<std::complex<long double>, 4, 1>(u0[0], u0[1], 0, 0)).cast<std::complex<double>>();
-    }
-  }
+  // Defined at the end of this file, compiled once (STEPLAB_SCENE_SOURCE below).
+  explicit Chain(std::span<const double> p);
 
   Vec<2> mass() const { return m; }
   Vec<2> inverse_mass() const { return inv_m; }
@@ -100,11 +79,12 @@ struct Chain {
   State<2> exact_at(double t) const { return use_eigen ? modal(start, t) : flow(initial(), t); }
 
   State<2> flow(const State<2>& y, double t) const {
-    if (!use_eigen) return to_state(((A * t).exp() * to_z(y).cast<long double>()).cast<double>());
+    if (!use_eigen) return expm_flow(y, t);
     return modal(V_inv * to_z(y).cast<std::complex<double>>(), t);
   }
 
  private:
+  State<2> expm_flow(const State<2>& y, double t) const;  // e^{A t} y in long double
   // z(t) = V diag(e^{lambda t}) c for modal coordinates c = V^-1 z(0).
   State<2> modal(const CVec4& c, double t) const {
     return to_state((V * (lambda * t).array().exp().matrix().cwiseProduct(c)).real());
@@ -114,3 +94,41 @@ struct Chain {
 };
 
 }  // namespace steplab
+
+// The eigen-decomposition and the matrix exponential in long double take GCC about 10 s to
+// compile: here, not in every file that includes the chain. A scene's generated translation unit
+// (tools/kernels.cmake) defines STEPLAB_SCENE_SOURCE, so they are compiled once, into the kernel
+// library (steplab::kernels).
+#ifdef STEPLAB_SCENE_SOURCE
+#include <Eigen/Eigenvalues>
+#include <unsupported/Eigen/MatrixFunctions>
+
+namespace steplab {
+
+Chain::Chain(std::span<const double> p) : m(p[0], p[1]), inv_m(1 / p[0], 1 / p[1]), u0(p[6], p[7]) {
+  const double k1 = p[2], k2 = p[3], c1 = p[4], c2 = p[5];
+  K << k1 + k2, -k2, -k2, k2;
+  C << c1 + c2, -c2, -c2, c2;
+  const long double lm1 = p[0], lm2 = p[1], lk1 = k1, lk2 = k2, lc1 = c1, lc2 = c2;
+  A << 0, 0, 1, 0, 0, 0, 0, 1, -(lk1 + lk2) / lm1, lk2 / lm1, -(lc1 + lc2) / lm1, lc2 / lm1, lk2 / lm2, -lk2 / lm2,
+      lc2 / lm2, -lc2 / lm2;
+  const Eigen::EigenSolver<LMat4> es(A);
+  if (es.info() == Eigen::Success) {
+    const LCMat4 v = es.eigenvectors(), v_inv = v.inverse();
+    const long double condition = v.cwiseAbs().rowwise().sum().maxCoeff() * v_inv.cwiseAbs().rowwise().sum().maxCoeff();
+    use_eigen = std::isfinite(condition) && condition < kMaxCondition;
+    V = v.cast<std::complex<double>>();
+    V_inv = v_inv.cast<std::complex<double>>();
+    lambda = es.eigenvalues().cast<std::complex<double>>();
+    start = (v_inv * Eigen::Matrix<std::complex<long double>, 4, 1>(u0[0], u0[1], 0, 0)).cast<std::complex<double>>();
+  }
+}
+
+State<2> Chain::expm_flow(const State<2>& y, double t) const {
+  return to_state(((A * t).exp() * to_z(y).cast<long double>()).cast<double>());
+}
+
+}  // namespace steplab
+#endif
+
+STEPLAB_SCENE(steplab::Chain);

@@ -10,6 +10,7 @@
 // with dF/dx_j = -dF/dd, and so on by symmetry. Plus gravity -m g on every y and the ground.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -92,6 +93,13 @@ struct Falling {
   }
 
   bool velocity_dependent() const { return gamma != 0 || ground.c != 0; }
+  // The deepest of the three particles below the ground; whether any touches it.
+  double penetration(const Vec<6>& x) const {
+    double p = ground.penetration(x[1]);
+    for (int i = 1; i < 3; ++i) p = std::max(p, ground.penetration(x[2 * i + 1]));
+    return p;
+  }
+  bool in_contact(const Vec<6>& x) const { return ground.touching(x[1]) || ground.touching(x[3]) || ground.touching(x[5]); }
 
   // Total mechanical energy: kinetic + gravity (height above the ground) + springs + ground penalty.
   double energy(const Vec<6>& x, const Vec<6>& v) const {
@@ -114,3 +122,5 @@ struct Falling {
 };
 
 }  // namespace steplab
+
+STEPLAB_SCENE(steplab::Falling);

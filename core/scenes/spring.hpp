@@ -32,12 +32,14 @@ struct Spring {
   double m, k, gamma, L, g;
   double inv_m = 1 / m;  // initialized after m (declaration order)
   double weight = m * g;
-  // Stored, not recomputed in each energy(): in a lane (core/lanes.hpp) the compiler cannot hoist
+  // Stored, not recomputed in each energy(): in a batch of runs the compiler cannot hoist
   // the division out of the stepping loop.
   double equilibrium_y = -L - m * g / k;
 
   explicit Spring(std::span<const double> p) : m(p[0]), k(p[1]), gamma(p[2]), L(p[3]), g(p[4]) {}
 
+  // The parameter values it was made from, in table order.
+  std::array<double, 5> values() const { return {m, k, gamma, L, g}; }
   double equilibrium() const { return equilibrium_y; }
   double omega() const { return std::sqrt(k / m); }              // undamped angular frequency
   double critical_damping() const { return 2 * std::sqrt(k * m); }  // gamma^2 = 4 k m
@@ -123,3 +125,5 @@ struct Spring {
 };
 
 }  // namespace steplab
+
+STEPLAB_SCENE(steplab::Spring);

@@ -2,7 +2,7 @@
 // and the falling triangle.
 #include <fmt/format.h>
 
-#include "core/scenes.hpp"
+#include "analysis/kernel.hpp"
 #include "reports/report_text.hpp"
 #include "reports/section.hpp"
 #include "reports/study_output.hpp"

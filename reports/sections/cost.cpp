@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "core/scenes.hpp"
+#include "analysis/kernel.hpp"
 #include "reports/report_text.hpp"
 #include "reports/section.hpp"
 #include "reports/study_output.hpp"
@@ -14,7 +14,7 @@
 namespace steplab {
 namespace {
 
-std::string scene_word(const SceneWork& w) { return std::string(scene_names[w.scene]); }
+std::string scene_word(const SceneWork& w) { return std::string(scene_name(w.scene)); }
 
 // "1.2 µs" / "3.4 ms" or "812 evaluations".
 std::string cost_text(bool timed, double seconds, long long evaluations) {
@@ -162,7 +162,7 @@ class Cost : public Section {
       std::string best;
       double cost = INFINITY;
       for (std::size_t m : r.config.methods)
-        if (method_infos[m].implicit)
+        if (method_info(m).implicit)
           if (const double c = cheapest_of(chain, name(m), level, timed); c < cost) cost = c, best = name(m);
       const double cv = cheapest_of(chain, "cvode_bdf", level, timed);
       if (best.empty() || !std::isfinite(cv)) continue;

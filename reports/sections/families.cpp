@@ -11,7 +11,7 @@
 #include <fmt/format.h>
 
 #include "analysis/regions.hpp"
-#include "core/methods.hpp"
+#include "analysis/kernel.hpp"
 #include "core/scenes/spring.hpp"
 #include "reports/report_text.hpp"
 #include "reports/section.hpp"
@@ -134,7 +134,7 @@ class Families : public Section {
                                                    "the region (points)", gamma));
     std::vector<std::size_t> partitioned;
     for (std::size_t m : d.methods)
-      if (method_infos[m].family == Family::Splitting) partitioned.push_back(m);
+      if (method_info(m).family == Family::Splitting) partitioned.push_back(m);
     if (!partitioned.empty())
       md += fmt::format("{} have no stability region in this sense: they update x and v by different rules, so their step "
                         "matrix is not a function R(h A) of one scalar z. Their stability is in the (dt, damping) maps "
@@ -152,7 +152,7 @@ class Families : public Section {
   static std::string family_table(const ReportData& d, double gamma) {
     int top = 0;
     for (std::size_t m : d.methods)
-      if (!method_infos[m].exact_flow) top = std::max(top, method_infos[m].order);
+      if (!method_info(m).exact_flow) top = std::max(top, method_info(m).order);
     std::string md = "| family and its methods, by order |", rule = "|----------|";
     for (int p = 1; p <= top; ++p) md += fmt::format(" order {} |", p), rule += "---|";
     md += "\n" + rule + "\n";
@@ -160,14 +160,14 @@ class Families : public Section {
       std::vector<std::size_t> fam = family_members(d.methods, f);
       if (fam.empty()) continue;
       std::stable_sort(fam.begin(), fam.end(),
-                       [](std::size_t a, std::size_t b) { return method_infos[a].order < method_infos[b].order; });
+                       [](std::size_t a, std::size_t b) { return method_info(a).order < method_info(b).order; });
       std::string names;
       for (std::size_t m : fam) names += fmt::format("{}`{}`", names.empty() ? "" : ", ", name(m));
       md += fmt::format("| {}: {} |", to_string(f), names);
       for (int p = 1; p <= top; ++p) {
         std::string cell;
         for (std::size_t m : fam)
-          if (method_infos[m].order == p) {
+          if (method_info(m).order == p) {
             const ThresholdRow *u = find_threshold(d, m, 0), *g = find_threshold(d, m, gamma);
             cell += fmt::format("{}{} / {}", cell.empty() ? "" : "; ", u ? dt_text(u->dt_measured) : "-",
                                 g ? dt_text(g->dt_measured) : "-");
@@ -194,9 +194,9 @@ class Families : public Section {
         if (r.method == m && left_half_plane_stable(regions_, r)) half_plane.push_back(m);
     }
     int max_order = 0;
-    for (std::size_t m : half_plane) max_order = std::max(max_order, method_infos[m].order);
+    for (std::size_t m : half_plane) max_order = std::max(max_order, method_info(m).order);
     std::string orders;
-    for (std::size_t m : every_step) orders += fmt::format("{}`{}` (order {})", orders.empty() ? "" : ", ", name(m), method_infos[m].order);
+    for (std::size_t m : every_step) orders += fmt::format("{}`{}` (order {})", orders.empty() ? "" : ", ", name(m), method_info(m).order);
     std::string md = fmt::format(
         "Dahlquist's second barrier: an A-stable linear multistep method has order at most 2. Measured on the {} linear "
         "multistep methods (Adams-Bashforth and BDF, explicit and implicit Euler included): stable at every step at every "
@@ -208,7 +208,7 @@ class Families : public Section {
                                        "the measurement.", max_order);
     std::vector<std::size_t> beyond;
     for (std::size_t m : multistep)
-      if (method_infos[m].order > 2) beyond.push_back(m);
+      if (method_info(m).order > 2) beyond.push_back(m);
     if (!beyond.empty()) md += fmt::format(" Of order 3 and more: {}, not A-stable.", method_list(beyond));
     return md + "\n\n";
   }

@@ -1,7 +1,7 @@
 // The scenes: cannon ball paths and the spring's y(t) per method beside the exact solutions.
 #include <fmt/format.h>
 
-#include "core/scenes.hpp"
+#include "analysis/kernel.hpp"
 #include "reports/report_text.hpp"
 #include "reports/section.hpp"
 
@@ -23,17 +23,17 @@ class SceneFigures : public Section {
       }
     }
     std::string curve = "# x y\n";
-    const Cannonball cannon(d.config.cannonball);
+    const SceneKernel& cannon = scene_kernel(scene_index("cannonball"));
     for (int k = 0; k <= 400; ++k) {
-      const State<2> y = exact(cannon, d.config.cannonball_t_end * k / 400.0);
+      const AnyState y = cannon.exact(d.config.cannonball, d.config.cannonball_t_end * k / 400.0);
       curve += num(y.x[0]) + " " + num(y.x[1]) + "\n";
     }
     dat.write("cannon_exact.dat", curve);
     curve = "# t y\n";
-    const Spring spring(d.config.spring);
+    const SceneKernel& spring = scene_kernel(scene_index("spring"));
     for (int k = 0; k <= 2000; ++k) {
       const double t = d.config.spring_figure_t_end * k / 2000.0;
-      curve += num(t) + " " + num(exact(spring, t).x[0]) + "\n";
+      curve += num(t) + " " + num(spring.exact(d.config.spring, t).x[0]) + "\n";
     }
     dat.write("spring_exact.dat", curve);
   }

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "core/methods.hpp"
+#include "analysis/kernel.hpp"
 #include "reports/report_text.hpp"
 #include "reports/section.hpp"
 #include "reports/study_output.hpp"

@@ -3,8 +3,7 @@
 
 #include <fmt/format.h>
 
-#include "core/methods.hpp"
-#include "core/scenes.hpp"
+#include "analysis/kernel.hpp"
 #include "reports/report_text.hpp"
 #include "reports/section.hpp"
 
@@ -29,8 +28,8 @@ class Summary : public Section {
     const auto yes = [](bool b) { return b ? "yes" : "**no**"; };
     for (std::size_t i = 0; i < rows.size(); ++i) {
       const MethodFinding& r = *rows[i];
-      const Family f = method_infos[r.method].family;
-      const bool first = i == 0 || method_infos[rows[i - 1]->method].family != f;  // the family named once per group
+      const Family f = method_info(r.method).family;
+      const bool first = i == 0 || method_info(rows[i - 1]->method).family != f;  // the family named once per group
       md += fmt::format("| {} | `{}` | {} | {} | {} / {} | {} | {} | {} | {:.3g} |\n", first ? to_string(f) : "", name(r.method),
                         order_text(r.method), fitted_text(*r.fit), yes(r.stable_large_dt), yes(r.stable_undamped),
                         dt_text(r.dt_undamped_measured), dt_text(r.dt_measured),

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "analysis/check.hpp"
-#include "core/methods.hpp"
+#include "analysis/kernel.hpp"
 #include "reports/check_command.hpp"
 
 namespace steplab {
@@ -21,20 +21,20 @@ class EveryRow : public ::testing::TestWithParam<std::size_t> {};
 
 TEST_P(EveryRow, HoldsEveryClaim) {
   const std::size_t m = GetParam();
-  const CheckResult r = check_method(m, method_infos[m], 2);
+  const CheckResult r = check_method(m, method_info(m), 2);
   EXPECT_TRUE(r.all_hold()) << check_text(r);
   ASSERT_EQ(r.orders.size(), 2u);
-  if (method_infos[m].order > 0) {  // the spring's order is fitted, within 0.01 for every row
+  if (method_info(m).order > 0) {  // the spring's order is fitted, within 0.01 for every row
     EXPECT_TRUE(r.orders[0].fit.fitted);
-    EXPECT_NEAR(r.orders[0].fit.order, method_infos[m].order, 0.01) << method_infos[m].name;
+    EXPECT_NEAR(r.orders[0].fit.order, method_info(m).order, 0.01) << method_info(m).name;
   }
   EXPECT_EQ(r.stability.size(), std::size(kCheckDampings));
   const auto lines = check_lines(r);
   EXPECT_EQ(lines.size(), 2 * r.orders.size() + 2 + r.stability.size() + 1);
 }
 
-INSTANTIATE_TEST_SUITE_P(Table, EveryRow, ::testing::Range<std::size_t>(0, method_count),
-                         [](const auto& row) { return std::string(method_infos[row.param].name); });
+INSTANTIATE_TEST_SUITE_P(Table, EveryRow, ::testing::Range<std::size_t>(0, method_count()),
+                         [](const auto& row) { return std::string(method_info(row.param).name); });
 
 // The energy's drift over kDriftSteps at omega h = y is kDriftSteps ln|R(iy)|^2 for a one-step
 // method whose stability function is R; least squares on an exact exponential returns its rate.
@@ -52,13 +52,13 @@ TEST(Check, EnergyDriftIsTheStabilityFunctionsModulus) {
                {"implicit_euler", -n * std::log(1 + y2)},
                {"radau_iia5", n * std::log(radau)}};
   for (const auto& c : cases) {
-    const CheckResult r = check_as(c.name, method_infos[index_of(c.name)]);
+    const CheckResult r = check_as(c.name, method_info(index_of(c.name)));
     EXPECT_NEAR(r.energy.drift, c.theory, 1e-3 * std::abs(c.theory)) << c.name;
   }
 }
 
 TEST(Check, FirstOrderDeclaredSecondOrderFailsItsOrderOnly) {
-  MethodInfo wrong = method_infos[index_of("explicit_euler")];
+  MethodInfo wrong = method_info(index_of("explicit_euler"));
   wrong.order = 2;
   const CheckResult r = check_as("explicit_euler", wrong);
   EXPECT_FALSE(r.all_hold());
@@ -77,7 +77,7 @@ TEST(Check, FirstOrderDeclaredSecondOrderFailsItsOrderOnly) {
 
 // RK4 declared third order: the spring refutes it; the cannon ball (exact for any order >= 2) cannot.
 TEST(Check, FourthOrderDeclaredThirdFailsOnTheSpring) {
-  MethodInfo wrong = method_infos[index_of("rk4")];
+  MethodInfo wrong = method_info(index_of("rk4"));
   wrong.order = 3;
   const CheckResult r = check_as("rk4", wrong);
   EXPECT_FALSE(r.orders[0].order_holds);
@@ -87,7 +87,7 @@ TEST(Check, FourthOrderDeclaredThirdFailsOnTheSpring) {
 
 TEST(Check, NonSymplecticDeclaredSymplecticFails) {
   for (const char* name : {"explicit_euler", "rk4", "implicit_euler", "bdf2"}) {
-    MethodInfo wrong = method_infos[index_of(name)];
+    MethodInfo wrong = method_info(index_of(name));
     wrong.symplectic = true;
     const CheckResult r = check_as(name, wrong);
     EXPECT_FALSE(r.energy.holds) << name;
@@ -98,7 +98,7 @@ TEST(Check, NonSymplecticDeclaredSymplecticFails) {
 }
 
 TEST(Check, SymplecticDeclaredNotFails) {
-  MethodInfo wrong = method_infos[index_of("velocity_verlet")];
+  MethodInfo wrong = method_info(index_of("velocity_verlet"));
   wrong.symplectic = false;
   const CheckResult r = check_as("velocity_verlet", wrong);
   EXPECT_TRUE(r.energy.bounded);
@@ -108,11 +108,11 @@ TEST(Check, SymplecticDeclaredNotFails) {
 
 TEST(Check, AStabilityDeclaredWronglyFailsBothWays) {
   for (const char* name : {"rk4", "bdf3"}) {  // bdf3: infinite dt* at damping 1 and 4, not at 0 and 0.1
-    MethodInfo wrong = method_infos[index_of(name)];
+    MethodInfo wrong = method_info(index_of(name));
     wrong.a_stable = true;
     EXPECT_FALSE(check_as(name, wrong).a_stable_holds) << name;
   }
-  MethodInfo wrong = method_infos[index_of("implicit_euler")];
+  MethodInfo wrong = method_info(index_of("implicit_euler"));
   wrong.a_stable = false;
   const CheckResult r = check_as("implicit_euler", wrong);
   EXPECT_FALSE(r.a_stable_holds);
@@ -122,7 +122,7 @@ TEST(Check, AStabilityDeclaredWronglyFailsBothWays) {
 // The same result whatever the number of threads.
 TEST(Check, ThreadCountDoesNotChangeTheText) {
   const std::size_t m = index_of("bdf3");
-  EXPECT_EQ(check_text(check_method(m, method_infos[m], 1)), check_text(check_method(m, method_infos[m], 2)));
+  EXPECT_EQ(check_text(check_method(m, method_info(m), 1)), check_text(check_method(m, method_info(m), 2)));
 }
 
 }  // namespace

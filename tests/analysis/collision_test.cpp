@@ -5,15 +5,17 @@
 
 #include "analysis/collision.hpp"
 #include "analysis/convergence.hpp"
-#include "core/scenes.hpp"
+#include "analysis/kernel.hpp"
+#include "core/scenes/bounce.hpp"
+#include "core/scenes/falling.hpp"
 
 namespace steplab {
 namespace {
 
 std::vector<std::size_t> numerical_methods() {
   std::vector<std::size_t> m;
-  for (std::size_t i = 0; i < method_count; ++i)
-    if (!method_infos[i].exact_flow) m.push_back(i);
+  for (std::size_t i = 0; i < method_count(); ++i)
+    if (!method_info(i).exact_flow) m.push_back(i);
   return m;
 }
 
@@ -30,7 +32,7 @@ class CollisionStudy : public ::testing::Test {
   static void TearDownTestSuite() { delete result; }
   static const CollisionRun& bounce(std::string_view method, double dt) {
     for (const auto& r : result->bounce)
-      if (method_infos[r.method].name == method && r.dt == dt) return r;
+      if (method_info(r.method).name == method && r.dt == dt) return r;
     throw std::logic_error("no such run");
   }
   static CollisionResult* result;
@@ -67,7 +69,7 @@ TEST_F(CollisionStudy, ImplicitEulerLosesEnergy) {
 TEST_F(CollisionStudy, TriangleRunsTenSecondsForEveryMethod) {
   ASSERT_EQ(result->triangle.size(), numerical_methods().size());
   for (const CollisionRun& r : result->triangle) {
-    const auto name = method_infos[r.method].name;
+    const auto name = method_info(r.method).name;
     if (r.status == RunStatus::Ok) {
       ASSERT_FALSE(r.path.empty()) << name;
       EXPECT_DOUBLE_EQ(r.path.back().t, 10.0) << name;
@@ -89,7 +91,7 @@ TEST(BounceConvergence, OrdersWithIntervals) {
   c.methods = numerical_methods();
   const ConvergenceResult r = convergence_study(c);
   for (const ConvergenceFit& f : r.fits) {
-    const MethodInfo& info = method_infos[f.method];
+    const MethodInfo& info = method_info(f.method);
     ASSERT_TRUE(f.fit.fitted) << info.name << ": " << f.fit.note;
     EXPECT_GE(f.fit.line.n, 4) << info.name;
     EXPECT_LT(f.fit.line.ci95_lo, f.fit.line.ci95_hi) << info.name;

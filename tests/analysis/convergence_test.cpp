@@ -4,7 +4,8 @@
 #include <cmath>
 
 #include "analysis/convergence.hpp"
-#include "core/scenes.hpp"
+#include "analysis/kernel.hpp"
+#include "core/scenes/spring.hpp"
 #include "reports/study_output.hpp"
 
 namespace steplab {
@@ -13,9 +14,9 @@ namespace {
 ConvergenceConfig defaults(std::string_view scene) {
   ConvergenceConfig c;
   c.scene = *find_scene(scene);
-  c.params = with_scene(c.scene, [&]<class S>() { return default_param_values<S>(); });
-  for (std::size_t m = 0; m < method_count; ++m)
-    if (!method_infos[m].exact_flow) c.methods.push_back(m);
+  c.params = default_param_values(c.scene);
+  for (std::size_t m = 0; m < method_count(); ++m)
+    if (!method_info(m).exact_flow) c.methods.push_back(m);
   return c;
 }
 
@@ -35,7 +36,7 @@ TEST(SweepSteps, WholeNumberOfStepsAndGeometric) {
 TEST(Convergence, SpringDefaultsFitTheDeclaredOrders) {
   const ConvergenceResult r = convergence_study(defaults("spring"));
   for (const ConvergenceFit& f : r.fits) {
-    const MethodInfo& info = method_infos[f.method];
+    const MethodInfo& info = method_info(f.method);
     ASSERT_TRUE(f.fit.fitted) << info.name << ": " << f.fit.note;
     EXPECT_NEAR(f.fit.order, info.order, 0.01) << info.name;
     EXPECT_LE(f.fit.bound_lo, info.order) << info.name;
@@ -66,8 +67,8 @@ TEST(Convergence, AReferenceSolutionGivesTheOrdersTheExactSolutionGives) {
   EXPECT_LT(ref.estimated_error, 1e-10);
   EXPECT_LE(std::abs(ref.x[0] - exact(s, c.t_end).x[0]), ref.estimated_error);
   for (std::size_t m = 0; m < c.methods.size(); ++m) {
-    ASSERT_TRUE(by_reference.fits[m].fit.fitted) << method_infos[c.methods[m]].name;
-    EXPECT_NEAR(by_reference.fits[m].fit.order, by_exact.fits[m].fit.order, 0.03) << method_infos[c.methods[m]].name;
+    ASSERT_TRUE(by_reference.fits[m].fit.fitted) << method_info(c.methods[m]).name;
+    EXPECT_NEAR(by_reference.fits[m].fit.order, by_exact.fits[m].fit.order, 0.03) << method_info(c.methods[m]).name;
   }
 }
 
@@ -85,7 +86,7 @@ TEST(Convergence, FallingConvergesAgainstAReferenceAtMostAtOrderTwo) {
   ASSERT_TRUE(r.uses_reference);
   EXPECT_LT(r.reference.estimated_error, 1e-9);
   for (const ConvergenceFit& f : r.fits) {
-    const MethodInfo& info = method_infos[f.method];
+    const MethodInfo& info = method_info(f.method);
     ASSERT_TRUE(f.fit.fitted) << info.name << ": " << f.fit.note;
     if (info.order <= 2) {
       EXPECT_NEAR(f.fit.order, info.order, 0.2) << info.name;
@@ -99,7 +100,7 @@ TEST(Convergence, FallingConvergesAgainstAReferenceAtMostAtOrderTwo) {
 TEST(Convergence, CannonballEulersAreFirstOrderTheRestExact) {
   const ConvergenceResult r = convergence_study(defaults("cannonball"));
   for (const ConvergenceFit& f : r.fits) {
-    const MethodInfo& info = method_infos[f.method];
+    const MethodInfo& info = method_info(f.method);
     if (info.order == 1) {  // and Adams-Bashforth and BDF: exact on polynomials of their order
       ASSERT_TRUE(f.fit.fitted) << info.name;
       EXPECT_NEAR(f.fit.line.slope, 1.0, 1e-6) << info.name;  // e = g t dt / 2 exactly, plus round-off

@@ -4,7 +4,8 @@
 #include <cmath>
 
 #include "analysis/stability.hpp"
-#include "core/methods.hpp"
+#include "analysis/kernel.hpp"
+#include "core/scenes/spring.hpp"
 #include "reports/study_output.hpp"
 
 namespace steplab {
@@ -14,8 +15,8 @@ std::vector<double> spring_params(double gamma) { return {1.0, 5.0, gamma, 5.0, 
 
 std::vector<std::size_t> numerical_methods() {
   std::vector<std::size_t> m;
-  for (std::size_t i = 0; i < method_count; ++i)
-    if (!method_infos[i].exact_flow) m.push_back(i);
+  for (std::size_t i = 0; i < method_count(); ++i)
+    if (!method_info(i).exact_flow) m.push_back(i);
   return m;
 }
 
@@ -110,7 +111,7 @@ TEST(Threshold, MeasuredWithinOnePercentOfPredicted) {
   StabilityConfig c = default_spring_config();
   c.threshold_dampings = {0.0, 0.1, 1.0, 4.0};
   for (const ThresholdRow& r : threshold_study(c)) {
-    const auto name = method_infos[r.method].name;
+    const auto name = method_info(r.method).name;
     if (std::isinf(r.dt_theory)) {
       EXPECT_TRUE(std::isinf(r.dt_measured)) << name << " " << r.damping;
     } else if (r.dt_theory == 0) {
@@ -154,7 +155,7 @@ TEST(DampingSweep, MeasuredRatesMatchPredicted) {
   c.sweep_dampings = {0.0, 0.1};
   for (const SweepRow& r : damping_sweep(c)) {
     const double tol = std::max(0.02 * std::abs(r.rate_theory), 1e-6);
-    EXPECT_NEAR(r.run.rate, r.rate_theory, tol) << method_infos[r.method].name << " dt " << r.dt << " gamma " << r.damping;
+    EXPECT_NEAR(r.run.rate, r.rate_theory, tol) << method_info(r.method).name << " dt " << r.dt << " gamma " << r.damping;
   }
 }
 
@@ -163,7 +164,7 @@ TEST(DampingSweep, UndampedVerdictsOfTheSheet) {
   c.sweep_dts = {0.01, 0.05, 0.2};
   c.sweep_dampings = {0.0};
   for (const SweepRow& r : damping_sweep(c)) {
-    const auto name = method_infos[r.method].name;
+    const auto name = method_info(r.method).name;
     // unstable on the imaginary axis near 0 (bdf3 up to w h = sqrt(15)/2 = 1.94, w h <= 0.45 here)
     if (name == "explicit_euler" || name == "explicit_midpoint" || name == "adams_bashforth2" || name == "bdf3") {
       EXPECT_FALSE(r.run.stable()) << name << " " << r.dt;
@@ -184,7 +185,7 @@ TEST(StabilityMap, MeasuredCellsAgreeWithPredictedBoundary) {
     for (std::size_t g = 0; g < map.damping.size(); ++g)
       for (std::size_t d = 0; d < map.dt.size(); ++d) {
         EXPECT_EQ(map.stable[i][g][d], map.predicted[i][g][d])
-            << method_infos[map.methods[i]].name << " dt " << map.dt[d] << " gamma " << map.damping[g];
+            << method_info(map.methods[i]).name << " dt " << map.dt[d] << " gamma " << map.damping[g];
         if (map.dt[d] <= map.boundary[i][g]) {
           EXPECT_TRUE(map.predicted[i][g][d]);
         }

@@ -6,8 +6,8 @@
 
 #include "analysis/peers.hpp"
 #include "analysis/work_precision.hpp"
-#include "core/methods.hpp"
-#include "core/scenes.hpp"
+#include "analysis/kernel.hpp"
+#include "core/scenes/chain.hpp"
 #include "reports/study_output.hpp"
 
 namespace steplab {
@@ -16,8 +16,8 @@ namespace {
 const WorkPrecisionResult& study() {
   static const WorkPrecisionResult r = [] {
     WorkPrecisionConfig c;
-    for (std::size_t m = 0; m < method_count; ++m)
-      if (!method_infos[m].exact_flow) c.methods.push_back(m);
+    for (std::size_t m = 0; m < method_count(); ++m)
+      if (!method_info(m).exact_flow) c.methods.push_back(m);
     c.timing = false;
     c.threads = 2;
     return work_precision_study(c);
@@ -34,7 +34,7 @@ TEST(WorkPrecision, CountsWhatTheFormulasSay) {
     if (p.method == "rk4") {
       EXPECT_EQ(p.force_evaluations, 4 * p.steps) << p.setting;
     }
-    const Family f = p.adaptive ? Family::None : method_infos[*find_method(p.method)].family;
+    const Family f = p.adaptive ? Family::None : method_info(*find_method(p.method)).family;
     if (f == Family::ExplicitRungeKutta || f == Family::AdamsBashforth) {
       EXPECT_EQ(p.jacobian_evaluations, 0) << p.method;
     }
@@ -150,9 +150,9 @@ TEST(WorkPrecision, ImplicitPaysOnlyOnTheStiffChain) {
   const std::string spring = at(r.scenes[0], 1e-4), chain = at(r.scenes[1], 1e-4);
   ASSERT_FALSE(spring.empty());
   ASSERT_FALSE(chain.empty());
-  EXPECT_TRUE(!find_method(spring) || !method_infos[*find_method(spring)].implicit) << spring;
+  EXPECT_TRUE(!find_method(spring) || !method_info(*find_method(spring)).implicit) << spring;
   ASSERT_TRUE(find_method(chain)) << chain;
-  EXPECT_TRUE(method_infos[*find_method(chain)].implicit) << chain;
+  EXPECT_TRUE(method_info(*find_method(chain)).implicit) << chain;
   EXPECT_GE(r.crossover_ratio, 10);
   EXPECT_LE(r.crossover_ratio, 1e5);
   // every explicit method's step on the chain is bounded: none stable at 0.01 (RK4's limit, 2.8 / 316 = 0.009)

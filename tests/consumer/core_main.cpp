@@ -3,9 +3,9 @@
 // within 1e-6 of the exact position (measured: 2.3e-8).
 #include <cstdio>
 
-#include "core/methods.hpp"
-#include "core/scenes.hpp"
-#include "core/simulate.hpp"
+#include <steplab/core/methods/rk4.hpp>
+#include <steplab/core/scenes/spring.hpp>
+#include <steplab/core/simulate.hpp>
 
 int main() {
   using namespace steplab;

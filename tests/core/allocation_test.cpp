@@ -1,16 +1,14 @@
 // No heap allocation in a stepping loop: counts calls of the global operator new while whole
-// runs of every method on every scene execute. Without samples a run allocates nothing at all;
-// with samples it allocates once (the reserved buffer), however many steps it takes.
+// runs of every method on every scene execute, through the kernel table (analysis/kernel.hpp).
+// A run allocates the same whatever its number of steps: its sample buffer, reserved before the
+// loop, and the result it hands back.
 #include <gtest/gtest.h>
 
 #include <atomic>
 #include <cstdlib>
 #include <new>
 
-#include "core/lanes.hpp"
-#include "core/methods.hpp"
-#include "core/scenes.hpp"
-#include "core/simulate.hpp"
+#include "analysis/kernel.hpp"
 
 namespace {
 std::atomic<long> g_allocations{0};
@@ -39,64 +37,42 @@ void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
 namespace steplab {
 namespace {
 
-template <class M, class S> long allocations_in_run(long long steps, long long samples) {
-  const S scene = make_default_scene<S>();
+// Allocations of one run through the kernel table: the run itself (its sample buffer, reserved
+// before the loop) and the result handed back (AnyResult: the final state's two vectors and one
+// per sample).
+long allocations_in_run(std::size_t m, std::size_t s, long long steps, long long samples, int kind) {
   RunSpec spec;
   spec.dt = 0.001;
   spec.steps = steps;
   spec.max_samples = samples;
   spec.energy_rate = true;
+  const std::vector<double> p = default_param_values(s);
+  Counts counts;
+  Observed observed;
+  observed.max_bounces = 16;
   const long before = g_allocations.load();
-  const auto r = simulate<M>(scene, spec);
+  const AnyResult r = kind == 0 ? pair_kernel(m, s).run(p, spec)
+                      : kind == 1 ? pair_kernel(m, s).run_counted(p, spec, counts)
+                                  : pair_kernel(m, s).run_observed(p, spec, observed);
   const long used = g_allocations.load() - before;
   EXPECT_EQ(r.steps, steps);
   return used;
 }
 
-// Runs in lanes (core/lanes.hpp): the lanes are allocated once, before stepping, so 9 runs of
-// 4000 steps through 4 lanes allocate what 9 runs of 200 steps do.
-template <class M, class S> long allocations_in_lanes(long long steps) {
-  const S scene = make_default_scene<S>();
-  RunSpec spec;
-  spec.dt = 0.001;
-  spec.steps = steps;
-  spec.energy_rate = true;
-  long long taken = 0;
-  const long before = g_allocations.load();
-  simulate_lanes<M, S>(
-      9, 4, [&](std::size_t) { return std::pair(scene, spec); },
-      [&](std::size_t, const RunResult<S::dim>& r, const S&) { taken += r.steps; });
-  const long used = g_allocations.load() - before;
-  EXPECT_EQ(taken, 9 * steps);
-  return used;
-}
-
-TEST(Allocation, LanesAllocateOnlyBeforeStepping) {
-  [&]<std::size_t... J>(std::index_sequence<J...>) {
-    (([&]<class M>() {
-       EXPECT_EQ((allocations_in_lanes<M, Spring>(200)), (allocations_in_lanes<M, Spring>(4000))) << M::info.name;
-       EXPECT_LE((allocations_in_lanes<M, Spring>(200)), 1) << M::info.name;
-     }.template operator()<std::tuple_element_t<J, Methods>>()),
-     ...);
-  }(std::make_index_sequence<method_count>{});
-}
-
+// Every method on every scene, plain, counted and observed: the count does not grow with the
+// steps (none in a step); without samples it is the result's two vectors (and the observed run's
+// bounce buffer, reserved before the loop).
 TEST(Allocation, NoneInAnyStepOfAnyMethodOnAnyScene) {
-  [&]<std::size_t... I>(std::index_sequence<I...>) {
-    (([&]<class S>() {
-       [&]<std::size_t... J>(std::index_sequence<J...>) {
-         (([&]<class M>() {
-            if constexpr (applies<M, S>()) {
-              EXPECT_EQ((allocations_in_run<M, S>(2000, 0)), 0) << S::name << " " << M::info.name;
-              EXPECT_EQ((allocations_in_run<M, S>(200, 50)), (allocations_in_run<M, S>(4000, 50)))
-                  << S::name << " " << M::info.name;
-            }
-          }.template operator()<std::tuple_element_t<J, Methods>>()),
-          ...);
-       }(std::make_index_sequence<method_count>{});
-     }.template operator()<std::tuple_element_t<I, Scenes>>()),
-     ...);
-  }(std::make_index_sequence<scene_count>{});
+  for (std::size_t s = 0; s < scene_count(); ++s)
+    for (std::size_t m = 0; m < method_count(); ++m) {
+      if (!applies(m, s)) continue;
+      for (int kind = 0; kind < 3; ++kind) {
+        const std::string what = std::string(scene_name(s)) + " " + std::string(method_info(m).name) + " kind " + std::to_string(kind);
+        EXPECT_LE(allocations_in_run(m, s, 2000, 0, kind), kind == 2 ? 3 : 2) << what;
+        EXPECT_EQ(allocations_in_run(m, s, 200, 0, kind), allocations_in_run(m, s, 4000, 0, kind)) << what;
+        EXPECT_EQ(allocations_in_run(m, s, 200, 50, kind), allocations_in_run(m, s, 4000, 50, kind)) << what;
+      }
+    }
 }
 
 }  // namespace

@@ -10,8 +10,8 @@
 
 #include "analysis/convergence.hpp"
 #include "tests/core/chain_ode.hpp"
-#include "core/methods.hpp"
-#include "core/scenes.hpp"
+#include "analysis/kernel.hpp"
+#include "core/scenes/chain.hpp"
 #include "core/simulate.hpp"
 
 namespace steplab {

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/scenes.hpp"
+#include "analysis/kernel.hpp"
+#include "core/scenes/bounce.hpp"
+#include "core/scenes/falling.hpp"
 
 namespace steplab {
 namespace {

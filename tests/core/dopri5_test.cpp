@@ -9,7 +9,9 @@
 #include <boost/numeric/odeint.hpp>
 
 #include "core/dopri5.hpp"
-#include "core/scenes.hpp"
+#include "analysis/kernel.hpp"
+#include "core/scenes/chain.hpp"
+#include "core/scenes/spring.hpp"
 #include "tests/core/chain_ode.hpp"
 
 namespace steplab {

@@ -9,7 +9,8 @@
 #include <cmath>
 #include <limits>
 
-#include "core/methods.hpp"
+#include "analysis/kernel.hpp"
+#include "core/methods/rk4.hpp"
 #include "core/scenes/chain.hpp"
 #include "core/scenes/spring.hpp"
 #include "core/simulate.hpp"

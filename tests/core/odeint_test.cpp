@@ -8,8 +8,16 @@
 
 #include <boost/numeric/odeint.hpp>
 
-#include "core/methods.hpp"
-#include "core/scenes.hpp"
+#include "analysis/kernel.hpp"
+#include "core/methods/adams_bashforth2.hpp"
+#include "core/methods/adams_bashforth3.hpp"
+#include "core/methods/explicit_euler.hpp"
+#include "core/methods/explicit_midpoint.hpp"
+#include "core/methods/rk3.hpp"
+#include "core/methods/rk4.hpp"
+#include "core/methods/velocity_verlet.hpp"
+#include "core/scenes/cannonball.hpp"
+#include "core/scenes/spring.hpp"
 #include "core/simulate.hpp"
 
 namespace steplab {

@@ -1,7 +1,5 @@
-// The same inputs give byte-identical JSON across runs, thread counts and lane counts, for every
-// study and for a run: each command twice with one thread and twice with two, all four files
-// equal; and a study that steps runs in lanes gives the same bytes with --lanes 1 (one run at a
-// time, the default), 8, 3 (lanes that end out of step) and 2 threads of 5 lanes.
+// The same inputs give byte-identical JSON across runs and thread counts, for every study and for
+// a run: each command twice with one thread and twice with two, all four files equal.
 #include <gtest/gtest.h>
 
 #include "cli_helpers.hpp"
@@ -32,21 +30,6 @@ TEST_P(Determinism, SameBytesForOneAndTwoThreads) {
   if (command.rfind("run", 0) == 0) return expect_same_bytes(command, {"", "", "", ""});  // `run` has no --threads
   expect_same_bytes(command, {"--threads 1", "--threads 2", "--threads 1", "--threads 2"});
 }
-
-class LanesDeterminism : public ::testing::TestWithParam<const char*> {};
-
-TEST_P(LanesDeterminism, SameBytesForAnyLanes) {
-  expect_same_bytes(GetParam(), {"--lanes 1 --threads 1", "--lanes 8", "--lanes 3 --threads 1", "--lanes 5 --threads 2"});
-}
-
-INSTANTIATE_TEST_SUITE_P(
-    EveryLanedStudy, LanesDeterminism,
-    ::testing::Values("study convergence --scene spring --dt-min 1e-3",
-                      "study convergence --scene chain --dt-min 1e-3 --error max",
-                      "study convergence --scene falling --dt-min 1e-3",
-                      "study damping --dts 0.05,0.5",
-                      "study stability --map-dt-points 12 --map-damping-points 8 --threshold-dampings 0,1",
-                      "study work-precision --points 5 --stiffnesses 5,5e4 --no-timing"));
 
 INSTANTIATE_TEST_SUITE_P(
     EveryStudy, Determinism,

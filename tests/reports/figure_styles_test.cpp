@@ -10,7 +10,7 @@
 #include <tuple>
 
 #include "cli_helpers.hpp"
-#include "core/methods.hpp"
+#include "analysis/kernel.hpp"
 #include "reports/figure_styles.hpp"
 #include "reports/report_text.hpp"
 
@@ -19,13 +19,13 @@ namespace {
 
 std::vector<std::size_t> every_method() {
   std::vector<std::size_t> all;
-  for (std::size_t m = 0; m < method_count; ++m) all.push_back(m);
+  for (std::size_t m = 0; m < method_count(); ++m) all.push_back(m);
   return all;
 }
 
 TEST(FigureStyles, EachMethodHasItsOwn) {
   std::set<std::tuple<std::string, int, int>> seen;
-  for (std::size_t m = 0; m < method_count; ++m) {
+  for (std::size_t m = 0; m < method_count(); ++m) {
     const MethodStyle s = method_style(m);
     EXPECT_TRUE(seen.insert({s.colour, s.point, s.dash}).second) << name(m);
   }

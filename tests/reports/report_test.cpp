@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "core/methods.hpp"
+#include "analysis/kernel.hpp"
 #include "reports/inputs.hpp"
 #include "reports/report.hpp"
 
@@ -62,11 +62,11 @@ void expect_sentences_follow_data(const ReportConfig& c) {
 
   std::set<std::string> stable_large, unstable_large, stable_undamped, unstable_undamped;
   for (const SweepRow& r : d.sweep) {
-    const std::string n(method_infos[r.method].name);
+    const std::string n(method_info(r.method).name);
     if (r.dt == c.large_dt && r.damping == gamma) (r.run.stable() ? stable_large : unstable_large).insert(n);
     if (r.dt == c.small_dt && r.damping == 0) (r.run.stable() ? stable_undamped : unstable_undamped).insert(n);
   }
-  ASSERT_EQ(stable_large.size() + unstable_large.size(), method_count);
+  ASSERT_EQ(stable_large.size() + unstable_large.size(), method_count());
   const std::string large = line_starting(md, "- At the sheet's large step");
   ASSERT_FALSE(large.empty()) << md;
   EXPECT_EQ(names_between(large, "stable:", "; unstable:"), stable_large) << large;
@@ -78,18 +78,18 @@ void expect_sentences_follow_data(const ReportConfig& c) {
   // "Stable at every step" names exactly the methods whose predicted dt* is infinite.
   std::set<std::string> always;
   for (const ThresholdRow& r : d.thresholds)
-    if (r.damping == gamma && std::isinf(r.dt_theory)) always.insert(std::string(method_infos[r.method].name));
+    if (r.damping == gamma && std::isinf(r.dt_theory)) always.insert(std::string(method_info(r.method).name));
   EXPECT_EQ(names_between(line_starting(md, "- Stable at every step"), ":", ""), always);
 
   // The correlation sentence carries the Spearman value of (order, measured dt*) and names the
   // methods whose ranks lie a third of the table apart.
   std::vector<double> order, dt;
-  for (std::size_t m = 0; m < method_count; ++m) {
-    order.push_back(method_infos[m].exact_flow ? INFINITY : method_infos[m].order);
+  for (std::size_t m = 0; m < method_count(); ++m) {
+    order.push_back(method_info(m).exact_flow ? INFINITY : method_info(m).order);
     for (const ThresholdRow& r : d.thresholds)
       if (r.method == m && r.damping == gamma) dt.push_back(r.dt_measured);
   }
-  ASSERT_EQ(dt.size(), method_count);
+  ASSERT_EQ(dt.size(), method_count());
   const double rho = spearman(order, dt);
   EXPECT_NE(md.find(fmt::format("is **{:.2f}**", rho)), std::string::npos) << rho;
 
@@ -141,17 +141,17 @@ void expect_family_sentences_follow_data(const ReportData& d, const std::string&
   const auto dt_measured = [&](std::size_t m, double g) {
     for (const ThresholdRow& r : d.thresholds)
       if (r.method == m && r.damping == g) return r.dt_measured;
-    ADD_FAILURE() << "no threshold for " << method_infos[m].name << " at " << g;
+    ADD_FAILURE() << "no threshold for " << method_info(m).name << " at " << g;
     return std::nan("");
   };
   std::set<std::string> every_step;
   int families = 0;
   for (Family f : {Family::ExplicitRungeKutta, Family::Splitting, Family::ImplicitRungeKutta, Family::AdamsBashforth, Family::Bdf}) {
     std::vector<std::size_t> fam;
-    for (std::size_t m = 0; m < method_count; ++m)
-      if (method_infos[m].family == f || method_infos[m].also == f) fam.push_back(m);
+    for (std::size_t m = 0; m < method_count(); ++m)
+      if (method_info(m).family == f || method_info(m).also == f) fam.push_back(m);
     // std::sort, not stable_sort: GCC 12's stable_sort buffer trips ASan's new/free check
-    std::sort(fam.begin(), fam.end(), [](auto a, auto b) { return std::pair(method_infos[a].order, a) < std::pair(method_infos[b].order, b); });
+    std::sort(fam.begin(), fam.end(), [](auto a, auto b) { return std::pair(method_info(a).order, a) < std::pair(method_info(b).order, b); });
     ASSERT_GE(fam.size(), 3u) << to_string(f);  // every family spans at least three orders
     ++families;
     const std::string line = line_starting(md, fmt::format("- **{}**", to_string(f)));
@@ -170,7 +170,7 @@ void expect_family_sentences_follow_data(const ReportData& d, const std::string&
       for (std::size_t m : fam) {
         bool all = true;
         for (double g : dampings) all &= std::isinf(dt_measured(m, g));
-        if (all) every_step.insert(std::string(method_infos[m].name));
+        if (all) every_step.insert(std::string(method_info(m).name));
       }
   }
   EXPECT_EQ(families, 5);

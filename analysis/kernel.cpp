@@ -1,0 +1,78 @@
+#include "analysis/kernel.hpp"
+
+#include <array>
+#include <stdexcept>
+#include <utility>
+
+namespace steplab {
+namespace {
+
+// The old command-line framework's names.
+constexpr std::array<std::pair<std::string_view, std::string_view>, 3> kMethodAliases{{
+    {"euler", "explicit_euler"},
+    {"midpoint", "explicit_midpoint"},
+    {"backwards_euler", "implicit_euler"},
+}};
+
+}  // namespace
+
+bool applies(std::size_t m, std::size_t s) {
+  const KernelTable& t = kernel_table();
+  return m < t.methods.size() && s < t.scenes.size() && t.pairs[m * t.scenes.size() + s]->run != nullptr;
+}
+
+const PairKernel& pair_kernel(std::size_t m, std::size_t s) {
+  if (!applies(m, s))
+    throw std::invalid_argument("method " + std::to_string(m) + " does not run on scene " + std::to_string(s));
+  const KernelTable& t = kernel_table();
+  return *t.pairs[m * t.scenes.size() + s];
+}
+
+std::optional<std::size_t> find_method(std::string_view name) {
+  for (const auto& [alias, target] : kMethodAliases)
+    if (name == alias) name = target;
+  for (std::size_t i = 0; i < method_count(); ++i)
+    if (method_info(i).name == name) return i;
+  return std::nullopt;
+}
+
+std::optional<std::size_t> find_scene(std::string_view name) {
+  if (name == "spring1d") name = "spring";  // the old framework's test case name
+  for (std::size_t i = 0; i < scene_count(); ++i)
+    if (scene_name(i) == name) return i;
+  return std::nullopt;
+}
+
+std::size_t scene_index(std::string_view name) {
+  const auto s = find_scene(name);
+  if (!s) throw std::logic_error("the kernel table has no scene " + std::string(name));
+  return *s;
+}
+
+std::string method_names() {
+  std::string out;
+  for (std::size_t i = 0; i < method_count(); ++i) out += (out.empty() ? "" : ", ") + std::string(method_info(i).name);
+  out += " (old names: ";
+  for (std::size_t i = 0; i < kMethodAliases.size(); ++i) out += (i ? ", " : "") + std::string(kMethodAliases[i].first);
+  return out + ")";
+}
+
+std::string scene_list() {
+  std::string out;
+  for (std::size_t i = 0; i < scene_count(); ++i) out += (out.empty() ? "" : ", ") + std::string(scene_name(i));
+  return out;
+}
+
+bool has_param(std::size_t scene, std::string_view name) {
+  for (const ParamSpec& p : scene_kernel(scene).params)
+    if (p.name == name) return true;
+  return false;
+}
+
+std::vector<double> default_param_values(std::size_t scene) {
+  std::vector<double> v;
+  for (const ParamSpec& p : scene_kernel(scene).params) v.push_back(p.fallback);
+  return v;
+}
+
+}  // namespace steplab

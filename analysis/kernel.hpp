@@ -1,0 +1,142 @@
+// The kernel table: every method's and every scene's compiled code, reached at run time.
+//
+// A method's stepping code is a template over the scene (core/method.hpp); the run loop is a
+// template over both (core/simulate.hpp). Each (method, scene) pair is instantiated once, in a
+// translation unit CMake generates per method from core/registry.cmake (tools/kernels.cmake;
+// Ceres Solver's generated schur_eliminator_*.cc are the model), and handed out here as a
+// PairKernel of plain function pointers. The studies, `check`, `run`, the report, the benchmarks'
+// study rows and the tests are ordinary code over this table: they cross it once per run, and
+// the step loop behind each pointer is inlined as before.
+//
+// A scene is passed as its index and its parameter values in table order (core/scene.hpp); a
+// result comes back as an AnyResult (core/simulate.hpp), the same numbers in vectors of run-time
+// size. The table is the executable's own (kernel_table(), defined in a generated file): the
+// `steplab` binary's holds the built-in methods and scenes, a tool made with
+// steplab_add_executable() holds the user's beside them.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/dopri5.hpp"
+#include "core/method.hpp"
+#include "core/simulate.hpp"
+
+namespace steplab {
+
+using AnyState = State<Eigen::Dynamic>;
+using AnyAdaptiveResult = AdaptiveResult<Eigen::Dynamic>;
+using Params = std::span<const double>;  // a scene's parameter values, in its table's order
+
+// What a counting run asked of the scene (the work-precision study's cost measure).
+struct Counts {
+  long long forces = 0, jacobians = 0;
+};
+
+struct BounceEvent {
+  double t;               // time the mass left the ground
+  double energy_ratio;    // E/E0 then
+  double rebound_height;  // apex of the flight that follows (above the drop height 0: energy gained); NaN if cut off
+};
+
+// What an observed run records at every step (analysis/kernel_impl.hpp, Observer): the largest
+// |x_i|; and on a scene with ground contact (core/scene.hpp, HasContact) the deepest penetration
+// and, on a 1-D one, each time the mass leaves the ground with E/E0 and the apex that follows.
+struct Observed {
+  double max_abs_x = 0;
+  double max_penetration = 0;
+  std::size_t max_bounces = 0;       // bounces recorded at most (reserved before the run)
+  std::vector<BounceEvent> bounces;
+};
+
+// One method's code on one scene. A 1-D scene has the step-map entries too (the stability
+// predictions and the local error difference or apply them), others have them null.
+struct PairKernel {
+  AnyResult (*run)(Params, const RunSpec&);
+  AnyResult (*run_counted)(Params, const RunSpec&, Counts&);
+  AnyResult (*run_observed)(Params, const RunSpec&, Observed&);
+  // n steps of h from the initial state in place, starting again every `restart` steps (a
+  // multistep method with a fresh memory), each state kept from being optimised away as
+  // benchmark::DoNotOptimize keeps it: the per-step rows of `make bench` (bench/steps_bench.cpp).
+  void (*time_steps)(Params, double h, long long n, int restart);
+  // 1-D scenes. The step map flattened: x, v, then a multistep method's memory entries' x and v
+  // (analysis/step_map.hpp), one step of h from z; the flattened memory of a run that has sat
+  // at (x, v) forever.
+  Eigen::VectorXd (*step_flat)(Params, const Eigen::VectorXd& z, double h);
+  Eigen::VectorXd (*at_rest_flat)(Params, double x, double v);
+  // One step of h from the exact state at t0, a multistep method remembering the exact past
+  // (1-D scenes with an exact solution); y in: ignored, out: the state reached.
+  StepStatus (*exact_step)(Params, double t0, double h, AnyState& y);
+  // n steps of h from (x, v) with the method's own start-up, state k after step k + 1 in xs[k],
+  // vs[k]; the first status that was not Ok (1-D scenes).
+  StepStatus (*steps_from)(Params, double x, double v, double h, int n, double* xs, double* vs);
+};
+
+// One method, whatever the scene.
+struct MethodKernel {
+  MethodInfo info;
+  int map_size;  // the flattened step map's length: 2 (x, v) plus 2 per memory entry
+  // The step map of h = 1 on u'' = -k u - c u' (m = 1) applied to the unit vectors: the matrix
+  // whose spectral radius is the method's amplification at h lambda = re + i im (regions.cpp).
+  Eigen::MatrixXd (*test_matrix)(double k, double c);
+};
+
+// One scene, whatever the method.
+struct SceneKernel {
+  std::string_view name;
+  std::span<const ParamSpec> params;
+  int dim;
+  bool has_exact;
+  bool has_contact;  // ground contact: penetration and bounces (Observed)
+  AnyState (*initial)(Params);
+  AnyState (*exact)(Params, double t);  // null without an exact solution
+  double (*energy)(Params, const AnyState&);
+  // The Euclidean norm of a vector of dim entries as the scene's fixed-size Vec computes it (Eigen
+  // sums a fixed-size and a run-time-size vector in different orders: the last bits differ).
+  double (*norm)(const Eigen::VectorXd&);
+  AnyAdaptiveResult (*dopri5)(Params, const AdaptiveSpec&);
+};
+
+struct KernelTable {
+  std::span<const MethodKernel* const> methods;
+  std::span<const SceneKernel* const> scenes;
+  std::span<const PairKernel* const> pairs;  // [method][scene], method-major; null where the method does not apply
+};
+
+// The executable's table (a generated file: tools/kernels.cmake).
+const KernelTable& kernel_table();
+
+// --- The tables by index and by name -------------------------------------------------------
+
+inline std::size_t method_count() { return kernel_table().methods.size(); }
+inline const MethodKernel& method_kernel(std::size_t m) { return *kernel_table().methods[m]; }
+inline const MethodInfo& method_info(std::size_t m) { return method_kernel(m).info; }
+inline std::size_t scene_count() { return kernel_table().scenes.size(); }
+inline const SceneKernel& scene_kernel(std::size_t s) { return *kernel_table().scenes[s]; }
+inline std::string_view scene_name(std::size_t s) { return scene_kernel(s).name; }
+
+// Method m's code on scene s; throws std::invalid_argument where m does not apply (the exact
+// flow on a scene without one): applies() tells first.
+const PairKernel& pair_kernel(std::size_t m, std::size_t s);
+bool applies(std::size_t m, std::size_t s);
+
+// Index of a method by its name or an old alias; of a scene by its name ("spring1d": spring).
+std::optional<std::size_t> find_method(std::string_view name);
+std::optional<std::size_t> find_scene(std::string_view name);
+// The scene's index; throws std::logic_error if the table has none of that name.
+std::size_t scene_index(std::string_view name);
+// "explicit_euler, symplectic_euler, ... (old names: euler, ...)" for error messages and --help.
+std::string method_names();
+std::string scene_list();
+
+// Whether the scene has a parameter of that name; its default values in table order.
+bool has_param(std::size_t scene, std::string_view name);
+std::vector<double> default_param_values(std::size_t scene);
+
+}  // namespace steplab

@@ -1,0 +1,211 @@
+// How a generated translation unit fills the kernel table (analysis/kernel.hpp): make_pair<M, S>
+// instantiates the run loop and everything the studies need of method M on scene S, once;
+// make_method<M> and make_scene<S> what needs only one of them. Included by the generated
+// files alone (tools/kernels.cmake), never by a study.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <span>
+#include <string_view>
+
+#include "analysis/kernel.hpp"
+#include "analysis/step_map.hpp"
+#include "core/dopri5.hpp"
+#include "core/simulate.hpp"
+#include "core/stepper.hpp"
+
+namespace steplab {
+
+// Whether method M can run on scene S (the exact flow needs a scene that has one).
+template <class M, class S> constexpr bool applies() {
+  if constexpr (M::info.exact_flow) return HasExact<S>;
+  else return true;
+}
+
+// A scene that counts what a method asks of it; otherwise the scene itself.
+template <Scene S> struct Counted : S {
+  explicit Counted(std::span<const double> p) : S(p) {}
+  mutable long long forces = 0, jacobian_calls = 0;
+  Vec<S::dim> force(const Vec<S::dim>& x, const Vec<S::dim>& v) const {
+    ++forces;
+    return S::force(x, v);
+  }
+  Jacobians<S::dim> jacobians(const Vec<S::dim>& x, const Vec<S::dim>& v) const {
+    ++jacobian_calls;
+    return S::jacobians(x, v);
+  }
+};
+
+// u'' = -k u - c u' with m = 1, for any real k and c (negative ones make a growing test mode):
+// the test equation of the stability regions (analysis/regions.hpp).
+struct LinearTest {
+  static constexpr int dim = 1;
+  static constexpr std::string_view name = "linear_test";
+  static constexpr std::array<ParamSpec, 2> params{{{"k", 1.0, Bound::Any, "stiffness"}, {"c", 0.0, Bound::Any, "damping"}}};
+  double k, c;
+  explicit LinearTest(std::span<const double> p) : k(p[0]), c(p[1]) {}
+  Vec<1> mass() const { return Vec<1>::Ones(); }
+  Vec<1> inverse_mass() const { return Vec<1>::Ones(); }
+  Vec<1> force(const Vec<1>& x, const Vec<1>& v) const { return Vec<1>::Constant(-k * x[0] - c * v[0]); }
+  Jacobians<1> jacobians(const Vec<1>&, const Vec<1>&) const { return {Mat<1>::Constant(-k), Mat<1>::Constant(-c)}; }
+  bool velocity_dependent() const { return c != 0; }
+  double energy(const Vec<1>& x, const Vec<1>& v) const { return 0.5 * (v[0] * v[0] + k * x[0] * x[0]); }
+  State<1> initial() const { return {Vec<1>::Ones(), Vec<1>::Zero()}; }
+};
+
+// The per-step record of an observed run (Observed in analysis/kernel.hpp). A bounce: the mass
+// leaves the ground; the rebound height is known once the flight turns down (its apex); a
+// flight cut off by t_end, or by the next contact before the apex, leaves it NaN.
+template <Scene S> struct Observer {
+  const S& s;
+  Observed& o;
+  double e0, flight_max = 0;
+  bool was_in_contact = false;
+  void operator()(long long, double t, const State<S::dim>& y) {
+    o.max_abs_x = std::max(o.max_abs_x, y.x.cwiseAbs().maxCoeff());
+    if constexpr (HasContact<S>) {
+      const bool in_contact = s.in_contact(y.x);
+      o.max_penetration = std::max(o.max_penetration, s.penetration(y.x));
+      if constexpr (S::dim == 1) {
+        std::vector<BounceEvent>& b = o.bounces;
+        if (was_in_contact && !in_contact && b.size() < o.max_bounces) {
+          b.push_back({t, s.energy(y.x, y.v) / e0, std::numeric_limits<double>::quiet_NaN()});
+          flight_max = y.x[0];
+        }
+        if (!in_contact && !b.empty() && std::isnan(b.back().rebound_height)) {
+          flight_max = std::max(flight_max, y.x[0]);
+          if (y.v[0] <= 0) b.back().rebound_height = flight_max;
+        }
+      }
+      was_in_contact = in_contact;
+    }
+  }
+};
+
+template <class M, Scene S> struct PairCode {
+  static AnyResult run(Params p, const RunSpec& spec) { return to_any(simulate<M>(S(p), spec)); }
+
+  static AnyResult run_counted(Params p, const RunSpec& spec, Counts& n) {
+    const Counted<S> s(p);
+    AnyResult r = to_any(simulate<M>(s, spec));
+    n = {s.forces, s.jacobian_calls};
+    return r;
+  }
+
+  static AnyResult run_observed(Params p, const RunSpec& spec, Observed& o) {
+    const S s(p);
+    o.bounces.clear();
+    o.bounces.reserve(o.max_bounces);  // before the loop: the observer never allocates
+    const State<S::dim> y0 = s.initial();
+    return to_any(simulate<M>(s, spec, Observer<S>{s, o, s.energy(y0.x, y0.v)}));
+  }
+
+  static void time_steps(Params p, double h, long long n, int restart) {
+    const S s(p);
+    State<S::dim> y = s.initial();
+    Stepper<M, S> stepper;
+    int k = 0;
+    for (long long i = 0; i < n; ++i) {
+      stepper.step(s, y, k * h, h);
+      asm volatile("" : "+m"(y) : : "memory");  // Google Benchmark's DoNotOptimize, for GCC and Clang
+      if (++k == restart) k = 0, y = s.initial(), stepper = {};
+    }
+  }
+
+  static Eigen::VectorXd step_flat(Params p, const Eigen::VectorXd& z, double h) {
+    return steplab::step_flat<M>(S(p), z, h);
+  }
+
+  static Eigen::VectorXd at_rest_flat(Params p, double x, double v) {
+    return steplab::at_rest_flat<M>(S(p), State<1>{Vec<1>::Constant(x), Vec<1>::Constant(v)});
+  }
+
+  static StepStatus exact_step(Params p, double t0, double h, AnyState& out) {
+    const S s(p);
+    State<1> y = exact(s, t0);
+    Stepper<M, S> stepper;  // a multistep method remembers the exact past: y(t0 - k h)
+    if constexpr (Multistep<M>) stepper.memory = M::remember(s, [&](int k) { return exact(s, t0 - k * h); });
+    const StepStatus st = stepper.step(s, y, t0, h);
+    out = {y.x, y.v};
+    return st;
+  }
+
+  static StepStatus steps_from(Params p, double x, double v, double h, int n, double* xs, double* vs) {
+    const S s(p);
+    State<1> y{Vec<1>::Constant(x), Vec<1>::Constant(v)};
+    Stepper<M, S> stepper;
+    StepStatus first = StepStatus::Ok;
+    for (int i = 0; i < n; ++i) {
+      const StepStatus st = stepper.step(s, y, i * h, h);
+      if (first == StepStatus::Ok) first = st;
+      xs[i] = y.x[0], vs[i] = y.v[0];
+    }
+    return first;
+  }
+};
+
+template <class M, Scene S> constexpr PairKernel make_pair() {
+  using C = PairCode<M, S>;
+  PairKernel k{&C::run, &C::run_counted, &C::run_observed, &C::time_steps, nullptr, nullptr, nullptr, nullptr};
+  if constexpr (S::dim == 1) {
+    k.step_flat = &C::step_flat;
+    k.at_rest_flat = &C::at_rest_flat;
+    k.steps_from = &C::steps_from;
+    if constexpr (HasExact<S>) k.exact_step = &C::exact_step;
+  }
+  return k;
+}
+
+// M's kernel on S; where M does not apply to S (the exact flow on a scene without one), one
+// whose entries are all null.
+template <class M, class S> constexpr PairKernel pair_or_none() {
+  if constexpr (applies<M, S>()) return make_pair<M, S>();
+  else return PairKernel{};
+}
+
+template <class M> struct MethodCode {
+  static Eigen::MatrixXd test_matrix(double k, double c) {
+    constexpr int n = map_size<M>();
+    Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n, n);
+    if constexpr (!M::info.exact_flow) {
+      const std::array<double, 2> p{k, c};
+      const LinearTest s(p);
+      for (int j = 0; j < n; ++j) m.col(j) = steplab::step_flat<M>(s, Eigen::VectorXd::Unit(n, j), 1.0);  // linear: M e_j
+    }
+    return m;
+  }
+};
+
+template <class M> constexpr MethodKernel make_method() { return {M::info, map_size<M>(), &MethodCode<M>::test_matrix}; }
+
+template <Scene S> struct SceneCode {
+  static AnyState initial(Params p) {
+    const State<S::dim> y = S(p).initial();
+    return {y.x, y.v};
+  }
+  static AnyState exact_at(Params p, double t) {
+    const State<S::dim> y = exact(S(p), t);
+    return {y.x, y.v};
+  }
+  static double energy(Params p, const AnyState& y) {
+    return S(p).energy(Vec<S::dim>(y.x), Vec<S::dim>(y.v));
+  }
+  static double norm(const Eigen::VectorXd& x) { return Vec<S::dim>(x).norm(); }
+  static AnyAdaptiveResult dopri5(Params p, const AdaptiveSpec& spec) {
+    AdaptiveResult<S::dim> r = simulate_dopri5(S(p), spec);
+    return {to_any(std::move(r.run)), r.stats};
+  }
+};
+
+template <Scene S> constexpr SceneKernel make_scene() {
+  using C = SceneCode<S>;
+  AnyState (*exact_at)(Params, double) = nullptr;
+  if constexpr (HasExact<S>) exact_at = &C::exact_at;
+  return {S::name, std::span<const ParamSpec>(S::params), S::dim, HasExact<S>, HasContact<S>,
+          &C::initial, exact_at, &C::energy, &C::norm, &C::dopri5};
+}
+
+}  // namespace steplab
