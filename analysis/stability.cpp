@@ -7,6 +7,7 @@
 
 #include "analysis/kernel.hpp"
 #include "analysis/shard.hpp"
+#include "core/scenes/spring.hpp"
 
 namespace steplab {
 namespace {

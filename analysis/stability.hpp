@@ -26,10 +26,13 @@
 #include <limits>
 #include <vector>
 
-#include "core/scenes/spring.hpp"
+#include <Eigen/Core>
+
 #include "core/simulate.hpp"
 
 namespace steplab {
+
+struct Spring;  // core/scenes/spring.hpp: included where a spring is made or asked
 
 inline constexpr double kStableRate = 1e-6;        // per unit time: E changes < 0.1 % over 1000 time units
 inline constexpr long long kRateSteps = 60'000;

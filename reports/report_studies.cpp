@@ -5,6 +5,7 @@
 
 #include "analysis/parallel.hpp"
 #include "analysis/kernel.hpp"
+#include "core/scenes/spring.hpp"
 #include "reports/report.hpp"
 
 namespace steplab {
