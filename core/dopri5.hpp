@@ -1,5 +1,5 @@
 // Dormand-Prince 5(4), adaptive: the solver behind SciPy's RK45, MATLAB's ode45 and Boost.Odeint's
-// runge_kutta_dopri5. It is not a row of the fixed-step table (core/methods.hpp): it takes a
+// runge_kutta_dopri5. It is not a row of the fixed-step table (core/registry.cmake): it takes a
 // tolerance instead of a step, and chooses its steps itself.
 //
 // One step from (t, y) with k1 = f(y) (first same as last: k1 is the previous step's k7):

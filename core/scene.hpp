@@ -52,7 +52,10 @@ concept Scene = requires(const S& s, const Vec<S::dim>& x, const Vec<S::dim>& v,
   { s.initial() } -> std::convertible_to<State<S::dim>>;
 };
 
-// A scene file ends with STEPLAB_SCENE(<its type>), outside any namespace (tools/kernels.cmake).
+// A scene file ends with STEPLAB_SCENE(<its type>);, outside any namespace (tools/kernels.cmake).
+// Code that takes long to compile and need not be inlined (the chain's long-double
+// eigen-decomposition) goes at the end of the file inside #ifdef STEPLAB_SCENE_SOURCE: the scene's
+// generated translation unit defines it, so that code is compiled once, not in every method's file.
 #define STEPLAB_SCENE(...) static_assert(::steplab::Scene<__VA_ARGS__>, "STEPLAB_SCENE: the type is not a Scene (core/scene.hpp)")
 
 // A scene with ground contact says how deep its deepest point is below the ground (negative

@@ -76,8 +76,10 @@ template <int D> struct RunResult {
 // method and scene hands to the studies (analysis/kernel.hpp), which are not templates.
 using AnyResult = RunResult<Eigen::Dynamic>;
 
-template <int D> AnyResult to_any(RunResult<D>&& r) {
-  AnyResult a;
+// The same result with its states as vectors of size To (Eigen::Dynamic: run-time size; a fixed
+// size: the caller knows the scene's). Copies, so the numbers are the same.
+template <int To, int From> RunResult<To> resized(RunResult<From>&& r) {
+  RunResult<To> a;
   a.status = r.status, a.steps = r.steps, a.failed_step = r.failed_step, a.failed_t = r.failed_t, a.t_final = r.t_final;
   a.final = {r.final.x, r.final.v};
   a.has_exact = r.has_exact;
@@ -85,23 +87,11 @@ template <int D> AnyResult to_any(RunResult<D>&& r) {
   a.energy0 = r.energy0, a.energy_ratio_final = r.energy_ratio_final, a.energy_ratio_max = r.energy_ratio_max;
   a.energy_rate = r.energy_rate;
   a.samples.reserve(r.samples.size());
-  for (const Sample<D>& s : r.samples) a.samples.push_back({s.t, s.x, s.v, s.energy});
+  for (const Sample<From>& s : r.samples) a.samples.push_back({s.t, s.x, s.v, s.energy});
   return a;
 }
-
-// Back to a fixed size D (the caller knows the scene's): the same numbers.
-template <int D> RunResult<D> to_fixed(AnyResult&& a) {
-  RunResult<D> r;
-  r.status = a.status, r.steps = a.steps, r.failed_step = a.failed_step, r.failed_t = a.failed_t, r.t_final = a.t_final;
-  r.final = {a.final.x, a.final.v};
-  r.has_exact = a.has_exact;
-  r.error_final = a.error_final, r.error_max = a.error_max, r.error_rms = a.error_rms, r.error_v_final = a.error_v_final;
-  r.energy0 = a.energy0, r.energy_ratio_final = a.energy_ratio_final, r.energy_ratio_max = a.energy_ratio_max;
-  r.energy_rate = a.energy_rate;
-  r.samples.reserve(a.samples.size());
-  for (const Sample<Eigen::Dynamic>& s : a.samples) r.samples.push_back({s.t, s.x, s.v, s.energy});
-  return r;
-}
+template <int D> AnyResult to_any(RunResult<D>&& r) { return resized<Eigen::Dynamic>(std::move(r)); }
+template <int D> RunResult<D> to_fixed(AnyResult&& r) { return resized<D>(std::move(r)); }
 
 // The step indices kept as samples: k (n / (N - 1)) rounded, k = 0 .. N-1.
 struct SamplePlan {
