@@ -59,8 +59,8 @@ struct Observed {
 // predictions and the local error difference or apply them), others have them null.
 struct PairKernel {
   AnyResult (*run)(Params, const RunSpec&);
-  AnyResult (*run_counted)(Params, const RunSpec&, Counts&);
-  AnyResult (*run_observed)(Params, const RunSpec&, Observed&);
+  AnyResult (*run_counted)(Params, const RunSpec&, Counts&);    // scenes with an exact solution
+  AnyResult (*run_observed)(Params, const RunSpec&, Observed&);  // scenes with contact, and 1-D ones
   // n steps of h from the initial state in place, starting again every `restart` steps (a
   // multistep method with a fresh memory), each state kept from being optimised away as
   // benchmark::DoNotOptimize keeps it: the per-step rows of `make bench` (bench/steps_bench.cpp).

@@ -1,14 +1,8 @@
 #include "analysis/regions.hpp"
 
-#include <array>
-#include <span>
-#include <string_view>
-
-#include <Eigen/Eigenvalues>
-
+#include "analysis/kernel.hpp"
 #include "analysis/parallel.hpp"
 #include "analysis/stability.hpp"
-#include "analysis/kernel.hpp"
 
 namespace steplab {
 double region_rho(std::size_t method, double re, double im) {

@@ -67,6 +67,7 @@ TEST(Allocation, NoneInAnyStepOfAnyMethodOnAnyScene) {
     for (std::size_t m = 0; m < method_count(); ++m) {
       if (!applies(m, s)) continue;
       for (int kind = 0; kind < 3; ++kind) {
+        if ((kind == 1 && !pair_kernel(m, s).run_counted) || (kind == 2 && !pair_kernel(m, s).run_observed)) continue;
         const std::string what = std::string(scene_name(s)) + " " + std::string(method_info(m).name) + " kind " + std::to_string(kind);
         EXPECT_LE(allocations_in_run(m, s, 2000, 0, kind), kind == 2 ? 3 : 2) << what;
         EXPECT_EQ(allocations_in_run(m, s, 200, 0, kind), allocations_in_run(m, s, 4000, 0, kind)) << what;
