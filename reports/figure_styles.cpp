@@ -43,6 +43,12 @@ MethodStyle method_style(std::size_t method) {
   // dotted, dash-dot-dot
   constexpr int points[] = {7, 7, 5, 9, 13, 11}, dashes[] = {1, 1, 2, 4, 3, 5};
   const int o = std::clamp(info.order, 0, 5);
+  // A method added beside a built-in one of the same family and order (steplab_add_executable)
+  // gets the open point (gnuplot's filled point - 1) and the next order's dash.
+  bool shares = false;
+  for (std::size_t m = 0; m < method; ++m)
+    shares = shares || (method_info(m).family == info.family && std::clamp(method_info(m).order, 0, 5) == o);
+  if (shares) return {shade(family_hue(info.family), std::max(o, 1)), points[o] - 1, dashes[(o + 1) % 6]};
   return {shade(family_hue(info.family), std::max(o, 1)), points[o], dashes[o]};
 }
 
