@@ -56,7 +56,7 @@ bool close(double measured, double predicted) {
 RestCheck rest_check(std::size_t method, const Spring& s) {
   const double y_eq = s.equilibrium(), h = 0.1 / s.omega();
   std::array<double, kRestSteps> x{}, v{};
-  const StepStatus st = pair_kernel(method, scene_index(Spring::name)).steps_from(s.values(), y_eq, 0.0, h, kRestSteps, x.data(), v.data());
+  const StepStatus st = spring_kernel(method).steps_from(s.values(), y_eq, 0.0, h, kRestSteps, x.data(), v.data());
   double worst = 0;
   for (int i = 0; i < kRestSteps; ++i) worst = std::max({worst, std::abs(x[i] - y_eq), std::abs(v[i]) / s.omega()});
   if (st != StepStatus::Ok) worst = kInf;  // a failed step: no rest

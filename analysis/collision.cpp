@@ -38,10 +38,10 @@ CollisionRun triangle_run(std::size_t method, const std::vector<double>& params,
   RunSpec spec = collision_spec(dt, t_end);
   spec.max_samples = samples;
   Observed o;
-  const AnyResult r = pair_kernel(method, scene_index("falling")).run_observed(params, spec, o);
+  AnyResult r = pair_kernel(method, scene_index("falling")).run_observed(params, spec, o);
   CollisionRun out = summary(method, dt, r);
   out.max_penetration = o.max_penetration;
-  for (const Sample<Eigen::Dynamic>& x : r.samples) out.path.push_back({x.t, x.x, x.v, x.energy});
+  out.path = to_fixed<6>(std::move(r)).samples;
   return out;
 }
 

@@ -7,7 +7,6 @@
 
 #include "analysis/kernel.hpp"
 #include "analysis/shard.hpp"
-#include "analysis/timing.hpp"
 
 namespace steplab {
 
@@ -50,25 +49,31 @@ RunSpec convergence_spec(double dt, double t_end, const ConvergenceResult& study
   return spec;
 }
 
-// The record of a run of `method` at dt: its errors against the exact solution or the
-// reference, its round-off floor, and Diverged if it blew up.
-ConvergenceRecord record_of(std::size_t method, double dt, double t_end, const AnyResult& r, const ConvergenceResult& study) {
+// The size of the study's solution, max(|x(0)|, |x(t_end)|), x(t_end) exact or the reference's:
+// the scale of its round-off floor and of its blow-up test.
+double solution_scale(const ConvergenceResult& study) {
   const ConvergenceConfig& c = study.config;
   const SceneKernel& s = scene_kernel(c.scene);
+  const double target_norm = study.uses_reference
+                                 ? s.norm(Eigen::Map<const Eigen::VectorXd>(study.reference.x.data(), s.dim))
+                                 : s.norm(s.exact(c.params, c.t_end).x);
+  return std::max(s.norm(s.initial(c.params).x), target_norm);
+}
+
+// The record of a run of `method` at dt: its errors against the exact solution or the
+// reference, its round-off floor, and Diverged if it blew up (scale: solution_scale).
+ConvergenceRecord record_of(std::size_t method, double dt, double t_end, const AnyResult& r, const ConvergenceResult& study,
+                            double scale) {
+  const SceneKernel& s = scene_kernel(study.config.scene);
   const long long steps = steps_for(t_end, dt);
   ConvergenceRecord rec{method,         dt,          steps,       r.status, r.failed_step, r.error_final,
                         r.error_v_final, r.error_max, r.error_rms, 0};
-  double target_norm = 0;  // |x(t_end)|, exact or reference
   if (study.uses_reference) {
     const Eigen::Map<const Eigen::VectorXd> x(study.reference.x.data(), s.dim), v(study.reference.v.data(), s.dim);
     rec.error_final = s.norm(r.final.x - x);
     rec.error_v_final = s.norm(r.final.v - v);
     rec.error_max = rec.error_rms = std::numeric_limits<double>::quiet_NaN();  // known at t_end alone
-    target_norm = s.norm(x);
-  } else {
-    if (s.has_exact) target_norm = s.norm(s.exact(c.params, t_end).x);
   }
-  const double scale = std::max(s.norm(s.initial(c.params).x), target_norm);
   rec.floor = roundoff_floor(scale, steps);
   const double largest = study.uses_reference ? rec.error_final : rec.error_max;
   if (rec.status == RunStatus::Ok && blown_up(largest, scale)) rec.status = RunStatus::Diverged;
@@ -117,16 +122,11 @@ void time_runs(ConvergenceResult& out) {
   const ConvergenceConfig& c = out.config;
   for (ConvergenceRecord& rec : out.records) {
     if (!applies(rec.method, c.scene)) continue;
-    const PairKernel& k = pair_kernel(rec.method, c.scene);
     RunSpec spec;  // the integration alone: no exact solution evaluated along the way
     spec.dt = rec.dt;
     spec.steps = rec.steps;
     spec.errors = false;
-    std::vector<double> times = repeated_timings(
-        [&] {
-          if (k.run(c.params, spec).steps == 0 && rec.steps > 0) throw std::logic_error("timed run took no step");
-        },
-        3, kTimingSeconds);
+    std::vector<double> times = pair_kernel(rec.method, c.scene).timings(c.params, spec, 3, kTimingSeconds);
     std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
     rec.seconds = times[times.size() / 2];
   }
@@ -146,6 +146,7 @@ ConvergenceResult convergence_study(const ConvergenceConfig& config) {
   if (out.uses_reference && config.fit_error != ErrorKind::Final)
     throw std::invalid_argument("a reference solution gives the final error only");
   if (out.uses_reference) out.reference = reference_solution(scene, config.params, config.t_end);
+  const double scale = solution_scale(out);
   // a task per method: its dt sweep, the smallest dt (the longest run) first; a method that does
   // not apply to the scene leaves its records empty
   const auto sweeps = study_map<std::vector<ConvergenceRecord>>(nm, config.threads, [&](std::size_t m) {
@@ -154,7 +155,8 @@ ConvergenceResult convergence_study(const ConvergenceConfig& config) {
     if (!applies(method, config.scene)) return sweep;
     const PairKernel& k = pair_kernel(method, config.scene);
     for (std::size_t i = nd; i-- > 0;)
-      sweep[i] = record_of(method, out.dts[i], config.t_end, k.run(config.params, convergence_spec(out.dts[i], config.t_end, out)), out);
+      sweep[i] = record_of(method, out.dts[i], config.t_end, k.run(config.params, convergence_spec(out.dts[i], config.t_end, out)),
+                           out, scale);
     return sweep;
   }, implicit_first(config.methods));
   for (std::size_t m = 0; m < nm; ++m)

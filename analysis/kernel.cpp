@@ -63,16 +63,5 @@ std::string scene_list() {
   return out;
 }
 
-bool has_param(std::size_t scene, std::string_view name) {
-  for (const ParamSpec& p : scene_kernel(scene).params)
-    if (p.name == name) return true;
-  return false;
-}
-
-std::vector<double> default_param_values(std::size_t scene) {
-  std::vector<double> v;
-  for (const ParamSpec& p : scene_kernel(scene).params) v.push_back(p.fallback);
-  return v;
-}
 
 }  // namespace steplab

@@ -61,6 +61,10 @@ struct PairKernel {
   AnyResult (*run)(Params, const RunSpec&);
   AnyResult (*run_counted)(Params, const RunSpec&, Counts&);    // scenes with an exact solution
   AnyResult (*run_observed)(Params, const RunSpec&, Observed&);  // scenes with contact, and 1-D ones
+  // Wall-clock times of the same run repeated (analysis/timing.hpp: at least `repeats`, `seconds`
+  // in all), the scene made once before: the integration alone, what a user pays (the chain's
+  // constructor, an eigen-decomposition, costs as much as a short run).
+  std::vector<double> (*timings)(Params, const RunSpec&, std::size_t repeats, double seconds);
   // n steps of h from the initial state in place, starting again every `restart` steps (a
   // multistep method with a fresh memory), each state kept from being optimised away as
   // benchmark::DoNotOptimize keeps it: the per-step rows of `make bench` (bench/steps_bench.cpp).
@@ -93,14 +97,14 @@ struct SceneKernel {
   std::span<const ParamSpec> params;
   int dim;
   bool has_exact;
-  bool has_contact;  // ground contact: penetration and bounces (Observed)
   AnyState (*initial)(Params);
   AnyState (*exact)(Params, double t);  // null without an exact solution
-  double (*energy)(Params, const AnyState&);
   // The Euclidean norm of a vector of dim entries as the scene's fixed-size Vec computes it (Eigen
   // sums a fixed-size and a run-time-size vector in different orders: the last bits differ).
   double (*norm)(const Eigen::VectorXd&);
   AnyAdaptiveResult (*dopri5)(Params, const AdaptiveSpec&);
+  // dopri5's run repeated and timed, the scene made once (PairKernel::timings).
+  std::vector<double> (*dopri5_timings)(Params, const AdaptiveSpec&, std::size_t repeats, double seconds);
 };
 
 struct KernelTable {
@@ -136,7 +140,7 @@ std::string method_names();
 std::string scene_list();
 
 // Whether the scene has a parameter of that name; its default values in table order.
-bool has_param(std::size_t scene, std::string_view name);
-std::vector<double> default_param_values(std::size_t scene);
+inline bool has_param(std::size_t scene, std::string_view name) { return has_param(scene_kernel(scene).params, name); }
+inline std::vector<double> default_param_values(std::size_t scene) { return default_values(scene_kernel(scene).params); }
 
 }  // namespace steplab

@@ -13,6 +13,7 @@
 
 #include "analysis/kernel.hpp"
 #include "analysis/step_map.hpp"
+#include "analysis/timing.hpp"
 #include "core/dopri5.hpp"
 #include "core/simulate.hpp"
 #include "core/stepper.hpp"
@@ -67,8 +68,9 @@ template <Scene S> struct Observer {
   void operator()(long long, double t, const State<S::dim>& y) {
     o.max_abs_x = std::max(o.max_abs_x, y.x.cwiseAbs().maxCoeff());
     if constexpr (HasContact<S>) {
-      const bool in_contact = s.in_contact(y.x);
-      o.max_penetration = std::max(o.max_penetration, s.penetration(y.x));
+      const double p = s.penetration(y.x);
+      const bool in_contact = p > 0;  // level - y > 0 exactly when y < level (Ground::touching)
+      o.max_penetration = std::max(o.max_penetration, p);
       if constexpr (S::dim == 1) {
         std::vector<BounceEvent>& b = o.bounces;
         if (was_in_contact && !in_contact && b.size() < o.max_bounces) {
@@ -101,6 +103,16 @@ template <class M, Scene S> struct PairCode {
     o.bounces.reserve(o.max_bounces);  // before the loop: the observer never allocates
     const State<S::dim> y0 = s.initial();
     return to_any(simulate<M>(s, spec, Observer<S>{s, o, s.energy(y0.x, y0.v)}));
+  }
+
+  static std::vector<double> timings(Params p, const RunSpec& spec, std::size_t repeats, double seconds) {
+    const S s(p);
+    return repeated_timings(
+        [&] {
+          const RunResult<S::dim> r = simulate<M>(s, spec);
+          asm volatile("" : : "r"(r.steps) : "memory");  // the run is used: not optimised away
+        },
+        repeats, seconds);
   }
 
   static void time_steps(Params p, double h, long long n, int restart) {
@@ -152,7 +164,7 @@ template <class M, Scene S> struct PairCode {
 // contact; a 1-D scene's amplitude): each is one more instantiation of the run loop.
 template <class M, Scene S> constexpr PairKernel make_pair() {
   using C = PairCode<M, S>;
-  PairKernel k{&C::run, nullptr, nullptr, &C::time_steps, nullptr, nullptr, nullptr, nullptr};
+  PairKernel k{&C::run, nullptr, nullptr, &C::timings, &C::time_steps, nullptr, nullptr, nullptr, nullptr};
   if constexpr (HasExact<S>) k.run_counted = &C::run_counted;
   if constexpr (HasContact<S> || S::dim == 1) k.run_observed = &C::run_observed;
   if constexpr (S::dim == 1) {
@@ -195,13 +207,19 @@ template <Scene S> struct SceneCode {
     const State<S::dim> y = exact(S(p), t);
     return {y.x, y.v};
   }
-  static double energy(Params p, const AnyState& y) {
-    return S(p).energy(Vec<S::dim>(y.x), Vec<S::dim>(y.v));
-  }
   static double norm(const Eigen::VectorXd& x) { return Vec<S::dim>(x).norm(); }
   static AnyAdaptiveResult dopri5(Params p, const AdaptiveSpec& spec) {
     AdaptiveResult<S::dim> r = simulate_dopri5(S(p), spec);
     return {to_any(std::move(r.run)), r.stats};
+  }
+  static std::vector<double> dopri5_timings(Params p, const AdaptiveSpec& spec, std::size_t repeats, double seconds) {
+    const S s(p);
+    return repeated_timings(
+        [&] {
+          const AdaptiveResult<S::dim> r = simulate_dopri5(s, spec);
+          asm volatile("" : : "r"(r.run.steps) : "memory");  // the run is used: not optimised away
+        },
+        repeats, seconds);
   }
 };
 
@@ -209,8 +227,8 @@ template <Scene S> constexpr SceneKernel make_scene() {
   using C = SceneCode<S>;
   AnyState (*exact_at)(Params, double) = nullptr;
   if constexpr (HasExact<S>) exact_at = &C::exact_at;
-  return {S::name, std::span<const ParamSpec>(S::params), S::dim, HasExact<S>, HasContact<S>,
-          &C::initial, exact_at, &C::energy, &C::norm, &C::dopri5};
+  return {S::name, std::span<const ParamSpec>(S::params), S::dim, HasExact<S>, &C::initial, exact_at, &C::norm, &C::dopri5,
+          &C::dopri5_timings};
 }
 
 }  // namespace steplab

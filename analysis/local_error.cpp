@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "analysis/kernel.hpp"
+#include "analysis/stability.hpp"
 #include "core/scenes/spring.hpp"
 
 namespace steplab {
@@ -22,7 +22,6 @@ LocalErrorResult local_error_study(const LocalErrorConfig& c) {
   }
   // One step from an O(1) state: round-off of about an ulp of the state.
   const double floor = 4 * std::numeric_limits<double>::epsilon() * std::max({1.0, std::abs(start.x[0]), std::abs(start.v[0])});
-  const std::size_t spring = scene_index(Spring::name);
   for (std::size_t m : c.methods) {
     LocalErrorColumn col{m, {}, {}, {}, {}};
     std::vector<ErrorPoint> pts;
@@ -30,12 +29,12 @@ LocalErrorResult local_error_study(const LocalErrorConfig& c) {
       AnyState y;
       const double h = out.steps[i];
       // from the exact state at t0; a multistep method remembers the exact past: y(t0 - k h)
-      const StepStatus st = pair_kernel(m, spring).exact_step(c.params, c.t0, h, y);
+      const StepStatus st = spring_kernel(m).exact_step(c.params, c.t0, h, y);
       col.dv.push_back(y.v[0] - start.v[0]);
       col.dx.push_back(y.x[0] - start.x[0]);
       const double ex = col.dx.back() - out.exact_dx[i], ev = col.dv.back() - out.exact_dv[i];
       col.error.push_back(std::hypot(ex, ev));
-      pts.push_back({out.steps[i], col.error.back(), floor, st != StepStatus::Ok || !std::isfinite(y.x.sum() + y.v.sum())});
+      pts.push_back({out.steps[i], col.error.back(), floor, st != StepStatus::Ok || !all_finite(y)});
     }
     col.order = fit_order(pts);
     out.columns.push_back(std::move(col));

@@ -39,6 +39,8 @@ template <class F> void encode_fields(MapRow& r, F&& f) {
 
 }  // namespace
 
+const PairKernel& spring_kernel(std::size_t method) { return pair_kernel(method, scene_index(Spring::name)); }
+
 Spring linear_spring(const std::vector<double>& params, double gamma) {
   std::vector<double> p = params;
   p[2] = gamma;  // Spring::params: mass, stiffness, damping, rest-length, gravity
@@ -53,61 +55,26 @@ namespace {
 // step, then by kAgainFactor), each edge then bisected (in log h) down to relative `precision`:
 //   dt*    the largest h with every step in [lo, h] stable: 0 if unstable at lo, inf if never;
 //   again  the smallest h > dt* from which the scan finds stable steps again (inf if none up to hi).
-// unstable(hs) gives a verdict per step (a vector of char); it is asked `width` steps at a time:
-// the next steps of a scan (those past the first that decides are wasted), or the midpoints of
-// the next log2(width + 1) rounds of bisection, one for each way the rounds before could go
-// (the walk through them takes exactly the midpoints, in order, that one-at-a-time bisection
-// would). So the set found is the same for every width; width 1 is plain bisection.
+// unstable(h) is the verdict at step h.
 template <class Unstable>
-StableSet stable_set(double lo, double hi, double factor, double precision, int width, Unstable unstable) {
-  width = std::max(width, 1);
+StableSet stable_set(double lo, double hi, double factor, double precision, Unstable unstable) {
   const double top = hi * (1 + 1e-12);
   const auto wide = [&](double a, double b) { return std::max(a, b) / std::min(a, b) - 1 > precision; };
   const auto bisect = [&](double good, double bad) {  // the edge between a stable and an unstable h
-    int depth = 1;
-    while ((2 << depth) - 1 <= width) ++depth;  // 2^depth - 1 midpoints per round
-    struct Node {
-      double mid;
-      int if_unstable, if_stable;  // the nodes of the next round, -1 if none
-    };
-    std::vector<Node> nodes;
-    const auto tree = [&](const auto& self, double g, double b, int d) -> int {
-      if (d == 0 || !wide(g, b)) return -1;
-      const double mid = std::sqrt(g * b);
-      const int k = static_cast<int>(nodes.size());
-      nodes.push_back({mid, -1, -1});
-      nodes[k].if_unstable = self(self, g, mid, d - 1);
-      nodes[k].if_stable = self(self, mid, b, d - 1);
-      return k;
-    };
     while (wide(good, bad)) {
-      nodes.clear();
-      tree(tree, good, bad, depth);
-      std::vector<double> hs;
-      for (const Node& n : nodes) hs.push_back(n.mid);
-      const std::vector<char> verdict = unstable(hs);
-      for (int k = 0; k >= 0 && wide(good, bad);) {
-        const bool up = verdict[k];
-        (up ? bad : good) = nodes[k].mid;
-        k = up ? nodes[k].if_unstable : nodes[k].if_stable;
-      }
+      const double mid = std::sqrt(good * bad);
+      (unstable(mid) ? bad : good) = mid;
     }
     return good;
   };
   // The first h of h, h f, h f^2, ... (up to top) whose verdict is `want`; h > top if there is
   // none. `before` becomes the step tried last before it (left as given if it is the first).
   const auto first = [&](double h, double f, bool want, double& before) {
-    for (;;) {
-      std::vector<double> hs;
-      for (double x = h; hs.size() < static_cast<std::size_t>(width) && x <= top; x *= f) hs.push_back(x);
-      if (hs.empty()) return h;
-      const std::vector<char> verdict = unstable(hs);
-      for (std::size_t k = 0; k < hs.size(); ++k) {
-        if (static_cast<bool>(verdict[k]) == want) return hs[k];
-        before = hs[k];
-      }
-      h = hs.back() * f;
+    for (; h <= top; h *= f) {
+      if (unstable(h) == want) return h;
+      before = h;
     }
+    return h;
   };
   StableSet out{kInf, kInf};
   double last_good = 0;
@@ -125,7 +92,7 @@ Eigen::MatrixXd differenced_matrix(std::size_t method, const Spring& s, double h
   // An implicit method's Newton starts from x0 + h v0: the velocity perturbation must not carry
   // that guess past the anchor either, or Newton may settle on the other linear branch.
   const double delta_v = std::min(delta_x, 0.1 * std::abs(s.equilibrium()) / std::max(1.0, h));
-  const PairKernel& k = pair_kernel(method, scene_index(Spring::name));
+  const PairKernel& k = spring_kernel(method);
   const std::array<double, 5> p = s.values();
   const int n = method_kernel(method).map_size;
   const Eigen::VectorXd rest = k.at_rest_flat(p, s.equilibrium(), 0.0);
@@ -188,11 +155,8 @@ bool predicted_stable(std::size_t method, const Spring& s, double h) {
 
 StableSet predicted_stable_set(std::size_t method, const Spring& s) {
   const double w = s.omega();
-  return stable_set(kPredictMinWh / w, kMaxWh / w, kPredictFactor, 1e-10, 1, [&](const std::vector<double>& hs) {
-    std::vector<char> out;
-    for (double h : hs) out.push_back(!predicted_stable(method, s, h));
-    return out;
-  });
+  return stable_set(kPredictMinWh / w, kMaxWh / w, kPredictFactor, 1e-10,
+                    [&](double h) { return !predicted_stable(method, s, h); });
 }
 
 namespace {
@@ -214,28 +178,29 @@ RateRun rate_run(const AnyResult& r) {
                  r.status,      r.steps,             r.failed_step};
 }
 
+RateRun rate_of(const PairKernel& k, const Spring& s, double h, long long steps, bool errors) {
+  return rate_run(k.run(s.values(), rate_spec(h, steps, errors)));
+}
+
 }  // namespace
 
 RateRun measure_rate(std::size_t method, const Spring& s, double h, long long steps) {
-  return rate_run(pair_kernel(method, scene_index(Spring::name)).run(s.values(), rate_spec(h, steps, true)));
+  return rate_of(spring_kernel(method), s, h, steps, true);
 }
 
 std::vector<RateRun> measure_rates(std::size_t method, const std::vector<Spring>& s, const std::vector<double>& h,
                                    long long steps, bool errors) {
   std::vector<RateRun> out(h.size());
-  const PairKernel& k = pair_kernel(method, scene_index(Spring::name));
-  for (std::size_t i = 0; i < h.size(); ++i) out[i] = rate_run(k.run(s[i].values(), rate_spec(h[i], steps, errors)));
+  const PairKernel& k = spring_kernel(method);
+  for (std::size_t i = 0; i < h.size(); ++i) out[i] = rate_of(k, s[i], h[i], steps, errors);
   return out;
 }
 
 StableSet measured_stable_set(std::size_t method, const Spring& s) {
   const double w = s.omega();
-  return stable_set(kMeasureMinWh / w, kMaxWh / w, kMeasureFactor, 1e-4, 1, [&](const std::vector<double>& hs) {
-    const std::vector<RateRun> runs = measure_rates(method, std::vector<Spring>(hs.size(), s), hs, kRateSteps, false);
-    std::vector<char> out;
-    for (const RateRun& r : runs) out.push_back(!r.stable());
-    return out;
-  });
+  const PairKernel& k = spring_kernel(method);
+  return stable_set(kMeasureMinWh / w, kMaxWh / w, kMeasureFactor, 1e-4,
+                    [&](double h) { return !rate_of(k, s, h, kRateSteps, false).stable(); });
 }
 
 std::vector<double> default_dampings(const Spring& s) {
@@ -337,7 +302,7 @@ AmplitudeTable amplitude_table(const std::vector<double>& params, const std::vec
       spec.errors = false;
       // |y - L| with y < 0 is |y| + L: the largest |y| reached (from the rest start, |y| = L), plus L
       Observed o;
-      const AnyResult r = pair_kernel(m, scene_index(Spring::name)).run_observed(params, spec, o);
+      const AnyResult r = spring_kernel(m).run_observed(params, spec, o);
       row.push_back(r.status == RunStatus::Ok ? std::max(s.L, o.max_abs_x) + s.L : kInf);
     }
     t.amplitude.push_back(std::move(row));

@@ -28,7 +28,7 @@
 
 #include <Eigen/Core>
 
-#include "core/simulate.hpp"
+#include "analysis/kernel.hpp"
 
 namespace steplab {
 
@@ -40,6 +40,10 @@ inline constexpr long long kRateSteps = 60'000;
 // growth of the condition number of an implicit method's stage system (measured on
 // gauss_legendre4: rho - 1 = 3e-13 at omega h = 45, 1.5e-10 at 670), at most kRhoToleranceMax.
 inline constexpr double kRhoTolerance = 1e-12, kRhoToleranceMax = 1e-9;
+
+// Method m's compiled code on the spring scene (analysis/kernel.hpp): what every stability run,
+// step map and check on the spring goes through.
+const PairKernel& spring_kernel(std::size_t method);
 
 // The spring of `params` (Spring's table order) with damping gamma and its anchor moved so far
 // away that every run of the studies stays on its linear side: what every stability run uses.

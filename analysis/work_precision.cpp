@@ -30,11 +30,10 @@ Where spring_where(const Spring& s) {
   return {scene_index(Spring::name), {p.begin(), p.end()}};
 }
 
-// Minimum of repeated timings of `run` (kMinRepeats, and kMinSeconds in all).
-template <class F> double min_time(F&& run) {
-  const std::vector<double> times = repeated_timings(run, kMinRepeats, kMinSeconds);
-  return *std::min_element(times.begin(), times.end());
-}
+// The minimum of repeated timings (analysis/timing.hpp): of `run` (kMinRepeats, and kMinSeconds
+// in all), or as a kernel took them.
+double fastest(const std::vector<double>& times) { return *std::min_element(times.begin(), times.end()); }
+template <class F> double min_time(F&& run) { return fastest(repeated_timings(run, kMinRepeats, kMinSeconds)); }
 
 RunSpec fixed_spec(double dt, double t_end) {
   RunSpec spec;
@@ -43,16 +42,21 @@ RunSpec fixed_spec(double dt, double t_end) {
   return spec;
 }
 
-// The point of a run of method m at dt, counting what it asked of the scene.
-WorkPoint fixed_point(const Where& w, std::size_t m, double dt, double t_end) {
+// The size of the solution to t_end, max(|x(0)|, |x(t_end)|): the scale of the blow-up test.
+double solution_scale(const Where& w, double t_end) {
   const SceneKernel& s = scene_kernel(w.scene);
+  return std::max(s.norm(s.initial(w.params).x), s.norm(s.exact(w.params, t_end).x));
+}
+
+// The point of a run of method m at dt, counting what it asked of the scene (scale:
+// solution_scale(w, t_end)).
+WorkPoint fixed_point(const Where& w, std::size_t m, double dt, double t_end, double scale) {
   Counts n;
   const AnyResult r = pair_kernel(m, w.scene).run_counted(w.params, fixed_spec(dt, t_end), n);
   WorkPoint p{std::string(method_info(m).name), false, dt};
-  const AnyState ex = s.exact(w.params, t_end);
   p.error = r.error_max;
   p.status = r.status;
-  if (p.status == RunStatus::Ok && blown_up(p.error, std::max(s.norm(s.initial(w.params).x), s.norm(ex.x)))) p.status = RunStatus::Diverged;
+  if (p.status == RunStatus::Ok && blown_up(p.error, scale)) p.status = RunStatus::Diverged;
   if (p.status != RunStatus::Ok) p.error = kInf;
   p.steps = r.steps;
   p.force_evaluations = n.forces;
@@ -64,7 +68,8 @@ WorkPoint fixed_point(const Where& w, std::size_t m, double dt, double t_end) {
 std::vector<WorkPoint> fixed_points(const Where& w, std::size_t m, const std::vector<double>& dts, double t_end) {
   std::vector<WorkPoint> out(dts.size());
   if (!applies(m, w.scene)) return out;
-  for (std::size_t i = dts.size(); i-- > 0;) out[i] = fixed_point(w, m, dts[i], t_end);  // the longest run first
+  const double scale = solution_scale(w, t_end);
+  for (std::size_t i = dts.size(); i-- > 0;) out[i] = fixed_point(w, m, dts[i], t_end, scale);  // the longest run first
   return out;
 }
 
@@ -112,8 +117,7 @@ double time_point(const Where& w, const WorkPoint& p, double t_end) {
     spec.tol = {p.setting, p.setting};
     spec.t_end = t_end;
     spec.errors = false;
-    const SceneKernel& s = scene_kernel(w.scene);
-    return min_time([&] { s.dopri5(w.params, spec); });
+    return fastest(scene_kernel(w.scene).dopri5_timings(w.params, spec, kMinRepeats, kMinSeconds));
   }
   PeerCounts n;
   if (p.method == "odeint_dopri5" || p.method == "cvode_bdf")
@@ -125,8 +129,7 @@ double time_point(const Where& w, const WorkPoint& p, double t_end) {
   spec.dt = p.setting;
   spec.steps = steps_for(t_end, p.setting);
   spec.errors = false;
-  const PairKernel& k = pair_kernel(*find_method(p.method), w.scene);
-  return min_time([&] { k.run(w.params, spec); });
+  return fastest(pair_kernel(*find_method(p.method), w.scene).timings(w.params, spec, kMinRepeats, kMinSeconds));
 }
 
 // Every point of one scene: the dt sweep of each fixed-step method, the tolerance sweeps.
@@ -245,8 +248,9 @@ std::vector<WorkPoint> first_reaching(const WorkPrecisionConfig& c, const std::v
   std::vector<WorkPoint> found(chains.size());
   for (std::size_t s = 0; s < chains.size(); ++s) {
     if (!applies(m, chains[s].scene)) continue;
+    const double scale = solution_scale(chains[s], c.sweep_t_end);
     for (const double dt : dts)
-      if (const WorkPoint w = fixed_point(chains[s], m, dt, c.sweep_t_end); reaches_crossover(c, w)) {
+      if (const WorkPoint w = fixed_point(chains[s], m, dt, c.sweep_t_end, scale); reaches_crossover(c, w)) {
         found[s] = w;
         break;
       }

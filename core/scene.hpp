@@ -59,11 +59,10 @@ concept Scene = requires(const S& s, const Vec<S::dim>& x, const Vec<S::dim>& v,
 #define STEPLAB_SCENE(...) static_assert(::steplab::Scene<__VA_ARGS__>, "STEPLAB_SCENE: the type is not a Scene (core/scene.hpp)")
 
 // A scene with ground contact says how deep its deepest point is below the ground (negative
-// when above) and whether any point touches it; the collision study records both.
+// when all are above): it touches the ground where that is > 0. The collision study records it.
 template <class S>
 concept HasContact = Scene<S> && requires(const S& s, const Vec<S::dim>& x) {
   { s.penetration(x) } -> std::convertible_to<double>;
-  { s.in_contact(x) } -> std::convertible_to<bool>;
 };
 
 template <class S>
@@ -154,11 +153,18 @@ template <Scene S> Vec<S::dim> acceleration(const S& s, const Vec<S::dim>& x, co
   return s.force(x, v).cwiseProduct(s.inverse_mass());
 }
 
-// Whether the scene has a parameter of that name.
-template <Scene S> bool has_param(std::string_view name) {
-  for (const ParamSpec& p : S::params)
+// Whether a parameter table (a scene's `params`) has a parameter of that name.
+inline bool has_param(std::span<const ParamSpec> params, std::string_view name) {
+  for (const ParamSpec& p : params)
     if (p.name == name) return true;
   return false;
+}
+
+// A parameter table's default values, in table order: what the studies' configurations hold.
+inline std::vector<double> default_values(std::span<const ParamSpec> params) {
+  std::vector<double> v;
+  for (const ParamSpec& p : params) v.push_back(p.fallback);
+  return v;
 }
 
 // The scene's default parameter values, in table order.
@@ -168,11 +174,7 @@ template <Scene S> auto default_params() {
   return p;
 }
 
-// The same as a vector: what the studies' configurations hold.
-template <Scene S> std::vector<double> default_param_values() {
-  const auto p = default_params<S>();
-  return {p.begin(), p.end()};
-}
+template <Scene S> std::vector<double> default_param_values() { return default_values(S::params); }
 
 template <Scene S> S make_default_scene() {
   const auto p = default_params<S>();

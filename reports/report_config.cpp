@@ -8,6 +8,7 @@
 #include "analysis/kernel.hpp"
 #include "reports/inputs.hpp"
 #include "reports/run_json.hpp"
+#include "reports/study_output.hpp"
 
 namespace steplab {
 namespace {
@@ -82,10 +83,10 @@ ReportConfig default_report_config() {
 
 Json report_config_json(const ReportConfig& c) {
   Json j;
-  j["spring"] = params_json(scene_kernel(scene_index("spring")).params, c.spring);
-  j["cannonball"] = params_json(scene_kernel(scene_index("cannonball")).params, c.cannonball);
-  j["bounce"] = params_json(scene_kernel(scene_index("bounce")).params, c.bounce);
-  j["falling"] = params_json(scene_kernel(scene_index("falling")).params, c.falling);
+  j["spring"] = scene_params_json(scene_index("spring"), c.spring);
+  j["cannonball"] = scene_params_json(scene_index("cannonball"), c.cannonball);
+  j["bounce"] = scene_params_json(scene_index("bounce"), c.bounce);
+  j["falling"] = scene_params_json(scene_index("falling"), c.falling);
   j["convergence"] = {{"dt_max", c.conv_dt_max}, {"dt_min", c.conv_dt_min}, {"points", c.conv_points},
                       {"t_end", c.conv_t_end}};
   j["work_precision"] = {{"points", c.wp_points}, {"stiffnesses", c.wp_stiffnesses}, {"timing", c.timing}};

@@ -50,7 +50,6 @@ struct Bounce {
   }
   bool velocity_dependent() const { return ground.c != 0; }
   double penetration(const Vec<1>& x) const { return ground.penetration(x[0]); }
-  bool in_contact(const Vec<1>& x) const { return ground.touching(x[0]); }
 
   // Total mechanical energy, height measured from the ground (so E0 = m g > 0 at the drop):
   // 1/2 m v^2 + m g (y + 1) + 1/2 k_g p^2.

@@ -93,13 +93,12 @@ struct Falling {
   }
 
   bool velocity_dependent() const { return gamma != 0 || ground.c != 0; }
-  // The deepest of the three particles below the ground; whether any touches it.
+  // The deepest of the three particles below the ground.
   double penetration(const Vec<6>& x) const {
     double p = ground.penetration(x[1]);
     for (int i = 1; i < 3; ++i) p = std::max(p, ground.penetration(x[2 * i + 1]));
     return p;
   }
-  bool in_contact(const Vec<6>& x) const { return ground.touching(x[1]) || ground.touching(x[3]) || ground.touching(x[5]); }
 
   // Total mechanical energy: kinetic + gravity (height above the ground) + springs + ground penalty.
   double energy(const Vec<6>& x, const Vec<6>& v) const {
