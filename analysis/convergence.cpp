@@ -55,7 +55,7 @@ double solution_scale(const ConvergenceResult& study) {
   const ConvergenceConfig& c = study.config;
   const SceneKernel& s = scene_kernel(c.scene);
   const double target_norm = study.uses_reference
-                                 ? s.norm(Eigen::Map<const Eigen::VectorXd>(study.reference.x.data(), s.dim))
+                                 ? s.norm(Eigen::Map<const Eigen::VectorXd>(study.reference.x.data(), std::ssize(study.reference.x)))
                                  : s.norm(s.exact(c.params, c.t_end).x);
   return std::max(s.norm(s.initial(c.params).x), target_norm);
 }
@@ -69,7 +69,8 @@ ConvergenceRecord record_of(std::size_t method, double dt, double t_end, const A
   ConvergenceRecord rec{method,         dt,          steps,       r.status, r.failed_step, r.error_final,
                         r.error_v_final, r.error_max, r.error_rms, 0};
   if (study.uses_reference) {
-    const Eigen::Map<const Eigen::VectorXd> x(study.reference.x.data(), s.dim), v(study.reference.v.data(), s.dim);
+    const Eigen::Map<const Eigen::VectorXd> x(study.reference.x.data(), std::ssize(study.reference.x)),
+        v(study.reference.v.data(), std::ssize(study.reference.v));
     rec.error_final = s.norm(r.final.x - x);
     rec.error_v_final = s.norm(r.final.v - v);
     rec.error_max = rec.error_rms = std::numeric_limits<double>::quiet_NaN();  // known at t_end alone
@@ -97,8 +98,8 @@ ReferenceSolution reference_solution(const SceneKernel& s, const std::vector<dou
   ref.check_steps = check.stats.accepted;
   ref.estimated_error = s.norm(fine.run.final.x - check.run.final.x);
   ref.floor = kReferenceMargin * ref.estimated_error;
-  ref.x.assign(fine.run.final.x.data(), fine.run.final.x.data() + s.dim);
-  ref.v.assign(fine.run.final.v.data(), fine.run.final.v.data() + s.dim);
+  ref.x.assign(fine.run.final.x.begin(), fine.run.final.x.end());
+  ref.v.assign(fine.run.final.v.begin(), fine.run.final.v.end());
   return ref;
 }
 

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <array>
+#include <vector>
 
 #include "core/method.hpp"
 
@@ -23,7 +24,7 @@ template <int Stages> struct ButcherTableau {
 };
 
 template <int Stages, Scene S>
-StepStatus implicit_rk_step(const S& s, State<S::dim>& y, double h, const ButcherTableau<Stages>& t) {
+StepStatus implicit_rk_step_dense(const S& s, State<S::dim>& y, double h, const ButcherTableau<Stages>& t) {
   constexpr int D = S::dim, N = Stages * D;
   using Big = Eigen::Matrix<double, N, 1>;
   const Vec<D> m = s.mass();
@@ -72,6 +73,77 @@ StepStatus implicit_rk_step(const S& s, State<S::dim>& y, double h, const Butche
     y.v += (h * t.b[i]) * F[i].cwiseProduct(inv_m);
   }
   return StepStatus::Ok;
+}
+
+// The same Newton iteration on a scene of run-time size n: the stage velocities in one vector of
+// Stages n, the block matrix G assembled from the sparse Jacobians (its blocks have their
+// pattern: tridiagonal for the rope) and factorised by sparse LU (core/sparse.hpp), its ordering
+// computed once per step.
+template <int Stages, Scene S>
+StepStatus implicit_rk_step_sparse(const S& s, State<S::dim>& y, double h, const ButcherTableau<Stages>& t) {
+  const Eigen::Index n = y.x.size(), N = Stages * n;
+  const Eigen::VectorXd m = s.mass();
+  Eigen::VectorXd V(N), r(N), dV;
+  for (int i = 0; i < Stages; ++i) V.segment(i * n, n) = y.v;
+  std::array<Eigen::VectorXd, Stages> X, F;
+  std::array<Jacobians<Eigen::Dynamic>, Stages> J;
+  SparseSolver solver(SparseSolver::Kind::General);
+  SparseMat G(N, N);
+  std::vector<Eigen::Triplet<double>> entries;
+  const auto add = [&](const SparseMat& a, double coef, Eigen::Index row, Eigen::Index col) {
+    if (coef == 0) return;
+    for (int c = 0; c < a.outerSize(); ++c)
+      for (SparseMat::InnerIterator e(a, c); e; ++e) entries.emplace_back(row + e.row(), col + e.col(), coef * e.value());
+  };
+  double force_terms = 0;
+  for (int it = 0;; ++it) {
+    for (int i = 0; i < Stages; ++i) {
+      X[i] = y.x;
+      for (int j = 0; j < Stages; ++j) X[i] += (h * t.a[i][j]) * V.segment(j * n, n);
+      F[i] = s.force(X[i], V.segment(i * n, n));
+    }
+    double f_norm = 0;
+    for (int i = 0; i < Stages; ++i) {
+      Eigen::VectorXd g = m.cwiseProduct(V.segment(i * n, n) - y.v);
+      for (int j = 0; j < Stages; ++j) g -= (h * t.a[i][j]) * F[j];
+      r.segment(i * n, n) = g;
+      f_norm += F[i].norm();
+    }
+    if (it > 0) {
+      const double scale = (m.asDiagonal() * V.reshaped(n, Stages)).norm() + Stages * m.cwiseProduct(y.v).norm() +
+                           std::abs(h) * (f_norm + force_terms);
+      if (r.norm() <= NewtonSettings::tolerance * scale) break;
+    }
+    if (it == NewtonSettings::max_iterations || !r.allFinite()) return StepStatus::NoConvergence;
+    for (int i = 0; i < Stages; ++i) J[i] = s.jacobians(X[i], V.segment(i * n, n));
+    if (it == 0)
+      for (int i = 0; i < Stages; ++i) force_terms += J[i].dx.norm() * X[i].norm() + J[i].dv.norm() * V.segment(i * n, n).norm();
+    if (r.isZero(0.0)) break;  // already solved (at rest in equilibrium)
+    entries.clear();
+    for (int i = 0; i < Stages; ++i)
+      for (int k = 0; k < Stages; ++k) {
+        add(J[k].dv, -(h * t.a[i][k]), i * n, k * n);
+        for (int j = 0; j < Stages; ++j) add(J[j].dx, -(h * h * t.a[i][j] * t.a[j][k]), i * n, k * n);
+        if (i == k)
+          for (Eigen::Index c = 0; c < n; ++c) entries.emplace_back(i * n + c, k * n + c, m[c]);
+      }
+    G.setFromTriplets(entries.begin(), entries.end());
+    if (!solver.factorize(G)) return StepStatus::NoConvergence;
+    solver.solve(r, dV);
+    V -= dV;
+  }
+  const Eigen::VectorXd inv_m = s.inverse_mass();
+  for (int i = 0; i < Stages; ++i) {
+    y.x += (h * t.b[i]) * V.segment(i * n, n);
+    y.v += (h * t.b[i]) * F[i].cwiseProduct(inv_m);
+  }
+  return StepStatus::Ok;
+}
+
+template <int Stages, Scene S>
+StepStatus implicit_rk_step(const S& s, State<S::dim>& y, double h, const ButcherTableau<Stages>& t) {
+  if constexpr (S::dim == Eigen::Dynamic) return implicit_rk_step_sparse(s, y, h, t);
+  else return implicit_rk_step_dense(s, y, h, t);
 }
 
 }  // namespace steplab

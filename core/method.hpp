@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "core/scene.hpp"
+#include "core/sparse.hpp"
 
 namespace steplab {
 
@@ -76,6 +77,37 @@ struct NewtonSettings {
   static constexpr double tolerance = 1e-12;
 };
 
+// Newton's update u -= J^{-1} r with J = M - c dF/dv - c cx dF/dx: dense LU on a fixed size
+// (a division for D = 1); a sparse LDL^T on a run-time size (core/sparse.hpp), its ordering
+// computed once per stage solve. False if J is singular.
+template <int D> struct StageSolve {
+  bool update(const Jacobians<D>& jac, const Vec<D>& m, double c, double cx, const Vec<D>& r, Vec<D>& u) {
+    Mat<D> J = -c * jac.dv - (c * cx) * jac.dx;
+    J.diagonal() += m;
+    if constexpr (D == 1) {
+      u[0] -= r[0] / J(0, 0);
+    } else {
+      u -= J.partialPivLu().solve(r);
+    }
+    return true;
+  }
+};
+template <> struct StageSolve<Eigen::Dynamic> {
+  SparseSolver solver{SparseSolver::Kind::Symmetric};
+  SparseMat J;
+  Eigen::VectorXd du;
+  bool update(const Jacobians<Eigen::Dynamic>& jac, const Eigen::VectorXd& m, double c, double cx,
+              const Eigen::VectorXd& r, Eigen::VectorXd& u) {
+    J = -c * jac.dv - (c * cx) * jac.dx;
+    J += m.asDiagonal();
+    J.makeCompressed();
+    if (!solver.factorize(J)) return false;
+    solver.solve(r, du);
+    u -= du;
+    return true;
+  }
+};
+
 template <Scene S>
 StepStatus solve_implicit(const S& s, const Vec<S::dim>& x0, double cx, const Vec<S::dim>& w, double c,
                           Vec<S::dim>& u) {
@@ -83,6 +115,7 @@ StepStatus solve_implicit(const S& s, const Vec<S::dim>& x0, double cx, const Ve
   const Vec<D> m = s.mass();
   u = w;
   double force_terms = 0;
+  StageSolve<D> linear;
   for (int it = 0;; ++it) {
     const Vec<D> x = x0 + cx * u;
     const Vec<D> f = s.force(x, u);
@@ -95,13 +128,7 @@ StepStatus solve_implicit(const S& s, const Vec<S::dim>& x0, double cx, const Ve
     const Jacobians<D> jac = s.jacobians(x, u);
     if (it == 0) force_terms = jac.dx.norm() * x.norm() + jac.dv.norm() * u.norm();
     if (r.isZero(0.0)) return StepStatus::Ok;  // already solved (e.g. at rest in equilibrium)
-    Mat<D> J = -c * jac.dv - (c * cx) * jac.dx;
-    J.diagonal() += m;
-    if constexpr (D == 1) {
-      u[0] -= r[0] / J(0, 0);
-    } else {
-      u -= J.partialPivLu().solve(r);
-    }
+    if (!linear.update(jac, m, c, cx, r, u)) return StepStatus::NoConvergence;
   }
 }
 

@@ -36,6 +36,8 @@ struct ParamSpec {
   double fallback;        // the default
   Bound bound;
   std::string_view help;
+  bool whole = false;  // a count: a whole number from 1 to `most` (the rope's --masses)
+  double most = 0;
 };
 
 template <class S>
@@ -92,7 +94,7 @@ concept HasAffineFlow = HasExact<S> && requires { requires S::affine_flow; };
 // instructions a step, five times explicit Euler's step with its run loop (callgrind).
 template <HasExact S> class ExactTracker {
   static constexpr int D = S::dim;
-  static constexpr bool kCanStep = HasAffineFlow<S> && requires(const S& s) { s.exact_at(0.0); };
+  static constexpr bool kCanStep = D != Eigen::Dynamic && HasAffineFlow<S> && requires(const S& s) { s.exact_at(0.0); };
   using Block = Eigen::Matrix<double, D, D>;
 
  public:
@@ -142,8 +144,12 @@ template <HasExact S> class ExactTracker {
   double t_ = 0;
   // the fixed step's affine map, in blocks: x <- c.x + xx x + xv v, v <- c.v + vx x + vv v
   int left_ = 0;  // 1 + the steps left before the closed form again; 0: not stepping
-  State<D> c_{Vec<D>::Zero(), Vec<D>::Zero()};
-  Block xx_ = Block::Zero(), xv_ = Block::Zero(), vx_ = Block::Zero(), vv_ = Block::Zero();
+  static Block zero_block() {
+    if constexpr (D == Eigen::Dynamic) return {};
+    else return Block::Zero();
+  }
+  State<D> c_ = zero_state<D>();
+  Block xx_ = zero_block(), xv_ = zero_block(), vx_ = zero_block(), vv_ = zero_block();
 };
 
 // Acceleration a = M^{-1} F(x, v), written F * (1/m) with 1/m stored by the scene: no division

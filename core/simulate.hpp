@@ -46,12 +46,6 @@ struct RunSpec {
   double stop_above = std::numeric_limits<double>::infinity();
 };
 
-// A zero state; empty for a state whose size is set at run time (D = Eigen::Dynamic).
-template <int D> State<D> zero_state() {
-  if constexpr (D == Eigen::Dynamic) return {};
-  else return {Vec<D>::Zero(), Vec<D>::Zero()};
-}
-
 template <int D> struct Sample {
   double t;
   Vec<D> x, v;

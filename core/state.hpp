@@ -1,12 +1,15 @@
 // The state of a scene: positions x and velocities v, kept apart, as fixed-size Eigen vectors
 // of the scene's own dimension (1 for the hanging spring, 2 for the cannon ball, 6 for three
-// 2-D particles). Fixed size means no heap allocation anywhere in a step.
+// 2-D particles). Fixed size means no heap allocation anywhere in a step. A scene whose size is
+// set at run time (the rope of N masses) has D = Eigen::Dynamic: vectors of run-time size, and
+// sparse force Jacobians.
 #pragma once
 
 #include <cmath>
 
 #include <Eigen/Core>
 #include <Eigen/LU>
+#include <Eigen/SparseCore>
 
 namespace steplab {
 
@@ -18,10 +21,24 @@ template <int D> struct State {
   Vec<D> v;
 };
 
+// A zero state; empty for a state whose size is set at run time (D = Eigen::Dynamic).
+template <int D> State<D> zero_state() {
+  if constexpr (D == Eigen::Dynamic) return {};
+  else return {Vec<D>::Zero(), Vec<D>::Zero()};
+}
+
 // Force Jacobians for the implicit methods: dF/dx and dF/dv at one state.
 template <int D> struct Jacobians {
   Mat<D> dx;
   Mat<D> dv;
+};
+
+// A scene of run-time size N has sparse ones (tridiagonal for the rope): a dense N x N would
+// cost N^2 memory and N^3 to factorise.
+using SparseMat = Eigen::SparseMatrix<double>;
+template <> struct Jacobians<Eigen::Dynamic> {
+  SparseMat dx;
+  SparseMat dv;
 };
 
 // Whether every coordinate is finite, checked after every step of every run. NaN and +-inf

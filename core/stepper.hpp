@@ -24,7 +24,7 @@ template <int D, int K> struct History {
   int count = 0;  // how many are filled; a method starts itself (one-step steps) until count == K
   // Zeroed (Eigen leaves a vector uninitialised): never read before count says so, but the
   // compiler cannot see that through a method's start-up branch.
-  History() { past.fill({Vec<D>::Zero(), Vec<D>::Zero()}); }
+  History() { past.fill(zero_state<D>()); }
   void push(const State<D>& s) {
     for (int i = K - 1; i > 0; --i) past[i] = past[i - 1];
     past[0] = s;

@@ -13,16 +13,17 @@
 namespace steplab {
 namespace {
 
-// The scene's dim D coordinates: x (D = 1) or x0, x1, ...
-std::string csv(const AnyResult& r, int D) {
+// The state's D coordinates: x (D = 1) or x0, x1, ...
+std::string csv(const AnyResult& r) {
+  const auto D = r.final.x.size();
   std::string out = "t";
-  for (int i = 0; i < D; ++i) out += D == 1 ? ",x" : fmt::format(",x{}", i);
-  for (int i = 0; i < D; ++i) out += D == 1 ? ",v" : fmt::format(",v{}", i);
+  for (Eigen::Index i = 0; i < D; ++i) out += D == 1 ? ",x" : fmt::format(",x{}", i);
+  for (Eigen::Index i = 0; i < D; ++i) out += D == 1 ? ",v" : fmt::format(",v{}", i);
   out += ",energy\n";
   for (const auto& s : r.samples) {
     out += fmt::format("{}", s.t);
-    for (int i = 0; i < D; ++i) out += fmt::format(",{}", s.x[i]);
-    for (int i = 0; i < D; ++i) out += fmt::format(",{}", s.v[i]);
+    for (Eigen::Index i = 0; i < D; ++i) out += fmt::format(",{}", s.x[i]);
+    for (Eigen::Index i = 0; i < D; ++i) out += fmt::format(",{}", s.v[i]);
     out += fmt::format(",{}\n", s.energy);
   }
   return out;
@@ -76,7 +77,7 @@ int run_dopri5(RunArgs& a) {
   const SceneKernel& s = scene_kernel(scene);
   const AnyAdaptiveResult r = s.dopri5(params, spec);
   if (a.json.empty()) {
-    std::fputs(csv(r.run, s.dim).c_str(), stdout);
+    std::fputs(csv(r.run).c_str(), stdout);
   } else {
     Json p = params_json(s.params, params);
     p["rtol"] = spec.tol.rtol;
@@ -114,7 +115,7 @@ int run_command(RunArgs& a) {
     throw UsageError(fmt::format("--method {} needs a scene with an exact solution; scene {} has none", name, s.name));
   const AnyResult r = pair_kernel(method, scene).run(params, spec);
   if (a.json.empty()) {
-    std::fputs(csv(r, s.dim).c_str(), stdout);
+    std::fputs(csv(r).c_str(), stdout);
   } else {
     Json p = params_json(s.params, params);
     p["dt"] = spec.dt;

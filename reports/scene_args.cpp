@@ -61,7 +61,8 @@ std::vector<double> SceneArgs::values(std::size_t index) const {
   std::vector<double> v;
   for (const ParamSpec& p : s.params) {
     const std::string option = "--" + std::string(p.name);
-    if (given(p.name)) v.push_back(parse_number(option, text.at(std::string(p.name)), p.bound));
+    if (given(p.name) && p.whole) v.push_back(static_cast<double>(parse_count(option, text.at(std::string(p.name)), 1, static_cast<long long>(p.most))));
+    else if (given(p.name)) v.push_back(parse_number(option, text.at(std::string(p.name)), p.bound));
     else if (auto f = fallback.find(p.name); f != fallback.end()) v.push_back(f->second);
     else v.push_back(p.fallback);
   }

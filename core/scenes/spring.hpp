@@ -13,6 +13,7 @@
 #include <span>
 
 #include "core/scene.hpp"
+#include "core/scenes/oscillator.hpp"
 
 namespace steplab {
 
@@ -79,47 +80,14 @@ struct Spring {
   State<1> exact_at(double t) const { return flow(initial(), t); }
 
   // The exact flow of m u'' + gamma u' + k u = 0 over a time t from any state (y0, v0) below the
-  // anchor, in every damping regime. With alpha = -gamma / (2m), beta^2 = (4 k m - gamma^2) / (4 m^2)
-  // and c = v0 - alpha u0:
-  //   underdamped (beta^2 > 0, gamma = 0 too): u = e^{alpha t} (u0 cos(beta t) + c sin(beta t) / beta)
-  //   critical    (beta^2 = 0):               u = e^{alpha t} (u0 + c t)
-  //   overdamped  (beta^2 < 0, delta^2 = -beta^2): u = e^{alpha t} (u0 cosh(delta t) + c sinh(delta t) / delta)
-  // From the rest state (u0 = m g / k, v0 = 0) the underdamped form is the sheet's (2) with
-  // c1 = m g / k, c2 = -alpha c1 / beta. sin(x)/beta and sinh(x)/delta stay accurate as beta or
-  // delta -> 0, so each form is exact to round-off right up to critical damping.
+  // anchor, in every damping regime (core/scenes/oscillator.hpp), with alpha = -gamma / (2m) and
+  // beta^2 = (4 k m - gamma^2) / (4 m^2). From the rest state (u0 = m g / k, v0 = 0) the
+  // underdamped form is the sheet's (2) with c1 = m g / k, c2 = -alpha c1 / beta.
   State<1> flow(const State<1>& y, double t) const {
     const double y_eq = equilibrium();
-    const double u0 = y.x[0] - y_eq, v0 = y.v[0];
     const double alpha = -gamma / (2 * m);
     const double beta2 = (4 * k * m - gamma * gamma) / (4 * m * m);
-    const double c = v0 - alpha * u0;
-    double u, du;
-    if (beta2 > 0) {
-      const double beta = std::sqrt(beta2), e = std::exp(alpha * t);
-      const double cs = std::cos(beta * t), sn = std::sin(beta * t);
-      u = e * (u0 * cs + c * sn / beta);
-      du = alpha * u + e * (-u0 * beta * sn + c * cs);
-    } else if (beta2 == 0) {
-      const double e = std::exp(alpha * t);
-      u = e * (u0 + c * t);
-      du = alpha * u + e * c;
-    } else {
-      // e^{alpha t} cosh(delta t) and e^{alpha t} sinh(delta t); for delta t >= 1 written with
-      // exp((alpha +- delta) t), which cannot overflow (alpha + delta < 0) and does not cancel.
-      const double delta = std::sqrt(-beta2);
-      double ch, sh;
-      if (delta * t < 1) {
-        const double e = std::exp(alpha * t);
-        ch = e * std::cosh(delta * t);
-        sh = e * std::sinh(delta * t);
-      } else {
-        const double ep = std::exp((alpha + delta) * t), em = std::exp((alpha - delta) * t);
-        ch = 0.5 * (ep + em);
-        sh = 0.5 * (ep - em);
-      }
-      u = u0 * ch + c * sh / delta;
-      du = alpha * u + u0 * delta * sh + c * ch;
-    }
+    const auto [u, du] = damped_oscillation(y.x[0] - y_eq, y.v[0], alpha, beta2, t);
     return {Vec<1>::Constant(y_eq + u), Vec<1>::Constant(du)};
   }
 };

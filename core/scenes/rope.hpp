@@ -1,0 +1,207 @@
+// A hanging rope: N equal masses on a vertical line below an anchor at height 0, spring i joining
+// mass i-1 (the anchor for i = 1) and mass i. A refinement of one rope, not a longer one: the
+// totals stay as N grows (total mass M, stiffness K, rest length L, damping gamma, dashpot C_s):
+//   m = M/N,  k = K N,  l = L/N,  c = gamma/N (each mass),  d = C_s N (along each spring)
+// so that N = 1 is the sheet's spring. With heights y_i (y_0 = v_0 = 0 the anchor):
+//   tension of spring i   T_i = k ((y_{i-1} - y_i) - l) + d (v_{i-1} - v_i),   T_{N+1} = 0
+//   m y_i'' = T_i - T_{i+1} - c v_i - m g
+// It is linear: with u = y - y_eq,  m u'' + (c I + d T) u' + k T u = 0, T the fixed-free
+// Laplacian (2 on the diagonal but 1 in the last row, -1 beside it). Its modes, in closed form:
+//   T phi_j = lambda_j phi_j,  phi_j(n) = sin(n theta_j),  theta_j = (2j - 1) pi / (2N + 1),
+//   lambda_j = 4 sin^2(theta_j / 2),  omega_j = 2 sqrt(k/m) sin(theta_j / 2),  |phi_j|^2 = (2N + 1)/4.
+// Both dampings are diagonal in the modes (mass- and stiffness-proportional), so mode j is one
+// damped oscillator (core/scenes/oscillator.hpp): alpha_j = -(c + d lambda_j) / (2m),
+// beta_j^2 = omega_j^2 - alpha_j^2. The exact flow projects u and v on the modes, moves each,
+// and sums them back: two sine transforms each way, O(N log N) (SineTransform below, FFTW).
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <span>
+#include <vector>
+
+#include "core/scene.hpp"
+#include "core/scenes/oscillator.hpp"
+
+namespace steplab {
+
+// u_n = sum_{j=1}^N q_j sin(n theta_j) (synthesis) and q_j = 4/(2N+1) sum_{n=1}^N u_n sin(n theta_j)
+// (analysis), n, j = 1 .. N, each one FFTW RODFT00 (DST-I) of size 2N,
+//   Y_k = 2 sum_{i=0}^{2N-1} X_i sin(pi (i+1)(k+1) / (2N+1)):
+// synthesis: X_{2j-2} = q_j / 2, other X zero, u_n = Y_{n-1}; analysis: X_{n-1} = u_n, the rest
+// zero, q_j = 2 Y_{2j-2} / (2N+1). The plan is made once per rope (FFTW's planner is not
+// thread-safe: serialised) and executed on each call's own arrays (which is).
+class SineTransform {
+ public:
+  explicit SineTransform(int n);
+  ~SineTransform();
+  SineTransform(const SineTransform&) = delete;
+  SineTransform& operator=(const SineTransform&) = delete;
+  Eigen::VectorXd synthesis(const Eigen::VectorXd& q) const;
+  Eigen::VectorXd analysis(const Eigen::VectorXd& u) const;
+
+ private:
+  int n_;
+  void* plan_;
+};
+
+struct Rope {
+  static constexpr int dim = Eigen::Dynamic;
+  static constexpr std::string_view name = "rope";
+  // Defaults: the sheet's spring cut into 8 (M, K, L, gamma, g as the spring's).
+  static constexpr std::array<ParamSpec, 7> params{{
+      {"masses", 8, Bound::Positive, "number of masses N (a whole number, 1 to 100000)", true, 1e5},
+      {"mass", 1.0, Bound::Positive, "total mass M (each mass M/N)"},
+      {"stiffness", 5.0, Bound::Positive, "total stiffness K (each spring K N)"},
+      {"rest-length", 5.0, Bound::NonNegative, "total rest length L (each spring L/N)"},
+      {"damping", 0.1, Bound::NonNegative, "absolute damping gamma shared by the masses (gamma/N each)"},
+      {"spring-damping", 0.0, Bound::NonNegative, "dashpot along the springs, total C_s (C_s N each)"},
+      {"gravity", 9.81, Bound::NonNegative, "gravitational acceleration g (pointing down)"},
+  }};
+
+  int n;
+  double M, K, L, gamma, Cs, g;
+  double m = M / n, k = K * n, l = L / n, c = gamma / n, d = Cs * n;
+  double inv_m = 1 / m, weight = m * g;
+  Eigen::VectorXd eq;      // y_eq: spring i carries the N - i + 1 masses below it
+  Eigen::VectorXd lambda;  // lambda_j, j = 1 .. N
+  Eigen::VectorXd q0;      // the start's modal displacements (it starts at rest)
+  std::shared_ptr<const SineTransform> sine;
+
+  explicit Rope(std::span<const double> p)
+      : n(static_cast<int>(p[0])), M(p[1]), K(p[2]), L(p[3]), gamma(p[4]), Cs(p[5]), g(p[6]),
+        eq(n), lambda(n), sine(std::make_shared<const SineTransform>(n)) {
+    double y = 0;
+    for (int i = 0; i < n; ++i) {
+      y -= l + (n - i) * weight / k;
+      eq[i] = y;
+      const double s = std::sin((2 * i + 1) * std::numbers::pi / (2 * (2 * n + 1)));
+      lambda[i] = 4 * s * s;
+    }
+    q0 = sine->analysis(initial().x - eq);
+  }
+
+  std::array<double, 7> values() const { return {double(n), M, K, L, gamma, Cs, g}; }
+  // The highest mode's angular frequency: an explicit method's stable step is c / omega_max.
+  double omega(int j) const { return std::sqrt(k * lambda[j - 1] / m); }
+  // Mode j's oscillator (core/scenes/oscillator.hpp): alpha_j and beta_j^2.
+  double alpha(int j) const { return -(c + d * lambda[j - 1]) / (2 * m); }
+  double beta2(int j) const { return k * lambda[j - 1] / m - alpha(j) * alpha(j); }
+
+  Eigen::VectorXd mass() const { return Eigen::VectorXd::Constant(n, m); }
+  Eigen::VectorXd inverse_mass() const { return Eigen::VectorXd::Constant(n, inv_m); }
+
+  Eigen::VectorXd force(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const {
+    Eigen::VectorXd f(n);
+    double above = k * ((0 - x[0]) - l) + d * (0 - v[0]);  // T_1
+    for (int i = 0; i < n; ++i) {
+      const double below = i + 1 < n ? k * ((x[i] - x[i + 1]) - l) + d * (v[i] - v[i + 1]) : 0;
+      f[i] = (above - below) - c * v[i] - weight;
+      above = below;
+    }
+    return f;
+  }
+
+  // dF/dx = -k T, dF/dv = -c I - d T (T above; the pattern tridiagonal also where d = 0).
+  Jacobians<Eigen::Dynamic> jacobians(const Eigen::VectorXd&, const Eigen::VectorXd&) const {
+    std::vector<Eigen::Triplet<double>> tx, tv;
+    tx.reserve(3 * n), tv.reserve(3 * n);
+    for (int i = 0; i < n; ++i) {
+      const double diag = i + 1 < n ? 2 : 1;
+      tx.emplace_back(i, i, -k * diag), tv.emplace_back(i, i, -c - d * diag);
+      if (i + 1 < n) {
+        tx.emplace_back(i, i + 1, k), tx.emplace_back(i + 1, i, k);
+        tv.emplace_back(i, i + 1, d), tv.emplace_back(i + 1, i, d);
+      }
+    }
+    Jacobians<Eigen::Dynamic> j{SparseMat(n, n), SparseMat(n, n)};
+    j.dx.setFromTriplets(tx.begin(), tx.end());
+    j.dv.setFromTriplets(tv.begin(), tv.end());
+    return j;
+  }
+
+  bool velocity_dependent() const { return c != 0 || d != 0; }
+
+  // Oscillation energy about the equilibrium: 1/2 m |v|^2 + 1/2 k sum_i (u_{i-1} - u_i)^2, u_0 = 0.
+  double energy(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const {
+    double stretch = 0, above = 0;
+    for (int i = 0; i < n; ++i) {
+      const double u = x[i] - eq[i], e = above - u;
+      stretch += e * e;
+      above = u;
+    }
+    return 0.5 * m * v.squaredNorm() + 0.5 * k * stretch;
+  }
+
+  // At rest, every spring at its rest length.
+  State<Eigen::Dynamic> initial() const {
+    Eigen::VectorXd x(n);
+    for (int i = 0; i < n; ++i) x[i] = -(i + 1) * l;
+    return {x, Eigen::VectorXd::Zero(n)};
+  }
+
+  State<Eigen::Dynamic> exact_at(double t) const { return modal_flow(q0, Eigen::VectorXd::Zero(n), t); }
+  State<Eigen::Dynamic> flow(const State<Eigen::Dynamic>& y, double t) const {
+    return modal_flow(sine->analysis(y.x - eq), sine->analysis(y.v), t);
+  }
+
+ private:
+  State<Eigen::Dynamic> modal_flow(const Eigen::VectorXd& q, const Eigen::VectorXd& p, double t) const {
+    Eigen::VectorXd qt(n), pt(n);
+    for (int j = 1; j <= n; ++j) {
+      const auto [u, du] = damped_oscillation(q[j - 1], p[j - 1], alpha(j), beta2(j), t);
+      qt[j - 1] = u, pt[j - 1] = du;
+    }
+    return {eq + sine->synthesis(qt), sine->synthesis(pt)};
+  }
+};
+
+}  // namespace steplab
+
+#ifdef STEPLAB_SCENE_SOURCE
+#include <mutex>
+
+#include <fftw3.h>
+
+namespace steplab {
+
+namespace {
+std::mutex& fftw_planner() {
+  static std::mutex m;
+  return m;
+}
+}  // namespace
+
+SineTransform::SineTransform(int n) : n_(n) {
+  std::vector<double> in(2 * n), out(2 * n);
+  const std::lock_guard lock(fftw_planner());
+  plan_ = fftw_plan_r2r_1d(2 * n, in.data(), out.data(), FFTW_RODFT00, FFTW_ESTIMATE | FFTW_UNALIGNED);
+}
+
+SineTransform::~SineTransform() {
+  const std::lock_guard lock(fftw_planner());
+  fftw_destroy_plan(static_cast<fftw_plan>(plan_));
+}
+
+Eigen::VectorXd SineTransform::synthesis(const Eigen::VectorXd& q) const {
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(2 * n_), y(2 * n_);
+  for (int j = 0; j < n_; ++j) x[2 * j] = 0.5 * q[j];
+  fftw_execute_r2r(static_cast<fftw_plan>(plan_), x.data(), y.data());
+  return y.head(n_);
+}
+
+Eigen::VectorXd SineTransform::analysis(const Eigen::VectorXd& u) const {
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(2 * n_), y(2 * n_);
+  x.head(n_) = u;
+  fftw_execute_r2r(static_cast<fftw_plan>(plan_), x.data(), y.data());
+  Eigen::VectorXd q(n_);
+  for (int j = 0; j < n_; ++j) q[j] = 2 * y[2 * j] / (2 * n_ + 1);
+  return q;
+}
+
+}  // namespace steplab
+#endif
+
+STEPLAB_SCENE(steplab::Rope);

@@ -1,0 +1,41 @@
+// The linear solves of Newton's method on scenes of run-time size (D = Eigen::Dynamic), whose
+// Jacobians are sparse (core/state.hpp). Compiled once, in core/sparse.cpp (the kernel library),
+// so that a method's file does not parse and instantiate Eigen's sparse factorisations.
+//
+//   Symmetric: A = M - c dF/dv - c cx dF/dx of one implicit stage (solve_implicit). dF/dx of
+//              forces along springs is symmetric (the Hessian of the potential), dF/dv of
+//              dashpots and mass damping too, M diagonal: sparse LDL^T (Eigen's SimplicialLDLT,
+//              AMD ordering). Positive definite for c > 0; LDL^T needs no definiteness.
+//   General:   the coupled stages of an implicit Runge-Kutta method (Gauss-Legendre, Radau IIA),
+//              whose block matrix is not symmetric (Butcher's A is not): sparse LU (Eigen's
+//              SparseLU, COLAMD ordering).
+// The sparsity pattern of a run's matrices does not change, so the ordering and the symbolic
+// factorisation are computed at the first factorisation only.
+#pragma once
+
+#include <memory>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+namespace steplab {
+
+class SparseSolver {
+ public:
+  enum class Kind { Symmetric, General };
+  explicit SparseSolver(Kind kind);
+  ~SparseSolver();
+  SparseSolver(const SparseSolver&) = delete;
+  SparseSolver& operator=(const SparseSolver&) = delete;
+
+  // Factorises a (compressed, column-major); false if the factorisation failed (singular).
+  bool factorize(const Eigen::SparseMatrix<double>& a);
+  // z = A^{-1} r with the last factorisation.
+  void solve(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace steplab
