@@ -24,7 +24,7 @@ constexpr double kAnchorShift = 1000;
 // Scan factors: the prediction is cheap and scans by 1.05; runs scan by 2 up to dt* (the first
 // unstable step: bisection finds the edge). Beyond dt* stable windows can be narrow (yoshida4
 // undamped has some), so both scan by 1.05 there.
-constexpr double kPredictFactor = 1.05, kMeasureFactor = 2, kAgainFactor = 1.05;
+constexpr double kPredictFactor = 1.05, kMeasureFactor = 2;
 
 // A map row's task: the predicted dt* at its damping, and each cell measured and predicted.
 struct MapRow {
@@ -50,42 +50,6 @@ Spring linear_spring(const std::vector<double>& params, double gamma) {
 }
 
 namespace {
-
-// The stable set of h on a geometric scan from lo to hi (by `factor` up to the first unstable
-// step, then by kAgainFactor), each edge then bisected (in log h) down to relative `precision`:
-//   dt*    the largest h with every step in [lo, h] stable: 0 if unstable at lo, inf if never;
-//   again  the smallest h > dt* from which the scan finds stable steps again (inf if none up to hi).
-// unstable(h) is the verdict at step h.
-template <class Unstable>
-StableSet stable_set(double lo, double hi, double factor, double precision, Unstable unstable) {
-  const double top = hi * (1 + 1e-12);
-  const auto wide = [&](double a, double b) { return std::max(a, b) / std::min(a, b) - 1 > precision; };
-  const auto bisect = [&](double good, double bad) {  // the edge between a stable and an unstable h
-    while (wide(good, bad)) {
-      const double mid = std::sqrt(good * bad);
-      (unstable(mid) ? bad : good) = mid;
-    }
-    return good;
-  };
-  // The first h of h, h f, h f^2, ... (up to top) whose verdict is `want`; h > top if there is
-  // none. `before` becomes the step tried last before it (left as given if it is the first).
-  const auto first = [&](double h, double f, bool want, double& before) {
-    for (; h <= top; h *= f) {
-      if (unstable(h) == want) return h;
-      before = h;
-    }
-    return h;
-  };
-  StableSet out{kInf, kInf};
-  double last_good = 0;
-  const double h = first(lo, factor, true, last_good);
-  if (h > top) return out;  // stable everywhere scanned
-  out.dt_star = last_good == 0 ? 0 : bisect(last_good, h);
-  double last_bad = h;
-  const double again = first(h * kAgainFactor, kAgainFactor, false, last_bad);
-  if (again <= top) out.again = bisect(again, last_bad);
-  return out;
-}
 
 // The spring's step map (analysis/step_map.hpp) through the kernel table, differenced.
 Eigen::MatrixXd differenced_matrix(std::size_t method, const Spring& s, double h, double delta_x) {
@@ -153,10 +117,10 @@ bool predicted_stable(std::size_t method, const Spring& s, double h) {
   return spectral_radius(m) <= 1 + std::min(kRhoToleranceMax, kRhoTolerance * std::max(1.0, wh * wh));
 }
 
-StableSet predicted_stable_set(std::size_t method, const Spring& s) {
+StableSet predicted_stable_set(std::size_t method, const Spring& s, bool find_again) {
   const double w = s.omega();
   return stable_set(kPredictMinWh / w, kMaxWh / w, kPredictFactor, 1e-10,
-                    [&](double h) { return !predicted_stable(method, s, h); });
+                    [&](double h) { return !predicted_stable(method, s, h); }, find_again);
 }
 
 namespace {

@@ -22,6 +22,8 @@
 // equilibrium stays linear: the prediction is about the linear oscillator, and so is the measurement.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -66,12 +68,52 @@ struct StableSet {
   double dt_star, again;
 };
 
+// The stable set of h on a geometric scan from lo to hi (by `factor` up to the first unstable
+// step, then by kAgainFactor), each edge then bisected (in log h) down to relative `precision`:
+//   dt*    the largest h with every step in [lo, h] stable: 0 if unstable at lo, inf if never;
+//   again  the smallest h > dt* from which the scan finds stable steps again (inf if none up to
+//          hi; not looked for if !find_again). The scan beyond dt* goes by 1.05: stable windows
+//          there can be narrow (yoshida4 undamped has some).
+// unstable(h) is the verdict at step h.
+template <class Unstable>
+StableSet stable_set(double lo, double hi, double factor, double precision, Unstable unstable, bool find_again = true) {
+  constexpr double kInf = std::numeric_limits<double>::infinity(), kAgainFactor = 1.05;
+  const double top = hi * (1 + 1e-12);
+  const auto wide = [&](double a, double b) { return std::max(a, b) / std::min(a, b) - 1 > precision; };
+  const auto bisect = [&](double good, double bad) {  // the edge between a stable and an unstable h
+    while (wide(good, bad)) {
+      const double mid = std::sqrt(good * bad);
+      (unstable(mid) ? bad : good) = mid;
+    }
+    return good;
+  };
+  // The first h of h, h f, h f^2, ... (up to top) whose verdict is `want`; h > top if there is
+  // none. `before` becomes the step tried last before it (left as given if it is the first).
+  const auto first = [&](double h, double f, bool want, double& before) {
+    for (; h <= top; h *= f) {
+      if (unstable(h) == want) return h;
+      before = h;
+    }
+    return h;
+  };
+  StableSet out{kInf, kInf};
+  double last_good = 0;
+  const double h = first(lo, factor, true, last_good);
+  if (h > top) return out;  // stable everywhere scanned
+  out.dt_star = last_good == 0 ? 0 : bisect(last_good, h);
+  if (!find_again) return out;
+  double last_bad = h;
+  const double again = first(h * kAgainFactor, kAgainFactor, false, last_bad);
+  if (again <= top) out.again = bisect(again, last_bad);
+  return out;
+}
+
 // Predicted stable at step h: the step matrix's spectral radius <= 1 (within kRhoTolerance).
 bool predicted_stable(std::size_t method, const Spring& s, double h);
 
 // From the step matrix: h scanned geometrically by 1.05 from kPredictMinWh/omega, each edge
 // bisected to 1e-10 relative. (The predicted and measured dt* are compared in the tests.)
-StableSet predicted_stable_set(std::size_t method, const Spring& s);
+StableSet predicted_stable_set(std::size_t method, const Spring& s, bool find_again = true);
 
 struct RateRun {
   double rate;               // least-squares d ln E / dt

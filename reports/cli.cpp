@@ -173,7 +173,7 @@ int cli_main(int argc, const char* const* argv) {
   StabilityArgs damp, stab;
   CLI::App* damp_cmd = study->add_subcommand("damping", "spring: energy growth rate measured and predicted over damping and dt");
   add_stability_options(damp_cmd, damp, true, false);
-  CLI::App* stab_cmd = study->add_subcommand("stability", "spring: stability thresholds dt* predicted and measured, and a (dt, damping) map");
+  CLI::App* stab_cmd = study->add_subcommand("stability", "stability thresholds dt* predicted and measured: the spring (and a (dt, damping) map) or the rope of N masses");
   add_stability_options(stab_cmd, stab, false, true);
 
   WorkPrecisionArgs wp;

@@ -92,7 +92,6 @@ namespace steplab {
 namespace {
 
 StabilityConfig stability_config(StabilityArgs& a) {
-  a.scene.scene = "spring";
   StabilityConfig c;
   c.params = a.scene.values(a.scene.scene_index());
   c.methods = resolve_methods(a.methods, false);
@@ -104,7 +103,7 @@ StabilityConfig stability_config(StabilityArgs& a) {
 }  // namespace
 
 void add_stability_options(CLI::App* app, StabilityArgs& a, bool sweep, bool map) {
-  a.scene.add_to(app, false);
+  a.scene.add_to(app, map);  // study stability: the spring or the rope
   app->add_option("--methods", a.methods, "comma-separated methods (default: every numerical method)");
   if (sweep) {
     app->add_option("--dts", a.dts, "comma-separated steps of the sweep")->capture_default_str();
@@ -137,7 +136,34 @@ int damping_command(StabilityArgs& a) {
   return 0;
 }
 
+namespace {
+
+// The rope's thresholds: predicted from its modes, measured on the whole rope (analysis/rope_stability.hpp).
+int rope_stability_command(StabilityArgs& a) {
+  for (const char* spring_only : {"--threshold-dampings", "--map-dt-points", "--map-damping-points", "--map-dt-min", "--map-dt-max"})
+    if (a.scene.app->count(spring_only) > 0)
+      throw UsageError(fmt::format("{} applies to --scene spring; the rope's damping is its own (--damping, --spring-damping)", spring_only));
+  RopeStabilityConfig c;
+  c.params = a.scene.values(a.scene.scene_index());
+  c.methods = resolve_methods(a.methods, false);
+  c.threads = resolve_thread_count(a.threads);
+  resolve_lanes(a.lanes);
+  begin_shard(a.shard, a.json, false);
+  if (stop_after_validation(a.json)) return 0;
+  const std::vector<RopeThresholdRow> rows = rope_threshold_study(c);
+  if (finish_shard(a.json)) return 0;
+  std::fputs(rope_thresholds_table(rows).c_str(), stdout);
+  if (!a.json.empty()) write_atomic(a.json, rope_stability_json(c, rows).dump(1) + "\n");
+  return 0;
+}
+
+}  // namespace
+
 int stability_command(StabilityArgs& a) {
+  if (a.scene.scene != "spring") {
+    if (a.scene.scene == "rope") return rope_stability_command(a);
+    throw UsageError(fmt::format("--scene '{}' is not accepted by study stability; accepted: spring, rope", a.scene.scene));
+  }
   StabilityConfig c = stability_config(a);
   c.threshold_dampings = number_list("--threshold-dampings", a.threshold_dampings, Bound::NonNegative);
   c.map_dt_points = static_cast<int>(parse_count("--map-dt-points", a.map_dt_points, 2, 4096));

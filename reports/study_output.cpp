@@ -185,10 +185,10 @@ namespace steplab {
 namespace {
 
 // JSON has no infinity: an unbounded threshold is the string "inf".
+}  // namespace
+
 Json threshold_json(double x) { return std::isinf(x) ? Json("inf") : Json(x); }
 std::string threshold_text(double x) { return std::isinf(x) ? "inf" : fmt::format("{:.6g}", x); }
-
-}  // namespace
 
 Json stability_json(const std::vector<double>& params, const std::vector<ThresholdRow>& thresholds,
                     const std::vector<SweepRow>& sweep, const StabilityMap* map) {

@@ -35,6 +35,17 @@ std::string thresholds_table(const std::vector<ThresholdRow>& rows);
 std::string sweep_table(const std::vector<SweepRow>& rows);
 std::string map_summary(const StabilityMap& map);
 std::string amplitude_table_text(const AmplitudeTable& t);
+// A threshold dt*: a number, or "inf" (stable at every step).
+Json threshold_json(double x);
+std::string threshold_text(double x);
+}  // namespace steplab
+
+#include "analysis/rope_stability.hpp"
+
+namespace steplab {
+// `study stability --scene rope` (reports/rope_output.cpp): schema steplab.rope_stability/1.
+Json rope_stability_json(const RopeStabilityConfig& c, const std::vector<RopeThresholdRow>& rows);
+std::string rope_thresholds_table(const std::vector<RopeThresholdRow>& rows);
 }  // namespace steplab
 
 #include "analysis/collision.hpp"
