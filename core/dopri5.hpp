@@ -72,7 +72,7 @@ template <int D> double error_norm(const State<D>& err, const State<D>& y0, cons
   const auto scaled = [&](const Vec<D>& e, const Vec<D>& a, const Vec<D>& b) {
     return (e.array() / (tol.atol + tol.rtol * a.cwiseAbs().cwiseMax(b.cwiseAbs()).array())).square().sum();
   };
-  return std::sqrt((scaled(err.x, y0.x, y1.x) + scaled(err.v, y0.v, y1.v)) / (2 * D));
+  return std::sqrt((scaled(err.x, y0.x, y1.x) + scaled(err.v, y0.v, y1.v)) / static_cast<double>(2 * err.x.size()));
 }
 
 template <int D> State<D> axpy(const State<D>& y, double h, const State<D>& k) { return {y.x + h * k.x, y.v + h * k.v}; }

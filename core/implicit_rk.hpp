@@ -78,7 +78,7 @@ StepStatus implicit_rk_step_dense(const S& s, State<S::dim>& y, double h, const 
 // The same Newton iteration on a scene of run-time size n: the stage velocities in one vector of
 // Stages n, the block matrix G assembled from the sparse Jacobians (its blocks have their
 // pattern: tridiagonal for the rope) and factorised by sparse LU (core/sparse.hpp), its ordering
-// computed once per step.
+// computed once per run (the thread's solver keeps it).
 template <int Stages, Scene S>
 StepStatus implicit_rk_step_sparse(const S& s, State<S::dim>& y, double h, const ButcherTableau<Stages>& t) {
   const Eigen::Index n = y.x.size(), N = Stages * n;
@@ -87,7 +87,7 @@ StepStatus implicit_rk_step_sparse(const S& s, State<S::dim>& y, double h, const
   for (int i = 0; i < Stages; ++i) V.segment(i * n, n) = y.v;
   std::array<Eigen::VectorXd, Stages> X, F;
   std::array<Jacobians<Eigen::Dynamic>, Stages> J;
-  SparseSolver solver(SparseSolver::Kind::General);
+  SparseSolver& solver = local_solver(SparseSolver::Kind::General);
   SparseMat G(N, N);
   std::vector<Eigen::Triplet<double>> entries;
   const auto add = [&](const SparseMat& a, double coef, Eigen::Index row, Eigen::Index col) {

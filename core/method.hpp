@@ -79,7 +79,7 @@ struct NewtonSettings {
 
 // Newton's update u -= J^{-1} r with J = M - c dF/dv - c cx dF/dx: dense LU on a fixed size
 // (a division for D = 1); a sparse LDL^T on a run-time size (core/sparse.hpp), its ordering
-// computed once per stage solve. False if J is singular.
+// computed once per run (the thread's solver keeps it). False if J is singular.
 template <int D> struct StageSolve {
   bool update(const Jacobians<D>& jac, const Vec<D>& m, double c, double cx, const Vec<D>& r, Vec<D>& u) {
     Mat<D> J = -c * jac.dv - (c * cx) * jac.dx;
@@ -93,7 +93,7 @@ template <int D> struct StageSolve {
   }
 };
 template <> struct StageSolve<Eigen::Dynamic> {
-  SparseSolver solver{SparseSolver::Kind::Symmetric};
+  SparseSolver& solver = local_solver(SparseSolver::Kind::Symmetric);
   SparseMat J;
   Eigen::VectorXd du;
   bool update(const Jacobians<Eigen::Dynamic>& jac, const Eigen::VectorXd& m, double c, double cx,

@@ -9,8 +9,9 @@
 //   General:   the coupled stages of an implicit Runge-Kutta method (Gauss-Legendre, Radau IIA),
 //              whose block matrix is not symmetric (Butcher's A is not): sparse LU (Eigen's
 //              SparseLU, COLAMD ordering).
-// The sparsity pattern of a run's matrices does not change, so the ordering and the symbolic
-// factorisation are computed at the first factorisation only.
+// A solver keeps the ordering and symbolic factorisation of the last pattern it saw and redoes
+// them only when the pattern changes (compared entry by entry, O(nnz)): a run's matrices keep
+// theirs, so a thread's solver (local_solver) analyses once per run, not once per step.
 #pragma once
 
 #include <memory>
@@ -37,5 +38,8 @@ class SparseSolver {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// This thread's solver of that kind, kept between calls (a step's Newton solve borrows it).
+SparseSolver& local_solver(SparseSolver::Kind kind);
 
 }  // namespace steplab

@@ -200,6 +200,9 @@ int cli_main(int argc, const char* const* argv) {
   add_shard_option(coll_cmd, coll.shard);
   coll_cmd->add_option("--json", coll.json, "write JSON (schema steplab.collision/1) to this file");
 
+  ScalingArgs scaling;
+  CLI::App* scaling_cmd = add_scaling_command(study, scaling);
+
   ReportArgs rep;
   CLI::App* rep_cmd = app.add_subcommand("report", "run every study and write report.md, report.pdf, figures/ and data/ into one folder");
   rep_cmd->add_option("--out", rep.out, "output folder")->capture_default_str();
@@ -229,6 +232,7 @@ int cli_main(int argc, const char* const* argv) {
     if (stab_cmd->parsed()) return stability_command(stab);
     if (coll_cmd->parsed()) return collision_command(coll);
     if (wp_cmd->parsed()) return work_precision_command(wp);
+    if (scaling_cmd->parsed()) return scaling_command(scaling);
     if (rep_cmd->parsed()) return report_command(rep);
     if (check_cmd->parsed()) return check_command(check);
     if (app.got_subcommand("merge")) return merge_command(merge);

@@ -95,6 +95,23 @@ struct CollisionArgs {
 
 int collision_command(CollisionArgs& args);
 
+// `study scaling` (reports/scaling_command.cpp): cost against the number of masses of the rope.
+struct ScalingArgs {
+  SceneArgs scene{.scene = "rope"};  // the rope's parameters (--masses is replaced by each size)
+  std::string methods;
+  std::string sizes = "16,64,256,1024";
+  std::string error = "1e-4";
+  std::string t_end = "2";
+  std::string threads = "0";
+  bool no_timing = false;
+  bool no_peers = false;
+  std::string shard;
+  std::string json;
+};
+
+CLI::App* add_scaling_command(CLI::App* study, ScalingArgs& args);
+int scaling_command(ScalingArgs& args);
+
 struct WorkPrecisionArgs {
   std::string methods;  // empty: every numerical method
   std::string points = "14";                              // dt sweep points per scene

@@ -1,0 +1,217 @@
+#include "analysis/scaling.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "analysis/fit.hpp"
+#include "analysis/kernel.hpp"
+#include "analysis/rope_peers.hpp"
+#include "analysis/rope_stability.hpp"
+#include "analysis/shard.hpp"
+#include "analysis/timing.hpp"
+
+namespace steplab {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+}  // namespace
+
+// A row crosses a shard as bytes (analysis/shard.hpp).
+template <class F> void encode_fields(ScalingRow& r, F&& f) {
+  f(r.solver), f(r.implicit), f(r.adaptive), f(r.n), f(r.dt_stable), f(r.dt), f(r.error);
+  f(r.steps), f(r.forces), f(r.jacobians), f(r.seconds), f(r.runs);
+}
+
+namespace {
+
+// Timed runs: at least one and 0.05 s in all (a run of the largest sizes takes seconds alone).
+constexpr std::size_t kRepeats = 1;
+constexpr double kSeconds = 0.05;
+
+std::vector<double> sized(const ScalingConfig& c, int n) {
+  std::vector<double> p = c.params;
+  p[0] = n;  // Rope::params: masses first
+  return p;
+}
+
+// The largest |x_i - x_i(t_end)| over the masses; inf for a run that did not finish.
+double max_error(const Eigen::VectorXd& x, const Eigen::VectorXd& exact, bool ok) {
+  return ok && x.allFinite() ? (x - exact).cwiseAbs().maxCoeff() : std::numeric_limits<double>::infinity();
+}
+
+// A run at `knob` (a step, or a tolerance) gives an error; the search keeps the largest knob
+// whose error is at or below the target. Error ~ C knob^p: the next knob aims at 0.7 of the target
+// with p the slope between the last two finite errors in log-log (the declared order before
+// there are two, and where the slope is not between 0.5 and order + 1: the stiff modes of the
+// rope reduce a method's order, Radau IIA's to about 2 here), the change bounded by 1/16 .. 4
+// and the knob by `most`. Stops within a factor 0.35 .. 1 of the target.
+template <class Run> void search(ScalingRow& row, double start, double most, double order, double target, Run&& run) {
+  double knob = std::min(start, most), best = kNaN, best_error = 0, last_knob = 0, last_error = 0;
+  for (row.runs = 0; row.runs < kSearchRuns; ++row.runs) {
+    const double e = run(knob);
+    if (e <= target && !(knob <= best)) best = knob, best_error = e;
+    if (e <= target && e > 0.35 * target) break;  // within a factor 3 of the target: close enough
+    double p = order;
+    if (last_knob > 0 && std::isfinite(e) && e > 0 && last_error > 0) {
+      const double slope = std::log(e / last_error) / std::log(knob / last_knob);
+      if (slope >= 0.5 && slope <= order + 1) p = slope;
+    }
+    if (std::isfinite(e) && e > 0) last_knob = knob, last_error = e;
+    const double factor = std::isfinite(e) && e > 0 ? std::pow(0.7 * target / e, 1 / p) : 1.0 / 16;
+    const double next = std::min(most, knob * std::clamp(factor, 1.0 / 16, 4.0));
+    if (next == knob) break;  // at the largest knob allowed, and below the target there
+    knob = next;
+  }
+  ++row.runs;
+  row.dt = best;
+  row.error = best_error;
+}
+
+ScalingRow method_row(const ScalingConfig& c, std::size_t m, int n) {
+  const std::vector<double> p = sized(c, n);
+  const std::size_t scene = scene_index(Rope::name);
+  const Rope r(p);
+  const Eigen::VectorXd exact = scene_kernel(scene).exact(p, c.t_end).x;
+  const MethodInfo& info = method_info(m);
+  ScalingRow row{std::string(info.name), info.implicit, false, n};
+  row.dt_stable = rope_predicted_threshold(m, r);
+  const double most = std::min(0.95 * row.dt_stable, c.t_end / 2);
+  if (!(most * c.max_steps >= c.t_end)) {  // no stable step covers t_end in max_steps
+    row.dt = kNaN;
+    return row;
+  }
+  RunSpec spec;
+  spec.errors = false;
+  const PairKernel& k = pair_kernel(m, scene);
+  // a whole number of steps ends at t_end: dt = t_end / ceil(t_end / knob)
+  const auto whole = [&](double knob) { return c.t_end / std::ceil(c.t_end / knob * (1 - 1e-12)); };
+  search(row, std::min(most, c.t_end / 20), most, info.order, c.target_error, [&](double knob) {
+    spec.dt = whole(knob);
+    spec.steps = steps_for(c.t_end, spec.dt);
+    if (spec.steps > c.max_steps) return 0.0;  // not tried: counts as reached, never kept below a smaller step
+    const AnyResult res = k.run(p, spec);
+    return max_error(res.final.x, exact, res.status == RunStatus::Ok && res.steps == spec.steps);
+  });
+  if (!row.reached()) return row;
+  spec.dt = row.dt = whole(row.dt);
+  spec.steps = steps_for(c.t_end, row.dt);
+  Counts counts;
+  k.run_counted(p, spec, counts);
+  row.steps = spec.steps, row.forces = counts.forces, row.jacobians = counts.jacobians;
+  return row;
+}
+
+// dopri5 (steplab's), cvode_band, odeint_dopri5 at a tolerance.
+ScalingRow peer_row(const ScalingConfig& c, int which, int n) {
+  static const char* const names[] = {"dopri5", "cvode_band", "odeint_dopri5"};
+  const std::vector<double> p = sized(c, n);
+  const std::size_t scene = scene_index(Rope::name);
+  const Rope r(p);
+  const Eigen::VectorXd exact = scene_kernel(scene).exact(p, c.t_end).x;
+  ScalingRow row{names[which], which == 1, true, n, kNaN};
+  search(row, 1e-4, 1e-2, 1, c.target_error, [&](double tol) {
+    if (which == 0) {
+      AdaptiveSpec spec;
+      spec.tol = {tol, tol};
+      spec.t_end = c.t_end;
+      spec.errors = false;
+      const AnyAdaptiveResult res = scene_kernel(scene).dopri5(p, spec);
+      row.steps = res.stats.accepted, row.forces = res.stats.force_evaluations, row.jacobians = 0;
+      return max_error(res.run.final.x, exact, res.run.status == RunStatus::Ok);
+    }
+    PeerCounts counts;
+    const State<Eigen::Dynamic> end = which == 1 ? cvode_band_rope(r, tol, c.t_end, counts) : odeint_dopri5_rope(r, tol, c.t_end, counts);
+    row.steps = counts.steps, row.forces = counts.evaluations, row.jacobians = counts.jacobian_evaluations;
+    return max_error(end.x, exact, !counts.failed);
+  });
+  if (row.reached()) {  // the counts of the run kept (the search's last run may be another)
+    const double tol = row.dt;
+    PeerCounts counts;
+    if (which == 0) {
+      AdaptiveSpec spec;
+      spec.tol = {tol, tol};
+      spec.t_end = c.t_end;
+      spec.errors = false;
+      const AnyAdaptiveResult res = scene_kernel(scene).dopri5(p, spec);
+      row.steps = res.stats.accepted, row.forces = res.stats.force_evaluations, row.jacobians = 0;
+    } else {
+      (which == 1 ? cvode_band_rope : odeint_dopri5_rope)(r, tol, c.t_end, counts);
+      row.steps = counts.steps, row.forces = counts.evaluations, row.jacobians = counts.jacobian_evaluations;
+    }
+  }
+  return row;
+}
+
+double run_seconds(const ScalingConfig& c, const ScalingRow& row) {
+  const std::vector<double> p = sized(c, row.n);
+  const std::size_t scene = scene_index(Rope::name);
+  std::vector<double> times;
+  if (!row.adaptive) {
+    RunSpec spec;
+    spec.errors = false;
+    spec.dt = row.dt;
+    spec.steps = row.steps;
+    times = pair_kernel(*find_method(row.solver), scene).timings(p, spec, kRepeats, kSeconds);
+  } else if (row.solver == "dopri5") {
+    AdaptiveSpec spec;
+    spec.tol = {row.dt, row.dt};
+    spec.t_end = c.t_end;
+    spec.errors = false;
+    times = scene_kernel(scene).dopri5_timings(p, spec, kRepeats, kSeconds);
+  } else {
+    const Rope r(p);
+    PeerCounts counts;
+    const auto peer = row.solver == "cvode_band" ? cvode_band_rope : odeint_dopri5_rope;
+    times = repeated_timings([&] { peer(r, row.dt, c.t_end, counts); }, kRepeats, kSeconds);
+  }
+  return *std::min_element(times.begin(), times.end());
+}
+
+ScalingFit fit_of(const ScalingConfig& c, const std::vector<ScalingRow>& rows) {
+  std::vector<double> n, step, run;
+  for (const ScalingRow& r : rows)
+    if (r.reached() && r.steps > 0 && scaling_cost(c, r) > 0) {
+      n.push_back(std::log(r.n));
+      run.push_back(std::log(scaling_cost(c, r)));
+      step.push_back(std::log(scaling_cost(c, r) / r.steps));
+    }
+  if (n.size() < 2) return {rows.front().solver, kNaN, kNaN};
+  return {rows.front().solver, fit_line(n, step).slope, fit_line(n, run).slope};
+}
+
+}  // namespace
+
+double scaling_cost(const ScalingConfig& c, const ScalingRow& r) { return c.timing ? r.seconds : double(r.forces + r.jacobians) * r.n; }
+
+ScalingResult scaling_study(const ScalingConfig& c) {
+  ScalingResult out;
+  out.config = c;
+  const std::size_t nm = c.methods.size(), ns = c.sizes.size(), np = c.peers ? 3 : 0;
+  out.rows = study_map<ScalingRow>((nm + np) * ns, c.threads, [&](std::size_t task) {
+    const std::size_t solver = task / ns;
+    const int n = c.sizes[task % ns];
+    return solver < nm ? method_row(c, c.methods[solver], n) : peer_row(c, static_cast<int>(solver - nm), n);
+  });
+  if (c.timing)
+    for (ScalingRow& r : out.rows)
+      if (r.reached()) r.seconds = run_seconds(c, r);
+  for (std::size_t s = 0; s < nm + np; ++s)
+    out.fits.push_back(fit_of(c, {out.rows.begin() + s * ns, out.rows.begin() + (s + 1) * ns}));
+  // crossover: the first size where the cheapest implicit method beats every explicit one (steplab's methods)
+  for (std::size_t k = 0; k < ns && out.crossover == 0; ++k) {
+    double explicit_best = std::numeric_limits<double>::infinity(), implicit_best = explicit_best;
+    std::string implicit_name;
+    for (std::size_t s = 0; s < nm; ++s) {
+      const ScalingRow& r = out.rows[s * ns + k];
+      if (!r.reached()) continue;
+      if (r.implicit && scaling_cost(c, r) < implicit_best) implicit_best = scaling_cost(c, r), implicit_name = r.solver;
+      if (!r.implicit && scaling_cost(c, r) < explicit_best) explicit_best = scaling_cost(c, r);
+    }
+    if (implicit_best < explicit_best) out.crossover = c.sizes[k], out.crossover_method = implicit_name;
+  }
+  return out;
+}
+
+}  // namespace steplab

@@ -1,0 +1,77 @@
+// How the choice of integrator changes as the system grows: the rope of N masses (core/scenes/
+// rope.hpp) refined, N over `sizes`, every method and the peers at each size.
+//
+// For each solver and N:
+//   the largest stable step dt*, predicted from the modes (analysis/rope_stability.hpp; measured
+//     against runs there);
+//   the step (dopri5 and the peers: the tolerance rtol = atol) at which the run reaches the
+//     target position error, the largest over the masses at t_end against the exact solution (so
+//     that the same error per mass is asked at every N): a secant search in log-log on
+//     error ~ C dt^p (p the method's order; for a tolerance p = 1), the largest step tried whose
+//     error is at or below the target, from at most kSearchRuns runs;
+//   that run's cost: its wall-clock time (the minimum of repeated runs, at least one and 0.05 s in
+//     all, one at a time after the searches), its steps, force and Jacobian evaluations; the cost
+//     of one step is their ratio.
+// Then per solver the exponents p of cost ~ N^p (least squares in log-log over the sizes) for one
+// step and for the whole run, and the size from which an implicit method's whole run is cheaper
+// than every explicit one's.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "core/simulate.hpp"
+
+namespace steplab {
+
+inline constexpr int kSearchRuns = 10;
+
+struct ScalingConfig {
+  std::vector<double> params;  // Rope parameters, table order (masses replaced by each size)
+  std::vector<int> sizes{16, 64, 256, 1024};
+  std::vector<std::size_t> methods;  // numerical methods of the table
+  bool peers = true;                 // steplab's dopri5, CVODE (banded), Boost.Odeint's dopri5
+  double target_error = 1e-4;
+  double t_end = 2;
+  long long max_steps = 2'000'000;   // a search does not try steps that need more
+  bool timing = true;
+  unsigned threads = 0;
+};
+
+struct ScalingRow {
+  std::string solver;    // a method's name, dopri5, cvode_band or odeint_dopri5
+  bool implicit = false;
+  bool adaptive = false; // dt below is then the tolerance
+  int n = 0;
+  double dt_stable = 0;  // predicted dt* (inf: none; NaN for the adaptive solvers)
+  double dt = 0;         // the step (tolerance) that reaches the target; NaN if none did
+  double error = 0;      // its error (largest over the masses at t_end)
+  long long steps = 0, forces = 0, jacobians = 0;
+  double seconds = 0;    // the whole run (0 without timing)
+  int runs = 0;          // runs the search took
+  bool reached() const { return dt == dt; }
+};
+
+struct ScalingFit {
+  std::string solver;
+  double step_exponent, run_exponent;  // NaN with fewer than two sizes reached
+};
+
+struct ScalingResult {
+  ScalingConfig config;
+  std::vector<ScalingRow> rows;  // solver-major, sizes in order
+  std::vector<ScalingFit> fits;
+  // The smallest size at which some implicit method's whole run is cheaper than every explicit
+  // method's (time, or force + Jacobian evaluations without timing), and which; 0 if none.
+  int crossover = 0;
+  std::string crossover_method;
+};
+
+ScalingResult scaling_study(const ScalingConfig& c);
+
+// What a row's run cost: its seconds, or without timing its force and Jacobian evaluations times
+// N (each touches every mass; the linear solves not counted).
+double scaling_cost(const ScalingConfig& c, const ScalingRow& r);
+
+}  // namespace steplab
