@@ -85,6 +85,21 @@ void register_steplab() {
     for (std::size_t m = 0; m < method_count(); ++m)
       if (applies(m, s))
         register_step("step/" + std::string(scene_name(s)) + "/" + std::string(method_info(m).name), m, s, default_param_values(s));
+  // One step of the rope against its number of masses N (the implicit methods' sparse solves;
+  // RK4 beside them): dt = 0.2 / omega_max (omega_max ~ 2 sqrt(K/M) N), 100 steps a batch from the
+  // rope's start (the batch also makes the rope: its modes, O(N log N), under 1 % of 100 steps).
+  const std::size_t rope = scene_index("rope");
+  for (const char* name : {"rk4", "implicit_euler", "implicit_midpoint", "bdf2", "gauss_legendre4", "radau_iia5"})
+    for (int n : {64, 256, 1024, 4096, 16384}) {
+      std::vector<double> p = default_param_values(rope);
+      p[0] = n;
+      const std::size_t m = *find_method(name);
+      const double dt = 0.2 / (2 * std::sqrt(p[2] / p[1]) * n);
+      benchmark::RegisterBenchmark(("rope_size/" + std::string(name) + "/" + std::to_string(n)).c_str(), [m, rope, p, dt](benchmark::State& st) {
+        const PairKernel& k = pair_kernel(m, rope);
+        while (st.KeepRunningBatch(100)) k.time_steps(p, dt, 100, 100);
+      })->Unit(benchmark::kMicrosecond);
+    }
 }
 
 // ---------------- the default spring, written by hand ----------------

@@ -73,6 +73,9 @@ std::string styles_gp(const std::vector<std::size_t>& methods) {
                        adaptive[k].colour, adaptive[k].point, adaptive[k].dash, kAdaptiveSolvers[k]);
     names += fmt::format(" {}", kAdaptiveSolvers[k]);
   }
+  // the scaling study's CVODE, with its banded solver: CVODE's grey, another point
+  out += fmt::format("set linetype {} lc rgb \"#777777\" pt 8 dt 3 lw 1.5 ps 0.6  # cvode_band\n", method_count() + kAdaptiveSolvers.size() + 1);
+  names += " cvode_band";
   out += fmt::format("style_names = \"{}\"\n", names);
   out += fmt::format("adaptive = \"{} {} {}\"\n", kAdaptiveSolvers[0], kAdaptiveSolvers[1], kAdaptiveSolvers[2]);
   out += "mlt(m) = sum [k=1:words(style_names)] (word(style_names, k) eq m ? k : 0)\n";

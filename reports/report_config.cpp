@@ -1,5 +1,6 @@
 #include "reports/report_config.hpp"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -95,6 +96,7 @@ Json report_config_json(const ReportConfig& c) {
                     {"map_dt_min", c.map_dt_min},                 {"map_dt_max", c.map_dt_max},
                     {"large_dt", c.large_dt},                     {"small_dt", c.small_dt}};
   j["collision"] = {{"dts", c.collision_dts}, {"t_end", c.collision_t_end}, {"triangle_dt", c.triangle_dt}};
+  j["scaling"] = {{"sizes", c.scaling_sizes}, {"error", c.scaling_error}, {"t_end", c.scaling_t_end}};
   j["figures"] = {{"cannonball_dt", c.cannonball_dt},
                   {"cannonball_t_end", c.cannonball_t_end},
                   {"spring_dts", c.spring_figure_dts},
@@ -143,6 +145,15 @@ ReportConfig report_config_from_json(const Json& user) {
   c.triangle_dt = num(co["triangle_dt"], "collision.triangle_dt", Bound::Positive);
   for (double dt : c.collision_dts) step_count(c.collision_t_end, dt);
   step_count(c.collision_t_end, c.triangle_dt);
+  const Json& sc = j["scaling"];
+  c.scaling_sizes.clear();
+  for (const double n : nums(sc["sizes"], "scaling.sizes", Bound::Positive)) {
+    if (n != std::floor(n) || n > 1e5)
+      throw UsageError(fmt::format("config: scaling.sizes holds {}; accepted: whole numbers from 1 to 100000", n));
+    c.scaling_sizes.push_back(static_cast<int>(n));
+  }
+  c.scaling_error = num(sc["error"], "scaling.error", Bound::Positive);
+  c.scaling_t_end = num(sc["t_end"], "scaling.t_end", Bound::Positive);
   const Json& fg = j["figures"];
   c.cannonball_dt = num(fg["cannonball_dt"], "figures.cannonball_dt", Bound::Positive);
   c.cannonball_t_end = num(fg["cannonball_t_end"], "figures.cannonball_t_end", Bound::Positive);

@@ -31,6 +31,9 @@ struct ReportConfig {
   // collision
   std::vector<double> collision_dts{0.001, 0.002, 0.004};
   double collision_t_end = 10, triangle_dt = 0.001;
+  // as the system grows: the rope (its default parameters) at these numbers of masses
+  std::vector<int> scaling_sizes{8, 32, 128};
+  double scaling_error = 1e-4, scaling_t_end = 2;
   // figures
   double cannonball_dt = 0.25, cannonball_t_end = 17.5;
   std::vector<double> spring_figure_dts{0.01, 0.05};

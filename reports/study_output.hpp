@@ -48,6 +48,14 @@ Json rope_stability_json(const RopeStabilityConfig& c, const std::vector<RopeThr
 std::string rope_thresholds_table(const std::vector<RopeThresholdRow>& rows);
 }  // namespace steplab
 
+#include "analysis/scaling.hpp"
+
+namespace steplab {
+// `study scaling` (reports/scaling_command.cpp): schema steplab.scaling/1.
+Json scaling_json(const ScalingResult& r);
+std::string scaling_table(const ScalingResult& r);
+}  // namespace steplab
+
 #include "analysis/collision.hpp"
 
 namespace steplab {

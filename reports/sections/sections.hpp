@@ -12,4 +12,5 @@
   X(stability)                     \
   X(cost)                          \
   X(collision)                     \
+  X(growth)                        \
   X(reproduce)

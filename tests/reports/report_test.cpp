@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "analysis/kernel.hpp"
+#include "analysis/scaling.hpp"
 #include "reports/inputs.hpp"
 #include "reports/report.hpp"
 
@@ -31,6 +32,7 @@ ReportConfig small_config() {
   c.collision_t_end = 2;
   c.energy_t_end = 10;
   c.cannonball_t_end = 5;
+  c.scaling_sizes = {4, 8};
   return c;
 }
 
@@ -236,6 +238,54 @@ TEST(ReportConfigJson, RefusesBadConfigs) {
                           R"({"convergence": {"dt_min": 0.5, "dt_max": 0.1}})", R"([1, 2])", R"({"work_precision": {"timing": 1}})"}) {
     EXPECT_THROW(report_config_from_json(nlohmann::ordered_json::parse(bad)), UsageError) << bad;
   }
+}
+
+}  // namespace
+}  // namespace steplab
+
+namespace steplab {
+namespace {
+
+// "As the system grows": its table and sentences are the scaling study's, run here again with the
+// same settings (not timed: evaluations, the same numbers every time), under two settings.
+// The markdown of "As the system grows" alone.
+std::string growth_section(const ReportConfig& c) {
+  const std::string md = report_markdown(build_report(c), "png", "");
+  const std::size_t a = md.find("## As the system grows");
+  return a == std::string::npos ? "" : md.substr(a, md.find("\n## ", a + 1) - a);
+}
+
+// Returns the section's text.
+std::string expect_growth_follows_data(const ReportConfig& c) {
+  const std::string md = growth_section(c);
+  EXPECT_FALSE(md.empty());
+  ScalingConfig s;
+  s.params = default_param_values(*find_scene("rope"));
+  s.sizes = c.scaling_sizes;
+  s.target_error = c.scaling_error;
+  s.t_end = c.scaling_t_end;
+  for (std::size_t m = 0; m < method_count(); ++m)
+    if (!method_info(m).exact_flow) s.methods.push_back(m);
+  s.timing = false;
+  const ScalingResult r = scaling_study(s);
+  for (const ScalingFit& f : r.fits) {
+    const std::string row = line_starting(md, "| `" + f.solver + "` |");
+    EXPECT_FALSE(row.empty()) << f.solver;
+    if (!std::isnan(f.run_exponent)) EXPECT_NE(row.find(fmt::format("| {:.2f} |", f.run_exponent)), std::string::npos) << row;
+  }
+  if (r.crossover == 0) EXPECT_NE(md.find("- At none of these sizes is an implicit method"), std::string::npos);
+  else EXPECT_NE(md.find(fmt::format("- From N = {} on (of these sizes), `{}`", r.crossover, r.crossover_method)), std::string::npos);
+  EXPECT_NE(md.find(fmt::format("at N = {}", c.scaling_sizes.front())), std::string::npos);
+  return md;
+}
+
+TEST(ReportGrowth, FollowsTheDataUnderChangedParameters) {
+  ReportConfig c = small_config();
+  const std::string a = expect_growth_follows_data(c);
+  c.scaling_sizes = {6, 12, 24};
+  c.scaling_error = 1e-3;
+  const std::string b = expect_growth_follows_data(c);
+  EXPECT_NE(line_starting(a, "| `rk4` |"), line_starting(b, "| `rk4` |"));
 }
 
 }  // namespace

@@ -1,0 +1,30 @@
+# Figure 11: the rope of N masses: each solver's whole-run cost at the target error against N,
+# a panel per family and one for the adaptive solvers; in the last panel the explicit methods'
+# stable step dt* against N (points) beside its 1/N prediction from the smallest N (dashed).
+# Variables set by steplab report: datadir, outfile, format (png|pdf), costname, limited (the
+# explicit methods with a finite dt* at every N);
+# styles.gp (written beside this script): each method's style, nfam, fam1.., famname1..
+load "styles.gp"
+npanel = nfam + 2
+nrow = (npanel + 2) / 3
+if (format eq "png") { set terminal pngcairo enhanced size 1100,330 * nrow font ",10" } else { eval sprintf("set terminal pdfcairo enhanced size 16cm,%.1fcm font ',6.5'", 4.2 * nrow) }
+set output outfile
+set grid lc rgb "#dddddd"
+set key top left samplen 2.5 spacing 0.9 noenhanced  # method names have underscores
+set logscale xy
+set format y "10^{%L}"
+set multiplot layout nrow,3
+scaled = "dopri5 odeint_dopri5 cvode_band"
+do for [f=1:nfam+1] {
+  ms = f <= nfam ? value("fam".f) : scaled
+  set title (f <= nfam ? value("famname".f) : "adaptive solvers") noenhanced
+  set xlabel "masses N"
+  set ylabel costname
+  plot for [m in ms] datadir."/scaling_".m.".dat" using 1:2 with linespoints lt mlt(m) title m
+}
+set title "explicit methods: dt* against N"
+set key bottom left
+set ylabel "dt* (s)"
+plot for [m in limited] datadir."/scaling_".m.".dat" using 1:($4 > 0 && $4 < 1e300 ? $4 : 1/0) with points lt mlt(m) title m, \
+     for [m in limited] datadir."/scaling_".m.".dat" using 1:($5 > 0 && $5 < 1e300 ? $5 : 1/0) with lines lt mlt(m) dt 2 notitle
+unset multiplot

@@ -1,0 +1,123 @@
+// As the system grows: the rope of N masses refined (analysis/scaling.hpp), every method and
+// the peers; cost against N, the stable step against its 1/N prediction, the exponents, the
+// crossover.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "analysis/fit.hpp"
+#include "analysis/kernel.hpp"
+#include "core/scenes/rope.hpp"
+#include "reports/report_text.hpp"
+#include "reports/section.hpp"
+#include "reports/study_output.hpp"
+
+namespace steplab {
+namespace {
+
+// The rope's parameters but its number of masses (the sizes replace it).
+std::string rope_text(const std::vector<double>& params) {
+  const std::string all = params_text(*find_scene("rope"), params);
+  return all.substr(all.find(", ") + 2);
+}
+
+class Growth : public Section {
+ public:
+  void study(const ReportData& d) override {
+    ScalingConfig c;
+    c.params = default_param_values(*find_scene("rope"));
+    c.sizes = d.config.scaling_sizes;
+    c.target_error = d.config.scaling_error;
+    c.t_end = d.config.scaling_t_end;
+    for (std::size_t m : d.methods)
+      if (!method_info(m).exact_flow) c.methods.push_back(m);
+    c.timing = d.config.timing;
+    c.threads = d.config.threads;
+    r_ = scaling_study(c);
+  }
+
+  void write_data(const ReportData&, const DataDir& dat) const override {
+    dat.write("scaling.json", scaling_json(r_).dump(1) + "\n");
+    const std::size_t ns = r_.config.sizes.size();
+    for (std::size_t s = 0; s * ns < r_.rows.size(); ++s) {
+      std::string t = "# masses run_cost step_cost dt_stable dt_stable_one_over_n\n";
+      const ScalingRow& first = r_.rows[s * ns];
+      for (std::size_t k = 0; k < ns; ++k) {
+        const ScalingRow& w = r_.rows[s * ns + k];
+        const double cost = scaling_cost(r_.config, w);
+        // 1/N prediction from the smallest size: dt*(N) = dt*(N0) N0 / N
+        t += fmt::format("{} {} {} {} {}\n", w.n, w.reached() ? num(cost) : "NaN", w.reached() && w.steps > 0 ? num(cost / w.steps) : "NaN",
+                         num(w.dt_stable), num(first.dt_stable * first.n / w.n));
+      }
+      dat.write("scaling_" + first.solver + ".dat", t);
+    }
+  }
+
+  // The explicit methods with a finite stable step at every size: the last panel's.
+  std::vector<FigureSpec> figures(const ReportData&) const override {
+    const std::size_t ns = r_.config.sizes.size();
+    std::string limited;
+    for (std::size_t s = 0; s * ns < r_.rows.size(); ++s) {
+      bool finite = !r_.rows[s * ns].implicit && !r_.rows[s * ns].adaptive;
+      for (std::size_t k = 0; k < ns; ++k) finite = finite && std::isfinite(r_.rows[s * ns + k].dt_stable) && r_.rows[s * ns + k].dt_stable > 0;
+      if (finite) limited += (limited.empty() ? "" : " ") + r_.rows[s * ns].solver;
+    }
+    return {{"fig11_scaling", fmt::format("costname='{}'; limited='{}'", r_.config.timing ? "run time (s)" : "evaluations x N", limited)}};
+  }
+
+  std::string markdown(Page& page) const override {
+    const ScalingConfig& c = r_.config;
+    const std::size_t ns = c.sizes.size();
+    std::string md = "## As the system grows\n\n";
+    md += fmt::format("The hanging rope of N masses, a refinement of one rope (total mass, stiffness, rest length and damping "
+                      "kept: {}), at N = {}: each method's step (each adaptive solver's tolerance) searched until the position "
+                      "error at t = {:g}, the largest over the masses, is at most {:g}, and that run's cost by {}. Its stable "
+                      "step dt* comes from its modes (`steplab study stability --scene rope` measures it too).\n\n",
+                      rope_text(c.params), join(std::vector<double>(c.sizes.begin(), c.sizes.end())), c.t_end,
+                      c.target_error, c.timing ? "run time" : "force and Jacobian evaluations times N");
+    md += "| solver | cost ~ N^p^: one step | whole run | dt* ~ N^q^ |\n|---|---:|---:|---:|\n";
+    for (std::size_t s = 0; s < r_.fits.size(); ++s) {
+      const ScalingFit& f = r_.fits[s];
+      std::vector<double> n, dt;
+      for (std::size_t k = 0; k < ns; ++k) {
+        const ScalingRow& w = r_.rows[s * ns + k];
+        if (std::isfinite(w.dt_stable) && w.dt_stable > 0) n.push_back(std::log(w.n)), dt.push_back(std::log(w.dt_stable));
+      }
+      const auto p = [](double x) { return std::isnan(x) ? std::string("-") : fmt::format("{:.2f}", x); };
+      md += fmt::format("| `{}` | {} | {} | {} |\n", f.solver, p(f.step_exponent), p(f.run_exponent),
+                        n.size() >= 2 ? fmt::format("{:.2f}", fit_line(n, dt).slope) : std::string("-"));
+    }
+    md += "\n";
+    md += r_.crossover == 0
+              ? fmt::format("- At none of these sizes is an implicit method's whole run cheaper than every explicit one's.\n")
+              : fmt::format("- From N = {} on (of these sizes), `{}` is cheaper than every explicit method.\n", r_.crossover,
+                            r_.crossover_method);
+    // the cheapest of steplab's methods against CVODE at the largest size
+    double best = std::numeric_limits<double>::infinity(), cvode = best;
+    std::string best_name;
+    for (const ScalingRow& w : r_.rows) {
+      if (w.n != c.sizes.back() || !w.reached()) continue;
+      const double cost = scaling_cost(c, w);
+      if (w.solver == "cvode_band") cvode = cost;
+      else if (w.solver != "odeint_dopri5" && cost < best) best = cost, best_name = w.solver;
+    }
+    if (std::isfinite(best) && std::isfinite(cvode))
+      md += fmt::format("- At N = {}, steplab's cheapest, `{}`, costs {:.3g} times what CVODE with its banded solver costs.\n",
+                        c.sizes.back(), best_name, best / cvode);
+    md += "\n" + page.figure("fig11_scaling", "rope of N masses: whole-run cost at the target error against N, a panel per family and "
+                                              "one for the adaptive solvers; last panel: explicit methods' dt* against N, "
+                                              "dashed its 1/N prediction from the smallest N");
+    return md;
+  }
+
+ private:
+  ScalingResult r_;
+};
+
+}  // namespace
+
+std::unique_ptr<Section> make_growth_section() { return std::make_unique<Growth>(); }
+
+}  // namespace steplab
