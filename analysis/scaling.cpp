@@ -111,7 +111,8 @@ ScalingRow peer_row(const ScalingConfig& c, int which, int n) {
   const Rope r(p);
   const Eigen::VectorXd exact = scene_kernel(scene).exact(p, c.t_end).x;
   ScalingRow row{names[which], which == 1, true, n, kNaN};
-  search(row, 1e-4, 1e-2, 1, c.target_error, [&](double tol) {
+  // a run at `tol`: its error, and its counts into the row
+  const auto run = [&](double tol) {
     if (which == 0) {
       AdaptiveSpec spec;
       spec.tol = {tol, tol};
@@ -125,22 +126,9 @@ ScalingRow peer_row(const ScalingConfig& c, int which, int n) {
     const State<Eigen::Dynamic> end = which == 1 ? cvode_band_rope(r, tol, c.t_end, counts) : odeint_dopri5_rope(r, tol, c.t_end, counts);
     row.steps = counts.steps, row.forces = counts.evaluations, row.jacobians = counts.jacobian_evaluations;
     return max_error(end.x, exact, !counts.failed);
-  });
-  if (row.reached()) {  // the counts of the run kept (the search's last run may be another)
-    const double tol = row.dt;
-    PeerCounts counts;
-    if (which == 0) {
-      AdaptiveSpec spec;
-      spec.tol = {tol, tol};
-      spec.t_end = c.t_end;
-      spec.errors = false;
-      const AnyAdaptiveResult res = scene_kernel(scene).dopri5(p, spec);
-      row.steps = res.stats.accepted, row.forces = res.stats.force_evaluations, row.jacobians = 0;
-    } else {
-      (which == 1 ? cvode_band_rope : odeint_dopri5_rope)(r, tol, c.t_end, counts);
-      row.steps = counts.steps, row.forces = counts.evaluations, row.jacobians = counts.jacobian_evaluations;
-    }
-  }
+  };
+  search(row, 1e-4, 1e-2, 1, c.target_error, run);
+  if (row.reached()) run(row.dt);  // the counts of the run kept (the search's last run may be another)
   return row;
 }
 
