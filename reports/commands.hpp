@@ -97,7 +97,7 @@ int collision_command(CollisionArgs& args);
 
 // `study scaling` (reports/scaling_command.cpp): cost against the number of masses of the rope.
 struct ScalingArgs {
-  SceneArgs scene{.scene = "rope"};  // the rope's parameters (--masses is replaced by each size)
+  SceneArgs scene;  // the rope's parameters (--masses is replaced by each size); add_scaling_command makes rope the default
   std::string methods;
   std::string sizes = "16,64,256,1024";
   std::string error = "1e-4";

@@ -18,6 +18,7 @@ namespace steplab {
 CLI::App* add_scaling_command(CLI::App* study, ScalingArgs& a) {
   CLI::App* cmd = study->add_subcommand("scaling", "rope of N masses: cost of a step and of a run at a given error, "
                                                    "largest stable step, against N; fitted exponents, crossover");
+  a.scene.scene = "rope";  // the one scene it accepts
   a.scene.add_to(cmd);
   cmd->add_option("--methods", a.methods, "comma-separated methods (default: every numerical method)");
   cmd->add_option("--sizes", a.sizes, "comma-separated numbers of masses, 1 .. 100000")->capture_default_str();

@@ -62,7 +62,9 @@ class Growth : public Section {
     for (std::size_t s = 0; s * ns < r_.rows.size(); ++s) {
       bool finite = !r_.rows[s * ns].implicit && !r_.rows[s * ns].adaptive;
       for (std::size_t k = 0; k < ns; ++k) finite = finite && std::isfinite(r_.rows[s * ns + k].dt_stable) && r_.rows[s * ns + k].dt_stable > 0;
-      if (finite) limited += (limited.empty() ? "" : " ") + r_.rows[s * ns].solver;
+      if (!finite) continue;
+      if (!limited.empty()) limited += ' ';
+      limited += r_.rows[s * ns].solver;
     }
     return {{"fig11_scaling", fmt::format("costname='{}'; limited='{}'", r_.config.timing ? "run time (s)" : "evaluations x N", limited)}};
   }
@@ -106,7 +108,8 @@ class Growth : public Section {
     if (std::isfinite(best) && std::isfinite(cvode))
       md += fmt::format("- At N = {}, steplab's cheapest, `{}`, costs {:.3g} times what CVODE with its banded solver costs.\n",
                         c.sizes.back(), best_name, best / cvode);
-    md += "\n" + page.figure("fig11_scaling", "rope of N masses: whole-run cost at the target error against N, a panel per family and "
+    md += '\n';
+    md += page.figure("fig11_scaling", "rope of N masses: whole-run cost at the target error against N, a panel per family and "
                                               "one for the adaptive solvers; last panel: explicit methods' dt* against N, "
                                               "dashed its 1/N prediction from the smallest N");
     return md;

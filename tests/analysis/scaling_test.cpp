@@ -63,7 +63,9 @@ TEST(Scaling, RowsReachTheTargetAndStableStepsShrinkAsOneOverN) {
     last = constant;
   }
   for (const ScalingRow& w : r.rows)
-    if (w.solver == "implicit_midpoint" || w.solver == "radau_iia5") EXPECT_TRUE(std::isinf(w.dt_stable));
+    if (w.solver == "implicit_midpoint" || w.solver == "radau_iia5") {
+      EXPECT_TRUE(std::isinf(w.dt_stable));
+    }
   // a fixed-step implicit method: one Jacobian and a constant number of force evaluations a step
   for (const ScalingRow& w : r.rows)
     if (w.solver == "implicit_midpoint") {

@@ -49,7 +49,7 @@ LMat system_matrix(int n, double gamma, double cs) {
 // 1e-12 of the largest |x|; measured 1.6e-15 at worst over these 60 cases.
 TEST(Rope, ExactMatchesAMatrixExponential) {
   double worst = 0;
-  for (const auto [gamma, cs] : {std::pair{0.1, 0.0}, std::pair{0.0, 0.0}, std::pair{0.3, 0.02}, std::pair{5.0, 0.5}})
+  for (const auto& [gamma, cs] : {std::pair{0.1, 0.0}, std::pair{0.0, 0.0}, std::pair{0.3, 0.02}, std::pair{5.0, 0.5}})
     for (int n : {1, 2, 3, 5, 8}) {
       const Rope r = rope(n, gamma, cs);
       const LMat A = system_matrix(n, gamma, cs);

@@ -271,10 +271,15 @@ std::string expect_growth_follows_data(const ReportConfig& c) {
   for (const ScalingFit& f : r.fits) {
     const std::string row = line_starting(md, "| `" + f.solver + "` |");
     EXPECT_FALSE(row.empty()) << f.solver;
-    if (!std::isnan(f.run_exponent)) EXPECT_NE(row.find(fmt::format("| {:.2f} |", f.run_exponent)), std::string::npos) << row;
+    if (!std::isnan(f.run_exponent)) {
+      EXPECT_NE(row.find(fmt::format("| {:.2f} |", f.run_exponent)), std::string::npos) << row;
+    }
   }
-  if (r.crossover == 0) EXPECT_NE(md.find("- At none of these sizes is an implicit method"), std::string::npos);
-  else EXPECT_NE(md.find(fmt::format("- From N = {} on (of these sizes), `{}`", r.crossover, r.crossover_method)), std::string::npos);
+  if (r.crossover == 0) {
+    EXPECT_NE(md.find("- At none of these sizes is an implicit method"), std::string::npos);
+  } else {
+    EXPECT_NE(md.find(fmt::format("- From N = {} on (of these sizes), `{}`", r.crossover, r.crossover_method)), std::string::npos);
+  }
   EXPECT_NE(md.find(fmt::format("at N = {}", c.scaling_sizes.front())), std::string::npos);
   return md;
 }
