@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "analysis/kernel.hpp"
 #include "analysis/stability.hpp"
 #include "core/scenes/spring.hpp"
 

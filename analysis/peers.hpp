@@ -59,6 +59,31 @@ template <HasExact S> struct OdeintDopri5 {
   }
 };
 
+// CVODE's BDF on z' = rhs(z) from z at t = 0 (overwritten with the state at t_end), rtol = atol =
+// tol, Newton on the linear solver `ls` with matrix J and the analytic Jacobian `jac`; `scene` is
+// the user data the callbacks read (CVODE takes a void*; they only read it). `after_step(t)`
+// after every internal step. Counts into n (failed if CVODE stopped before t_end).
+template <class AfterStep>
+void cvode_bdf(SUNContext ctx, N_Vector z, CVRhsFn rhs, CVLsJacFn jac, SUNMatrix J, SUNLinearSolver ls, const void* scene,
+               double tol, double t_end, PeerCounts& n, AfterStep&& after_step) {
+  void* mem = CVodeCreate(CV_BDF, ctx);
+  bool ok = CVodeInit(mem, rhs, 0.0, z) == CV_SUCCESS && CVodeSStolerances(mem, tol, tol) == CV_SUCCESS &&
+            CVodeSetUserData(mem, const_cast<void*>(scene)) == CV_SUCCESS && CVodeSetLinearSolver(mem, ls, J) == CV_SUCCESS &&
+            CVodeSetJacFn(mem, jac) == CV_SUCCESS && CVodeSetMaxNumSteps(mem, 10'000'000) == CV_SUCCESS &&
+            CVodeSetStopTime(mem, t_end) == CV_SUCCESS;
+  double t = 0;
+  while (ok && t < t_end) {
+    ok = CVode(mem, t_end, z, &t, CV_ONE_STEP) >= 0;
+    if (ok) after_step(t);
+  }
+  long int steps = 0, fevals = 0, jevals = 0;
+  CVodeGetNumSteps(mem, &steps);
+  CVodeGetNumRhsEvals(mem, &fevals);
+  CVodeGetNumJacEvals(mem, &jevals);
+  n = {steps, fevals, jevals, !ok};
+  CVodeFree(&mem);
+}
+
 template <HasExact S> struct CvodeBdf {
   static constexpr int D = S::dim;
 
@@ -89,36 +114,18 @@ template <HasExact S> struct CvodeBdf {
   }
 
   static State<D> run(const S& s, double tol, double t_end, PeerCounts& n, double* error_max = nullptr) {
-    n = {};
     SUNContext ctx = nullptr;
     if (SUNContext_Create(nullptr, &ctx) != 0) throw std::runtime_error("CVODE: no context");
     N_Vector z = N_VNew_Serial(2 * D, ctx);
     const State<D> y0 = s.initial();
     double* a = N_VGetArrayPointer(z);
     for (int i = 0; i < D; ++i) a[i] = y0.x[i], a[D + i] = y0.v[i];
-    void* mem = CVodeCreate(CV_BDF, ctx);
     SUNMatrix J = SUNDenseMatrix(2 * D, 2 * D, ctx);
     SUNLinearSolver ls = SUNLinSol_Dense(z, J, ctx);
-    S scene = s;  // CVODE's user data is a void*, not a const one
-    bool ok = CVodeInit(mem, rhs, 0.0, z) == CV_SUCCESS && CVodeSStolerances(mem, tol, tol) == CV_SUCCESS &&
-              CVodeSetUserData(mem, &scene) == CV_SUCCESS && CVodeSetLinearSolver(mem, ls, J) == CV_SUCCESS &&
-              CVodeSetJacFn(mem, jacobian) == CV_SUCCESS && CVodeSetMaxNumSteps(mem, 10'000'000) == CV_SUCCESS &&
-              CVodeSetStopTime(mem, t_end) == CV_SUCCESS;
-    double t = 0;
-    while (ok && t < t_end) {
-      ok = CVode(mem, t_end, z, &t, CV_ONE_STEP) >= 0;
-      if (ok && error_max) {
-        const double e = (Eigen::Map<const Vec<D>>(a) - exact(s, t).x).norm();
-        *error_max = std::max(*error_max, e);
-      }
-    }
-    long int steps = 0, fevals = 0, jevals = 0;
-    CVodeGetNumSteps(mem, &steps);
-    CVodeGetNumRhsEvals(mem, &fevals);
-    CVodeGetNumJacEvals(mem, &jevals);
-    n = {steps, fevals, jevals, !ok};
+    cvode_bdf(ctx, z, rhs, jacobian, J, ls, &s, tol, t_end, n, [&](double t) {
+      if (error_max) *error_max = std::max(*error_max, (Eigen::Map<const Vec<D>>(a) - exact(s, t).x).norm());
+    });
     const State<D> end{Eigen::Map<const Vec<D>>(a), Eigen::Map<const Vec<D>>(a + D)};
-    CVodeFree(&mem);
     SUNLinSolFree(ls);
     SUNMatDestroy(J);
     N_VDestroy(z);

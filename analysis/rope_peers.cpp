@@ -21,7 +21,7 @@ int rope_rhs(sunrealtype, N_Vector z, N_Vector dz, void* data) {
 int rope_jacobian(sunrealtype, N_Vector z, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector, N_Vector) {
   const Rope& r = *static_cast<const Rope*>(data);
   const Eigen::Map<const Eigen::VectorXd, 0, Eigen::InnerStride<2>> x(N_VGetArrayPointer(z), r.n), v(N_VGetArrayPointer(z) + 1, r.n);
-  const Jacobians<Eigen::Dynamic> j = r.jacobians(Eigen::VectorXd(x), Eigen::VectorXd(v));
+  const Jacobians<Eigen::Dynamic>& j = r.jacobians(Eigen::VectorXd(x), Eigen::VectorXd(v));
   SUNMatZero(J);
   for (int i = 0; i < r.n; ++i) SM_ELEMENT_B(J, 2 * i, 2 * i + 1) = 1;
   for (int c = 0; c < j.dx.outerSize(); ++c)
@@ -34,7 +34,6 @@ int rope_jacobian(sunrealtype, N_Vector z, N_Vector, SUNMatrix J, void* data, N_
 }  // namespace
 
 State<Eigen::Dynamic> cvode_band_rope(const Rope& r, double tol, double t_end, PeerCounts& n) {
-  n = {};
   SUNContext ctx = nullptr;
   if (SUNContext_Create(nullptr, &ctx) != 0) throw std::runtime_error("CVODE: no context");
   const sunindextype size = 2 * r.n;
@@ -42,24 +41,11 @@ State<Eigen::Dynamic> cvode_band_rope(const Rope& r, double tol, double t_end, P
   const State<Eigen::Dynamic> y0 = r.initial();
   double* a = N_VGetArrayPointer(z);
   for (int i = 0; i < r.n; ++i) a[2 * i] = y0.x[i], a[2 * i + 1] = y0.v[i];
-  void* mem = CVodeCreate(CV_BDF, ctx);
   SUNMatrix J = SUNBandMatrix(size, 2, 3, ctx);
   SUNLinearSolver ls = SUNLinSol_Band(z, J, ctx);
-  Rope scene = r;  // CVODE's user data is a void*, not a const one
-  bool ok = CVodeInit(mem, rope_rhs, 0.0, z) == CV_SUCCESS && CVodeSStolerances(mem, tol, tol) == CV_SUCCESS &&
-            CVodeSetUserData(mem, &scene) == CV_SUCCESS && CVodeSetLinearSolver(mem, ls, J) == CV_SUCCESS &&
-            CVodeSetJacFn(mem, rope_jacobian) == CV_SUCCESS && CVodeSetMaxNumSteps(mem, 10'000'000) == CV_SUCCESS &&
-            CVodeSetStopTime(mem, t_end) == CV_SUCCESS;
-  double t = 0;
-  if (ok) ok = CVode(mem, t_end, z, &t, CV_NORMAL) >= 0;
-  long int steps = 0, fevals = 0, jevals = 0;
-  CVodeGetNumSteps(mem, &steps);
-  CVodeGetNumRhsEvals(mem, &fevals);
-  CVodeGetNumJacEvals(mem, &jevals);
-  n = {steps, fevals, jevals, !ok};
+  cvode_bdf(ctx, z, rope_rhs, rope_jacobian, J, ls, &r, tol, t_end, n, [](double) {});
   State<Eigen::Dynamic> end{Eigen::VectorXd(r.n), Eigen::VectorXd(r.n)};
   for (int i = 0; i < r.n; ++i) end.x[i] = a[2 * i], end.v[i] = a[2 * i + 1];
-  CVodeFree(&mem);
   SUNLinSolFree(ls);
   SUNMatDestroy(J);
   N_VDestroy(z);

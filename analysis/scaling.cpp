@@ -41,17 +41,29 @@ double max_error(const Eigen::VectorXd& x, const Eigen::VectorXd& exact, bool ok
   return ok && x.allFinite() ? (x - exact).cwiseAbs().maxCoeff() : std::numeric_limits<double>::infinity();
 }
 
-// A run at `knob` (a step, or a tolerance) gives an error; the search keeps the largest knob
-// whose error is at or below the target. Error ~ C knob^p: the next knob aims at 0.7 of the target
-// with p the slope between the last two finite errors in log-log (the declared order before
-// there are two, and where the slope is not between 0.5 and order + 1: the stiff modes of the
-// rope reduce a method's order, Radau IIA's to about 2 here), the change bounded by 1/16 .. 4
-// and the knob by `most`. Stops within a factor 0.35 .. 1 of the target.
+// What a run at a knob gave: its error (NaN: not run, it would take more than max_steps) and its
+// counts.
+struct Trial {
+  double error;
+  long long steps = 0, forces = 0, jacobians = 0;
+};
+
+// A run at `knob` (a step, or a tolerance) gives a Trial; the search keeps the largest knob whose
+// error is at or below the target, with its counts. Error ~ C knob^p: the next knob aims at 0.7
+// of the target with p the slope between the last two finite errors in log-log (the declared
+// order before there are two, and where the slope is not between 0.5 and order + 1: the stiff
+// modes of the rope reduce a method's order, Radau IIA's to about 2 here), the change bounded by
+// 1/16 .. 4 and the knob by `most`. Stops within a factor 0.35 .. 1 of the target, or at a knob
+// not run (smaller ones would need still more steps).
 template <class Run> void search(ScalingRow& row, double start, double most, double order, double target, Run&& run) {
-  double knob = std::min(start, most), best = kNaN, best_error = 0, last_knob = 0, last_error = 0;
+  double knob = std::min(start, most), last_knob = 0, last_error = 0;
+  row.dt = kNaN;
   for (row.runs = 0; row.runs < kSearchRuns; ++row.runs) {
-    const double e = run(knob);
-    if (e <= target && !(knob <= best)) best = knob, best_error = e;
+    const Trial trial = run(knob);
+    const double e = trial.error;
+    if (std::isnan(e)) break;
+    if (e <= target && !(knob <= row.dt))
+      row.dt = knob, row.error = e, row.steps = trial.steps, row.forces = trial.forces, row.jacobians = trial.jacobians;
     if (e <= target && e > 0.35 * target) break;  // within a factor 3 of the target: close enough
     double p = order;
     if (last_knob > 0 && std::isfinite(e) && e > 0 && last_error > 0) {
@@ -65,42 +77,43 @@ template <class Run> void search(ScalingRow& row, double start, double most, dou
     knob = next;
   }
   ++row.runs;
-  row.dt = best;
-  row.error = best_error;
 }
 
 ScalingRow method_row(const ScalingConfig& c, std::size_t m, int n) {
   const std::vector<double> p = sized(c, n);
   const std::size_t scene = scene_index(Rope::name);
-  const Rope r(p);
   const Eigen::VectorXd exact = scene_kernel(scene).exact(p, c.t_end).x;
   const MethodInfo& info = method_info(m);
   ScalingRow row{std::string(info.name), info.implicit, false, n};
-  row.dt_stable = rope_predicted_threshold(m, r);
+  row.dt_stable = rope_predicted_threshold(m, Rope(p));
   const double most = std::min(0.95 * row.dt_stable, c.t_end / 2);
   if (!(most * c.max_steps >= c.t_end)) {  // no stable step covers t_end in max_steps
     row.dt = kNaN;
     return row;
   }
-  RunSpec spec;
-  spec.errors = false;
   const PairKernel& k = pair_kernel(m, scene);
   // a whole number of steps ends at t_end: dt = t_end / ceil(t_end / knob)
-  const auto whole = [&](double knob) { return c.t_end / std::ceil(c.t_end / knob * (1 - 1e-12)); };
   search(row, std::min(most, c.t_end / 20), most, info.order, c.target_error, [&](double knob) {
-    spec.dt = whole(knob);
+    RunSpec spec;
+    spec.errors = false;
+    spec.dt = c.t_end / std::ceil(c.t_end / knob * (1 - 1e-12));
     spec.steps = steps_for(c.t_end, spec.dt);
-    if (spec.steps > c.max_steps) return 0.0;  // not tried: counts as reached, never kept below a smaller step
-    const AnyResult res = k.run(p, spec);
-    return max_error(res.final.x, exact, res.status == RunStatus::Ok && res.steps == spec.steps);
+    if (spec.steps > c.max_steps) return Trial{kNaN};
+    Counts counts;
+    const AnyResult res = k.run_counted(p, spec, counts);
+    return Trial{max_error(res.final.x, exact, res.status == RunStatus::Ok && res.steps == spec.steps), spec.steps,
+                 counts.forces, counts.jacobians};
   });
-  if (!row.reached()) return row;
-  spec.dt = row.dt = whole(row.dt);
-  spec.steps = steps_for(c.t_end, row.dt);
-  Counts counts;
-  k.run_counted(p, spec, counts);
-  row.steps = spec.steps, row.forces = counts.forces, row.jacobians = counts.jacobians;
+  if (row.reached()) row.dt = c.t_end / static_cast<double>(row.steps);
   return row;
+}
+
+AdaptiveSpec adaptive_spec(double tol, double t_end) {
+  AdaptiveSpec spec;
+  spec.tol = {tol, tol};
+  spec.t_end = t_end;
+  spec.errors = false;
+  return spec;
 }
 
 // dopri5 (steplab's), cvode_band, odeint_dopri5 at a tolerance.
@@ -111,24 +124,16 @@ ScalingRow peer_row(const ScalingConfig& c, int which, int n) {
   const Rope r(p);
   const Eigen::VectorXd exact = scene_kernel(scene).exact(p, c.t_end).x;
   ScalingRow row{names[which], which == 1, true, n, kNaN};
-  // a run at `tol`: its error, and its counts into the row
-  const auto run = [&](double tol) {
+  search(row, 1e-4, 1e-2, 1, c.target_error, [&](double tol) {
     if (which == 0) {
-      AdaptiveSpec spec;
-      spec.tol = {tol, tol};
-      spec.t_end = c.t_end;
-      spec.errors = false;
-      const AnyAdaptiveResult res = scene_kernel(scene).dopri5(p, spec);
-      row.steps = res.stats.accepted, row.forces = res.stats.force_evaluations, row.jacobians = 0;
-      return max_error(res.run.final.x, exact, res.run.status == RunStatus::Ok);
+      const AnyAdaptiveResult res = scene_kernel(scene).dopri5(p, adaptive_spec(tol, c.t_end));
+      return Trial{max_error(res.run.final.x, exact, res.run.status == RunStatus::Ok), res.stats.accepted,
+                   res.stats.force_evaluations, 0};
     }
     PeerCounts counts;
     const State<Eigen::Dynamic> end = which == 1 ? cvode_band_rope(r, tol, c.t_end, counts) : odeint_dopri5_rope(r, tol, c.t_end, counts);
-    row.steps = counts.steps, row.forces = counts.evaluations, row.jacobians = counts.jacobian_evaluations;
-    return max_error(end.x, exact, !counts.failed);
-  };
-  search(row, 1e-4, 1e-2, 1, c.target_error, run);
-  if (row.reached()) run(row.dt);  // the counts of the run kept (the search's last run may be another)
+    return Trial{max_error(end.x, exact, !counts.failed), counts.steps, counts.evaluations, counts.jacobian_evaluations};
+  });
   return row;
 }
 
@@ -143,11 +148,7 @@ double run_seconds(const ScalingConfig& c, const ScalingRow& row) {
     spec.steps = row.steps;
     times = pair_kernel(*find_method(row.solver), scene).timings(p, spec, kRepeats, kSeconds);
   } else if (row.solver == "dopri5") {
-    AdaptiveSpec spec;
-    spec.tol = {row.dt, row.dt};
-    spec.t_end = c.t_end;
-    spec.errors = false;
-    times = scene_kernel(scene).dopri5_timings(p, spec, kRepeats, kSeconds);
+    times = scene_kernel(scene).dopri5_timings(p, adaptive_spec(row.dt, c.t_end), kRepeats, kSeconds);
   } else {
     const Rope r(p);
     PeerCounts counts;
@@ -157,16 +158,19 @@ double run_seconds(const ScalingConfig& c, const ScalingRow& row) {
   return *std::min_element(times.begin(), times.end());
 }
 
-ScalingFit fit_of(const ScalingConfig& c, const std::vector<ScalingRow>& rows) {
-  std::vector<double> n, step, run;
+// Least-squares slope of ln y against ln N over the rows where y is finite and > 0; NaN with fewer
+// than two.
+template <class Y> double exponent(std::span<const ScalingRow> rows, Y&& y) {
+  std::vector<double> n, v;
   for (const ScalingRow& r : rows)
-    if (r.reached() && r.steps > 0 && scaling_cost(c, r) > 0) {
-      n.push_back(std::log(r.n));
-      run.push_back(std::log(scaling_cost(c, r)));
-      step.push_back(std::log(scaling_cost(c, r) / r.steps));
-    }
-  if (n.size() < 2) return {rows.front().solver, kNaN, kNaN};
-  return {rows.front().solver, fit_line(n, step).slope, fit_line(n, run).slope};
+    if (const double x = y(r); std::isfinite(x) && x > 0) n.push_back(std::log(r.n)), v.push_back(std::log(x));
+  return n.size() < 2 ? kNaN : fit_line(n, v).slope;
+}
+
+ScalingFit fit_of(const ScalingConfig& c, std::span<const ScalingRow> rows) {
+  const auto run = [&](const ScalingRow& r) { return r.reached() && r.steps > 0 ? scaling_cost(c, r) : kNaN; };
+  return {rows.front().solver, exponent(rows, [&](const ScalingRow& r) { return run(r) / static_cast<double>(r.steps); }),
+          exponent(rows, run), exponent(rows, [](const ScalingRow& r) { return r.dt_stable; })};
 }
 
 }  // namespace
@@ -185,17 +189,17 @@ ScalingResult scaling_study(const ScalingConfig& c) {
   if (c.timing)
     for (ScalingRow& r : out.rows)
       if (r.reached()) r.seconds = run_seconds(c, r);
-  for (std::size_t s = 0; s < nm + np; ++s)
-    out.fits.push_back(fit_of(c, {out.rows.begin() + s * ns, out.rows.begin() + (s + 1) * ns}));
+  for (std::size_t s = 0; s < nm + np; ++s) out.fits.push_back(fit_of(c, out.rows_of(s)));
   // crossover: the first size where the cheapest implicit method beats every explicit one (steplab's methods)
   for (std::size_t k = 0; k < ns && out.crossover == 0; ++k) {
     double explicit_best = std::numeric_limits<double>::infinity(), implicit_best = explicit_best;
     std::string implicit_name;
     for (std::size_t s = 0; s < nm; ++s) {
-      const ScalingRow& r = out.rows[s * ns + k];
+      const ScalingRow& r = out.rows_of(s)[k];
       if (!r.reached()) continue;
-      if (r.implicit && scaling_cost(c, r) < implicit_best) implicit_best = scaling_cost(c, r), implicit_name = r.solver;
-      if (!r.implicit && scaling_cost(c, r) < explicit_best) explicit_best = scaling_cost(c, r);
+      const double cost = scaling_cost(c, r);
+      if (r.implicit && cost < implicit_best) implicit_best = cost, implicit_name = r.solver;
+      if (!r.implicit && cost < explicit_best) explicit_best = cost;
     }
     if (implicit_best < explicit_best) out.crossover = c.sizes[k], out.crossover_method = implicit_name;
   }

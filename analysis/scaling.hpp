@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,7 @@ struct ScalingRow {
 struct ScalingFit {
   std::string solver;
   double step_exponent, run_exponent;  // NaN with fewer than two sizes reached
+  double stable_exponent;              // dt* ~ N^q; NaN unless dt* is finite and > 0 at two sizes
 };
 
 struct ScalingResult {
@@ -66,6 +68,12 @@ struct ScalingResult {
   // method's (time, or force + Jacobian evaluations without timing), and which; 0 if none.
   int crossover = 0;
   std::string crossover_method;
+
+  std::size_t solvers() const { return config.sizes.empty() ? 0 : rows.size() / config.sizes.size(); }
+  // Solver s's rows, one per size in order.
+  std::span<const ScalingRow> rows_of(std::size_t s) const {
+    return {rows.data() + s * config.sizes.size(), config.sizes.size()};
+  }
 };
 
 ScalingResult scaling_study(const ScalingConfig& c);

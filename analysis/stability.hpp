@@ -30,11 +30,12 @@
 
 #include <Eigen/Core>
 
-#include "analysis/kernel.hpp"
+#include "core/simulate.hpp"
 
 namespace steplab {
 
-struct Spring;  // core/scenes/spring.hpp: included where a spring is made or asked
+struct Spring;      // core/scenes/spring.hpp: included where a spring is made or asked
+struct PairKernel;  // analysis/kernel.hpp
 
 inline constexpr double kStableRate = 1e-6;        // per unit time: E changes < 0.1 % over 1000 time units
 inline constexpr long long kRateSteps = 60'000;

@@ -82,7 +82,7 @@ StepStatus implicit_rk_step_dense(const S& s, State<S::dim>& y, double h, const 
 template <int Stages, Scene S>
 StepStatus implicit_rk_step_sparse(const S& s, State<S::dim>& y, double h, const ButcherTableau<Stages>& t) {
   const Eigen::Index n = y.x.size(), N = Stages * n;
-  const Eigen::VectorXd m = s.mass();
+  const Eigen::VectorXd& m = s.mass();
   Eigen::VectorXd V(N), r(N), dV;
   for (int i = 0; i < Stages; ++i) V.segment(i * n, n) = y.v;
   std::array<Eigen::VectorXd, Stages> X, F;
@@ -132,7 +132,7 @@ StepStatus implicit_rk_step_sparse(const S& s, State<S::dim>& y, double h, const
     solver.solve(r, dV);
     V -= dV;
   }
-  const Eigen::VectorXd inv_m = s.inverse_mass();
+  const Eigen::VectorXd& inv_m = s.inverse_mass();
   for (int i = 0; i < Stages; ++i) {
     y.x += (h * t.b[i]) * V.segment(i * n, n);
     y.v += (h * t.b[i]) * F[i].cwiseProduct(inv_m);

@@ -112,7 +112,7 @@ template <Scene S>
 StepStatus solve_implicit(const S& s, const Vec<S::dim>& x0, double cx, const Vec<S::dim>& w, double c,
                           Vec<S::dim>& u) {
   constexpr int D = S::dim;
-  const Vec<D> m = s.mass();
+  const Vec<D>& m = s.mass();
   u = w;
   double force_terms = 0;
   StageSolve<D> linear;
@@ -125,7 +125,7 @@ StepStatus solve_implicit(const S& s, const Vec<S::dim>& x0, double cx, const Ve
       if (r.norm() <= NewtonSettings::tolerance * scale) return StepStatus::Ok;
     }
     if (it == NewtonSettings::max_iterations || !r.allFinite()) return StepStatus::NoConvergence;
-    const Jacobians<D> jac = s.jacobians(x, u);
+    const Jacobians<D>& jac = s.jacobians(x, u);  // a reference where the scene keeps its own (the rope)
     if (it == 0) force_terms = jac.dx.norm() * x.norm() + jac.dv.norm() * u.norm();
     if (r.isZero(0.0)) return StepStatus::Ok;  // already solved (e.g. at rest in equilibrium)
     if (!linear.update(jac, m, c, cx, r, u)) return StepStatus::NoConvergence;

@@ -147,11 +147,8 @@ ReportConfig report_config_from_json(const Json& user) {
   step_count(c.collision_t_end, c.triangle_dt);
   const Json& sc = j["scaling"];
   c.scaling_sizes.clear();
-  for (const double n : nums(sc["sizes"], "scaling.sizes", Bound::Positive)) {
-    if (n != std::floor(n) || n > 1e5)
-      throw UsageError(fmt::format("config: scaling.sizes holds {}; accepted: whole numbers from 1 to 100000", n));
-    c.scaling_sizes.push_back(static_cast<int>(n));
-  }
+  const ParamSpec& masses = scene_kernel(scene_index("rope")).params[0];  // the rope's --masses: its range
+  for (const Json& n : sc["sizes"]) c.scaling_sizes.push_back(count(n, "scaling.sizes", 1, static_cast<int>(masses.most)));
   c.scaling_error = num(sc["error"], "scaling.error", Bound::Positive);
   c.scaling_t_end = num(sc["t_end"], "scaling.t_end", Bound::Positive);
   const Json& fg = j["figures"];

@@ -90,7 +90,8 @@ int scaling_command(ScalingArgs& a) {
   c.params = a.scene.values(a.scene.scene_index());
   c.methods = resolve_methods(a.methods, false);
   c.sizes.clear();
-  for (const std::string& s : split_list(a.sizes)) c.sizes.push_back(static_cast<int>(parse_count("--sizes", s, 1, 100'000)));
+  const ParamSpec& masses = scene_kernel(a.scene.scene_index()).params[0];  // the rope's --masses: its range
+  for (const std::string& s : split_list(a.sizes)) c.sizes.push_back(static_cast<int>(parse_count("--sizes", s, 1, static_cast<long long>(masses.most))));
   c.target_error = parse_number("--error", a.error, Bound::Positive);
   c.t_end = parse_number("--t-end", a.t_end, Bound::Positive);
   c.threads = resolve_thread_count(a.threads);

@@ -68,11 +68,13 @@ struct Rope {
   Eigen::VectorXd eq;      // y_eq: spring i carries the N - i + 1 masses below it
   Eigen::VectorXd lambda;  // lambda_j, j = 1 .. N
   Eigen::VectorXd q0;      // the start's modal displacements (it starts at rest)
+  Eigen::VectorXd m_all = Eigen::VectorXd::Constant(n, m), inv_m_all = Eigen::VectorXd::Constant(n, inv_m);
+  Jacobians<Eigen::Dynamic> jac;  // constant: the rope is linear (made once, below)
   std::shared_ptr<const SineTransform> sine;
 
   explicit Rope(std::span<const double> p)
       : n(static_cast<int>(p[0])), M(p[1]), K(p[2]), L(p[3]), gamma(p[4]), Cs(p[5]), g(p[6]),
-        eq(n), lambda(n), sine(std::make_shared<const SineTransform>(n)) {
+        eq(n), lambda(n), jac{SparseMat(n, n), SparseMat(n, n)}, sine(std::make_shared<const SineTransform>(n)) {
     double y = 0;
     for (int i = 0; i < n; ++i) {
       y -= l + (n - i) * weight / k;
@@ -81,17 +83,31 @@ struct Rope {
       lambda[i] = 4 * s * s;
     }
     q0 = sine->analysis(initial().x - eq);
+    // dF/dx = -k T, dF/dv = -c I - d T (T above; the pattern tridiagonal also where d = 0)
+    std::vector<Eigen::Triplet<double>> tx, tv;
+    tx.reserve(3 * n), tv.reserve(3 * n);
+    for (int i = 0; i < n; ++i) {
+      const double diag = i + 1 < n ? 2 : 1;
+      tx.emplace_back(i, i, -k * diag), tv.emplace_back(i, i, -c - d * diag);
+      if (i + 1 < n) {
+        tx.emplace_back(i, i + 1, k), tx.emplace_back(i + 1, i, k);
+        tv.emplace_back(i, i + 1, d), tv.emplace_back(i + 1, i, d);
+      }
+    }
+    jac.dx.setFromTriplets(tx.begin(), tx.end());
+    jac.dv.setFromTriplets(tv.begin(), tv.end());
   }
 
   std::array<double, 7> values() const { return {double(n), M, K, L, gamma, Cs, g}; }
-  // The highest mode's angular frequency: an explicit method's stable step is c / omega_max.
+  // Mode j's angular frequency (j = 1 .. N; omega(N) the fastest: an explicit method's stable step
+  // is C / omega(N)).
   double omega(int j) const { return std::sqrt(k * lambda[j - 1] / m); }
   // Mode j's oscillator (core/scenes/oscillator.hpp): alpha_j and beta_j^2.
   double alpha(int j) const { return -(c + d * lambda[j - 1]) / (2 * m); }
   double beta2(int j) const { return k * lambda[j - 1] / m - alpha(j) * alpha(j); }
 
-  Eigen::VectorXd mass() const { return Eigen::VectorXd::Constant(n, m); }
-  Eigen::VectorXd inverse_mass() const { return Eigen::VectorXd::Constant(n, inv_m); }
+  const Eigen::VectorXd& mass() const { return m_all; }
+  const Eigen::VectorXd& inverse_mass() const { return inv_m_all; }
 
   Eigen::VectorXd force(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const {
     Eigen::VectorXd f(n);
@@ -104,23 +120,7 @@ struct Rope {
     return f;
   }
 
-  // dF/dx = -k T, dF/dv = -c I - d T (T above; the pattern tridiagonal also where d = 0).
-  Jacobians<Eigen::Dynamic> jacobians(const Eigen::VectorXd&, const Eigen::VectorXd&) const {
-    std::vector<Eigen::Triplet<double>> tx, tv;
-    tx.reserve(3 * n), tv.reserve(3 * n);
-    for (int i = 0; i < n; ++i) {
-      const double diag = i + 1 < n ? 2 : 1;
-      tx.emplace_back(i, i, -k * diag), tv.emplace_back(i, i, -c - d * diag);
-      if (i + 1 < n) {
-        tx.emplace_back(i, i + 1, k), tx.emplace_back(i + 1, i, k);
-        tv.emplace_back(i, i + 1, d), tv.emplace_back(i + 1, i, d);
-      }
-    }
-    Jacobians<Eigen::Dynamic> j{SparseMat(n, n), SparseMat(n, n)};
-    j.dx.setFromTriplets(tx.begin(), tx.end());
-    j.dv.setFromTriplets(tv.begin(), tv.end());
-    return j;
-  }
+  const Jacobians<Eigen::Dynamic>& jacobians(const Eigen::VectorXd&, const Eigen::VectorXd&) const { return jac; }
 
   bool velocity_dependent() const { return c != 0 || d != 0; }
 

@@ -7,9 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "analysis/fit.hpp"
 #include "analysis/kernel.hpp"
-#include "core/scenes/rope.hpp"
 #include "reports/report_text.hpp"
 #include "reports/section.hpp"
 #include "reports/study_output.hpp"
@@ -40,12 +38,11 @@ class Growth : public Section {
 
   void write_data(const ReportData&, const DataDir& dat) const override {
     dat.write("scaling.json", scaling_json(r_).dump(1) + "\n");
-    const std::size_t ns = r_.config.sizes.size();
-    for (std::size_t s = 0; s * ns < r_.rows.size(); ++s) {
+    for (std::size_t s = 0; s < r_.solvers(); ++s) {
+      const std::span<const ScalingRow> rows = r_.rows_of(s);
+      const ScalingRow& first = rows.front();
       std::string t = "# masses run_cost step_cost dt_stable dt_stable_one_over_n\n";
-      const ScalingRow& first = r_.rows[s * ns];
-      for (std::size_t k = 0; k < ns; ++k) {
-        const ScalingRow& w = r_.rows[s * ns + k];
+      for (const ScalingRow& w : rows) {
         const double cost = scaling_cost(r_.config, w);
         // 1/N prediction from the smallest size: dt*(N) = dt*(N0) N0 / N
         t += fmt::format("{} {} {} {} {}\n", w.n, w.reached() ? num(cost) : "NaN", w.reached() && w.steps > 0 ? num(cost / w.steps) : "NaN",
@@ -57,21 +54,22 @@ class Growth : public Section {
 
   // The explicit methods with a finite stable step at every size: the last panel's.
   std::vector<FigureSpec> figures(const ReportData&) const override {
-    const std::size_t ns = r_.config.sizes.size();
     std::string limited;
-    for (std::size_t s = 0; s * ns < r_.rows.size(); ++s) {
-      bool finite = !r_.rows[s * ns].implicit && !r_.rows[s * ns].adaptive;
-      for (std::size_t k = 0; k < ns; ++k) finite = finite && std::isfinite(r_.rows[s * ns + k].dt_stable) && r_.rows[s * ns + k].dt_stable > 0;
-      if (!finite) continue;
+    for (std::size_t s = 0; s < r_.solvers(); ++s) {
+      const std::span<const ScalingRow> rows = r_.rows_of(s);
+      const bool limited_everywhere = !rows.front().implicit && !rows.front().adaptive &&
+                                      std::all_of(rows.begin(), rows.end(), [](const ScalingRow& w) {
+                                        return std::isfinite(w.dt_stable) && w.dt_stable > 0;
+                                      });
+      if (!limited_everywhere) continue;
       if (!limited.empty()) limited += ' ';
-      limited += r_.rows[s * ns].solver;
+      limited += rows.front().solver;
     }
     return {{"fig11_scaling", fmt::format("costname='{}'; limited='{}'", r_.config.timing ? "run time (s)" : "evaluations x N", limited)}};
   }
 
   std::string markdown(Page& page) const override {
     const ScalingConfig& c = r_.config;
-    const std::size_t ns = c.sizes.size();
     std::string md = "## As the system grows\n\n";
     md += fmt::format("The hanging rope of N masses, a refinement of one rope (total mass, stiffness, rest length and damping "
                       "kept: {}), at N = {}: each method's step (each adaptive solver's tolerance) searched until the position "
@@ -80,17 +78,9 @@ class Growth : public Section {
                       rope_text(c.params), join(std::vector<double>(c.sizes.begin(), c.sizes.end())), c.t_end,
                       c.target_error, c.timing ? "run time" : "force and Jacobian evaluations times N");
     md += "| solver | cost ~ N^p^: one step | whole run | dt* ~ N^q^ |\n|---|---:|---:|---:|\n";
-    for (std::size_t s = 0; s < r_.fits.size(); ++s) {
-      const ScalingFit& f = r_.fits[s];
-      std::vector<double> n, dt;
-      for (std::size_t k = 0; k < ns; ++k) {
-        const ScalingRow& w = r_.rows[s * ns + k];
-        if (std::isfinite(w.dt_stable) && w.dt_stable > 0) n.push_back(std::log(w.n)), dt.push_back(std::log(w.dt_stable));
-      }
-      const auto p = [](double x) { return std::isnan(x) ? std::string("-") : fmt::format("{:.2f}", x); };
-      md += fmt::format("| `{}` | {} | {} | {} |\n", f.solver, p(f.step_exponent), p(f.run_exponent),
-                        n.size() >= 2 ? fmt::format("{:.2f}", fit_line(n, dt).slope) : std::string("-"));
-    }
+    const auto p = [](double x) { return std::isnan(x) ? std::string("-") : fmt::format("{:.2f}", x); };
+    for (const ScalingFit& f : r_.fits)
+      md += fmt::format("| `{}` | {} | {} | {} |\n", f.solver, p(f.step_exponent), p(f.run_exponent), p(f.stable_exponent));
     md += "\n";
     md += r_.crossover == 0
               ? fmt::format("- At none of these sizes is an implicit method's whole run cheaper than every explicit one's.\n")
