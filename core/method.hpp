@@ -78,8 +78,8 @@ struct NewtonSettings {
 };
 
 // Newton's update u -= J^{-1} r with J = M - c dF/dv - c cx dF/dx: dense LU on a fixed size
-// (a division for D = 1); a sparse LDL^T on a run-time size (core/sparse.hpp), its ordering
-// computed once per run (the thread's solver keeps it). False if J is singular.
+// (a division for D = 1); a sparse LDL^T or LU on a run-time size (core/sparse.hpp, stage_solve
+// below), its ordering computed once per run (the thread's solver keeps it). False if J is singular.
 template <int D> struct StageSolve {
   bool update(const Jacobians<D>& jac, const Vec<D>& m, double c, double cx, const Vec<D>& r, Vec<D>& u) {
     Mat<D> J = -c * jac.dv - (c * cx) * jac.dx;
@@ -93,7 +93,7 @@ template <int D> struct StageSolve {
   }
 };
 template <> struct StageSolve<Eigen::Dynamic> {
-  SparseSolver& solver = local_solver(SparseSolver::Kind::Symmetric);
+  SparseSolver& solver;
   SparseMat J;
   Eigen::VectorXd du;
   bool update(const Jacobians<Eigen::Dynamic>& jac, const Eigen::VectorXd& m, double c, double cx,
@@ -108,6 +108,17 @@ template <> struct StageSolve<Eigen::Dynamic> {
   }
 };
 
+// A scene of run-time size whose dF/dx and dF/dv are symmetric (the rope) says so with
+// `static constexpr bool symmetric_jacobians = true`: one stage's matrix is then factorised by
+// LDL^T, otherwise (the soft body's dashpots) by LU.
+template <class S> constexpr bool kSymmetricJacobians = requires { requires S::symmetric_jacobians; };
+
+template <Scene S> StageSolve<S::dim> stage_solve() {
+  if constexpr (S::dim == Eigen::Dynamic)
+    return {local_solver(kSymmetricJacobians<S> ? SparseSolver::Kind::Symmetric : SparseSolver::Kind::General), {}, {}};
+  else return {};
+}
+
 template <Scene S>
 StepStatus solve_implicit(const S& s, const Vec<S::dim>& x0, double cx, const Vec<S::dim>& w, double c,
                           Vec<S::dim>& u) {
@@ -115,7 +126,7 @@ StepStatus solve_implicit(const S& s, const Vec<S::dim>& x0, double cx, const Ve
   const Vec<D>& m = s.mass();
   u = w;
   double force_terms = 0;
-  StageSolve<D> linear;
+  StageSolve<D> linear = stage_solve<S>();
   for (int it = 0;; ++it) {
     const Vec<D> x = x0 + cx * u;
     const Vec<D> f = s.force(x, u);

@@ -2,13 +2,15 @@
 // Jacobians are sparse (core/state.hpp). Compiled once, in core/sparse.cpp (the kernel library),
 // so that a method's file does not parse and instantiate Eigen's sparse factorisations.
 //
-//   Symmetric: A = M - c dF/dv - c cx dF/dx of one implicit stage (solve_implicit). dF/dx of
-//              forces along springs is symmetric (the Hessian of the potential), dF/dv of
-//              dashpots and mass damping too, M diagonal: sparse LDL^T (Eigen's SimplicialLDLT,
-//              AMD ordering). Positive definite for c > 0; LDL^T needs no definiteness.
+//   Symmetric: A = M - c dF/dv - c cx dF/dx of one implicit stage (solve_implicit) where the
+//              scene's Jacobians are symmetric (the rope: dF/dx of springs is the Hessian of the
+//              potential, dF/dv of mass damping and of dashpots at fixed directions too, M
+//              diagonal): sparse LDL^T (Eigen's SimplicialLDLT, AMD ordering). Positive definite
+//              for c > 0; LDL^T needs no definiteness.
 //   General:   the coupled stages of an implicit Runge-Kutta method (Gauss-Legendre, Radau IIA),
-//              whose block matrix is not symmetric (Butcher's A is not): sparse LU (Eigen's
-//              SparseLU, COLAMD ordering).
+//              whose block matrix is not symmetric (Butcher's A is not), and one stage where
+//              dF/dx is not (the soft body's dashpots turning with their springs): sparse LU
+//              (Eigen's SparseLU, COLAMD ordering).
 // A solver keeps the ordering and symbolic factorisation of the last pattern it saw and redoes
 // them only when the pattern changes (compared entry by entry, O(nnz)): a run's matrices keep
 // theirs, so a thread's solver (local_solver) analyses once per run, not once per step.

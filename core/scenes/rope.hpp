@@ -50,6 +50,7 @@ class SineTransform {
 struct Rope {
   static constexpr int dim = Eigen::Dynamic;
   static constexpr std::string_view name = "rope";
+  static constexpr bool symmetric_jacobians = true;  // dF/dx = -k T, dF/dv = -c I - d T (below)
   // Defaults: the sheet's spring cut into 8 (M, K, L, gamma, g as the spring's).
   static constexpr std::array<ParamSpec, 7> params{{
       {"masses", 8, Bound::Positive, "number of masses N (a whole number, 1 to 100000)", true, 1e5},
