@@ -83,6 +83,8 @@ ConvergenceRecord record_of(std::size_t method, double dt, double t_end, const A
   return rec;
 }
 
+}  // namespace
+
 ReferenceSolution reference_solution(const SceneKernel& s, const std::vector<double>& params, double t_end) {
   ReferenceSolution ref;
   AdaptiveSpec spec;
@@ -102,8 +104,6 @@ ReferenceSolution reference_solution(const SceneKernel& s, const std::vector<dou
   ref.v.assign(fine.run.final.v.begin(), fine.run.final.v.end());
   return ref;
 }
-
-}  // namespace
 
 double error_of(const ConvergenceRecord& r, ErrorKind k) {
   switch (k) {

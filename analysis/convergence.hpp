@@ -49,6 +49,12 @@ struct ReferenceSolution {
   std::vector<double> x, v;                 // the reference state at t_end
 };
 
+struct SceneKernel;  // analysis/kernel.hpp
+
+// The reference solution at t_end of a scene with those parameters: dopri5 at rtol = atol = 1e-13,
+// its error estimated against a run at 1e-12.
+ReferenceSolution reference_solution(const SceneKernel& s, const std::vector<double>& params, double t_end);
+
 inline constexpr double kTimingSeconds = 0.02;
 
 struct ConvergenceRecord {

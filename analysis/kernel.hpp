@@ -59,8 +59,8 @@ struct Observed {
 // predictions and the local error difference or apply them), others have them null.
 struct PairKernel {
   AnyResult (*run)(Params, const RunSpec&);
-  AnyResult (*run_counted)(Params, const RunSpec&, Counts&);    // scenes with an exact solution
-  AnyResult (*run_observed)(Params, const RunSpec&, Observed&);  // scenes with contact, and 1-D ones
+  AnyResult (*run_counted)(Params, const RunSpec&, Counts&);    // scenes with an exact solution or of run-time size
+  AnyResult (*run_observed)(Params, const RunSpec&, Observed&);  // fixed-size scenes with contact, and 1-D ones
   // Wall-clock times of the same run repeated (analysis/timing.hpp: at least `repeats`, `seconds`
   // in all), the scene made once before: the integration alone, what a user pays (the chain's
   // constructor, an eigen-decomposition, costs as much as a short run).

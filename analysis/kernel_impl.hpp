@@ -159,14 +159,15 @@ template <class M, Scene S> struct PairCode {
   }
 };
 
-// The counting run only where the work-precision study can use it (a scene with an exact
-// solution: its errors need one), the observed run only where the studies observe (ground
-// contact; a 1-D scene's amplitude): each is one more instantiation of the run loop.
+// The counting run only where a study counts (the work-precision study on scenes with an exact
+// solution, the scaling study on scenes of run-time size), the observed run only where the
+// studies observe (the fixed-size scenes with ground contact; a 1-D scene's amplitude): each is
+// one more instantiation of the run loop.
 template <class M, Scene S> constexpr PairKernel make_pair() {
   using C = PairCode<M, S>;
   PairKernel k{&C::run, nullptr, nullptr, &C::timings, &C::time_steps, nullptr, nullptr, nullptr, nullptr};
-  if constexpr (HasExact<S>) k.run_counted = &C::run_counted;
-  if constexpr (HasContact<S> || S::dim == 1) k.run_observed = &C::run_observed;
+  if constexpr (HasExact<S> || S::dim == Eigen::Dynamic) k.run_counted = &C::run_counted;
+  if constexpr ((HasContact<S> && S::dim != Eigen::Dynamic) || S::dim == 1) k.run_observed = &C::run_observed;
   if constexpr (S::dim == 1) {
     k.step_flat = &C::step_flat;
     k.at_rest_flat = &C::at_rest_flat;

@@ -19,16 +19,19 @@ namespace steplab {
 // spring, mass 1/N and stiffness K N lambda_j, the differenced step matrix loses the digits the
 // threshold needs once omega passes ~100: forces of 1e6 against perturbations of 1e-1.)
 // Modes of equal zeta (all of them undamped) share one computation.
-double rope_predicted_threshold(std::size_t method, const Rope& r, int* binding_mode) {
+double unit_oscillator_threshold(std::size_t method, double two_zeta) {
   const std::vector<double> unit{1.0, 1.0, 0.0, 5.0, 9.81};  // Spring::params: mass, stiffness, damping, rest-length, gravity
-  std::map<double, double> unit_dt;                           // 2 zeta -> the unit spring's dt*
+  return predicted_stable_set(method, linear_spring(unit, two_zeta), false).dt_star;
+}
+
+double rope_predicted_threshold(std::size_t method, const Rope& r, int* binding_mode) {
+  std::map<double, double> unit_dt;  // 2 zeta -> the unit spring's dt*
   double best = std::numeric_limits<double>::infinity();
   int binding = 0;
   for (int j = r.n; j >= 1; --j) {  // the fastest first: ties go to it
     const double w = r.omega(j), two_zeta = (r.c + r.d * r.lambda[j - 1]) / (r.m * w);
     auto it = unit_dt.find(two_zeta);
-    if (it == unit_dt.end())
-      it = unit_dt.emplace(two_zeta, predicted_stable_set(method, linear_spring(unit, two_zeta), false).dt_star).first;
+    if (it == unit_dt.end()) it = unit_dt.emplace(two_zeta, unit_oscillator_threshold(method, two_zeta)).first;
     const double dt = it->second / w;
     if (dt < best) best = dt, binding = j;
   }

@@ -39,6 +39,9 @@ struct RopeThresholdRow {
   double dt_measured;
 };
 
+// The predicted dt* of the unit oscillator (mass 1, stiffness 1: omega 1) with damping 2 zeta:
+// a linear mode of angular frequency omega and damping ratio zeta has dt* = this / omega.
+double unit_oscillator_threshold(std::size_t method, double two_zeta);
 double rope_predicted_threshold(std::size_t method, const Rope& r, int* binding_mode = nullptr);
 double rope_measured_threshold(std::size_t method, const std::vector<double>& params, long long steps);
 std::vector<RopeThresholdRow> rope_threshold_study(const RopeStabilityConfig& c);

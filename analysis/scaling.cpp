@@ -4,11 +4,13 @@
 #include <cmath>
 #include <limits>
 
+#include "analysis/convergence.hpp"
 #include "analysis/fit.hpp"
 #include "analysis/kernel.hpp"
-#include "analysis/rope_peers.hpp"
 #include "analysis/rope_stability.hpp"
 #include "analysis/shard.hpp"
+#include "analysis/sized_peers.hpp"
+#include "analysis/softbody_stability.hpp"
 #include "analysis/timing.hpp"
 
 namespace steplab {
@@ -20,7 +22,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // A row crosses a shard as bytes (analysis/shard.hpp).
 template <class F> void encode_fields(ScalingRow& r, F&& f) {
-  f(r.solver), f(r.implicit), f(r.adaptive), f(r.n), f(r.dt_stable), f(r.dt), f(r.error);
+  f(r.solver), f(r.implicit), f(r.adaptive), f(r.n), f(r.masses), f(r.dt_stable), f(r.dt), f(r.error);
   f(r.steps), f(r.forces), f(r.jacobians), f(r.seconds), f(r.runs);
 }
 
@@ -30,10 +32,41 @@ namespace {
 constexpr std::size_t kRepeats = 1;
 constexpr double kSeconds = 0.05;
 
+bool is_rope(const ScalingConfig& c) { return c.scene == Rope::name; }
+
 std::vector<double> sized(const ScalingConfig& c, int n) {
   std::vector<double> p = c.params;
-  p[0] = n;  // Rope::params: masses first
+  p[0] = n;  // Rope::params and SoftBody::params: the size first
   return p;
+}
+
+// Where each size's runs are measured against: the positions at t_end, exact (the rope) or the
+// reference solution (the soft body: dopri5 at rtol 1e-13, analysis/convergence.hpp).
+Eigen::VectorXd target_positions(const ScalingConfig& c, int n) {
+  const SceneKernel& s = scene_kernel(scene_index(c.scene));
+  const std::vector<double> p = sized(c, n);
+  if (s.has_exact) return s.exact(p, c.t_end).x;
+  const std::vector<double> x = reference_solution(s, p, c.t_end).x;
+  return Eigen::Map<const Eigen::VectorXd>(x.data(), std::ssize(x));
+}
+
+// The solvers' largest stable step: from the rope's modes, from the soft body's fastest mode.
+double predicted_threshold(const ScalingConfig& c, std::size_t m, int n) {
+  const std::vector<double> p = sized(c, n);
+  return is_rope(c) ? rope_predicted_threshold(m, Rope(p)) : softbody_predicted_threshold(m, SoftBody(p));
+}
+
+// The peers, by index: steplab's dopri5, CVODE (banded on the rope, KLU on the soft body), odeint.
+std::string peer_name(const ScalingConfig& c, int which) {
+  return which == 0 ? "dopri5" : which == 2 ? "odeint_dopri5" : is_rope(c) ? "cvode_band" : "cvode_klu";
+}
+State<Eigen::Dynamic> run_peer(const ScalingConfig& c, int which, const std::vector<double>& p, double tol, PeerCounts& counts) {
+  if (is_rope(c)) {
+    const Rope r(p);
+    return which == 1 ? cvode_band_rope(r, tol, c.t_end, counts) : odeint_dopri5_rope(r, tol, c.t_end, counts);
+  }
+  const SoftBody s(p);
+  return which == 1 ? cvode_klu_softbody(s, tol, c.t_end, counts) : odeint_dopri5_softbody(s, tol, c.t_end, counts);
 }
 
 // The largest |x_i - x_i(t_end)| over the masses; inf for a run that did not finish.
@@ -79,13 +112,12 @@ template <class Run> void search(ScalingRow& row, double start, double most, dou
   ++row.runs;
 }
 
-ScalingRow method_row(const ScalingConfig& c, std::size_t m, int n) {
+ScalingRow method_row(const ScalingConfig& c, const Eigen::VectorXd& exact, std::size_t m, int n) {
   const std::vector<double> p = sized(c, n);
-  const std::size_t scene = scene_index(Rope::name);
-  const Eigen::VectorXd exact = scene_kernel(scene).exact(p, c.t_end).x;
+  const std::size_t scene = scene_index(c.scene);
   const MethodInfo& info = method_info(m);
-  ScalingRow row{std::string(info.name), info.implicit, false, n};
-  row.dt_stable = rope_predicted_threshold(m, Rope(p));
+  ScalingRow row{std::string(info.name), info.implicit, false, n, scaling_masses(c, n)};
+  row.dt_stable = predicted_threshold(c, m, n);
   const double most = std::min(0.95 * row.dt_stable, c.t_end / 2);
   if (!(most * c.max_steps >= c.t_end)) {  // no stable step covers t_end in max_steps
     row.dt = kNaN;
@@ -116,14 +148,11 @@ AdaptiveSpec adaptive_spec(double tol, double t_end) {
   return spec;
 }
 
-// dopri5 (steplab's), cvode_band, odeint_dopri5 at a tolerance.
-ScalingRow peer_row(const ScalingConfig& c, int which, int n) {
-  static const char* const names[] = {"dopri5", "cvode_band", "odeint_dopri5"};
+// dopri5 (steplab's), CVODE, odeint_dopri5 at a tolerance.
+ScalingRow peer_row(const ScalingConfig& c, const Eigen::VectorXd& exact, int which, int n) {
   const std::vector<double> p = sized(c, n);
-  const std::size_t scene = scene_index(Rope::name);
-  const Rope r(p);
-  const Eigen::VectorXd exact = scene_kernel(scene).exact(p, c.t_end).x;
-  ScalingRow row{names[which], which == 1, true, n, kNaN};
+  const std::size_t scene = scene_index(c.scene);
+  ScalingRow row{peer_name(c, which), which == 1, true, n, scaling_masses(c, n), kNaN};
   search(row, 1e-4, 1e-2, 1, c.target_error, [&](double tol) {
     if (which == 0) {
       const AnyAdaptiveResult res = scene_kernel(scene).dopri5(p, adaptive_spec(tol, c.t_end));
@@ -131,7 +160,7 @@ ScalingRow peer_row(const ScalingConfig& c, int which, int n) {
                    res.stats.force_evaluations, 0};
     }
     PeerCounts counts;
-    const State<Eigen::Dynamic> end = which == 1 ? cvode_band_rope(r, tol, c.t_end, counts) : odeint_dopri5_rope(r, tol, c.t_end, counts);
+    const State<Eigen::Dynamic> end = run_peer(c, which, p, tol, counts);
     return Trial{max_error(end.x, exact, !counts.failed), counts.steps, counts.evaluations, counts.jacobian_evaluations};
   });
   return row;
@@ -139,7 +168,7 @@ ScalingRow peer_row(const ScalingConfig& c, int which, int n) {
 
 double run_seconds(const ScalingConfig& c, const ScalingRow& row) {
   const std::vector<double> p = sized(c, row.n);
-  const std::size_t scene = scene_index(Rope::name);
+  const std::size_t scene = scene_index(c.scene);
   std::vector<double> times;
   if (!row.adaptive) {
     RunSpec spec;
@@ -150,10 +179,9 @@ double run_seconds(const ScalingConfig& c, const ScalingRow& row) {
   } else if (row.solver == "dopri5") {
     times = scene_kernel(scene).dopri5_timings(p, adaptive_spec(row.dt, c.t_end), kRepeats, kSeconds);
   } else {
-    const Rope r(p);
     PeerCounts counts;
-    const auto peer = row.solver == "cvode_band" ? cvode_band_rope : odeint_dopri5_rope;
-    times = repeated_timings([&] { peer(r, row.dt, c.t_end, counts); }, kRepeats, kSeconds);
+    const int which = row.solver == "odeint_dopri5" ? 2 : 1;
+    times = repeated_timings([&] { run_peer(c, which, p, row.dt, counts); }, kRepeats, kSeconds);
   }
   return *std::min_element(times.begin(), times.end());
 }
@@ -163,7 +191,7 @@ double run_seconds(const ScalingConfig& c, const ScalingRow& row) {
 template <class Y> double exponent(std::span<const ScalingRow> rows, Y&& y) {
   std::vector<double> n, v;
   for (const ScalingRow& r : rows)
-    if (const double x = y(r); std::isfinite(x) && x > 0) n.push_back(std::log(r.n)), v.push_back(std::log(x));
+    if (const double x = y(r); std::isfinite(x) && x > 0) n.push_back(std::log(r.masses)), v.push_back(std::log(x));
   return n.size() < 2 ? kNaN : fit_line(n, v).slope;
 }
 
@@ -175,16 +203,20 @@ ScalingFit fit_of(const ScalingConfig& c, std::span<const ScalingRow> rows) {
 
 }  // namespace
 
-double scaling_cost(const ScalingConfig& c, const ScalingRow& r) { return c.timing ? r.seconds : double(r.forces + r.jacobians) * r.n; }
+double scaling_cost(const ScalingConfig& c, const ScalingRow& r) { return c.timing ? r.seconds : double(r.forces + r.jacobians) * r.masses; }
+
+int scaling_masses(const ScalingConfig& c, int n) { return c.scene == Rope::name ? n : n * n; }
 
 ScalingResult scaling_study(const ScalingConfig& c) {
   ScalingResult out;
   out.config = c;
   const std::size_t nm = c.methods.size(), ns = c.sizes.size(), np = c.peers ? 3 : 0;
+  std::vector<Eigen::VectorXd> targets;
+  for (int n : c.sizes) targets.push_back(target_positions(c, n));
   out.rows = study_map<ScalingRow>((nm + np) * ns, c.threads, [&](std::size_t task) {
-    const std::size_t solver = task / ns;
-    const int n = c.sizes[task % ns];
-    return solver < nm ? method_row(c, c.methods[solver], n) : peer_row(c, static_cast<int>(solver - nm), n);
+    const std::size_t solver = task / ns, k = task % ns;
+    const int n = c.sizes[k];
+    return solver < nm ? method_row(c, targets[k], c.methods[solver], n) : peer_row(c, targets[k], static_cast<int>(solver - nm), n);
   });
   if (c.timing)
     for (ScalingRow& r : out.rows)

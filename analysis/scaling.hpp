@@ -1,18 +1,21 @@
-// How the choice of integrator changes as the system grows: the rope of N masses (core/scenes/
-// rope.hpp) refined, N over `sizes`, every method and the peers at each size.
+// How the choice of integrator changes as the system grows: a scene of run-time size refined,
+// its size over `sizes` (the rope of N masses, core/scenes/rope.hpp; the soft body of n x n
+// masses, core/scenes/softbody.hpp: N = n^2), every method and the peers at each size.
 //
-// For each solver and N:
-//   the largest stable step dt*, predicted from the modes (analysis/rope_stability.hpp; measured
-//     against runs there);
+// For each solver and size:
+//   the largest stable step dt*, predicted from the rope's modes (analysis/rope_stability.hpp;
+//     measured against runs there) or the soft body's fastest mode (analysis/softbody_stability.hpp);
 //   the step (dopri5 and the peers: the tolerance rtol = atol) at which the run reaches the
-//     target position error, the largest over the masses at t_end against the exact solution (so
-//     that the same error per mass is asked at every N): a secant search in log-log on
+//     target position error, the largest over the coordinates at t_end against the exact solution
+//     (the rope) or the reference solution (the soft body: dopri5 at rtol 1e-13), so that the same
+//     error per mass is asked at every N: a secant search in log-log on
 //     error ~ C dt^p (p the method's order; for a tolerance p = 1), the largest step tried whose
 //     error is at or below the target, from at most kSearchRuns runs;
 //   that run's cost: its wall-clock time (the minimum of repeated runs, at least one and 0.05 s in
 //     all, one at a time after the searches), its steps, force and Jacobian evaluations; the cost
 //     of one step is their ratio.
-// Then per solver the exponents p of cost ~ N^p (least squares in log-log over the sizes) for one
+// Then per solver the exponents p of cost ~ N^p, N the number of masses (least squares in log-log
+// over the sizes) for one
 // step and for the whole run, and the size from which an implicit method's whole run is cheaper
 // than every explicit one's.
 #pragma once
@@ -29,7 +32,8 @@ namespace steplab {
 inline constexpr int kSearchRuns = 10;
 
 struct ScalingConfig {
-  std::vector<double> params;  // Rope parameters, table order (masses replaced by each size)
+  std::string scene = "rope";  // rope or softbody
+  std::vector<double> params;  // the scene's parameters, table order (the first, its size, replaced by each size)
   std::vector<int> sizes{16, 64, 256, 1024};
   std::vector<std::size_t> methods;  // numerical methods of the table
   bool peers = true;                 // steplab's dopri5, CVODE (banded), Boost.Odeint's dopri5
@@ -41,13 +45,14 @@ struct ScalingConfig {
 };
 
 struct ScalingRow {
-  std::string solver;    // a method's name, dopri5, cvode_band or odeint_dopri5
+  std::string solver;    // a method's name, dopri5, cvode_band (rope), cvode_klu (soft body) or odeint_dopri5
   bool implicit = false;
   bool adaptive = false; // dt below is then the tolerance
-  int n = 0;
+  int n = 0;             // the size: the rope's masses, the soft body's grid side
+  int masses = 0;        // N
   double dt_stable = 0;  // predicted dt* (inf: none; NaN for the adaptive solvers)
   double dt = 0;         // the step (tolerance) that reaches the target; NaN if none did
-  double error = 0;      // its error (largest over the masses at t_end)
+  double error = 0;      // its error (largest over the coordinates at t_end)
   long long steps = 0, forces = 0, jacobians = 0;
   double seconds = 0;    // the whole run (0 without timing)
   int runs = 0;          // runs the search took
@@ -81,5 +86,7 @@ ScalingResult scaling_study(const ScalingConfig& c);
 // What a row's run cost: its seconds, or without timing its force and Jacobian evaluations times
 // N (each touches every mass; the linear solves not counted).
 double scaling_cost(const ScalingConfig& c, const ScalingRow& r);
+// The number of masses at size n: n on the rope, n^2 on the soft body.
+int scaling_masses(const ScalingConfig& c, int n);
 
 }  // namespace steplab

@@ -95,13 +95,14 @@ struct CollisionArgs {
 
 int collision_command(CollisionArgs& args);
 
-// `study scaling` (reports/scaling_command.cpp): cost against the number of masses of the rope.
+// `study scaling` (reports/scaling_command.cpp): cost against the number of masses of the rope or the soft body.
 struct ScalingArgs {
-  SceneArgs scene;  // the rope's parameters (--masses is replaced by each size); add_scaling_command makes rope the default
+  SceneArgs scene;  // the scene's parameters (--masses, --grid replaced by each size); add_scaling_command makes rope the default
   std::string methods;
-  std::string sizes = "16,64,256,1024";
+  std::string sizes;  // empty: the scene's default sizes (scaling_command.cpp)
   std::string error = "1e-4";
   std::string t_end = "2";
+  std::string max_steps;  // empty: the scene's default (scaling_command.cpp)
   std::string threads = "0";
   bool no_timing = false;
   bool no_peers = false;

@@ -96,7 +96,7 @@ Json report_config_json(const ReportConfig& c) {
                     {"map_dt_min", c.map_dt_min},                 {"map_dt_max", c.map_dt_max},
                     {"large_dt", c.large_dt},                     {"small_dt", c.small_dt}};
   j["collision"] = {{"dts", c.collision_dts}, {"t_end", c.collision_t_end}, {"triangle_dt", c.triangle_dt}};
-  j["scaling"] = {{"sizes", c.scaling_sizes}, {"error", c.scaling_error}, {"t_end", c.scaling_t_end}};
+  j["scaling"] = {{"sizes", c.scaling_sizes}, {"grids", c.scaling_grids}, {"error", c.scaling_error}, {"t_end", c.scaling_t_end}};
   j["figures"] = {{"cannonball_dt", c.cannonball_dt},
                   {"cannonball_t_end", c.cannonball_t_end},
                   {"spring_dts", c.spring_figure_dts},
@@ -149,6 +149,9 @@ ReportConfig report_config_from_json(const Json& user) {
   c.scaling_sizes.clear();
   const ParamSpec& masses = scene_kernel(scene_index("rope")).params[0];  // the rope's --masses: its range
   for (const Json& n : sc["sizes"]) c.scaling_sizes.push_back(count(n, "scaling.sizes", 1, static_cast<int>(masses.most)));
+  c.scaling_grids.clear();
+  const ParamSpec& grid = scene_kernel(scene_index("softbody")).params[0];  // the soft body's --grid: its range
+  for (const Json& n : sc["grids"]) c.scaling_grids.push_back(count(n, "scaling.grids", 1, static_cast<int>(grid.most)));
   c.scaling_error = num(sc["error"], "scaling.error", Bound::Positive);
   c.scaling_t_end = num(sc["t_end"], "scaling.t_end", Bound::Positive);
   const Json& fg = j["figures"];

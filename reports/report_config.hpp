@@ -33,6 +33,7 @@ struct ReportConfig {
   double collision_t_end = 10, triangle_dt = 0.001;
   // as the system grows: the rope (its default parameters) at these numbers of masses
   std::vector<int> scaling_sizes{8, 32, 128};
+  std::vector<int> scaling_grids{3, 6};  // and the soft body (its defaults) at these grid sides n
   double scaling_error = 1e-4, scaling_t_end = 2;
   // figures
   double cannonball_dt = 0.25, cannonball_t_end = 17.5;

@@ -26,6 +26,9 @@ class Reproduce : public Section {
     md += wrapped(fmt::format("build/steplab study scaling --sizes {} --error {} --t-end {}{}",
                               join(std::vector<double>(c.scaling_sizes.begin(), c.scaling_sizes.end())), c.scaling_error,
                               c.scaling_t_end, c.timing ? "" : " --no-timing"));
+    md += wrapped(fmt::format("build/steplab study scaling --scene softbody --sizes {} --error {} --t-end {}{}",
+                              join(std::vector<double>(c.scaling_grids.begin(), c.scaling_grids.end())), c.scaling_error,
+                              c.scaling_t_end, c.timing ? "" : " --no-timing"));
     md += "```\n\n";
     md += "(with the scene parameters above as `--mass`, `--stiffness`, ... where they differ from the defaults). The data of "
           "every study is in `data/`.\n\n";

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "analysis/kernel.hpp"
-#include "analysis/rope_peers.hpp"
+#include "analysis/sized_peers.hpp"
 #include "analysis/scaling.hpp"
 #include "core/scenes/rope.hpp"
 

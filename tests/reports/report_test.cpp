@@ -33,6 +33,7 @@ ReportConfig small_config() {
   c.energy_t_end = 10;
   c.cannonball_t_end = 5;
   c.scaling_sizes = {4, 8};
+  c.scaling_grids = {2, 3};
   return c;
 }
 
@@ -281,6 +282,27 @@ std::string expect_growth_follows_data(const ReportConfig& c) {
     EXPECT_NE(md.find(fmt::format("- From N = {} on (of these sizes), `{}`", r.crossover, r.crossover_method)), std::string::npos);
   }
   EXPECT_NE(md.find(fmt::format("at N = {}", c.scaling_sizes.front())), std::string::npos);
+  // the soft body's paragraph: its sentences from its own study
+  s.scene = "softbody";
+  s.params = default_param_values(*find_scene("softbody"));
+  s.sizes = c.scaling_grids;
+  s.max_steps = 200'000;
+  const ScalingResult soft = scaling_study(s);
+  const std::string tail = md.substr(md.find("The soft body"));
+  for (const ScalingFit& f : soft.fits) {
+    const std::string row = line_starting(tail, "| `" + f.solver + "` |");
+    EXPECT_FALSE(row.empty()) << f.solver;
+    if (!std::isnan(f.run_exponent)) {
+      EXPECT_NE(row.find(fmt::format("| {:.2f} |", f.run_exponent)), std::string::npos) << row;
+    }
+  }
+  const int largest = c.scaling_grids.back() * c.scaling_grids.back();
+  EXPECT_NE(tail.find(soft.crossover == 0 ? std::string("- At none of these sizes")
+                                          : fmt::format("- From N = {} on (of these sizes), `{}`", soft.crossover * soft.crossover,
+                                                        soft.crossover_method)),
+            std::string::npos);
+  EXPECT_NE(tail.find(fmt::format("- At N = {}, steplab's cheapest", largest)), std::string::npos) << tail;
+  EXPECT_NE(tail.find("what CVODE with its KLU solver costs"), std::string::npos);
   return md;
 }
 
@@ -288,6 +310,7 @@ TEST(ReportGrowth, FollowsTheDataUnderChangedParameters) {
   ReportConfig c = small_config();
   const std::string a = expect_growth_follows_data(c);
   c.scaling_sizes = {6, 12, 24};
+  c.scaling_grids = {3, 4};
   c.scaling_error = 1e-3;
   const std::string b = expect_growth_follows_data(c);
   EXPECT_NE(line_starting(a, "| `rk4` |"), line_starting(b, "| `rk4` |"));

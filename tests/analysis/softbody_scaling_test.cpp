@@ -1,0 +1,117 @@
+// The scaling study on the soft body (analysis/scaling.hpp, analysis/softbody_stability.hpp,
+// analysis/sized_peers.hpp): its fastest mode against a dense symmetric eigensolver, omega_max
+// growing as n, the predicted dt* against runs, the peers against the reference solution, and
+// rows that meet the target against a run of their own.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <Eigen/Eigenvalues>
+
+#include "analysis/convergence.hpp"
+#include "analysis/kernel.hpp"
+#include "analysis/scaling.hpp"
+#include "analysis/sized_peers.hpp"
+#include "analysis/softbody_stability.hpp"
+#include "core/scenes/softbody.hpp"
+
+namespace steplab {
+namespace {
+
+std::vector<double> grid(int n) {
+  std::vector<double> p = default_param_values(*find_scene("softbody"));
+  p[0] = n;
+  return p;
+}
+
+// Power iteration's omega_max against the largest eigenvalue of the dense K = -dF/dx at the same
+// state (Eigen's SelfAdjointEigenSolver): the Rayleigh quotient to 1e-6 relative (measured 1e-9 at
+// worst); 2 zeta from the eigenvector's damping, 1e-4 relative.
+TEST(SoftBodyScaling, FastestModeMatchesADenseEigensolver) {
+  for (int n : {2, 3, 4, 6}) {
+    const SoftBody s(grid(n));
+    State<Eigen::Dynamic> y = s.initial();
+    for (int i = 1; i < y.x.size(); i += 2) y.x[i] -= 0.5 + 1e-9;
+    const Jacobians<Eigen::Dynamic> j = s.jacobians(y.x, y.v);
+    const Eigen::MatrixXd K = -Eigen::MatrixXd(j.dx), C = -Eigen::MatrixXd(j.dv);
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(K);
+    const Eigen::VectorXd u = eig.eigenvectors().col(K.rows() - 1);
+    const double omega = std::sqrt(eig.eigenvalues()[K.rows() - 1] / s.m);
+    const FastestMode f = softbody_fastest_mode(s);
+    EXPECT_NEAR(f.omega, omega, 1e-6 * omega) << n;
+    EXPECT_NEAR(f.two_zeta, u.dot(C * u) / (s.m * omega), 1e-4 * f.two_zeta) << n;
+  }
+}
+
+// The lattice's modulus is kept under refinement, each mass is M / n^2: omega_max ~ n, so doubling
+// n doubles it (to 10 %: the boundary rows and the ground's k_g / n per mass shift it).
+TEST(SoftBodyScaling, FastestModeGrowsAsTheGridSide) {
+  const double w8 = softbody_fastest_mode(SoftBody(grid(8))).omega, w16 = softbody_fastest_mode(SoftBody(grid(16))).omega;
+  EXPECT_NEAR(w16 / w8, 2.0, 0.2);
+}
+
+// RK4's predicted dt* against runs of the body, dropped onto the ground for 4000 steps: bounded
+// at 0.9 dt*, blown up (E/E0 past 1e4) at 1.1 dt* (measured: bounded at 1.0, blown up at 1.05).
+TEST(SoftBodyScaling, PredictedStableStepSeparatesRuns) {
+  const std::vector<double> p = grid(6);
+  const std::size_t rk4 = *find_method("rk4");
+  const double dt = softbody_predicted_threshold(rk4, SoftBody(p));
+  const auto blows_up = [&](double h) {
+    RunSpec spec;
+    spec.dt = h;
+    spec.steps = 4000;
+    spec.errors = false;
+    spec.stop_above = 1e4;
+    return pair_kernel(rk4, *find_scene("softbody")).run(p, spec).status != RunStatus::Ok;
+  };
+  EXPECT_FALSE(blows_up(0.9 * dt));
+  EXPECT_TRUE(blows_up(1.1 * dt));
+}
+
+// CVODE with KLU and odeint's dopri5 at tolerance 1e-9 against the reference solution (dopri5 at
+// 1e-13): within a thousand times the tolerance (a global error may exceed a local tolerance).
+TEST(SoftBodyScaling, PeersConvergeToTheReferenceSolution) {
+  const std::vector<double> p = grid(4);
+  const std::vector<double> ref = reference_solution(scene_kernel(*find_scene("softbody")), p, 1.0).x;
+  const Eigen::Map<const Eigen::VectorXd> x(ref.data(), std::ssize(ref));
+  const SoftBody s(p);
+  PeerCounts n;
+  EXPECT_LT((cvode_klu_softbody(s, 1e-9, 1.0, n).x - x).cwiseAbs().maxCoeff(), 1e-6);
+  EXPECT_FALSE(n.failed);
+  EXPECT_GT(n.jacobian_evaluations, 0);
+  EXPECT_LT((odeint_dopri5_softbody(s, 1e-9, 1.0, n).x - x).cwiseAbs().maxCoeff(), 1e-6);
+}
+
+// Rows of the study at grids 3 and 5: each reached row's error at or below the target, and a
+// run of our own at its step gives the same error against the reference solution.
+TEST(SoftBodyScaling, RowsReachTheTarget) {
+  ScalingConfig c;
+  c.scene = "softbody";
+  c.params = grid(4);
+  c.sizes = {3, 5};
+  c.max_steps = 200'000;
+  for (const char* m : {"rk4", "implicit_midpoint"}) c.methods.push_back(*find_method(m));
+  c.timing = false;
+  c.threads = 2;
+  const ScalingResult r = scaling_study(c);
+  ASSERT_EQ(r.rows.size(), (c.methods.size() + 3) * c.sizes.size());
+  const std::size_t scene = *find_scene("softbody");
+  for (const ScalingRow& w : r.rows) {
+    ASSERT_TRUE(w.reached()) << w.solver << " n " << w.n;
+    EXPECT_EQ(w.masses, w.n * w.n);
+    EXPECT_LE(w.error, c.target_error) << w.solver << " n " << w.n;
+    if (w.adaptive) continue;
+    const std::vector<double> p = grid(w.n);
+    RunSpec spec;
+    spec.dt = w.dt;
+    spec.steps = w.steps;
+    spec.errors = false;
+    const AnyResult run = pair_kernel(*find_method(w.solver), scene).run(p, spec);
+    const std::vector<double> ref = reference_solution(scene_kernel(scene), p, c.t_end).x;
+    EXPECT_EQ((run.final.x - Eigen::Map<const Eigen::VectorXd>(ref.data(), std::ssize(ref))).cwiseAbs().maxCoeff(), w.error)
+        << w.solver;
+  }
+}
+
+}  // namespace
+}  // namespace steplab
