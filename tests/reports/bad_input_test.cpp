@@ -106,6 +106,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"study stability --threshold-dampings -1", "--threshold-dampings"},
         BadInput{"study stability --map-dt-points 1", "--map-dt-points"}, BadInput{"study collision --dts 0", "--dts"},
         BadInput{"study collision --rest-length 3", "--rest-length"}, BadInput{"study collision --t-end nan", "--t-end"},
+        BadInput{"study scaling --scene spring", "--scene"}, BadInput{"study scaling --scene softbody --sizes 2.5", "--sizes"},
+        BadInput{"study scaling --scene softbody --sizes 301", "--sizes"}, BadInput{"study scaling --max-steps 0", "--max-steps"},
+        BadInput{"run --scene softbody --grid 0", "--grid"}, BadInput{"run --scene softbody --masses 4", "--masses"},
         // check
         BadInput{"check", "--method"}, BadInput{"check --method heun", "heun"},
         BadInput{"check --method rk4 --threads -1", "--threads"},
@@ -120,6 +123,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"report --config {dir}/config.json --out {dir}/r", "steps", R"({"collision": {"triangle_dt": 1e-12}})"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "spring.mass", R"({"spring": {"mass": -1}})"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "JSON object", "[]"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "scaling.grids", R"({"scaling": {"grids": [2.5]}})"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "scaling.grids", R"({"scaling": {"grids": [301]}})"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "sweep_dts", R"({"stability": {"sweep_dts": [0.01, "x"]}})"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "not valid JSON", R"({"spring": {"mass": NaN}})"},  // JSON has no NaN
         BadInput{"report --out {dir}/no/such/report", "no/such"}));

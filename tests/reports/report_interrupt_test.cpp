@@ -52,7 +52,8 @@ std::string small_config(const TempDir& dir) {
   std::ofstream(path) << R"({"convergence": {"points": 8, "dt_min": 0.001},
                              "work_precision": {"points": 4, "stiffnesses": [5, 5e4], "timing": false},
                              "stability": {"map_dt_points": 16, "map_damping_points": 16},
-                             "collision": {"t_end": 2}, "figures": {"energy_t_end": 10}})";
+                             "collision": {"t_end": 2}, "figures": {"energy_t_end": 10},
+                             "scaling": {"sizes": [4, 8], "grids": [2, 3]}})";
   return path;
 }
 
