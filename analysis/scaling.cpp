@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include "analysis/convergence.hpp"
 #include "analysis/fit.hpp"
@@ -40,33 +43,45 @@ std::vector<double> sized(const ScalingConfig& c, int n) {
   return p;
 }
 
+std::string fmt_reference_error(double estimated, double target, int n) {
+  char text[200];
+  std::snprintf(text, sizeof text, "the reference solution at size %d is not accurate enough for error %g: its own error is %g", n,
+                target, estimated);
+  return text;
+}
+
+// f(scene) on the study's scene at size n, made once: a Rope or a SoftBody.
+template <class F> auto with_scene(const ScalingConfig& c, int n, F&& f) {
+  const std::vector<double> p = sized(c, n);
+  return is_rope(c) ? f(Rope(p)) : f(SoftBody(p));
+}
+
 // Where each size's runs are measured against: the positions at t_end, exact (the rope) or the
-// reference solution (the soft body: dopri5 at rtol 1e-13, analysis/convergence.hpp).
+// reference solution (the soft body: dopri5 at rtol 1e-13, analysis/convergence.hpp), whose own
+// estimated error must stay a hundredth of the target's.
 Eigen::VectorXd target_positions(const ScalingConfig& c, int n) {
   const SceneKernel& s = scene_kernel(scene_index(c.scene));
   const std::vector<double> p = sized(c, n);
   if (s.has_exact) return s.exact(p, c.t_end).x;
-  const std::vector<double> x = reference_solution(s, p, c.t_end).x;
-  return Eigen::Map<const Eigen::VectorXd>(x.data(), std::ssize(x));
+  const ReferenceSolution ref = reference_solution(s, p, c.t_end);
+  if (!(ref.estimated_error <= 0.01 * c.target_error))
+    throw std::runtime_error(fmt_reference_error(ref.estimated_error, c.target_error, n));
+  return Eigen::Map<const Eigen::VectorXd>(ref.x.data(), std::ssize(ref.x));
 }
 
 // The solvers' largest stable step: from the rope's modes, from the soft body's fastest mode.
-double predicted_threshold(const ScalingConfig& c, std::size_t m, int n) {
-  const std::vector<double> p = sized(c, n);
-  return is_rope(c) ? rope_predicted_threshold(m, Rope(p)) : softbody_predicted_threshold(m, SoftBody(p));
-}
+double predicted_threshold(std::size_t m, const Rope& r) { return rope_predicted_threshold(m, r); }
+double predicted_threshold(std::size_t m, const SoftBody& s) { return softbody_predicted_threshold(m, s); }
 
 // The peers, by index: steplab's dopri5, CVODE (banded on the rope, KLU on the soft body), odeint.
 std::string peer_name(const ScalingConfig& c, int which) {
   return which == 0 ? "dopri5" : which == 2 ? "odeint_dopri5" : is_rope(c) ? "cvode_band" : "cvode_klu";
 }
-State<Eigen::Dynamic> run_peer(const ScalingConfig& c, int which, const std::vector<double>& p, double tol, PeerCounts& counts) {
-  if (is_rope(c)) {
-    const Rope r(p);
-    return which == 1 ? cvode_band_rope(r, tol, c.t_end, counts) : odeint_dopri5_rope(r, tol, c.t_end, counts);
-  }
-  const SoftBody s(p);
-  return which == 1 ? cvode_klu_softbody(s, tol, c.t_end, counts) : odeint_dopri5_softbody(s, tol, c.t_end, counts);
+State<Eigen::Dynamic> run_peer(int which, const Rope& r, double tol, double t_end, PeerCounts& counts) {
+  return which == 1 ? cvode_band_rope(r, tol, t_end, counts) : odeint_dopri5_rope(r, tol, t_end, counts);
+}
+State<Eigen::Dynamic> run_peer(int which, const SoftBody& s, double tol, double t_end, PeerCounts& counts) {
+  return which == 1 ? cvode_klu_softbody(s, tol, t_end, counts) : odeint_dopri5_softbody(s, tol, t_end, counts);
 }
 
 // The largest |x_i - x_i(t_end)| over the masses; inf for a run that did not finish.
@@ -117,7 +132,7 @@ ScalingRow method_row(const ScalingConfig& c, const Eigen::VectorXd& exact, std:
   const std::size_t scene = scene_index(c.scene);
   const MethodInfo& info = method_info(m);
   ScalingRow row{std::string(info.name), info.implicit, false, n, scaling_masses(c, n)};
-  row.dt_stable = predicted_threshold(c, m, n);
+  row.dt_stable = with_scene(c, n, [&](const auto& s) { return predicted_threshold(m, s); });
   const double most = std::min(0.95 * row.dt_stable, c.t_end / 2);
   if (!(most * c.max_steps >= c.t_end)) {  // no stable step covers t_end in max_steps
     row.dt = kNaN;
@@ -153,15 +168,21 @@ ScalingRow peer_row(const ScalingConfig& c, const Eigen::VectorXd& exact, int wh
   const std::vector<double> p = sized(c, n);
   const std::size_t scene = scene_index(c.scene);
   ScalingRow row{peer_name(c, which), which == 1, true, n, scaling_masses(c, n), kNaN};
-  search(row, 1e-4, 1e-2, 1, c.target_error, [&](double tol) {
-    if (which == 0) {
+  if (which == 0) {
+    search(row, 1e-4, 1e-2, 1, c.target_error, [&](double tol) {
       const AnyAdaptiveResult res = scene_kernel(scene).dopri5(p, adaptive_spec(tol, c.t_end));
       return Trial{max_error(res.run.final.x, exact, res.run.status == RunStatus::Ok), res.stats.accepted,
                    res.stats.force_evaluations, 0};
-    }
-    PeerCounts counts;
-    const State<Eigen::Dynamic> end = run_peer(c, which, p, tol, counts);
-    return Trial{max_error(end.x, exact, !counts.failed), counts.steps, counts.evaluations, counts.jacobian_evaluations};
+    });
+    return row;
+  }
+  with_scene(c, n, [&](const auto& s) {
+    search(row, 1e-4, 1e-2, 1, c.target_error, [&](double tol) {
+      PeerCounts counts;
+      const State<Eigen::Dynamic> end = run_peer(which, s, tol, c.t_end, counts);
+      return Trial{max_error(end.x, exact, !counts.failed), counts.steps, counts.evaluations, counts.jacobian_evaluations};
+    });
+    return 0;
   });
   return row;
 }
@@ -178,10 +199,12 @@ double run_seconds(const ScalingConfig& c, const ScalingRow& row) {
     times = pair_kernel(*find_method(row.solver), scene).timings(p, spec, kRepeats, kSeconds);
   } else if (row.solver == "dopri5") {
     times = scene_kernel(scene).dopri5_timings(p, adaptive_spec(row.dt, c.t_end), kRepeats, kSeconds);
-  } else {
-    PeerCounts counts;
+  } else {  // the scene made once, outside the timed runs
     const int which = row.solver == "odeint_dopri5" ? 2 : 1;
-    times = repeated_timings([&] { run_peer(c, which, p, row.dt, counts); }, kRepeats, kSeconds);
+    times = with_scene(c, row.n, [&](const auto& s) {
+      PeerCounts counts;
+      return repeated_timings([&] { run_peer(which, s, row.dt, c.t_end, counts); }, kRepeats, kSeconds);
+    });
   }
   return *std::min_element(times.begin(), times.end());
 }
@@ -205,7 +228,15 @@ ScalingFit fit_of(const ScalingConfig& c, std::span<const ScalingRow> rows) {
 
 double scaling_cost(const ScalingConfig& c, const ScalingRow& r) { return c.timing ? r.seconds : double(r.forces + r.jacobians) * r.masses; }
 
-int scaling_masses(const ScalingConfig& c, int n) { return c.scene == Rope::name ? n : n * n; }
+int scaling_masses(const ScalingConfig& c, int n) { return is_rope(c) ? n : n * n; }
+
+ScalingConfig scaling_config(std::string_view scene) {
+  ScalingConfig c;
+  c.scene = std::string(scene);
+  c.params = default_param_values(scene_index(scene));
+  if (!is_rope(c)) c.sizes = {4, 8, 16}, c.max_steps = 200'000;  // implicit soft-body steps pay a sparse LU each
+  return c;
+}
 
 ScalingResult scaling_study(const ScalingConfig& c) {
   ScalingResult out;

@@ -23,6 +23,7 @@
 #include <cstddef>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/simulate.hpp"
@@ -80,6 +81,11 @@ struct ScalingResult {
     return {rows.data() + s * config.sizes.size(), config.sizes.size()};
   }
 };
+
+// The study's defaults on a scene: its default parameters; the rope at 16, 64, 256, 1024 masses
+// with searches of up to 2 000 000 steps, the soft body at n = 4, 8, 16 with up to 200 000 (its
+// implicit steps pay a sparse LU each).
+ScalingConfig scaling_config(std::string_view scene);
 
 ScalingResult scaling_study(const ScalingConfig& c);
 

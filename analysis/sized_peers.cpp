@@ -33,30 +33,6 @@ int rope_jacobian(sunrealtype, N_Vector z, N_Vector, SUNMatrix J, void* data, N_
   return 0;
 }
 
-}  // namespace
-
-State<Eigen::Dynamic> cvode_band_rope(const Rope& r, double tol, double t_end, PeerCounts& n) {
-  SUNContext ctx = nullptr;
-  if (SUNContext_Create(nullptr, &ctx) != 0) throw std::runtime_error("CVODE: no context");
-  const sunindextype size = 2 * r.n;
-  N_Vector z = N_VNew_Serial(size, ctx);
-  const State<Eigen::Dynamic> y0 = r.initial();
-  double* a = N_VGetArrayPointer(z);
-  for (int i = 0; i < r.n; ++i) a[2 * i] = y0.x[i], a[2 * i + 1] = y0.v[i];
-  SUNMatrix J = SUNBandMatrix(size, 2, 3, ctx);
-  SUNLinearSolver ls = SUNLinSol_Band(z, J, ctx);
-  cvode_bdf(ctx, z, rope_rhs, rope_jacobian, J, ls, &r, tol, t_end, n, [](double) {});
-  State<Eigen::Dynamic> end{Eigen::VectorXd(r.n), Eigen::VectorXd(r.n)};
-  for (int i = 0; i < r.n; ++i) end.x[i] = a[2 * i], end.v[i] = a[2 * i + 1];
-  SUNLinSolFree(ls);
-  SUNMatDestroy(J);
-  N_VDestroy(z);
-  SUNContext_Free(&ctx);
-  return end;
-}
-
-namespace {
-
 // z' = (v, M^-1 F(x, v)), z = (x, v) in blocks.
 template <class S> int blocked_rhs(sunrealtype, N_Vector z, N_Vector dz, void* data) {
   const S& s = *static_cast<const S*>(data);
@@ -112,6 +88,26 @@ template <class S> State<Eigen::Dynamic> odeint_dopri5(const S& s, double tol, d
 }
 
 }  // namespace
+
+State<Eigen::Dynamic> cvode_band_rope(const Rope& r, double tol, double t_end, PeerCounts& n) {
+  SUNContext ctx = nullptr;
+  if (SUNContext_Create(nullptr, &ctx) != 0) throw std::runtime_error("CVODE: no context");
+  const sunindextype size = 2 * r.n;
+  N_Vector z = N_VNew_Serial(size, ctx);
+  const State<Eigen::Dynamic> y0 = r.initial();
+  double* a = N_VGetArrayPointer(z);
+  for (int i = 0; i < r.n; ++i) a[2 * i] = y0.x[i], a[2 * i + 1] = y0.v[i];
+  SUNMatrix J = SUNBandMatrix(size, 2, 3, ctx);
+  SUNLinearSolver ls = SUNLinSol_Band(z, J, ctx);
+  cvode_bdf(ctx, z, rope_rhs, rope_jacobian, J, ls, &r, tol, t_end, n, [](double) {});
+  State<Eigen::Dynamic> end{Eigen::VectorXd(r.n), Eigen::VectorXd(r.n)};
+  for (int i = 0; i < r.n; ++i) end.x[i] = a[2 * i], end.v[i] = a[2 * i + 1];
+  SUNLinSolFree(ls);
+  SUNMatDestroy(J);
+  N_VDestroy(z);
+  SUNContext_Free(&ctx);
+  return end;
+}
 
 State<Eigen::Dynamic> cvode_klu_softbody(const SoftBody& s, double tol, double t_end, PeerCounts& n) {
   SUNContext ctx = nullptr;

@@ -1,6 +1,7 @@
 #include "analysis/softbody_stability.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "analysis/rope_stability.hpp"
 #include "core/scenes/softbody.hpp"
@@ -21,13 +22,9 @@ FastestMode softbody_fastest_mode(const SoftBody& s) {
   double rq = 0;
   for (int it = 0; it < kPowerIterations; ++it) {
     const Eigen::VectorXd w = K * u;
-    const double next = u.dot(w);
+    const double last = std::exchange(rq, u.dot(w));
     u = w.normalized();
-    if (std::abs(next - rq) <= 1e-12 * std::abs(next)) {
-      rq = next;
-      break;
-    }
-    rq = next;
+    if (std::abs(rq - last) <= 1e-12 * std::abs(rq)) break;
   }
   const double omega = std::sqrt(rq / s.m);
   return {omega, u.dot(C * u) / (s.m * omega)};

@@ -78,7 +78,7 @@ std::string scaling_table(const ScalingResult& r) {
   const char* unit = c.timing ? "run [s]" : "evals x N";
   std::string out = fmt::format("{}, error {:g} (largest over the coordinates at t = {:g}, against the {}); cost by {}\n\n{:<18} {:>7} {:>11} {:>11} {:>10} {:>10} {:>12} {:>12}\n",
                                 c.scene == "rope" ? "Rope of N masses" : "Soft body of N = n x n masses", c.target_error, c.t_end,
-                                c.scene == "rope" ? "exact solution" : "reference solution", c.timing ? "run time" : "force + Jacobian evaluations x N", "solver",
+                                scene_kernel(scene_index(c.scene)).has_exact ? "exact solution" : "reference solution", c.timing ? "run time" : "force + Jacobian evaluations x N", "solver",
                                 "N", "dt*", "dt / tol", "error", "steps", unit, "per step");
   for (const ScalingRow& w : r.rows) {
     const double cost = scaling_cost(c, w);
@@ -100,17 +100,17 @@ std::string scaling_table(const ScalingResult& r) {
 int scaling_command(ScalingArgs& a) {
   if (a.scene.scene != "rope" && a.scene.scene != "softbody")
     throw UsageError(fmt::format("--scene '{}' is not accepted by study scaling; accepted: rope, softbody", a.scene.scene));
-  ScalingConfig c;
-  c.scene = a.scene.scene;
+  ScalingConfig c = scaling_config(a.scene.scene);  // the scene's default sizes and step cap
   c.params = a.scene.values(a.scene.scene_index());
   c.methods = resolve_methods(a.methods, false);
-  c.sizes.clear();
-  const ParamSpec& size = scene_kernel(a.scene.scene_index()).params[0];  // --masses, --grid: its range
-  const std::string sizes = !a.sizes.empty() ? a.sizes : c.scene == "rope" ? "16,64,256,1024" : "4,8,16";
-  for (const std::string& s : split_list(sizes)) c.sizes.push_back(static_cast<int>(parse_count("--sizes", s, 1, static_cast<long long>(size.most))));
+  if (!a.sizes.empty()) {
+    c.sizes.clear();
+    const ParamSpec& size = scene_kernel(a.scene.scene_index()).params[0];  // --masses, --grid: its range
+    for (const std::string& s : split_list(a.sizes)) c.sizes.push_back(static_cast<int>(parse_count("--sizes", s, 1, static_cast<long long>(size.most))));
+  }
   c.target_error = parse_number("--error", a.error, Bound::Positive);
   c.t_end = parse_number("--t-end", a.t_end, Bound::Positive);
-  c.max_steps = parse_count("--max-steps", a.max_steps.empty() ? (c.scene == "rope" ? "2000000" : "200000") : a.max_steps, 1, 1'000'000'000);
+  if (!a.max_steps.empty()) c.max_steps = parse_count("--max-steps", a.max_steps, 1, 1'000'000'000);
   c.threads = resolve_thread_count(a.threads);
   c.timing = !a.no_timing;
   c.peers = !a.no_peers;

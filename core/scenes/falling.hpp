@@ -3,11 +3,8 @@
 // State: x = (x1, y1, x2, y2, x3, y3). Start at rest at p1 = (0, 1), p2 = (cos 210°, sin 210°),
 // p3 = (cos 330°, sin 330°); rest lengths from that shape (sqrt 3).
 //
-// Spring between i and j, d = x_i - x_j, l = |d|, n = d / l, P = I - n n^T:
-//   F_i = -k (l - L) n - gamma (n . (v_i - v_j)) n,   F_j = -F_i   (damping along the spring)
-//   dF_i/dd = -k (n n^T + (l - L)/l P) - gamma / l (n (v_i - v_j)^T P + (n . (v_i - v_j)) P)
-//   dF_i/dv_i = -gamma n n^T
-// with dF/dx_j = -dF/dd, and so on by symmetry. Plus gravity -m g on every y and the ground.
+// Each spring pulls along itself, damped along itself (core/scenes/pair_spring.hpp: its force,
+// Jacobian blocks and energy). Plus gravity -m g on every y and the ground.
 #pragma once
 
 #include <algorithm>
@@ -18,6 +15,7 @@
 
 #include "core/scene.hpp"
 #include "core/scenes/ground.hpp"
+#include "core/scenes/pair_spring.hpp"
 
 namespace steplab {
 
@@ -37,6 +35,7 @@ struct Falling {
 
   double m, k, gamma, g;
   double inv_m = 1 / m;  // initialized after m (declaration order)
+  PairSpring spring{k, gamma};
   Ground ground;
   double rest;  // rest length of every spring: the side of the start triangle, sqrt(3)
 
@@ -53,12 +52,8 @@ struct Falling {
     Vec<6> f = Vec<6>::Zero();
     for (int i = 0; i < 3; ++i) f[2 * i + 1] = -m * g + ground.force(x[2 * i + 1], v[2 * i + 1]);
     for (const auto& [i, j] : springs) {
-      const Eigen::Vector2d d = x.segment<2>(2 * i) - x.segment<2>(2 * j);
-      const double l = d.norm();
-      if (l == 0) continue;  // coincident particles: no direction, no force
-      const Eigen::Vector2d n = d / l;
-      const double dv = n.dot(v.segment<2>(2 * i) - v.segment<2>(2 * j));
-      const Eigen::Vector2d fi = -(k * (l - rest) + gamma * dv) * n;
+      const Eigen::Vector2d fi =
+          spring.force(x.segment<2>(2 * i) - x.segment<2>(2 * j), v.segment<2>(2 * i) - v.segment<2>(2 * j), rest);
       f.segment<2>(2 * i) += fi;
       f.segment<2>(2 * j) -= fi;
     }
@@ -72,14 +67,7 @@ struct Falling {
       jac.dv(2 * i + 1, 2 * i + 1) = ground.dforce_dv(x[2 * i + 1]);
     }
     for (const auto& [i, j] : springs) {
-      const Eigen::Vector2d d = x.segment<2>(2 * i) - x.segment<2>(2 * j);
-      const double l = d.norm();
-      if (l == 0) continue;
-      const Eigen::Vector2d n = d / l;
-      const Eigen::Vector2d dv = v.segment<2>(2 * i) - v.segment<2>(2 * j);
-      const Eigen::Matrix2d nn = n * n.transpose(), P = Eigen::Matrix2d::Identity() - nn;
-      const Eigen::Matrix2d dfd = -k * (nn + (l - rest) / l * P) - gamma / l * (n * dv.transpose() * P + n.dot(dv) * P);
-      const Eigen::Matrix2d dfv = -gamma * nn;
+      const auto [dfd, dfv] = spring.blocks(x.segment<2>(2 * i) - x.segment<2>(2 * j), v.segment<2>(2 * i) - v.segment<2>(2 * j), rest);
       jac.dx.block<2, 2>(2 * i, 2 * i) += dfd;
       jac.dx.block<2, 2>(2 * i, 2 * j) -= dfd;
       jac.dx.block<2, 2>(2 * j, 2 * i) -= dfd;
@@ -104,10 +92,7 @@ struct Falling {
   double energy(const Vec<6>& x, const Vec<6>& v) const {
     double e = 0.5 * m * v.squaredNorm();
     for (int i = 0; i < 3; ++i) e += m * g * (x[2 * i + 1] - Ground::level) + ground.energy(x[2 * i + 1]);
-    for (const auto& [i, j] : springs) {
-      const double stretch = (x.segment<2>(2 * i) - x.segment<2>(2 * j)).norm() - rest;
-      e += 0.5 * k * stretch * stretch;
-    }
+    for (const auto& [i, j] : springs) e += spring.energy(x.segment<2>(2 * i) - x.segment<2>(2 * j), rest);
     return e;
   }
 

@@ -14,24 +14,24 @@
 // so the stiffest mode's frequency grows as n (omega^2 ~ k / m ~ n^2): an explicit method's
 // stable step shrinks with the edge length h.
 //
-// Spring between i and j, d = x_i - x_j, l = |d|, n = d / l, P = I - n n^T (as the triangle's):
-//   F_i = -(k (l - L) + gamma n.(v_i - v_j)) n,   F_j = -F_i
-//   dF_i/dd = -k (n n^T + (l - L)/l P) - gamma / l (n (v_i - v_j)^T P + (n.(v_i - v_j)) P)
-//   dF_i/dv_i = -gamma n n^T
-// Plus gravity -m g on every y and the ground on every y. dF/dx is not symmetric where gamma > 0
-// (the first damping term): Newton factorises by sparse LU (core/sparse.hpp).
+// Each spring pulls along itself, damped along itself, as the triangle's (core/scenes/
+// pair_spring.hpp: its force, Jacobian blocks and energy). Plus gravity -m g on every y and the
+// ground on every y. dF/dx is not symmetric where gamma > 0 (the damping force turns with the
+// spring): Newton factorises by sparse LU (core/sparse.hpp).
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include <Eigen/SparseCore>
 
 #include "core/scene.hpp"
 #include "core/scenes/ground.hpp"
+#include "core/scenes/pair_spring.hpp"
 
 namespace steplab {
 
@@ -59,10 +59,15 @@ struct SoftBody {
   int n;
   double M, k, gamma, side, g;
   Ground ground;
+  PairSpring spring{k, gamma};
   int masses = n * n;
   double m = M / masses, inv_m = 1 / m;
   std::vector<Spring> springs;
   Eigen::VectorXd m_all = Eigen::VectorXd::Constant(2 * masses, m), inv_m_all = Eigen::VectorXd::Constant(2 * masses, inv_m);
+  // The Jacobians' pattern (dF/dx and dF/dv share it: each mass's 2 x 2 block, each spring's four),
+  // made once; where each mass's y diagonal and each spring's 16 entries sit in its values.
+  SparseMat pattern;
+  std::vector<int> y_slots, spring_slots;
 
   explicit SoftBody(std::span<const double> p)
       : n(static_cast<int>(p[0])), M(p[1]), k(p[2]), gamma(p[3]), side(p[4]), g(p[5]), ground{p[6] / n, p[7] / n} {
@@ -75,6 +80,7 @@ struct SoftBody {
         if (r + 1 < n && c + 1 < n) springs.push_back({at(r, c), at(r + 1, c + 1), std::sqrt(2.0) * h});
         if (r + 1 < n && c > 0) springs.push_back({at(r, c), at(r + 1, c - 1), std::sqrt(2.0) * h});
       }
+    make_pattern();
   }
 
   std::array<double, 8> values() const { return {double(n), M, k, gamma, side, g, ground.k * n, ground.c * n}; }
@@ -87,52 +93,33 @@ struct SoftBody {
     Eigen::VectorXd f(2 * masses);
     for (int i = 0; i < masses; ++i) f[2 * i] = 0, f[2 * i + 1] = -m * g + ground.force(x[2 * i + 1], v[2 * i + 1]);
     for (const Spring& s : springs) {
-      const Eigen::Vector2d d = x.segment<2>(2 * s.i) - x.segment<2>(2 * s.j);
-      const double l = d.norm();
-      if (l == 0) continue;  // coincident masses: no direction, no force
-      const Eigen::Vector2d u = d / l;
-      const double dv = u.dot(v.segment<2>(2 * s.i) - v.segment<2>(2 * s.j));
-      const Eigen::Vector2d fi = -(k * (l - s.rest) + gamma * dv) * u;
+      const Eigen::Vector2d fi = spring.force(x.segment<2>(2 * s.i) - x.segment<2>(2 * s.j), v.segment<2>(2 * s.i) - v.segment<2>(2 * s.j), s.rest);
       f.segment<2>(2 * s.i) += fi;
       f.segment<2>(2 * s.j) -= fi;
     }
     return f;
   }
 
-  // Sparse, a 2 x 2 block per mass and per spring's pair: the pattern is the same at every
-  // state (entries that are zero, as the ground's off contact, are kept), so the Newton solver's
-  // ordering and symbolic factorisation are made once per run.
+  // Sparse, on the pattern made once (entries that are zero, as the ground's off contact, are
+  // kept: the Newton solver's ordering and symbolic factorisation are made once per run): the
+  // ground on each y diagonal, then each spring's blocks added in spring order.
   Jacobians<Eigen::Dynamic> jacobians(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const {
-    std::vector<Eigen::Triplet<double>> tx, tv;
-    tx.reserve(2 * masses + 16 * springs.size()), tv.reserve(2 * masses + 16 * springs.size());
+    Jacobians<Eigen::Dynamic> jac{pattern, pattern};
+    double *fx = jac.dx.valuePtr(), *fv = jac.dv.valuePtr();
     for (int i = 0; i < masses; ++i) {
       const double y = x[2 * i + 1];
-      tx.emplace_back(2 * i, 2 * i, 0.0), tx.emplace_back(2 * i + 1, 2 * i + 1, ground.dforce_dy(y));
-      tv.emplace_back(2 * i, 2 * i, 0.0), tv.emplace_back(2 * i + 1, 2 * i + 1, ground.dforce_dv(y));
+      fx[y_slots[i]] = ground.dforce_dy(y), fv[y_slots[i]] = ground.dforce_dv(y);
     }
-    const auto add = [](std::vector<Eigen::Triplet<double>>& t, int i, int j, const Eigen::Matrix2d& b) {
+    const auto add = [](double* f, const int* slot, const Eigen::Matrix2d& b) {
       for (int a = 0; a < 2; ++a)
-        for (int c = 0; c < 2; ++c) {
-          t.emplace_back(2 * i + a, 2 * i + c, b(a, c)), t.emplace_back(2 * j + a, 2 * j + c, b(a, c));
-          t.emplace_back(2 * i + a, 2 * j + c, -b(a, c)), t.emplace_back(2 * j + a, 2 * i + c, -b(a, c));
-        }
+        for (int c = 0; c < 2; ++c, slot += 4) f[slot[0]] += b(a, c), f[slot[1]] += b(a, c), f[slot[2]] -= b(a, c), f[slot[3]] -= b(a, c);
     };
-    for (const Spring& s : springs) {
-      const Eigen::Vector2d d = x.segment<2>(2 * s.i) - x.segment<2>(2 * s.j);
-      const double l = d.norm();
-      Eigen::Matrix2d dfd = Eigen::Matrix2d::Zero(), dfv = Eigen::Matrix2d::Zero();
-      if (l > 0) {
-        const Eigen::Vector2d u = d / l, dv = v.segment<2>(2 * s.i) - v.segment<2>(2 * s.j);
-        const Eigen::Matrix2d uu = u * u.transpose(), P = Eigen::Matrix2d::Identity() - uu;
-        dfd = -k * (uu + (l - s.rest) / l * P) - gamma / l * (u * dv.transpose() * P + u.dot(dv) * P);
-        dfv = -gamma * uu;
-      }
-      add(tx, s.i, s.j, dfd);
-      add(tv, s.i, s.j, dfv);
+    for (std::size_t q = 0; q < springs.size(); ++q) {
+      const Spring& s = springs[q];
+      const auto [dd, dv] = spring.blocks(x.segment<2>(2 * s.i) - x.segment<2>(2 * s.j), v.segment<2>(2 * s.i) - v.segment<2>(2 * s.j), s.rest);
+      add(fx, &spring_slots[16 * q], dd);
+      add(fv, &spring_slots[16 * q], dv);
     }
-    Jacobians<Eigen::Dynamic> jac{SparseMat(2 * masses, 2 * masses), SparseMat(2 * masses, 2 * masses)};
-    jac.dx.setFromTriplets(tx.begin(), tx.end());
-    jac.dv.setFromTriplets(tv.begin(), tv.end());
     return jac;
   }
 
@@ -148,10 +135,7 @@ struct SoftBody {
   double energy(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const {
     double e = 0.5 * m * v.squaredNorm();
     for (int i = 0; i < masses; ++i) e += m * g * (x[2 * i + 1] - Ground::level) + ground.energy(x[2 * i + 1]);
-    for (const Spring& s : springs) {
-      const double stretch = (x.segment<2>(2 * s.i) - x.segment<2>(2 * s.j)).norm() - s.rest;
-      e += 0.5 * k * stretch * stretch;
-    }
+    for (const Spring& s : springs) e += spring.energy(x.segment<2>(2 * s.i) - x.segment<2>(2 * s.j), s.rest);
     return e;
   }
 
@@ -161,6 +145,32 @@ struct SoftBody {
     for (int r = 0; r < n; ++r)
       for (int c = 0; c < n; ++c) x[2 * (r * n + c)] = (c - 0.5 * (n - 1)) * h, x[2 * (r * n + c) + 1] = -0.5 + r * h;
     return {x, Eigen::VectorXd::Zero(2 * masses)};
+  }
+
+ private:
+  // Per spring (i, j) and entry (a, c) of its blocks, in that order: the slots of (2i+a, 2i+c),
+  // (2j+a, 2j+c), (2i+a, 2j+c), (2j+a, 2i+c).
+  void make_pattern() {
+    std::vector<Eigen::Triplet<double>> t;
+    for (int i = 0; i < 2 * masses; ++i) t.emplace_back(i, i, 0.0);
+    for (const Spring& s : springs)
+      for (int a = 0; a < 2; ++a)
+        for (int c = 0; c < 2; ++c)
+          for (const auto& [r, col] : block_entries(s, a, c)) t.emplace_back(r, col, 0.0);
+    pattern = SparseMat(2 * masses, 2 * masses);
+    pattern.setFromTriplets(t.begin(), t.end());
+    const auto slot = [&](int r, int c) {
+      const int *inner = pattern.innerIndexPtr(), *outer = pattern.outerIndexPtr();
+      return static_cast<int>(std::lower_bound(inner + outer[c], inner + outer[c + 1], r) - inner);
+    };
+    for (int i = 0; i < masses; ++i) y_slots.push_back(slot(2 * i + 1, 2 * i + 1));
+    for (const Spring& s : springs)
+      for (int a = 0; a < 2; ++a)
+        for (int c = 0; c < 2; ++c)
+          for (const auto& [r, col] : block_entries(s, a, c)) spring_slots.push_back(slot(r, col));
+  }
+  static std::array<std::pair<int, int>, 4> block_entries(const Spring& s, int a, int c) {
+    return {{{2 * s.i + a, 2 * s.i + c}, {2 * s.j + a, 2 * s.j + c}, {2 * s.i + a, 2 * s.j + c}, {2 * s.j + a, 2 * s.i + c}}};
   }
 };
 

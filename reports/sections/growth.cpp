@@ -53,13 +53,10 @@ std::string findings(const ScalingResult& r, std::string_view cvode, std::string
 }
 
 ScalingConfig config_for(const ReportData& d, std::string_view scene, const std::vector<int>& sizes) {
-  ScalingConfig c;
-  c.scene = std::string(scene);
-  c.params = default_param_values(*find_scene(scene));
+  ScalingConfig c = scaling_config(scene);  // the scene's defaults, as `study scaling --scene ...`
   c.sizes = sizes;
   c.target_error = d.config.scaling_error;
   c.t_end = d.config.scaling_t_end;
-  if (scene == "softbody") c.max_steps = 200'000;  // as `study scaling --scene softbody`
   for (std::size_t m : d.methods)
     if (!method_info(m).exact_flow) c.methods.push_back(m);
   c.timing = d.config.timing;

@@ -102,16 +102,21 @@ long allocations_per_sized_run(std::size_t m, std::size_t s, double size, double
   return g_allocations.load() + g_mallocs.load() - before;
 }
 
+// The allocations of `steps` more steps: a run of 2 x steps less a run of `steps`, each after a
+// short run of the same size (the thread's sparse solver has then analysed this pattern already:
+// it does so again only when the pattern changes, core/sparse.hpp).
+long allocations_of_steps(std::size_t m, std::size_t s, double size, double dt, long long steps) {
+  allocations_per_sized_run(m, s, size, dt, 10);
+  const long longer = allocations_per_sized_run(m, s, size, dt, 2 * steps);
+  allocations_per_sized_run(m, s, size, dt, 10);
+  return longer - allocations_per_sized_run(m, s, size, dt, steps);
+}
+
 TEST(Allocation, PerStepCountOnTheRopeDoesNotGrowWithItsSize) {
   const std::size_t s = *find_scene("rope");
-  // after a run of the same size: the thread's sparse solver has analysed this pattern already
-  // (it does so again only when the pattern changes: core/sparse.hpp)
   const auto per_step = [&](std::size_t m, double masses) {
-    const double dt = 0.04 / masses;  // omega_max h < 0.2 (omega_max ~ 4.5 N here): every method stable
-    allocations_per_sized_run(m, s, masses, dt, 10);
-    const long longer = allocations_per_sized_run(m, s, masses, dt, 200);
-    allocations_per_sized_run(m, s, masses, dt, 10);
-    return longer - allocations_per_sized_run(m, s, masses, dt, 100);
+    // dt: omega_max h < 0.2 (omega_max ~ 4.5 N here): every method stable
+    return allocations_of_steps(m, s, masses, 0.04 / masses, 100);
   };
   for (std::size_t m = 0; m < method_count(); ++m) {
     const std::string what(method_info(m).name);
@@ -134,19 +139,15 @@ TEST(Allocation, PerStepCountOnTheRopeDoesNotGrowWithItsSize) {
 }
 
 // The soft body likewise, at 3 x 3, 6 x 6 and 12 x 12 masses (dt 1e-4: every method stable, the
-// body in free fall), 50 steps' difference (its implicit steps are slow under the sanitizers). Its one-stage Newton solves by sparse LU too (dF/dx is not symmetric), so
-// every implicit method's count may grow with the LU's reallocations as Gauss-Legendre's and
-// Radau IIA's do on the rope; bounded the same way, by a few a step per doubling, not by N.
+// body in free fall), 50 steps' difference (its implicit steps are slow under the sanitizers). Its
+// one-stage Newton solves by sparse LU too (dF/dx is not symmetric), so every implicit method's
+// count may grow with the LU's reallocations as Gauss-Legendre's and Radau IIA's do on the rope;
+// bounded the same way, by a few a step per doubling, not by N.
 // Measured: explicit Euler 4 at every size .. Yoshida 143, 143, 149; implicit Euler 47, 47, 49;
 // Radau IIA 126, 129, 131.
 TEST(Allocation, PerStepCountOnTheSoftBodyDoesNotGrowWithItsSize) {
   const std::size_t s = *find_scene("softbody");
-  const auto per_step = [&](std::size_t m, double n) {
-    allocations_per_sized_run(m, s, n, 1e-4, 10);
-    const long longer = allocations_per_sized_run(m, s, n, 1e-4, 100);
-    allocations_per_sized_run(m, s, n, 1e-4, 10);
-    return longer - allocations_per_sized_run(m, s, n, 1e-4, 50);
-  };
+  const auto per_step = [&](std::size_t m, double n) { return allocations_of_steps(m, s, n, 1e-4, 50); };
   for (std::size_t m = 0; m < method_count(); ++m) {
     if (!applies(m, s)) continue;
     const std::string what(method_info(m).name);
