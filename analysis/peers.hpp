@@ -59,16 +59,42 @@ template <HasExact S> struct OdeintDopri5 {
   }
 };
 
-// CVODE's BDF on z' = rhs(z) from z at t = 0 (overwritten with the state at t_end), rtol = atol =
-// tol, Newton on the linear solver `ls` with matrix J and the analytic Jacobian `jac`; `scene` is
-// the user data the callbacks read (CVODE takes a void*; they only read it). `after_step(t)`
-// after every internal step. Counts into n (failed if CVODE stopped before t_end).
+// What one CVODE run owns: its context, the state z of `size` entries and, set by the caller
+// (dense, banded or sparse), the Jacobian's matrix J and the linear solver on it; freed in reverse
+// order however the run ends.
+struct CvodeRun {
+  SUNContext ctx = nullptr;
+  N_Vector z = nullptr;
+  SUNMatrix J = nullptr;
+  SUNLinearSolver ls = nullptr;
+
+  explicit CvodeRun(sunindextype size) {
+    if (SUNContext_Create(nullptr, &ctx) != 0) throw std::runtime_error("CVODE: no context");
+    z = N_VNew_Serial(size, ctx);
+  }
+  ~CvodeRun() {
+    if (ls) SUNLinSolFree(ls);
+    if (J) SUNMatDestroy(J);
+    if (z) N_VDestroy(z);
+    SUNContext_Free(&ctx);
+  }
+  CvodeRun(const CvodeRun&) = delete;
+  CvodeRun& operator=(const CvodeRun&) = delete;
+  double* data() const { return N_VGetArrayPointer(z); }
+};
+
+// CVODE's BDF on z' = rhs(z) from the run's z at t = 0 (overwritten with the state at t_end), rtol
+// = atol = tol, Newton on its linear solver with the analytic Jacobian `jac`; `scene` is the user
+// data the callbacks read (CVODE takes a void*; they only read it). `after_step(t)` after every
+// internal step. Counts into n (failed if CVODE stopped before t_end).
 template <class AfterStep>
-void cvode_bdf(SUNContext ctx, N_Vector z, CVRhsFn rhs, CVLsJacFn jac, SUNMatrix J, SUNLinearSolver ls, const void* scene,
-               double tol, double t_end, PeerCounts& n, AfterStep&& after_step) {
-  void* mem = CVodeCreate(CV_BDF, ctx);
+void cvode_bdf(CvodeRun& run, CVRhsFn rhs, CVLsJacFn jac, const void* scene, double tol, double t_end, PeerCounts& n,
+               AfterStep&& after_step) {
+  N_Vector z = run.z;
+  void* mem = CVodeCreate(CV_BDF, run.ctx);
   bool ok = CVodeInit(mem, rhs, 0.0, z) == CV_SUCCESS && CVodeSStolerances(mem, tol, tol) == CV_SUCCESS &&
-            CVodeSetUserData(mem, const_cast<void*>(scene)) == CV_SUCCESS && CVodeSetLinearSolver(mem, ls, J) == CV_SUCCESS &&
+            CVodeSetUserData(mem, const_cast<void*>(scene)) == CV_SUCCESS &&
+            CVodeSetLinearSolver(mem, run.ls, run.J) == CV_SUCCESS &&
             CVodeSetJacFn(mem, jac) == CV_SUCCESS && CVodeSetMaxNumSteps(mem, 10'000'000) == CV_SUCCESS &&
             CVodeSetStopTime(mem, t_end) == CV_SUCCESS;
   double t = 0;
@@ -114,23 +140,16 @@ template <HasExact S> struct CvodeBdf {
   }
 
   static State<D> run(const S& s, double tol, double t_end, PeerCounts& n, double* error_max = nullptr) {
-    SUNContext ctx = nullptr;
-    if (SUNContext_Create(nullptr, &ctx) != 0) throw std::runtime_error("CVODE: no context");
-    N_Vector z = N_VNew_Serial(2 * D, ctx);
+    CvodeRun c(2 * D);
     const State<D> y0 = s.initial();
-    double* a = N_VGetArrayPointer(z);
+    double* a = c.data();
     for (int i = 0; i < D; ++i) a[i] = y0.x[i], a[D + i] = y0.v[i];
-    SUNMatrix J = SUNDenseMatrix(2 * D, 2 * D, ctx);
-    SUNLinearSolver ls = SUNLinSol_Dense(z, J, ctx);
-    cvode_bdf(ctx, z, rhs, jacobian, J, ls, &s, tol, t_end, n, [&](double t) {
+    c.J = SUNDenseMatrix(2 * D, 2 * D, c.ctx);
+    c.ls = SUNLinSol_Dense(c.z, c.J, c.ctx);
+    cvode_bdf(c, rhs, jacobian, &s, tol, t_end, n, [&](double t) {
       if (error_max) *error_max = std::max(*error_max, (Eigen::Map<const Vec<D>>(a) - exact(s, t).x).norm());
     });
-    const State<D> end{Eigen::Map<const Vec<D>>(a), Eigen::Map<const Vec<D>>(a + D)};
-    SUNLinSolFree(ls);
-    SUNMatDestroy(J);
-    N_VDestroy(z);
-    SUNContext_Free(&ctx);
-    return end;
+    return {Eigen::Map<const Vec<D>>(a), Eigen::Map<const Vec<D>>(a + D)};
   }
 };
 

@@ -90,43 +90,30 @@ template <class S> State<Eigen::Dynamic> odeint_dopri5(const S& s, double tol, d
 }  // namespace
 
 State<Eigen::Dynamic> cvode_band_rope(const Rope& r, double tol, double t_end, PeerCounts& n) {
-  SUNContext ctx = nullptr;
-  if (SUNContext_Create(nullptr, &ctx) != 0) throw std::runtime_error("CVODE: no context");
   const sunindextype size = 2 * r.n;
-  N_Vector z = N_VNew_Serial(size, ctx);
+  CvodeRun c(size);
   const State<Eigen::Dynamic> y0 = r.initial();
-  double* a = N_VGetArrayPointer(z);
+  double* a = c.data();
   for (int i = 0; i < r.n; ++i) a[2 * i] = y0.x[i], a[2 * i + 1] = y0.v[i];
-  SUNMatrix J = SUNBandMatrix(size, 2, 3, ctx);
-  SUNLinearSolver ls = SUNLinSol_Band(z, J, ctx);
-  cvode_bdf(ctx, z, rope_rhs, rope_jacobian, J, ls, &r, tol, t_end, n, [](double) {});
+  c.J = SUNBandMatrix(size, 2, 3, c.ctx);
+  c.ls = SUNLinSol_Band(c.z, c.J, c.ctx);
+  cvode_bdf(c, rope_rhs, rope_jacobian, &r, tol, t_end, n, [](double) {});
   State<Eigen::Dynamic> end{Eigen::VectorXd(r.n), Eigen::VectorXd(r.n)};
   for (int i = 0; i < r.n; ++i) end.x[i] = a[2 * i], end.v[i] = a[2 * i + 1];
-  SUNLinSolFree(ls);
-  SUNMatDestroy(J);
-  N_VDestroy(z);
-  SUNContext_Free(&ctx);
   return end;
 }
 
 State<Eigen::Dynamic> cvode_klu_softbody(const SoftBody& s, double tol, double t_end, PeerCounts& n) {
-  SUNContext ctx = nullptr;
-  if (SUNContext_Create(nullptr, &ctx) != 0) throw std::runtime_error("CVODE: no context");
   const State<Eigen::Dynamic> y0 = s.initial();
   const sunindextype d = y0.x.size();
-  N_Vector z = N_VNew_Serial(2 * d, ctx);
-  Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(z), 2 * d) << y0.x, y0.v;
+  CvodeRun c(2 * d);
+  Eigen::Map<Eigen::VectorXd>(c.data(), 2 * d) << y0.x, y0.v;
   const Jacobians<Eigen::Dynamic> j0 = s.jacobians(y0.x, y0.v);
-  SUNMatrix J = SUNSparseMatrix(2 * d, 2 * d, d + j0.dx.nonZeros() + j0.dv.nonZeros(), CSR_MAT, ctx);
-  SUNLinearSolver ls = SUNLinSol_KLU(z, J, ctx);
-  cvode_bdf(ctx, z, blocked_rhs<SoftBody>, csr_jacobian<SoftBody>, J, ls, &s, tol, t_end, n, [](double) {});
-  const Eigen::Map<const Eigen::VectorXd> a(N_VGetArrayPointer(z), 2 * d);
-  State<Eigen::Dynamic> end{a.head(d), a.tail(d)};
-  SUNLinSolFree(ls);
-  SUNMatDestroy(J);
-  N_VDestroy(z);
-  SUNContext_Free(&ctx);
-  return end;
+  c.J = SUNSparseMatrix(2 * d, 2 * d, d + j0.dx.nonZeros() + j0.dv.nonZeros(), CSR_MAT, c.ctx);
+  c.ls = SUNLinSol_KLU(c.z, c.J, c.ctx);
+  cvode_bdf(c, blocked_rhs<SoftBody>, csr_jacobian<SoftBody>, &s, tol, t_end, n, [](double) {});
+  const Eigen::Map<const Eigen::VectorXd> a(c.data(), 2 * d);
+  return {a.head(d), a.tail(d)};
 }
 
 State<Eigen::Dynamic> odeint_dopri5_rope(const Rope& r, double tol, double t_end, PeerCounts& n) { return odeint_dopri5(r, tol, t_end, n); }

@@ -8,9 +8,15 @@
 
 namespace steplab {
 
-FastestMode softbody_fastest_mode(const SoftBody& s) {
+State<Eigen::Dynamic> lowered_onto_ground(const SoftBody& s) {
   State<Eigen::Dynamic> y = s.initial();
-  for (int i = 1; i < y.x.size(); i += 2) y.x[i] -= 0.5 + 1e-9;  // the bottom row just below y = -1
+  const double drop = (y.x[1] - Ground::level) + 1e-9;  // mass 0 is in the bottom row
+  for (int i = 1; i < y.x.size(); i += 2) y.x[i] -= drop;
+  return y;
+}
+
+FastestMode softbody_fastest_mode(const SoftBody& s) {
+  const State<Eigen::Dynamic> y = lowered_onto_ground(s);
   const Jacobians<Eigen::Dynamic> j = s.jacobians(y.x, y.v);
   const SparseMat K = -j.dx, C = -j.dv;
   Eigen::VectorXd u(y.x.size());

@@ -17,6 +17,8 @@
 
 #include <cstddef>
 
+#include "core/state.hpp"
+
 namespace steplab {
 
 struct SoftBody;  // core/scenes/softbody.hpp
@@ -28,6 +30,9 @@ struct FastestMode {
   double two_zeta;  // 2 zeta of that mode
 };
 
+// The start shape lowered until its bottom row is 1e-9 below the ground (Ground::level): every
+// spring at rest, the bottom row's penalty springs on. Where the fastest mode is taken.
+State<Eigen::Dynamic> lowered_onto_ground(const SoftBody& s);
 FastestMode softbody_fastest_mode(const SoftBody& s);
 double softbody_predicted_threshold(std::size_t method, const SoftBody& s);
 

@@ -95,6 +95,8 @@ std::string join(const std::vector<double>& v) {
   return out;
 }
 
+std::string join(const std::vector<int>& v) { return join(std::vector<double>(v.begin(), v.end())); }
+
 std::string method_words(const std::vector<std::size_t>& methods) {
   std::string out;
   for (std::size_t m : methods) {

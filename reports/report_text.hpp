@@ -24,6 +24,7 @@ std::string params_text(std::size_t scene, const std::vector<double>& values);
 std::string wrapped(const std::string& cmd);              // a shell command broken for the page
 std::string words(const std::vector<double>& v);          // gnuplot word list: "a b c"
 std::string join(const std::vector<double>& v);           // CLI list: "a,b,c"
+std::string join(const std::vector<int>& v);
 std::string method_words(const std::vector<std::size_t>& methods);
 
 // The families the report groups methods by, and a family's members among `methods` (its own

@@ -151,12 +151,15 @@ struct SoftBody {
   // Per spring (i, j) and entry (a, c) of its blocks, in that order: the slots of (2i+a, 2i+c),
   // (2j+a, 2j+c), (2i+a, 2j+c), (2j+a, 2i+c).
   void make_pattern() {
-    std::vector<Eigen::Triplet<double>> t;
-    for (int i = 0; i < 2 * masses; ++i) t.emplace_back(i, i, 0.0);
+    std::vector<std::pair<int, int>> entries;  // the springs' entries in slot order
     for (const Spring& s : springs)
       for (int a = 0; a < 2; ++a)
         for (int c = 0; c < 2; ++c)
-          for (const auto& [r, col] : block_entries(s, a, c)) t.emplace_back(r, col, 0.0);
+          entries.insert(entries.end(), {{2 * s.i + a, 2 * s.i + c}, {2 * s.j + a, 2 * s.j + c}, {2 * s.i + a, 2 * s.j + c},
+                                         {2 * s.j + a, 2 * s.i + c}});
+    std::vector<Eigen::Triplet<double>> t;
+    for (int i = 0; i < 2 * masses; ++i) t.emplace_back(i, i, 0.0);
+    for (const auto& [r, c] : entries) t.emplace_back(r, c, 0.0);
     pattern = SparseMat(2 * masses, 2 * masses);
     pattern.setFromTriplets(t.begin(), t.end());
     const auto slot = [&](int r, int c) {
@@ -164,13 +167,7 @@ struct SoftBody {
       return static_cast<int>(std::lower_bound(inner + outer[c], inner + outer[c + 1], r) - inner);
     };
     for (int i = 0; i < masses; ++i) y_slots.push_back(slot(2 * i + 1, 2 * i + 1));
-    for (const Spring& s : springs)
-      for (int a = 0; a < 2; ++a)
-        for (int c = 0; c < 2; ++c)
-          for (const auto& [r, col] : block_entries(s, a, c)) spring_slots.push_back(slot(r, col));
-  }
-  static std::array<std::pair<int, int>, 4> block_entries(const Spring& s, int a, int c) {
-    return {{{2 * s.i + a, 2 * s.i + c}, {2 * s.j + a, 2 * s.j + c}, {2 * s.i + a, 2 * s.j + c}, {2 * s.j + a, 2 * s.i + c}}};
+    for (const auto& [r, c] : entries) spring_slots.push_back(slot(r, c));
   }
 };
 

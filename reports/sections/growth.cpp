@@ -111,19 +111,19 @@ class Growth : public Section {
                       "kept: {}), at N = {}: each method's step (each adaptive solver's tolerance) searched until the position "
                       "error at t = {:g}, the largest over the masses, is at most {:g}, and that run's cost by {}. Its stable "
                       "step dt* comes from its modes (`steplab study stability --scene rope` measures it too).\n\n",
-                      params_but_size("rope", c.params), join(std::vector<double>(c.sizes.begin(), c.sizes.end())), c.t_end,
+                      params_but_size("rope", c.params), join(c.sizes), c.t_end,
                       c.target_error, c.timing ? "run time" : "force and Jacobian evaluations times N");
     md += exponents_table(r_) + findings(r_, "cvode_band", "banded");
     md += page.figure("fig11_scaling", "rope of N masses: whole-run cost at the target error against N, a panel per family and "
                                               "one for the adaptive solvers; last panel: explicit methods' dt* against N, "
                                               "dashed its 1/N prediction from the smallest N");
     const ScalingConfig& s = soft_.config;
-    std::vector<double> masses;
+    std::vector<int> masses;
     for (int n : s.sizes) masses.push_back(scaling_masses(s, n));
     md += fmt::format("The soft body, the falling triangle refined to n x n masses joined by structural and shear springs ({}), "
                       "at N = {} masses (n = {}): the same measure against its reference solution (dopri5 at rtol 1e-13), dt* "
                       "from its fastest mode linearised on the ground (its frequency grows as n: dt* ~ N^-1/2^), CVODE with SuiteSparse's KLU as its stiff peer.\n\n",
-                      params_but_size("softbody", s.params), join(masses), join(std::vector<double>(s.sizes.begin(), s.sizes.end())));
+                      params_but_size("softbody", s.params), join(masses), join(s.sizes));
     md += exponents_table(soft_) + findings(soft_, "cvode_klu", "KLU");
     return md;
   }

@@ -1,4 +1,6 @@
 // The commands that reproduce every number of the report.
+#include <utility>
+
 #include <fmt/format.h>
 
 #include "reports/report_text.hpp"
@@ -23,12 +25,9 @@ class Reproduce : public Section {
                               c.collision_t_end, c.triangle_dt));
     md += wrapped(fmt::format("build/steplab study work-precision --points {} --stiffnesses {}{}", c.wp_points,
                               join(c.wp_stiffnesses), c.timing ? "" : " --no-timing"));
-    md += wrapped(fmt::format("build/steplab study scaling --sizes {} --error {} --t-end {}{}",
-                              join(std::vector<double>(c.scaling_sizes.begin(), c.scaling_sizes.end())), c.scaling_error,
-                              c.scaling_t_end, c.timing ? "" : " --no-timing"));
-    md += wrapped(fmt::format("build/steplab study scaling --scene softbody --sizes {} --error {} --t-end {}{}",
-                              join(std::vector<double>(c.scaling_grids.begin(), c.scaling_grids.end())), c.scaling_error,
-                              c.scaling_t_end, c.timing ? "" : " --no-timing"));
+    for (const auto& [scene, sizes] : {std::pair{"", &c.scaling_sizes}, std::pair{" --scene softbody", &c.scaling_grids}})
+      md += wrapped(fmt::format("build/steplab study scaling{} --sizes {} --error {} --t-end {}{}", scene, join(*sizes),
+                                c.scaling_error, c.scaling_t_end, c.timing ? "" : " --no-timing"));
     md += "```\n\n";
     md += "(with the scene parameters above as `--mass`, `--stiffness`, ... where they differ from the defaults). The data of "
           "every study is in `data/`.\n\n";
