@@ -154,10 +154,10 @@ ConvergenceResult convergence_study(const ConvergenceConfig& config) {
     const std::size_t method = config.methods[m];
     std::vector<ConvergenceRecord> sweep(nd);
     if (!applies(method, config.scene)) return sweep;
-    const PairKernel& k = pair_kernel(method, config.scene);
-    for (std::size_t i = nd; i-- > 0;)
-      sweep[i] = record_of(method, out.dts[i], config.t_end, k.run(config.params, convergence_spec(out.dts[i], config.t_end, out)),
-                           out, scale);
+    std::vector<BatchRun> runs;  // the smallest dt (the longest run) first: a pack's lanes then end together
+    for (std::size_t i = nd; i-- > 0;) runs.push_back({config.params, convergence_spec(out.dts[i], config.t_end, out)});
+    const std::vector<AnyResult> results = run_all(pair_kernel(method, config.scene), runs, config.pack_width);
+    for (std::size_t i = 0; i < nd; ++i) sweep[i] = record_of(method, out.dts[i], config.t_end, results[nd - 1 - i], out, scale);
     return sweep;
   }, implicit_first(config.methods));
   for (std::size_t m = 0; m < nm; ++m)

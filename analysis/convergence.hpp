@@ -32,6 +32,7 @@ struct ConvergenceConfig {
   int points = 16;
   ErrorKind fit_error = ErrorKind::Final;  // which error the order is fitted to
   unsigned threads = 0;                    // 0: all cores
+  int pack_width = 0;  // a method's runs stepped together in SIMD lanes (run_all, analysis/kernel.hpp): 0 the CPU's best, 2, 4, 8, or 1 (one at a time); the same numbers
   // Work-precision: time every run again, one at a time, repeated until kTimingSeconds of
   // runs and at least 3 repetitions; the median is kept. Wall-clock times differ from run to
   // run: the only part of the output that is not reproducible, so it is off by default.

@@ -57,6 +57,17 @@ std::string method_names() {
   return out + ")";
 }
 
+std::vector<AnyResult> run_all(const PairKernel& k, std::span<const BatchRun> runs, int width) {
+  if (width == 0) width = best_width();
+  if (!cpu_has_width(width))
+    throw std::invalid_argument("a pack width is 1, 2, 4 (AVX2) or 8 (AVX-512) that this CPU has, not " + std::to_string(width));
+  std::vector<AnyResult> out(runs.size());
+  if (width > 1 && k.run_batch) k.run_batch(runs, out.data(), width);
+  else
+    for (std::size_t i = 0; i < runs.size(); ++i) out[i] = k.run(runs[i].params, runs[i].spec);
+  return out;
+}
+
 std::string scene_list() {
   std::string out;
   for (std::size_t i = 0; i < scene_count(); ++i) out += (out.empty() ? "" : ", ") + std::string(scene_name(i));

@@ -24,6 +24,7 @@
 
 #include <Eigen/Core>
 
+#include "core/batch.hpp"
 #include "core/dopri5.hpp"
 #include "core/method.hpp"
 #include "core/simulate.hpp"
@@ -80,6 +81,12 @@ struct PairKernel {
   // n steps of h from (x, v) with the method's own start-up, state k after step k + 1 in xs[k],
   // vs[k]; the first status that was not Ok (1-D scenes).
   StepStatus (*steps_from)(Params, double x, double v, double h, int n, double* xs, double* vs);
+  // The runs, `width` (2, 4 or 8: cpu_has_width, core/batch.hpp) at a time in SIMD lanes, the
+  // loop compiled for that width's instruction set; out[i] is what run() gives for runs[i], to
+  // the bit. Where the method's step is written over the scalar and the scene is Packable (the
+  // one-step explicit methods on the spring, today); null elsewhere. A spec asking for samples
+  // runs one at a time.
+  void (*run_batch)(std::span<const BatchRun> runs, AnyResult* out, int width);
 };
 
 // One method, whatever the scene.
@@ -124,6 +131,12 @@ inline const MethodInfo& method_info(std::size_t m) { return method_kernel(m).in
 inline std::size_t scene_count() { return kernel_table().scenes.size(); }
 inline const SceneKernel& scene_kernel(std::size_t s) { return *kernel_table().scenes[s]; }
 inline std::string_view scene_name(std::size_t s) { return scene_kernel(s).name; }
+
+// The runs of one pair, in order: in packs of `width` lanes (2, 4 or 8, as the CPU has them:
+// cpu_has_width) where the pair has run_batch, one at a time where it has not or `width` is 1
+// (the reference the packs are measured and tested against); 0: best_width(). The same numbers
+// whatever the width. A width this CPU cannot step throws std::invalid_argument.
+std::vector<AnyResult> run_all(const PairKernel& k, std::span<const BatchRun> runs, int width);
 
 // Method m's code on scene s; throws std::invalid_argument where m does not apply (the exact
 // flow on a scene without one): applies() tells first.

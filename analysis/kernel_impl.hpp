@@ -14,6 +14,7 @@
 #include "analysis/kernel.hpp"
 #include "analysis/step_map.hpp"
 #include "analysis/timing.hpp"
+#include "core/batch.hpp"
 #include "core/dopri5.hpp"
 #include "core/simulate.hpp"
 #include "core/stepper.hpp"
@@ -159,13 +160,47 @@ template <class M, Scene S> struct PairCode {
   }
 };
 
+// The batched runs (core/batch.hpp), the loop compiled once per instruction set, each with
+// the pack of its register width, and flattened (everything it calls inlined, so compiled for
+// that instruction set, but for the noipa bookkeeping of a lane). The target names instruction
+// sets, not an arch=: GCC inlines no function into one whose arch differs.
+template <class M, Scene S> struct BatchCode {
+  template <int W> [[gnu::always_inline]] static inline void body(std::span<const BatchRun> runs, AnyResult* out) {
+    BatchRunner<M, S, Pack<W>> batch(runs, out);
+    batch.run();
+  }
+  [[gnu::flatten]] static void sse2(std::span<const BatchRun> runs, AnyResult* out) { body<2>(runs, out); }
+#if defined(__x86_64__) && defined(__GNUC__)
+  [[gnu::target("avx2,fma"), gnu::flatten]] static void avx2(std::span<const BatchRun> runs, AnyResult* out) {
+    body<4>(runs, out);
+  }
+  [[gnu::target("avx512f,avx512dq,avx512vl,avx512bw,avx2,fma"), gnu::flatten]] static void avx512(
+      std::span<const BatchRun> runs, AnyResult* out) {
+    body<8>(runs, out);
+  }
+#endif
+  static void run_batch(std::span<const BatchRun> runs, AnyResult* out, int width) {
+    for (const BatchRun& r : runs)
+      if (r.spec.max_samples > 0) {
+        for (std::size_t i = 0; i < runs.size(); ++i) out[i] = PairCode<M, S>::run(runs[i].params, runs[i].spec);
+        return;
+      }
+#if defined(__x86_64__) && defined(__GNUC__)
+    if (width == 4) return avx2(runs, out);
+    if (width == 8) return avx512(runs, out);
+#endif
+    sse2(runs, out);
+  }
+};
+
 // The counting run only where a study counts (the work-precision study on scenes with an exact
 // solution, the scaling study on scenes of run-time size), the observed run only where the
 // studies observe (the fixed-size scenes with ground contact; a 1-D scene's amplitude): each is
 // one more instantiation of the run loop.
 template <class M, Scene S> constexpr PairKernel make_pair() {
   using C = PairCode<M, S>;
-  PairKernel k{&C::run, nullptr, nullptr, &C::timings, &C::time_steps, nullptr, nullptr, nullptr, nullptr};
+  PairKernel k{&C::run, nullptr, nullptr, &C::timings, &C::time_steps, nullptr, nullptr, nullptr, nullptr, nullptr};
+  if constexpr (PackedStep<M, S>) k.run_batch = &BatchCode<M, S>::run_batch;
   if constexpr (HasExact<S> || S::dim == Eigen::Dynamic) k.run_counted = &C::run_counted;
   if constexpr ((HasContact<S> && S::dim != Eigen::Dynamic) || S::dim == 1) k.run_observed = &C::run_observed;
   if constexpr (S::dim == 1) {

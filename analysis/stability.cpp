@@ -1,5 +1,6 @@
 #include "analysis/stability.hpp"
 
+#include <array>
 #include <cmath>
 #include <complex>
 
@@ -153,10 +154,16 @@ RateRun measure_rate(std::size_t method, const Spring& s, double h, long long st
 }
 
 std::vector<RateRun> measure_rates(std::size_t method, const std::vector<Spring>& s, const std::vector<double>& h,
-                                   long long steps, bool errors) {
-  std::vector<RateRun> out(h.size());
-  const PairKernel& k = spring_kernel(method);
-  for (std::size_t i = 0; i < h.size(); ++i) out[i] = rate_of(k, s[i], h[i], steps, errors);
+                                   long long steps, bool errors, int width) {
+  std::vector<std::array<double, 5>> params(h.size());
+  std::vector<BatchRun> runs(h.size());
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    params[i] = s[i].values();
+    runs[i] = {params[i], rate_spec(h[i], steps, errors)};
+  }
+  const std::vector<AnyResult> results = run_all(spring_kernel(method), runs, width);
+  std::vector<RateRun> out;
+  for (const AnyResult& r : results) out.push_back(rate_run(r));
   return out;
 }
 
@@ -197,7 +204,7 @@ std::vector<SweepRow> damping_sweep(const StabilityConfig& c) {
   const auto parts = study_map<std::vector<SweepRow>>(nm * nd, c.threads, [&](std::size_t task) {
     const std::size_t m = c.methods[task / nd];
     const double dt = c.sweep_dts[task % nd];
-    const std::vector<RateRun> runs = measure_rates(m, springs, std::vector<double>(ng, dt), kRateSteps, true);
+    const std::vector<RateRun> runs = measure_rates(m, springs, std::vector<double>(ng, dt), kRateSteps, true, c.pack_width);
     std::vector<SweepRow> rows;
     for (std::size_t g = 0; g < ng; ++g) rows.push_back({m, dt, gammas[g], runs[g], predicted_rate(m, springs[g], dt)});
     return rows;
@@ -221,7 +228,7 @@ StabilityMap stability_map(const StabilityConfig& c) {
     const std::size_t mi = task / ng, gi = task % ng;
     const Spring s = linear_spring(c.params, map.damping[gi]);
     MapRow row{predicted_stable_set(c.methods[mi], s).dt_star, {}, {}};
-    const std::vector<RateRun> runs = measure_rates(c.methods[mi], std::vector<Spring>(nd, s), map.dt, c.map_steps, false);
+    const std::vector<RateRun> runs = measure_rates(c.methods[mi], std::vector<Spring>(nd, s), map.dt, c.map_steps, false, c.pack_width);
     for (std::size_t di = 0; di < nd; ++di) {
       row.stable.push_back(runs[di].stable());
       row.predicted.push_back(predicted_stable(c.methods[mi], s, map.dt[di]));

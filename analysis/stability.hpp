@@ -34,7 +34,8 @@
 
 namespace steplab {
 
-struct Spring;      // core/scenes/spring.hpp: included where a spring is made or asked
+template <class T> struct SpringT;  // core/scenes/spring.hpp: included where a spring is made or asked
+using Spring = SpringT<double>;
 struct PairKernel;  // analysis/kernel.hpp
 
 inline constexpr double kStableRate = 1e-6;        // per unit time: E changes < 0.1 % over 1000 time units
@@ -129,9 +130,10 @@ struct RateRun {
 
 RateRun measure_rate(std::size_t method, const Spring& s, double h, long long steps = kRateSteps);
 // Runs (s[i], h[i]), with the position error against the exact solution along each run or
-// (errors false) without it (error_final 0).
+// (errors false) without it (error_final 0); `width` steps them in SIMD packs where the method
+// has packed kernels, 1 one at a time (run_all in analysis/kernel.hpp): the same numbers.
 std::vector<RateRun> measure_rates(std::size_t method, const std::vector<Spring>& s, const std::vector<double>& h,
-                                   long long steps, bool errors);
+                                   long long steps, bool errors, int width = 0);
 
 // From runs (measure_rates): h scanned by factors of 2 from kMeasureMinWh/omega up to dt*, by
 // 1.05 beyond it, each edge bisected to 1e-4 relative.
@@ -177,6 +179,7 @@ struct StabilityConfig {
   double map_damping_max = 0;                  // 0: twice critical damping
   long long map_steps = kRateSteps;
   unsigned threads = 0;
+  int pack_width = 0;  // runs stepped together in SIMD lanes (run_all, analysis/kernel.hpp): 0 the CPU's best, 2, 4, 8, or 1 (one at a time); the same numbers
 };
 
 // 0 through critical damping 2 sqrt(k m) to twice that (21 values), plus 0.1.

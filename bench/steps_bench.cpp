@@ -304,17 +304,25 @@ std::string ratio_table(const std::map<std::string, double>& t) {
     const auto it = t.find(row + "/spring/explicit_euler");
     return it == t.end() ? 0.0 : it->second / static_cast<double>(throughput_work.second);
   };
-  const double table = per_step("throughput"), hand = per_step("throughput_baseline"), rate = per_step("throughput_rate");
+  const double table = per_step("throughput"), hand = per_step("throughput_baseline"), rate = per_step("throughput_rate"),
+               hand_rate = per_step("throughput_baseline_rate"), one = per_step("throughput_w1");
   char line[400];
   if (table > 0 && hand > 0) {
     std::snprintf(line, sizeof line,
-                  "\nthroughput/spring/explicit_euler (%d trajectories, one run at a time through the kernel table): %.3f ns per "
+                  "\nthroughput/spring/explicit_euler (%d trajectories in packs of %d through the kernel table): %.3f ns per "
                   "trajectory-step; hand-written interleaved baseline %.3f; throughput steplab/baseline %.2f\n",
-                  throughput_work.first, table, hand, hand / table);
+                  throughput_work.first, best_width(), table, hand, hand / table);
     out += line;
   }
-  if (rate > 0) {
-    std::snprintf(line, sizeof line, "with the energy-rate fit of study stability: %.3f ns per trajectory-step\n", rate);
+  if (one > 0 && table > 0) {
+    std::snprintf(line, sizeof line, "one run at a time: %.3f ns per trajectory-step; packs/one at a time %.2fx\n", one, one / table);
+    out += line;
+  }
+  if (rate > 0 && hand_rate > 0) {
+    std::snprintf(line, sizeof line,
+                  "with the energy-rate fit of study stability: %.3f ns per trajectory-step; baseline with the same fit %.3f; "
+                  "throughput steplab/baseline %.2f\n",
+                  rate, hand_rate, hand_rate / rate);
     out += line;
   }
   return out;

@@ -121,6 +121,14 @@ template <HasExact S> class ExactTracker {
     }
   }
 
+  // The fixed step's affine map, where it steps (core/batch.hpp copies it into a pack's lanes).
+  bool stepping() const { return left_ != 0; }
+  const State<D>& offset() const { return c_; }
+  const Block& xx() const { return xx_; }
+  const Block& xv() const { return xv_; }
+  const Block& vx() const { return vx_; }
+  const Block& vv() const { return vv_; }
+
   const State<D>& at(double t) {
     if constexpr (kCanStep) {
       if (left_ > 1) {
@@ -155,9 +163,22 @@ template <HasExact S> class ExactTracker {
 // Acceleration a = M^{-1} F(x, v), written F * (1/m) with 1/m stored by the scene: no division
 // in a step (its latency is ~3x a multiplication's, and each step waits on the last). Differs
 // from F / m by at most an ulp.
-template <Scene S> Vec<S::dim> acceleration(const S& s, const Vec<S::dim>& x, const Vec<S::dim>& v) {
+template <class S> Vec<S::dim> acceleration(const S& s, const Vec<S::dim>& x, const Vec<S::dim>& v) {
   return s.force(x, v).cwiseProduct(s.inverse_mass());
 }
+// The same on packs: S is then the scene of a pack of runs (Packable below).
+template <class S, int W, int R>
+Vec<S::dim, Pack<W, R>> acceleration(const S& s, const Vec<S::dim, Pack<W, R>>& x, const Vec<S::dim, Pack<W, R>>& v) {
+  return s.force(x, v).cwiseProduct(s.inverse_mass());
+}
+
+// A scene whose runs can be stepped W at a time (core/batch.hpp) is a template over its scalar,
+// every parameter a Pack of the lanes' values, and names it: `template <class T> using as =
+// SpringT<T>;`. Its force, energy and initial state are then written once for both, a branch on
+// the state as a select (core/pack.hpp); its exact flow, where it has one, stays scalar.
+template <class S>
+concept Packable = Scene<S> && requires { typename S::template as<Pack<8>>; };
+template <class S, class T> using PackScene = typename S::template as<T>;
 
 // Whether a parameter table (a scene's `params`) has a parameter of that name.
 inline bool has_param(std::span<const ParamSpec> params, std::string_view name) {

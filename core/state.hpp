@@ -6,25 +6,33 @@
 #pragma once
 
 #include <cmath>
+#include <type_traits>
 
 #include <Eigen/Core>
 #include <Eigen/LU>
 #include <Eigen/SparseCore>
 
+#include "core/pack.hpp"
+
 namespace steplab {
 
-template <int D> using Vec = Eigen::Matrix<double, D, 1>;
-template <int D> using Mat = Eigen::Matrix<double, D, D>;
+// T is double for one run, a Pack of runs (core/pack.hpp) for runs stepped together.
+template <int D, class T = double> using Vec = Eigen::Matrix<T, D, 1>;
+template <int D, class T = double> using Mat = Eigen::Matrix<T, D, D>;
 
-template <int D> struct State {
-  Vec<D> x;
-  Vec<D> v;
+// A time (t, h) of one run (T = double) or of a pack's lanes: the T of the state it goes with,
+// so that T is deduced from the state alone (step(s, y, 0, h) with a whole 0 for t is fine).
+template <class T> using Time = std::type_identity_t<T>;
+
+template <int D, class T = double> struct State {
+  Vec<D, T> x;
+  Vec<D, T> v;
 };
 
 // A zero state; empty for a state whose size is set at run time (D = Eigen::Dynamic).
-template <int D> State<D> zero_state() {
+template <int D, class T = double> State<D, T> zero_state() {
   if constexpr (D == Eigen::Dynamic) return {};
-  else return {Vec<D>::Zero(), Vec<D>::Zero()};
+  else return {Vec<D, T>::Zero(), Vec<D, T>::Zero()};
 }
 
 // Force Jacobians for the implicit methods: dF/dx and dF/dv at one state.
@@ -45,6 +53,7 @@ template <> struct Jacobians<Eigen::Dynamic> {
 // propagate through a sum (inf - inf is NaN), so one sum and one test find them all at a
 // dozen additions; the sum also overflows, flagging the state, if its coordinates add up past
 // 1.8e308, which is a blow-up too. (Eigen's allFinite costs ~4x more instructions.)
-template <int D> bool all_finite(const State<D>& s) { return std::isfinite(s.x.sum() + s.v.sum()); }
+// On a pack of runs, lane by lane (a Mask).
+template <int D, class T> auto all_finite(const State<D, T>& s) { return finite(s.x.sum() + s.v.sum()); }
 
 }  // namespace steplab

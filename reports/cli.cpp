@@ -84,7 +84,7 @@ int legacy_command(const LegacyArgs& l) {
 std::string_view value_kind(std::string_view option) {
   static constexpr std::pair<std::string_view, std::string_view> kinds[] = {
       {"--samples", "WHOLE"},         {"--points", "WHOLE"},          {"--threads", "WHOLE"},
-      {"--lanes", "WHOLE"},           {"--shard", "i/N"},
+      {"--lanes", "auto|WHOLE"},      {"--shard", "i/N"},
       {"--map-dt-points", "WHOLE"},   {"--map-damping-points", "WHOLE"},
       {"--methods", "NAME,..."},      {"--dts", "NUMBER,..."},        {"--threshold-dampings", "NUMBER,..."},
       {"--dampings", "NUMBER,..."},   {"--method", "NAME"},           {"--scene", "NAME"},

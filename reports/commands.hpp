@@ -39,7 +39,7 @@ struct ConvergenceArgs {
   std::string error = "final";
   bool reference = false;
   std::string threads = "0";
-  std::string lanes;  // accepted and checked, changes nothing (add_lanes_option)
+  std::string lanes;  // the pack width: auto, 1, 2, 4 or 8 (add_lanes_option)
   std::string shard;  // i/N: write part i of N to --json (reports/shard.hpp)
   bool timing = false;
   std::string json;
@@ -68,7 +68,7 @@ struct StabilityArgs {
   std::string threshold_dampings = "0,0.1,1,4";
   std::string map_dt_points = "64", map_damping_points = "64", map_dt_min = "0.01", map_dt_max = "10";
   std::string threads = "0";
-  std::string lanes;  // accepted and checked, changes nothing (add_lanes_option)
+  std::string lanes;  // the pack width: auto, 1, 2, 4 or 8 (add_lanes_option)
   std::string shard;  // i/N: write part i of N to --json (reports/shard.hpp)
   std::string json;
 };
@@ -118,7 +118,7 @@ struct WorkPrecisionArgs {
   std::string points = "14";                              // dt sweep points per scene
   std::string stiffnesses = "5,50,500,5000,50000,5e5,5e6";  // k2 of the stiffness sweep
   std::string threads = "0";
-  std::string lanes;  // accepted and checked, changes nothing (add_lanes_option)
+  std::string lanes;  // the pack width: auto, 1, 2, 4 or 8 (add_lanes_option)
   std::string shard;  // i/N: write part i of N to --json (reports/shard.hpp)
   bool no_timing = false;  // cost by evaluations only: reproducible byte for byte
   std::string json;

@@ -117,7 +117,7 @@ int work_precision_command(WorkPrecisionArgs& a) {
   c.points = static_cast<int>(parse_count("--points", a.points, 3, 100));
   c.stiffnesses = number_list("--stiffnesses", a.stiffnesses, Bound::Positive);
   c.threads = resolve_thread_count(a.threads);
-  resolve_lanes(a.lanes);  // checked; runs go one at a time
+  resolve_lanes(a.lanes);  // checked; the work-precision runs go one at a time
   c.timing = !a.no_timing;
   begin_shard(a.shard, a.json, c.timing);
   if (stop_after_validation(a.json)) return 0;

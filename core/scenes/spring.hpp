@@ -17,7 +17,9 @@
 
 namespace steplab {
 
-struct Spring {
+// T = double: one spring; T = Pack<W>: W springs, one per lane, stepped together (core/batch.hpp).
+template <class T> struct SpringT {
+  template <class U> using as = SpringT<U>;
   static constexpr int dim = 1;
   static constexpr std::string_view name = "spring";
   static constexpr bool affine_flow = true;  // flow(y, h) below is linear in y - y_eq (core/scene.hpp)
@@ -30,18 +32,18 @@ struct Spring {
       {"gravity", 9.81, Bound::NonNegative, "gravitational acceleration g (pointing down)"},
   }};
 
-  double m, k, gamma, L, g;
-  double inv_m = 1 / m;  // initialized after m (declaration order)
-  double weight = m * g;
+  T m, k, gamma, L, g;
+  T inv_m = 1 / m;  // initialized after m (declaration order)
+  T weight = m * g;
   // Stored, not recomputed in each energy(): in a batch of runs the compiler cannot hoist
   // the division out of the stepping loop.
-  double equilibrium_y = -L - m * g / k;
+  T equilibrium_y = -L - m * g / k;
 
-  explicit Spring(std::span<const double> p) : m(p[0]), k(p[1]), gamma(p[2]), L(p[3]), g(p[4]) {}
+  explicit SpringT(std::span<const T> p) : m(p[0]), k(p[1]), gamma(p[2]), L(p[3]), g(p[4]) {}
 
   // The parameter values it was made from, in table order.
   std::array<double, 5> values() const { return {m, k, gamma, L, g}; }
-  double equilibrium() const { return equilibrium_y; }
+  T equilibrium() const { return equilibrium_y; }
   double omega() const { return std::sqrt(k / m); }              // undamped angular frequency
   double critical_damping() const { return 2 * std::sqrt(k * m); }  // gamma^2 = 4 k m
   // An eigenvalue of m u'' + gamma u' + k u = 0 (notation of flow below): alpha + i beta when
@@ -51,13 +53,14 @@ struct Spring {
     return beta2 > 0 ? std::complex<double>(alpha, std::sqrt(beta2)) : std::complex<double>(alpha - std::sqrt(-beta2), 0);
   }
 
-  Vec<1> mass() const { return Vec<1>::Constant(m); }
-  Vec<1> inverse_mass() const { return Vec<1>::Constant(inv_m); }
+  Vec<1, T> mass() const { return Vec<1, T>::Constant(m); }
+  Vec<1, T> inverse_mass() const { return Vec<1, T>::Constant(inv_m); }
 
-  Vec<1> force(const Vec<1>& x, const Vec<1>& v) const {
-    const double y = x[0];
-    const double sign = (y > 0) - (y < 0);
-    return Vec<1>::Constant(-k * (std::abs(y) - L) * sign - gamma * v[0] - weight);
+  Vec<1, T> force(const Vec<1, T>& x, const Vec<1, T>& v) const {
+    using std::abs;
+    const T y = x[0];
+    const T sign = select(y > 0.0, T(1.0), T(0.0)) - select(y < 0.0, T(1.0), T(0.0));  // sign(y)
+    return Vec<1, T>::Constant(-k * (abs(y) - L) * sign - gamma * v[0] - weight);
   }
 
   // d/dy [-k (|y| - L) sign(y)] = -k away from the anchor; dF/dv = -gamma.
@@ -69,13 +72,13 @@ struct Spring {
 
   // Oscillation energy about the equilibrium: E = 1/2 m v^2 + 1/2 k (y - y_eq)^2.
   // It is not zero at the rest start (y = -L): E(0) = (m g)^2 / (2 k).
-  double energy(const Vec<1>& x, const Vec<1>& v) const {
-    const double u = x[0] - equilibrium();
+  T energy(const Vec<1, T>& x, const Vec<1, T>& v) const {
+    const T u = x[0] - equilibrium();
     return 0.5 * m * v[0] * v[0] + 0.5 * k * u * u;
   }
 
   // Starts at rest at rest length.
-  State<1> initial() const { return {Vec<1>::Constant(-L), Vec<1>::Zero()}; }
+  State<1, T> initial() const { return {Vec<1, T>::Constant(-L), Vec<1, T>::Zero()}; }
 
   State<1> exact_at(double t) const { return flow(initial(), t); }
 
@@ -91,6 +94,8 @@ struct Spring {
     return {Vec<1>::Constant(y_eq + u), Vec<1>::Constant(du)};
   }
 };
+
+using Spring = SpringT<double>;
 
 }  // namespace steplab
 

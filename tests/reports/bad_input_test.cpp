@@ -86,6 +86,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"-testcase error_measurement -step 0", "-step"}, BadInput{"-testcase spring1d -mass nan", "-mass"},
         // lanes, shards and merge
         BadInput{"study stability --lanes 0", "--lanes"}, BadInput{"study convergence --lanes 65", "--lanes"},
+        BadInput{"study stability --lanes 3", "--lanes"}, BadInput{"study convergence --lanes wide", "--lanes"},
         BadInput{"study damping --shard 2", "--shard"}, BadInput{"study damping --shard 0/3 --json {dir}/p.json", "--shard"},
         BadInput{"study stability --shard 4/3 --json {dir}/p.json", "--shard"},
         BadInput{"study collision --shard 1/3", "--json"},

@@ -1,0 +1,266 @@
+// Runs stepped W at a time: the run loop of core/simulate.hpp on packs (core/pack.hpp), one run
+// per lane, structure of arrays. Each lane's numbers are the bits its run gives alone (Run):
+// the same operations in the same order, lane by lane; what depends on the lane becomes a
+// select on a mask.
+//
+//   live   = active lanes whose step left a finite state       (a diverged lane ends here)
+//   y      = live ? next : y
+//   E/E0, its largest, the ln E fit (Welford) and the errors against the stepped exact state,
+//          each updated where live
+//   a lane ends when its steps are done or E/E0 leaves [stop_below, stop_above]; its result
+//   is written and the lane refilled with the next run of the batch (DiffEqGPU.jl masks a
+//   finished lane off; refilling it is what makes packs pay when runs end at different times:
+//   Hentschel et al., EGPGV 2015). The loop ends when no lane has a run.
+//
+// Samples and observers are not kept here: a batch is for the studies' summary runs
+// (PairKernel::run_batch falls back to one run at a time for a spec that asks for samples).
+#pragma once
+
+#include <array>
+#include <concepts>
+#include <cstddef>
+#include <optional>
+#include <span>
+
+#include "core/simulate.hpp"
+
+namespace steplab {
+
+// The pack widths a batch is stepped with, each its instruction set's register (PairKernel::
+// run_batch compiles the loop for each): 2 lanes on plain x86-64 (SSE2), 4 with AVX2 and FMA,
+// 8 with AVX-512. All give the bits of one run at a time (no FMA contraction: -ffp-contract=off;
+// a pack is not passed in registers across calls: core/pack.hpp). 1 is one run at a time.
+inline constexpr int kPackWidths[] = {1, 2, 4, 8};
+
+inline bool cpu_has_width(int width) {
+#if defined(__x86_64__) && defined(__GNUC__)
+  if (width == 4) return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  if (width == 8)
+    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+           __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512bw");
+  return width == 1 || width == 2;
+#else
+  return width == 1;
+#endif
+}
+
+// The studies' default: AVX2's 4 lanes where the CPU has it, else SSE2's 2. Not AVX-512's 8:
+// on the machine the README quotes (AMD EPYC, Zen 4, which executes a 512-bit operation as two
+// 256-bit halves) its loop ran 1.4-2x slower than AVX2's (README, Speed); --lanes 8 asks for it.
+inline int best_width() {
+  static const int best = cpu_has_width(4) ? 4 : cpu_has_width(2) ? 2 : 1;
+  return best;
+}
+
+// One run of a batch: its scene's parameter values (table order) and its spec.
+struct BatchRun {
+  std::span<const double> params;
+  RunSpec spec;
+};
+
+// Whether M steps packs of runs of S: S is Packable, M a one-step method whose step is written
+// over the scalar (core/method.hpp), and an exact flow, where S has one, stepped as an affine map.
+template <class M, class S>
+concept PackedStep = Packable<S> && !Multistep<M> &&
+                     (!HasExact<S> || (HasAffineFlow<S> && requires(const S& s) { s.exact_at(0.0); })) &&
+                     requires(const PackScene<S, Pack<8>>& s, State<S::dim, Pack<8>>& y, Pack<8> h) {
+                       { M::step(s, y, h, h) } -> std::same_as<StepStatus>;
+                     };
+
+// The least-squares slope of ln E against t, accumulated with Welford's update (Run::fit_point),
+// where `take` holds.
+template <class T> struct EnergyFit {
+  T n = 0, mean_t = 0, mean_l = 0, c_tl = 0, m2_t = 0;
+  template <class C> void add(const T& t, const T& e, const C& take) {
+    using std::log;
+    const T l = log(e), n1 = n + 1.0, dt = t - mean_t;
+    const T mt = mean_t + dt / n1, ml = mean_l + (l - mean_l) / n1;
+    c_tl = select(take, c_tl + dt * (l - ml), c_tl);
+    m2_t = select(take, m2_t + dt * (t - mt), m2_t);
+    n = select(take, n1, n), mean_t = select(take, mt, mean_t), mean_l = select(take, ml, mean_l);
+  }
+};
+
+template <class M, Packable S, class T> class BatchRunner {
+  static constexpr int W = T::width;
+  using PS = PackScene<S, T>;
+  using Mk = decltype(T() < T());
+  static constexpr int D = S::dim;
+  static constexpr std::size_t P = S::params.size();
+
+ public:
+  BatchRunner(std::span<const BatchRun> runs, AnyResult* out) : runs_(runs), out_(out) { start(); }
+
+  // Steps until every run of the batch has ended.
+  [[gnu::always_inline]] inline void run() {
+    while (any(active_)) {
+      const T t_prev = (i_ - 1.0) * h_, t = i_ * h_;
+      State<D, T> next = y_;
+      M::step(*scene_, next, t_prev, h_);
+      const Mk live = all_finite(next) && active_;
+      const Mk diverged = active_ && !live;
+      y_.x = select_vec(live, next.x, y_.x);
+      y_.v = select_vec(live, next.v, y_.v);
+      const T e = scene_->energy(y_.x, y_.v);
+      const Mk has_e0 = live && (e0_ != T(0.0));
+      const T ratio = e / e0_;
+      ratio_max_ = select(has_e0, max(ratio_max_, ratio), ratio_max_);
+      ratio_ = select(has_e0, ratio, ratio_);
+      if (const Mk fit = live && rate_ && e > 0.0 && finite(e); any(fit)) fit_.add(t, e, fit);
+      if constexpr (HasExact<S>)
+        if (const Mk on = live && errors_; any(on)) track_errors(on, t);
+      i_ = select(live, i_ + 1.0, i_);
+      const Mk out = ratio_ > above_ || ratio_ < below_;
+      const Mk ended = diverged || (live && (out || i_ > steps_));
+      if (any(ended)) end_lanes(ended, diverged, t);
+    }
+  }
+
+ private:
+  static Vec<D, T> select_vec(const Mk& c, const Vec<D, T>& a, const Vec<D, T>& b) {
+    Vec<D, T> r;
+    for (int j = 0; j < D; ++j) r[j] = select(c, a[j], b[j]);
+    return r;
+  }
+
+  // The exact state, one step on: the affine map, or the closed form every kResync-th step
+  // (ExactTracker::at, lane by lane); the position and velocity errors against it.
+  [[gnu::always_inline]] inline void track_errors(const Mk& on, const T& t) {
+    const Vec<D, T> x = ex_c_.x + ex_xx_ * ex_.x + ex_xv_ * ex_.v;
+    const Vec<D, T> v = ex_c_.v + ex_vx_ * ex_.x + ex_vv_ * ex_.v;
+    ex_.x = select_vec(on, x, ex_.x);
+    ex_.v = select_vec(on, v, ex_.v);
+    const Mk closed = on && left_ <= 1.0;  // 1: the closed form now, then kResync - 1 steps again; 0: always
+    const T next_left = select(left_ > 1.0, left_ - 1.0, select(left_ == T(1.0), T(double(ExactTracker<S>::kResync)), T(0.0)));
+    left_ = select(on, next_left, left_);
+    if (any(closed)) [[unlikely]] closed_form(closed, t);
+    const T err = (y_.x - ex_.x).norm();
+    error_max_ = select(on, max(error_max_, err), error_max_);
+    err_sq_sum_ = select(on, err_sq_sum_ + err * err, err_sq_sum_);
+    error_final_ = select(on, err, error_final_);
+    error_v_final_ = select(on, (y_.v - ex_.v).norm(), error_v_final_);
+  }
+
+  [[gnu::noipa]] void closed_form(const Mk& closed, const T& t) {
+    for (int l = 0; l < W; ++l)
+      if (closed[l]) set_lane(ex_, l, scalar_[l]->exact_at(t[l]));
+  }
+
+  static void set_lane(State<D, T>& y, int l, const State<D>& s) {
+    for (int j = 0; j < D; ++j) y.x[j].set(l, s.x[j]), y.v[j].set(l, s.v[j]);
+  }
+  template <class B> static void set_block(Mat<D, T>& to, int l, const B& from) {
+    for (int r = 0; r < D; ++r)
+      for (int c = 0; c < D; ++c) to(r, c).set(l, from(r, c));
+  }
+
+  // The lanes' first runs. This and the other bookkeeping of a lane are kept out of the stepping
+  // loop (noipa: not inlined, not cloned with its arguments changed), so that the loop compiled
+  // for one instruction set stays small enough for the method's step to be inlined into it.
+  [[gnu::noipa]] void start() {
+    for (int l = 0; l < W; ++l) {
+      for (std::size_t p = 0; p < P; ++p) params_[p].set(l, S::params[p].fallback);  // idle lanes: a valid scene
+      job_[l] = -1;
+    }
+    for (int l = 0; l < W; ++l) refill(l);
+    make_scene();
+  }
+
+  // Writes the results of the lanes that ended, refills them, and remakes the pack's scene.
+  [[gnu::noipa]] void end_lanes(const Mk& ended, const Mk& diverged, const T& t) {
+    for (int l = 0; l < W; ++l) {
+      if (!ended[l]) continue;
+      AnyResult& r = out_[job_[l]];
+      if (diverged[l]) {
+        r.status = RunStatus::Diverged, r.failed_step = static_cast<long long>(i_[l]), r.failed_t = t[l];
+      } else if (ratio_[l] > above_[l]) {
+        r.status = RunStatus::Diverged, r.failed_step = static_cast<long long>(i_[l]) - 1, r.failed_t = t[l];
+      }
+      finish(l);
+      refill(l);
+    }
+    make_scene();
+  }
+
+  // Run::finish for lane l.
+  void finish(int l) {
+    AnyResult& r = out_[job_[l]];
+    const RunSpec& spec = runs_[job_[l]].spec;
+    r.steps = static_cast<long long>(i_[l]) - 1;
+    r.t_final = r.steps * spec.dt;
+    r.final.x.resize(D), r.final.v.resize(D);
+    for (int j = 0; j < D; ++j) r.final.x[j] = y_.x[j][l], r.final.v[j] = y_.v[j][l];
+    r.energy0 = e0_[l];
+    r.error_final = error_final_[l], r.error_max = error_max_[l], r.error_v_final = error_v_final_[l];
+    finish_run(r, HasExact<S> && spec.errors, err_sq_sum_[l], ratio_[l], ratio_max_[l]);
+    if (spec.energy_rate && fit_.m2_t[l] > 0) r.energy_rate = fit_.c_tl[l] / fit_.m2_t[l];
+  }
+
+  // Loads the next run of the batch into lane l (the Run constructor), finishing at once a run
+  // of no steps; none left: the lane goes idle.
+  void refill(int l) {
+    for (;;) {
+      if (next_ >= runs_.size()) {
+        job_[l] = -1;
+        active_.set(l, false);
+        return;
+      }
+      job_[l] = static_cast<long long>(next_++);
+      const BatchRun& run = runs_[job_[l]];
+      out_[job_[l]] = AnyResult{};
+      const S& s = scalar_[l].emplace(run.params);
+      for (std::size_t p = 0; p < P; ++p) params_[p].set(l, run.params[p]);
+      const State<D> y0 = s.initial();
+      set_lane(y_, l, y0);
+      const double e0 = s.energy(y0.x, y0.v);
+      e0_.set(l, e0), ratio_.set(l, 1), ratio_max_.set(l, 1);
+      h_.set(l, run.spec.dt), i_.set(l, 1), steps_.set(l, static_cast<double>(run.spec.steps));
+      above_.set(l, run.spec.stop_above), below_.set(l, run.spec.stop_below);
+      rate_.set(l, run.spec.energy_rate);
+      errors_.set(l, HasExact<S> && run.spec.errors);
+      EnergyFit<double> fit;
+      if (run.spec.energy_rate) fit.add(0.0, e0, e0 > 0 && std::isfinite(e0));
+      fit_.n.set(l, fit.n), fit_.mean_t.set(l, fit.mean_t), fit_.mean_l.set(l, fit.mean_l);
+      fit_.c_tl.set(l, fit.c_tl), fit_.m2_t.set(l, fit.m2_t);
+      error_max_.set(l, 0), err_sq_sum_.set(l, 0), error_final_.set(l, 0), error_v_final_.set(l, 0);
+      if constexpr (HasExact<S>) {
+        if (errors_[l]) load_tracker(l, s, run.spec.dt);
+      }
+      if (run.spec.steps >= 1) {
+        active_.set(l, true);
+        return;
+      }
+      finish(l);
+    }
+  }
+
+  void load_tracker(int l, const S& s, double h) {
+    const ExactTracker<S> tracker(s, h);
+    set_lane(ex_c_, l, tracker.offset());
+    set_block(ex_xx_, l, tracker.xx()), set_block(ex_xv_, l, tracker.xv());
+    set_block(ex_vx_, l, tracker.vx()), set_block(ex_vv_, l, tracker.vv());
+    set_lane(ex_, l, s.initial());
+    left_.set(l, tracker.stepping() ? ExactTracker<S>::kResync : 0);
+  }
+
+  void make_scene() { scene_.emplace(std::span<const T>(params_)); }
+
+  std::span<const BatchRun> runs_;
+  AnyResult* out_;
+  std::size_t next_ = 0;
+  std::array<long long, W> job_{};
+  std::array<std::optional<S>, W> scalar_;  // each lane's scene, for its exact flow
+  std::array<T, P> params_{};
+  std::optional<PS> scene_;
+  Mk active_{}, rate_{}, errors_{};
+  State<D, T> y_ = zero_state<D, T>();
+  T h_ = 0, i_ = 1, steps_ = 0, above_ = 0, below_ = 0;
+  T e0_ = 0, ratio_ = 1, ratio_max_ = 1;
+  EnergyFit<T> fit_;
+  T error_max_ = 0, err_sq_sum_ = 0, error_final_ = 0, error_v_final_ = 0;
+  State<D, T> ex_ = zero_state<D, T>(), ex_c_ = zero_state<D, T>();
+  Mat<D, T> ex_xx_ = Mat<D, T>::Zero(), ex_xv_ = Mat<D, T>::Zero(), ex_vx_ = Mat<D, T>::Zero(), ex_vv_ = Mat<D, T>::Zero();
+  T left_ = 0;
+};
+
+}  // namespace steplab
