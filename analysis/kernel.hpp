@@ -84,8 +84,8 @@ struct PairKernel {
   // The runs, `width` (2, 4 or 8: cpu_has_width, core/batch.hpp) at a time in SIMD lanes, the
   // loop compiled for that width's instruction set; out[i] is what run() gives for runs[i], to
   // the bit. Where the method's step is written over the scalar and the scene is Packable (the
-  // one-step explicit methods on the spring, today); null elsewhere. A spec asking for samples
-  // runs one at a time.
+  // explicit one-step methods and Adams-Bashforth on the spring, today); null elsewhere. A spec
+  // asking for samples runs one at a time.
   void (*run_batch)(std::span<const BatchRun> runs, AnyResult* out, int width);
 };
 

@@ -23,6 +23,7 @@
 #include <span>
 
 #include "core/simulate.hpp"
+#include "core/stepper.hpp"
 
 namespace steplab {
 
@@ -58,13 +59,15 @@ struct BatchRun {
   RunSpec spec;
 };
 
-// Whether M steps packs of runs of S: S is Packable, M a one-step method whose step is written
-// over the scalar (core/method.hpp), and an exact flow, where S has one, stepped as an affine map.
+// Whether M steps packs of runs of S: S is Packable, M's step (with its memory, for a multistep
+// method) is written over the scalar (core/method.hpp), and an exact flow, where S has one, is
+// stepped as an affine map.
 template <class M, class S>
-concept PackedStep = Packable<S> && !Multistep<M> &&
+concept PackedStep = Packable<S> &&
                      (!HasExact<S> || (HasAffineFlow<S> && requires(const S& s) { s.exact_at(0.0); })) &&
-                     requires(const PackScene<S, Pack<8>>& s, State<S::dim, Pack<8>>& y, Pack<8> h) {
-                       { M::step(s, y, h, h) } -> std::same_as<StepStatus>;
+                     requires(Stepper<M, PackScene<S, Pack<8>>, Pack<8>>& st, const PackScene<S, Pack<8>>& s,
+                              State<S::dim, Pack<8>>& y, Pack<8> h) {
+                       { st.step(s, y, h, h) } -> std::same_as<StepStatus>;
                      };
 
 // The least-squares slope of ln E against t, accumulated with Welford's update (Run::fit_point),
@@ -96,11 +99,11 @@ template <class M, Packable S, class T> class BatchRunner {
     while (any(active_)) {
       const T t_prev = (i_ - 1.0) * h_, t = i_ * h_;
       State<D, T> next = y_;
-      M::step(*scene_, next, t_prev, h_);
+      stepper_.step(*scene_, next, t_prev, h_);
       const Mk live = all_finite(next) && active_;
       const Mk diverged = active_ && !live;
-      y_.x = select_vec(live, next.x, y_.x);
-      y_.v = select_vec(live, next.v, y_.v);
+      y_.x = select(live, next.x, y_.x);
+      y_.v = select(live, next.v, y_.v);
       const T e = scene_->energy(y_.x, y_.v);
       const Mk has_e0 = live && (e0_ != T(0.0));
       const T ratio = e / e0_;
@@ -117,19 +120,13 @@ template <class M, Packable S, class T> class BatchRunner {
   }
 
  private:
-  static Vec<D, T> select_vec(const Mk& c, const Vec<D, T>& a, const Vec<D, T>& b) {
-    Vec<D, T> r;
-    for (int j = 0; j < D; ++j) r[j] = select(c, a[j], b[j]);
-    return r;
-  }
-
   // The exact state, one step on: the affine map, or the closed form every kResync-th step
   // (ExactTracker::at, lane by lane); the position and velocity errors against it.
   [[gnu::always_inline]] inline void track_errors(const Mk& on, const T& t) {
     const Vec<D, T> x = ex_c_.x + ex_xx_ * ex_.x + ex_xv_ * ex_.v;
     const Vec<D, T> v = ex_c_.v + ex_vx_ * ex_.x + ex_vv_ * ex_.v;
-    ex_.x = select_vec(on, x, ex_.x);
-    ex_.v = select_vec(on, v, ex_.v);
+    ex_.x = select(on, x, ex_.x);
+    ex_.v = select(on, v, ex_.v);
     const Mk closed = on && left_ <= 1.0;  // 1: the closed form now, then kResync - 1 steps again; 0: always
     const T next_left = select(left_ > 1.0, left_ - 1.0, select(left_ == T(1.0), T(double(ExactTracker<S>::kResync)), T(0.0)));
     left_ = select(on, next_left, left_);
@@ -226,6 +223,7 @@ template <class M, Packable S, class T> class BatchRunner {
       if constexpr (HasExact<S>) {
         if (errors_[l]) load_tracker(l, s, run.spec.dt);
       }
+      if constexpr (Multistep<M>) stepper_.memory.count.set(l, 0);  // the lane starts itself again
       if (run.spec.steps >= 1) {
         active_.set(l, true);
         return;
@@ -252,6 +250,7 @@ template <class M, Packable S, class T> class BatchRunner {
   std::array<std::optional<S>, W> scalar_;  // each lane's scene, for its exact flow
   std::array<T, P> params_{};
   std::optional<PS> scene_;
+  Stepper<M, PS, T> stepper_;  // a multistep method's memory, lane by lane
   Mk active_{}, rate_{}, errors_{};
   State<D, T> y_ = zero_state<D, T>();
   T h_ = 0, i_ = 1, steps_ = 0, above_ = 0, below_ = 0;

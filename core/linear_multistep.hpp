@@ -21,9 +21,9 @@
 namespace steplab {
 
 // Sum_j c[j] e_j over e_0 = `now` and the memory's entries e_1 .. e_K.
-template <auto C, int D, int K> State<D> combination(const State<D>& now, const History<D, K>& mem) {
+template <auto C, int D, int K, class T> State<D, T> combination(const State<D, T>& now, const History<D, K, T>& mem) {
   static_assert(C.size() == K + 1);
-  State<D> out{C[0] * now.x, C[0] * now.v};
+  State<D, T> out{C[0] * now.x, C[0] * now.v};
   for (int j = 1; j <= K; ++j) {
     out.x += C[j] * mem.past[j - 1].x;
     out.v += C[j] * mem.past[j - 1].v;
@@ -38,16 +38,26 @@ template <auto B> struct AdamsBashforthMethod {
   template <Scene S, class Past> static History<S::dim, history> remember(const S& s, Past&& past) {
     return history_of<S::dim, history>([&](int k) { return derivative(s, past(k)); });
   }
-  template <Scene S>
-  static StepStatus step(const S& s, State<S::dim>& y, double t, double h, History<S::dim, history>& mem) {
-    const State<S::dim> f = derivative(s, y);
-    if (mem.count < history) {
+  // Also on packs (core/batch.hpp), where lanes start at different steps: RK4 where a lane is
+  // still starting, the Adams-Bashforth sum where it is not, each only where some lane needs it.
+  template <class S, class T>
+  static StepStatus step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h, History<S::dim, history, T>& mem) {
+    const State<S::dim, T> f = derivative(s, y);
+    const auto starting = mem.count < double(history);
+    if (all(starting)) {
       mem.push(f);
       return Rk4::step(s, y, t, h);
     }
-    const State<S::dim> sum = combination<B>(f, mem);
-    y.x += h * sum.x;
-    y.v += h * sum.v;
+    const State<S::dim, T> sum = combination<B>(f, mem);
+    if (any(starting)) {  // some lanes of a pack (one run is all or none)
+      State<S::dim, T> started = y;
+      Rk4::step(s, started, t, h);
+      y.x = select(starting, started.x, Vec<S::dim, T>(y.x + h * sum.x));
+      y.v = select(starting, started.v, Vec<S::dim, T>(y.v + h * sum.v));
+    } else {
+      y.x += h * sum.x;
+      y.v += h * sum.v;
+    }
     mem.push(f);
     return StepStatus::Ok;
   }

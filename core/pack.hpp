@@ -117,7 +117,7 @@ template <int W, int R> bool any(const Mask<W, R>& c) {
 }
 template <int W, int R> bool all(const Mask<W, R>& c) { return !any(!c); }
 
-// Lane-wise |a| (the sign bit cleared, as std::abs does) and max as std::max(a, b) picks.
+// Lane-wise |a| (the sign bit cleared, as std::abs does), max and min as std::max and std::min pick.
 template <int W, int R> Pack<W, R> abs(const Pack<W, R>& a) {
   using P = Pack<W, R>;
   P p;
@@ -126,6 +126,7 @@ template <int W, int R> Pack<W, R> abs(const Pack<W, R>& a) {
   return p;
 }
 template <int W, int R> Pack<W, R> max(const Pack<W, R>& a, const Pack<W, R>& b) { return select(a < b, b, a); }
+template <int W, int R> Pack<W, R> min(const Pack<W, R>& a, const Pack<W, R>& b) { return select(b < a, b, a); }
 // Correctly rounded in every lane, like std::sqrt (GCC emits one sqrtpd for the loop: with
 // -fno-math-errno, CMakeLists.txt).
 template <int W, int R> Pack<W, R> sqrt(const Pack<W, R>& a) {

@@ -30,6 +30,13 @@ template <int D, class T = double> struct State {
 };
 
 // A zero state; empty for a state whose size is set at run time (D = Eigen::Dynamic).
+// Lane by lane a where c holds, else b (c a bool for one run, a Mask for a pack).
+template <class C, int D, class T> Vec<D, T> select(const C& c, const Vec<D, T>& a, const Vec<D, T>& b) {
+  Vec<D, T> r = b;
+  for (int j = 0; j < a.size(); ++j) r[j] = select(c, a[j], b[j]);
+  return r;
+}
+
 template <int D, class T = double> State<D, T> zero_state() {
   if constexpr (D == Eigen::Dynamic) return {};
   else return {Vec<D, T>::Zero(), Vec<D, T>::Zero()};

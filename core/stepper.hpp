@@ -18,17 +18,19 @@
 
 namespace steplab {
 
-// The last K entries (states or derivatives, as the method chooses), past[0] the most recent.
-template <int D, int K> struct History {
-  std::array<State<D>, K> past;
-  int count = 0;  // how many are filled; a method starts itself (one-step steps) until count == K
+// The last K entries (states or derivatives, as the method chooses), past[0] the most recent;
+// T a pack for runs stepped together (core/batch.hpp), each lane its own count.
+template <int D, int K, class T = double> struct History {
+  std::array<State<D, T>, K> past;
+  T count = 0;  // how many are filled; a method starts itself (one-step steps) until count == K
   // Zeroed (Eigen leaves a vector uninitialised): never read before count says so, but the
   // compiler cannot see that through a method's start-up branch.
-  History() { past.fill(zero_state<D>()); }
-  void push(const State<D>& s) {
+  History() { past.fill(zero_state<D, T>()); }
+  void push(const State<D, T>& s) {
+    using std::min;
     for (int i = K - 1; i > 0; --i) past[i] = past[i - 1];
     past[0] = s;
-    count = std::min(count + 1, K);
+    count = min(count + 1.0, T(double(K)));
   }
 };
 
@@ -41,17 +43,27 @@ template <int D, int K, class Entry> History<D, K> history_of(Entry&& entry) {
 
 template <class M> concept Multistep = requires { M::history; };
 
-template <class M, Scene S> struct Stepper {
-  StepStatus step(const S& s, State<S::dim>& y, double t, double h) { return M::step(s, y, t, h); }
+// S: a scene, or the scene of a pack of runs with T its pack (step is then there only where M's
+// step is written over the scalar: core/batch.hpp's PackedStep asks).
+template <class M, class S, class T = double> struct Stepper {
+  StepStatus step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h)
+    requires requires { M::step(s, y, t, h); }
+  {
+    return M::step(s, y, t, h);
+  }
 };
 
-template <Multistep M, Scene S> struct Stepper<M, S> {
-  History<S::dim, M::history> memory{};
-  StepStatus step(const S& s, State<S::dim>& y, double t, double h) { return M::step(s, y, t, h, memory); }
+template <Multistep M, class S, class T> struct Stepper<M, S, T> {
+  History<S::dim, M::history, T> memory{};
+  StepStatus step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h)
+    requires requires { M::step(s, y, t, h, memory); }
+  {
+    return M::step(s, y, t, h, memory);
+  }
 };
 
 // The derivative of the first-order system, f(y) = (v, a(x, v)), stored as a State.
-template <Scene S> State<S::dim> derivative(const S& s, const State<S::dim>& y) {
+template <class S, class T> State<S::dim, T> derivative(const S& s, const State<S::dim, T>& y) {
   return {y.v, acceleration(s, y.x, y.v)};
 }
 
