@@ -84,8 +84,8 @@ struct PairKernel {
   // The runs, `width` (2, 4 or 8: cpu_has_width, core/batch.hpp) at a time in SIMD lanes, the
   // loop compiled for that width's instruction set; out[i] is what run() gives for runs[i], to
   // the bit. Where the method's step is written over the scalar and the scene is Packable (the
-  // explicit one-step methods and Adams-Bashforth on the spring, today); null elsewhere. A spec
-  // asking for samples runs one at a time.
+  // explicit one-step methods and Adams-Bashforth on the spring, today); null elsewhere. Keeps
+  // no samples (run_all gives runs that ask for them to run()).
   void (*run_batch)(std::span<const BatchRun> runs, AnyResult* out, int width);
 };
 
@@ -134,8 +134,9 @@ inline std::string_view scene_name(std::size_t s) { return scene_kernel(s).name;
 
 // The runs of one pair, in order: in packs of `width` lanes (2, 4 or 8, as the CPU has them:
 // cpu_has_width) where the pair has run_batch, one at a time where it has not or `width` is 1
-// (the reference the packs are measured and tested against); 0: best_width(). The same numbers
-// whatever the width. A width this CPU cannot step throws std::invalid_argument.
+// (the reference the packs are measured and tested against) or where a run asks for samples;
+// 0: best_width(). The same numbers whatever the width. A width this CPU cannot step throws
+// std::invalid_argument.
 std::vector<AnyResult> run_all(const PairKernel& k, std::span<const BatchRun> runs, int width);
 
 // Method m's code on scene s; throws std::invalid_argument where m does not apply (the exact

@@ -180,11 +180,6 @@ template <class M, Scene S> struct BatchCode {
   }
 #endif
   static void run_batch(std::span<const BatchRun> runs, AnyResult* out, int width) {
-    for (const BatchRun& r : runs)
-      if (r.spec.max_samples > 0) {
-        for (std::size_t i = 0; i < runs.size(); ++i) out[i] = PairCode<M, S>::run(runs[i].params, runs[i].spec);
-        return;
-      }
 #if defined(__x86_64__) && defined(__GNUC__)
     if (width == 4) return avx2(runs, out);
     if (width == 8) return avx512(runs, out);

@@ -49,39 +49,40 @@ RunSpec throughput_spec(std::size_t i, bool rate) {
   return spec;
 }
 
-// The baseline's loop: the spring's force as Spring::force (sign(y) as two selects, so that GCC
-// vectorises it across the lanes), a = F * (1/m), x += h v, v += h a; compiled for plain x86-64
-// and AVX2.
-STEPLAB_MULTIVERSION void baseline_steps(std::array<double, kLanes>& y_out, std::array<double, kLanes>& v_out,
-                                         const std::array<double, kLanes>& h_in) {
-  const double m = 1, k = 5, gamma = 0.1, L = 5, g = 9.81, inv_m = 1 / m, weight = m * g;
+// The baseline's spring (the defaults) and one explicit Euler step of one lane: the force as
+// Spring::force (sign(y) as two selects, so that GCC vectorises it across the lanes),
+// a = F * (1/m), x += h v, v += h a.
+constexpr double kM = 1, kK = 5, kGamma = 0.1, kL = 5, kG = 9.81, kInvM = 1 / kM, kWeight = kM * kG;
+constexpr double kEquilibrium = -kL - kM * kG / kK;
+[[gnu::always_inline]] inline void euler_lane(double& y, double& v, double h) {
+  const double sign = (y > 0 ? 1.0 : 0.0) - (y < 0 ? 1.0 : 0.0);
+  const double a = (-kK * (std::abs(y) - kL) * sign - kGamma * v - kWeight) * kInvM;
+  y += h * v;
+  v += h * a;
+}
+
+// The baseline's loops, compiled for plain x86-64 and AVX2: the steps alone, and the steps with
+// the energy-rate fit of `study stability` (E as Spring::energy, ln E, Welford's update of its
+// slope against t); each returns something of its lanes for the benchmark to keep.
+STEPLAB_MULTIVERSION double baseline_steps(std::array<double, kLanes>& y_out, std::array<double, kLanes>& v_out,
+                                           const std::array<double, kLanes>& h_in) {
   std::array<double, kLanes> y = y_out, v = v_out, h = h_in;  // local: no aliasing between them
   for (long long i = 0; i < kSteps; ++i)
 #pragma GCC unroll 1  // left a loop, for the vectoriser (unrolled first, GCC 12 leaves it scalar)
-    for (std::size_t l = 0; l < kLanes; ++l) {
-      const double sign = (y[l] > 0 ? 1.0 : 0.0) - (y[l] < 0 ? 1.0 : 0.0);
-      const double a = (-k * (std::abs(y[l]) - L) * sign - gamma * v[l] - weight) * inv_m;
-      y[l] += h[l] * v[l];
-      v[l] += h[l] * a;
-    }
+    for (std::size_t l = 0; l < kLanes; ++l) euler_lane(y[l], v[l], h[l]);
   y_out = y;
   v_out = v;
+  return y[0];
 }
 
-// The baseline with the energy-rate fit of `study stability` written by hand: E of the spring
-// (kinetic, spring and gravity terms, m = 1), ln E, and Welford's update of its slope against t.
 STEPLAB_MULTIVERSION double baseline_rate_steps(std::array<double, kLanes>& y_out, std::array<double, kLanes>& v_out,
                                                 const std::array<double, kLanes>& h_in) {
-  const double m = 1, k = 5, gamma = 0.1, L = 5, g = 9.81, inv_m = 1 / m, weight = m * g;
   std::array<double, kLanes> y = y_out, v = v_out, h = h_in, n{}, mt{}, ml{}, c{}, m2{};
   for (long long i = 0; i < kSteps; ++i)
 #pragma GCC unroll 1
     for (std::size_t l = 0; l < kLanes; ++l) {
-      const double sign = (y[l] > 0 ? 1.0 : 0.0) - (y[l] < 0 ? 1.0 : 0.0);
-      const double a = (-k * (std::abs(y[l]) - L) * sign - gamma * v[l] - weight) * inv_m;
-      y[l] += h[l] * v[l];
-      v[l] += h[l] * a;
-      const double s = std::abs(y[l]) - L, e = 0.5 * m * v[l] * v[l] + 0.5 * k * s * s + weight * (y[l] + 20);
+      euler_lane(y[l], v[l], h[l]);
+      const double u = y[l] - kEquilibrium, e = 0.5 * kM * v[l] * v[l] + 0.5 * kK * u * u;
       const double t = static_cast<double>(i + 1) * h[l], lg = std::log(e), n1 = n[l] + 1, dt = t - mt[l];
       const double mt1 = mt[l] + dt / n1, ml1 = ml[l] + (lg - ml[l]) / n1;
       c[l] += dt * (lg - ml1), m2[l] += dt * (t - mt1), n[l] = n1, mt[l] = mt1, ml[l] = ml1;
@@ -114,6 +115,24 @@ void register_steplab_throughput(const std::string& prefix, bool rate, int width
   });
 }
 
+using BaselineLoop = double (*)(std::array<double, kLanes>&, std::array<double, kLanes>&, const std::array<double, kLanes>&);
+
+void register_baseline(const std::string& prefix, BaselineLoop loop) {
+  benchmark::RegisterBenchmark((prefix + "/spring/explicit_euler").c_str(), [loop](benchmark::State& st) {
+    std::array<double, kLanes> y, v, h;
+    for (std::size_t l = 0; l < kLanes; ++l) h[l] = step_of(l);
+    for (auto _ : st) {
+      y.fill(-kL);
+      v.fill(0);
+      benchmark::DoNotOptimize(h);
+      benchmark::DoNotOptimize(loop(y, v, h));
+      benchmark::DoNotOptimize(y);
+      benchmark::DoNotOptimize(v);
+    }
+    set_rate(st);
+  });
+}
+
 }  // namespace
 
 std::pair<int, long long> register_throughput() {
@@ -121,30 +140,7 @@ std::pair<int, long long> register_throughput() {
   register_steplab_throughput("throughput_rate", true, 0);
   for (int w : kPackWidths)
     if (cpu_has_width(w)) register_steplab_throughput("throughput_w" + std::to_string(w), false, w);
-  benchmark::RegisterBenchmark("throughput_baseline_rate/spring/explicit_euler", [](benchmark::State& st) {
-    std::array<double, kLanes> y, v, h;
-    for (std::size_t l = 0; l < kLanes; ++l) h[l] = step_of(l);
-    for (auto _ : st) {
-      y.fill(-5);
-      v.fill(0);
-      benchmark::DoNotOptimize(h);
-      benchmark::DoNotOptimize(baseline_rate_steps(y, v, h));
-      benchmark::DoNotOptimize(y);
-    }
-    set_rate(st);
-  });
-  benchmark::RegisterBenchmark("throughput_baseline/spring/explicit_euler", [](benchmark::State& st) {
-    std::array<double, kLanes> y, v, h;
-    for (std::size_t l = 0; l < kLanes; ++l) h[l] = step_of(l);
-    for (auto _ : st) {
-      y.fill(-5);
-      v.fill(0);
-      benchmark::DoNotOptimize(h);
-      baseline_steps(y, v, h);
-      benchmark::DoNotOptimize(y);
-      benchmark::DoNotOptimize(v);
-    }
-    set_rate(st);
-  });
+  register_baseline("throughput_baseline", baseline_steps);
+  register_baseline("throughput_baseline_rate", baseline_rate_steps);
   return {static_cast<int>(kLanes), static_cast<long long>(kLanes) * kSteps};
 }

@@ -12,8 +12,8 @@
 //   finished lane off; refilling it is what makes packs pay when runs end at different times:
 //   Hentschel et al., EGPGV 2015). The loop ends when no lane has a run.
 //
-// Samples and observers are not kept here: a batch is for the studies' summary runs
-// (PairKernel::run_batch falls back to one run at a time for a spec that asks for samples).
+// Samples and observers are not kept here: a batch is for the studies' summary runs (run_all,
+// analysis/kernel.hpp, runs a spec that asks for samples one at a time).
 #pragma once
 
 #include <array>
@@ -47,7 +47,7 @@ inline bool cpu_has_width(int width) {
 
 // The studies' default: AVX2's 4 lanes where the CPU has it, else SSE2's 2. Not AVX-512's 8:
 // on the machine the README quotes (AMD EPYC, Zen 4, which executes a 512-bit operation as two
-// 256-bit halves) its loop ran 1.4-2x slower than AVX2's (README, Speed); --lanes 8 asks for it.
+// 256-bit halves) its loop ran 2x slower than AVX2's (README, SIMD packs); --lanes 8 asks for it.
 inline int best_width() {
   static const int best = cpu_has_width(4) ? 4 : cpu_has_width(2) ? 2 : 1;
   return best;
@@ -69,20 +69,6 @@ concept PackedStep = Packable<S> &&
                               State<S::dim, Pack<8>>& y, Pack<8> h) {
                        { st.step(s, y, h, h) } -> std::same_as<StepStatus>;
                      };
-
-// The least-squares slope of ln E against t, accumulated with Welford's update (Run::fit_point),
-// where `take` holds.
-template <class T> struct EnergyFit {
-  T n = 0, mean_t = 0, mean_l = 0, c_tl = 0, m2_t = 0;
-  template <class C> void add(const T& t, const T& e, const C& take) {
-    using std::log;
-    const T l = log(e), n1 = n + 1.0, dt = t - mean_t;
-    const T mt = mean_t + dt / n1, ml = mean_l + (l - mean_l) / n1;
-    c_tl = select(take, c_tl + dt * (l - ml), c_tl);
-    m2_t = select(take, m2_t + dt * (t - mt), m2_t);
-    n = select(take, n1, n), mean_t = select(take, mt, mean_t), mean_l = select(take, ml, mean_l);
-  }
-};
 
 template <class M, Packable S, class T> class BatchRunner {
   static constexpr int W = T::width;
@@ -109,7 +95,7 @@ template <class M, Packable S, class T> class BatchRunner {
       const T ratio = e / e0_;
       ratio_max_ = select(has_e0, max(ratio_max_, ratio), ratio_max_);
       ratio_ = select(has_e0, ratio, ratio_);
-      if (const Mk fit = live && rate_ && e > 0.0 && finite(e); any(fit)) fit_.add(t, e, fit);
+      fit_.add(t, e, live && rate_ && e > 0.0 && finite(e));
       if constexpr (HasExact<S>)
         if (const Mk on = live && errors_; any(on)) track_errors(on, t);
       i_ = select(live, i_ + 1.0, i_);
@@ -131,11 +117,7 @@ template <class M, Packable S, class T> class BatchRunner {
     const T next_left = select(left_ > 1.0, left_ - 1.0, select(left_ == T(1.0), T(double(ExactTracker<S>::kResync)), T(0.0)));
     left_ = select(on, next_left, left_);
     if (any(closed)) [[unlikely]] closed_form(closed, t);
-    const T err = (y_.x - ex_.x).norm();
-    error_max_ = select(on, max(error_max_, err), error_max_);
-    err_sq_sum_ = select(on, err_sq_sum_ + err * err, err_sq_sum_);
-    error_final_ = select(on, err, error_final_);
-    error_v_final_ = select(on, (y_.v - ex_.v).norm(), error_v_final_);
+    error_sums_.add(y_, ex_, on);
   }
 
   [[gnu::noipa]] void closed_form(const Mk& closed, const T& t) {
@@ -145,6 +127,15 @@ template <class M, Packable S, class T> class BatchRunner {
 
   static void set_lane(State<D, T>& y, int l, const State<D>& s) {
     for (int j = 0; j < D; ++j) y.x[j].set(l, s.x[j]), y.v[j].set(l, s.v[j]);
+  }
+  // Lane l of a pack's accumulators (ErrorSums, EnergyFit: core/simulate.hpp) as one run's, and back.
+  template <template <class> class A> static A<double> lane(const A<T>& a, int l) {
+    A<double> one;
+    for (std::size_t f = 0; f < A<T>::fields().size(); ++f) one.*A<double>::fields()[f] = (a.*A<T>::fields()[f])[l];
+    return one;
+  }
+  template <template <class> class A> static void set_lane(A<T>& a, int l, const A<double>& one) {
+    for (std::size_t f = 0; f < A<T>::fields().size(); ++f) (a.*A<T>::fields()[f]).set(l, one.*A<double>::fields()[f]);
   }
   template <class B> static void set_block(Mat<D, T>& to, int l, const B& from) {
     for (int r = 0; r < D; ++r)
@@ -188,9 +179,8 @@ template <class M, Packable S, class T> class BatchRunner {
     r.final.x.resize(D), r.final.v.resize(D);
     for (int j = 0; j < D; ++j) r.final.x[j] = y_.x[j][l], r.final.v[j] = y_.v[j][l];
     r.energy0 = e0_[l];
-    r.error_final = error_final_[l], r.error_max = error_max_[l], r.error_v_final = error_v_final_[l];
-    finish_run(r, HasExact<S> && spec.errors, err_sq_sum_[l], ratio_[l], ratio_max_[l]);
-    if (spec.energy_rate && fit_.m2_t[l] > 0) r.energy_rate = fit_.c_tl[l] / fit_.m2_t[l];
+    finish_run(r, HasExact<S> && spec.errors, lane(error_sums_, l), ratio_[l], ratio_max_[l]);
+    if (spec.energy_rate) r.energy_rate = lane(fit_, l).slope();
   }
 
   // Loads the next run of the batch into lane l (the Run constructor), finishing at once a run
@@ -215,11 +205,10 @@ template <class M, Packable S, class T> class BatchRunner {
       above_.set(l, run.spec.stop_above), below_.set(l, run.spec.stop_below);
       rate_.set(l, run.spec.energy_rate);
       errors_.set(l, HasExact<S> && run.spec.errors);
-      EnergyFit<double> fit;
+      EnergyFit<double> fit;  // as Run's constructor starts it
       if (run.spec.energy_rate) fit.add(0.0, e0, e0 > 0 && std::isfinite(e0));
-      fit_.n.set(l, fit.n), fit_.mean_t.set(l, fit.mean_t), fit_.mean_l.set(l, fit.mean_l);
-      fit_.c_tl.set(l, fit.c_tl), fit_.m2_t.set(l, fit.m2_t);
-      error_max_.set(l, 0), err_sq_sum_.set(l, 0), error_final_.set(l, 0), error_v_final_.set(l, 0);
+      set_lane(fit_, l, fit);
+      set_lane(error_sums_, l, ErrorSums<double>{});
       if constexpr (HasExact<S>) {
         if (errors_[l]) load_tracker(l, s, run.spec.dt);
       }
@@ -256,7 +245,7 @@ template <class M, Packable S, class T> class BatchRunner {
   T h_ = 0, i_ = 1, steps_ = 0, above_ = 0, below_ = 0;
   T e0_ = 0, ratio_ = 1, ratio_max_ = 1;
   EnergyFit<T> fit_;
-  T error_max_ = 0, err_sq_sum_ = 0, error_final_ = 0, error_v_final_ = 0;
+  ErrorSums<T> error_sums_;
   State<D, T> ex_ = zero_state<D, T>(), ex_c_ = zero_state<D, T>();
   Mat<D, T> ex_xx_ = Mat<D, T>::Zero(), ex_xv_ = Mat<D, T>::Zero(), ex_vx_ = Mat<D, T>::Zero(), ex_vv_ = Mat<D, T>::Zero();
   T left_ = 0;

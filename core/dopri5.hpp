@@ -103,7 +103,8 @@ AdaptiveResult<S::dim> simulate_dopri5(const S& s, const AdaptiveSpec& spec, Obs
   State<D> y = s.initial();
   const double e0 = s.energy(y.x, y.v);
   r.energy0 = e0;
-  double ratio = 1, ratio_max = 1, err_sq_sum = 0;
+  double ratio = 1, ratio_max = 1;
+  ErrorSums<double> errors;
   const long long n_samples = spec.max_samples > 0 ? std::max(2LL, spec.max_samples) : 0;
   r.samples.reserve(static_cast<std::size_t>(n_samples));
   long long next_sample = 0;
@@ -186,7 +187,7 @@ AdaptiveResult<S::dim> simulate_dopri5(const S& s, const AdaptiveSpec& spec, Obs
       ratio_max = std::max(ratio_max, ratio);
     }
     if constexpr (HasExact<S>) {
-      if (spec.errors) track_error(tracker, t, y, r, err_sq_sum);
+      if (spec.errors) errors.add(y, tracker.at(t), true);
     }
     observe(t, y);
     const double grow = en == 0 ? max_factor : std::min(max_factor, safety * std::pow(en, -0.2));
@@ -196,7 +197,7 @@ AdaptiveResult<S::dim> simulate_dopri5(const S& s, const AdaptiveSpec& spec, Obs
   r.steps = st.accepted;
   r.t_final = t;
   r.final = y;
-  finish_run(r, HasExact<S> && spec.errors, err_sq_sum, ratio, ratio_max);
+  finish_run(r, HasExact<S> && spec.errors, errors, ratio, ratio_max);
   return out;
 }
 

@@ -163,12 +163,9 @@ template <HasExact S> class ExactTracker {
 // Acceleration a = M^{-1} F(x, v), written F * (1/m) with 1/m stored by the scene: no division
 // in a step (its latency is ~3x a multiplication's, and each step waits on the last). Differs
 // from F / m by at most an ulp.
-template <class S> Vec<S::dim> acceleration(const S& s, const Vec<S::dim>& x, const Vec<S::dim>& v) {
-  return s.force(x, v).cwiseProduct(s.inverse_mass());
-}
-// The same on packs: S is then the scene of a pack of runs (Packable below).
-template <class S, int W, int R>
-Vec<S::dim, Pack<W, R>> acceleration(const S& s, const Vec<S::dim, Pack<W, R>>& x, const Vec<S::dim, Pack<W, R>>& v) {
+// x and v are vectors (or Eigen expressions of them) of doubles for one run, of packs where S is
+// the scene of a pack of runs (Packable below).
+template <class S, class X, class V> Vec<S::dim, typename X::Scalar> acceleration(const S& s, const X& x, const V& v) {
   return s.force(x, v).cwiseProduct(s.inverse_mass());
 }
 

@@ -13,6 +13,7 @@
 //     at the end, its maximum and RMS over the steps, and the velocity error at the end.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -108,26 +109,57 @@ struct NoObserver {
   template <class... A> void operator()(const A&...) const {}
 };
 
-// After a step that reached y at time t: the position error against the exact solution (final,
-// largest, and the sum of squares for the RMS) and the final velocity error. Shared by this run
-// loop and dopri5's (core/dopri5.hpp). Forced inline: left to itself GCC 12 calls it, and the
-// call costs RK4 on the spring 31 % more instructions a step (callgrind).
-template <HasExact S>
-[[gnu::always_inline]] inline void track_error(ExactTracker<S>& tracker, double t, const State<S::dim>& y,
-                                               RunResult<S::dim>& r, double& err_sq_sum) {
-  const State<S::dim> ex = tracker.at(t);
-  const double err = (y.x - ex.x).norm();
-  r.error_max = std::max(r.error_max, err);
-  err_sq_sum += err * err;
-  r.error_final = err;
-  r.error_v_final = (y.v - ex.v).norm();
-}
+// The errors against the exact solution after each step: the position error (Euclidean norm)
+// at the end, its largest and its sum of squares (for the RMS), and the velocity error at the
+// end. T a pack for runs stepped together (core/batch.hpp): each lane adds where `take` holds.
+// Shared by this run loop, dopri5's (core/dopri5.hpp) and the batch's. add is forced inline:
+// left to itself GCC 12 called the scalar version, and the call cost RK4 on the spring 31 %
+// more instructions a step (callgrind).
+template <class T> struct ErrorSums {
+  T error_max = 0, err_sq_sum = 0, error_final = 0, error_v_final = 0;
+  static constexpr auto fields() {
+    return std::array{&ErrorSums::error_max, &ErrorSums::err_sq_sum, &ErrorSums::error_final, &ErrorSums::error_v_final};
+  }
+  template <int D, class C> [[gnu::always_inline]] inline void add(const State<D, T>& y, const State<D, T>& exact, const C& take) {
+    using std::max;
+    const T err = (y.x - exact.x).norm();
+    error_max = select(take, max(error_max, err), error_max);
+    err_sq_sum = select(take, err_sq_sum + err * err, err_sq_sum);
+    error_final = select(take, err, error_final);
+    error_v_final = select(take, (y.v - exact.v).norm(), error_v_final);
+  }
+};
 
-// The run's summary once r.steps and r.energy0 are set: has_exact, the RMS error, the energy
-// ratios (NaN where E0 = 0: a ratio to nothing).
-template <int D> void finish_run(RunResult<D>& r, bool has_exact, double err_sq_sum, double ratio, double ratio_max) {
+// The least-squares slope of ln E against t, accumulated with Welford's update: a point (t, l =
+// ln E) makes n += 1, dt = t - mean_t, mean_t += dt / n, mean_l += (l - mean_l) / n,
+// c_tl += dt (l - mean_l), m2_t += dt (t - mean_t); the slope is c_tl / m2_t. Lanes of a pack
+// add where `take` holds. add is forced inline for the same reason as ErrorSums::add: where
+// GCC called it, `study stability` on one run at a time took 3 % more instructions.
+template <class T> struct EnergyFit {
+  T n = 0, mean_t = 0, mean_l = 0, c_tl = 0, m2_t = 0;
+  static constexpr auto fields() {
+    return std::array{&EnergyFit::n, &EnergyFit::mean_t, &EnergyFit::mean_l, &EnergyFit::c_tl, &EnergyFit::m2_t};
+  }
+  template <class C> [[gnu::always_inline]] inline void add(const T& t, const T& e, const C& take) {
+    if (!any(take)) return;
+    using std::log;
+    const T l = log(e), n1 = n + 1.0, dt = t - mean_t;
+    const T mt = mean_t + dt / n1, ml = mean_l + (l - mean_l) / n1;
+    c_tl = select(take, c_tl + dt * (l - ml), c_tl);
+    m2_t = select(take, m2_t + dt * (t - mt), m2_t);
+    n = select(take, n1, n), mean_t = select(take, mt, mean_t), mean_l = select(take, ml, mean_l);
+  }
+  // The slope; NaN with fewer than two distinct times.
+  double slope() const { return m2_t > 0 ? c_tl / m2_t : std::numeric_limits<double>::quiet_NaN(); }
+};
+
+// The run's summary once r.steps and r.energy0 are set: the errors, has_exact, the RMS error,
+// the energy ratios (NaN where E0 = 0: a ratio to nothing).
+template <int D>
+void finish_run(RunResult<D>& r, bool has_exact, const ErrorSums<double>& e, double ratio, double ratio_max) {
   r.has_exact = has_exact;
-  if (r.steps > 0) r.error_rms = std::sqrt(err_sq_sum / static_cast<double>(r.steps));
+  r.error_max = e.error_max, r.error_final = e.error_final, r.error_v_final = e.error_v_final;
+  if (r.steps > 0) r.error_rms = std::sqrt(e.err_sq_sum / static_cast<double>(r.steps));
   if (r.energy0 == 0) ratio = ratio_max = std::numeric_limits<double>::quiet_NaN();
   r.energy_ratio_final = ratio;
   r.energy_ratio_max = ratio_max;
@@ -151,7 +183,7 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
     e0_ = scene.energy(y_.x, y_.v);
     r_.energy0 = e0_;
     keep(0, 0.0, y_, e0_);
-    if (spec.energy_rate) fit_point(0.0, e0_);
+    if (spec.energy_rate) fit_.add(0.0, e0_, e0_ > 0 && std::isfinite(e0_));
   }
   Run(const Run&) = delete;
   Run& operator=(const Run&) = delete;
@@ -176,9 +208,9 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
       ratio_ = e / e0_;
       ratio_max_ = std::max(ratio_max_, ratio_);
     }
-    if (spec_.energy_rate) fit_point(t, e);
+    if (spec_.energy_rate) fit_.add(t, e, e > 0 && std::isfinite(e));
     if constexpr (HasExact<S>) {
-      if (spec_.errors) track_error(tracker_, t, y_, r_, err_sq_sum_);
+      if (spec_.errors) errors_.add(y_, tracker_.at(t), true);
     }
     keep(i_, t, y_, e);
     observe_(i_, t, y_);
@@ -199,8 +231,8 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
     r_.steps = i_ - 1;
     r_.t_final = r_.steps * spec_.dt;
     r_.final = y_;
-    finish_run(r_, HasExact<S> && spec_.errors, err_sq_sum_, ratio_, ratio_max_);
-    if (spec_.energy_rate && m2_t_ > 0) r_.energy_rate = c_tl_ / m2_t_;
+    finish_run(r_, HasExact<S> && spec_.errors, errors_, ratio_, ratio_max_);
+    if (spec_.energy_rate) r_.energy_rate = fit_.slope();
     // The last finite state is always kept, also when the run ended early.
     if (plan_.size() > 0 && (r_.samples.empty() || r_.samples.back().t != r_.t_final))
       r_.samples.push_back({r_.t_final, y_.x, y_.v, scene_.energy(y_.x, y_.v)});
@@ -210,17 +242,6 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
   static auto make_tracker(const S& scene, const RunSpec& spec) {
     if constexpr (HasExact<S>) return ExactTracker<S>(scene, spec.errors ? spec.dt : 0);  // steps of dt
     else return 0;
-  }
-  // Welford accumulators for the slope of ln E on t.
-  void fit_point(double t, double e) {
-    if (!(e > 0) || !std::isfinite(e)) return;
-    const double l = std::log(e);
-    n_fit_ += 1;
-    const double dt_ = t - mean_t_;
-    mean_t_ += dt_ / n_fit_;
-    mean_l_ += (l - mean_l_) / n_fit_;
-    c_tl_ += dt_ * (l - mean_l_);
-    m2_t_ += dt_ * (t - mean_t_);
   }
   void keep(long long i, double t, const State<D>& s, double e) {
     if (i == next_sample_ && sample_k_ < plan_.size()) {
@@ -236,8 +257,8 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
   State<D> y_;
   RunResult<D>& r_;
   double e0_ = 0, ratio_max_ = 1, ratio_ = 1;
-  double n_fit_ = 0, mean_t_ = 0, mean_l_ = 0, c_tl_ = 0, m2_t_ = 0;
-  double err_sq_sum_ = 0;
+  EnergyFit<double> fit_;
+  ErrorSums<double> errors_;
   long long i_ = 1, next_sample_ = 0, sample_k_ = 0;
   [[no_unique_address]] decltype(make_tracker(std::declval<const S&>(), RunSpec{})) tracker_;
   [[no_unique_address]] Stepper<M, S> stepper_;  // a multistep method's memory; nothing for a one-step method

@@ -29,7 +29,6 @@ template <int D, class T = double> struct State {
   Vec<D, T> v;
 };
 
-// A zero state; empty for a state whose size is set at run time (D = Eigen::Dynamic).
 // Lane by lane a where c holds, else b (c a bool for one run, a Mask for a pack).
 template <class C, int D, class T> Vec<D, T> select(const C& c, const Vec<D, T>& a, const Vec<D, T>& b) {
   Vec<D, T> r = b;
@@ -37,6 +36,7 @@ template <class C, int D, class T> Vec<D, T> select(const C& c, const Vec<D, T>&
   return r;
 }
 
+// A zero state; empty for a state whose size is set at run time (D = Eigen::Dynamic).
 template <int D, class T = double> State<D, T> zero_state() {
   if constexpr (D == Eigen::Dynamic) return {};
   else return {Vec<D, T>::Zero(), Vec<D, T>::Zero()};

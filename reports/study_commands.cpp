@@ -38,7 +38,7 @@ unsigned resolve_thread_count(const std::string& text) {
 int resolve_lanes(const std::string& text) {
   if (text == "auto") return 0;
   const long long n = parse_count("--lanes", text, 1, 64);
-  if ((n != 1 && n != 2 && n != 4 && n != 8) || !cpu_has_width(static_cast<int>(n)))
+  if (!cpu_has_width(static_cast<int>(n)))  // also false for a width that is none of 1, 2, 4, 8
     throw UsageError(fmt::format("--lanes {} is not a pack width this CPU steps; accepted: auto, 1 (one run at a time), "
                                  "2 (SSE2){}{}",
                                  text, cpu_has_width(4) ? ", 4 (AVX2)" : "", cpu_has_width(8) ? ", 8 (AVX-512)" : ""));
