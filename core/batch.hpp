@@ -67,7 +67,7 @@ concept PackedStep = Packable<S> &&
                      (!HasExact<S> || (HasAffineFlow<S> && requires(const S& s) { s.exact_at(0.0); })) &&
                      requires(Stepper<M, PackScene<S, Pack<8>>, Pack<8>>& st, const PackScene<S, Pack<8>>& s,
                               State<S::dim, Pack<8>>& y, Pack<8> h) {
-                       { st.step(s, y, h, h) } -> std::same_as<StepStatus>;
+                       st.step(s, y, h, h);  // a StepStatus, or the lanes that failed (a Mask)
                      };
 
 template <class M, Packable S, class T> class BatchRunner {
@@ -85,9 +85,9 @@ template <class M, Packable S, class T> class BatchRunner {
     while (any(active_)) {
       const T t_prev = (i_ - 1.0) * h_, t = i_ * h_;
       State<D, T> next = y_;
-      stepper_.step(*scene_, next, t_prev, h_);
-      const Mk live = all_finite(next) && active_;
-      const Mk diverged = active_ && !live;
+      const Mk failed = active_ && Mk(steplab::failed(stepper_.step(*scene_, next, t_prev, h_)));  // Newton gave up
+      const Mk live = all_finite(next) && active_ && !failed;
+      const Mk diverged = active_ && !live;  // or failed
       y_.x = select(live, next.x, y_.x);
       y_.v = select(live, next.v, y_.v);
       const T e = scene_->energy(y_.x, y_.v);
@@ -101,7 +101,7 @@ template <class M, Packable S, class T> class BatchRunner {
       i_ = select(live, i_ + 1.0, i_);
       const Mk out = ratio_ > above_ || ratio_ < below_;
       const Mk ended = diverged || (live && (out || i_ > steps_));
-      if (any(ended)) end_lanes(ended, diverged, t);
+      if (any(ended)) end_lanes(ended, diverged, failed, t);
     }
   }
 
@@ -155,12 +155,13 @@ template <class M, Packable S, class T> class BatchRunner {
   }
 
   // Writes the results of the lanes that ended, refills them, and remakes the pack's scene.
-  [[gnu::noipa]] void end_lanes(const Mk& ended, const Mk& diverged, const T& t) {
+  [[gnu::noipa]] void end_lanes(const Mk& ended, const Mk& diverged, const Mk& failed, const T& t) {
     for (int l = 0; l < W; ++l) {
       if (!ended[l]) continue;
       AnyResult& r = out_[job_[l]];
       if (diverged[l]) {
-        r.status = RunStatus::Diverged, r.failed_step = static_cast<long long>(i_[l]), r.failed_t = t[l];
+        r.status = failed[l] ? RunStatus::NoConvergence : RunStatus::Diverged;
+        r.failed_step = static_cast<long long>(i_[l]), r.failed_t = t[l];
       } else if (ratio_[l] > above_[l]) {
         r.status = RunStatus::Diverged, r.failed_step = static_cast<long long>(i_[l]) - 1, r.failed_t = t[l];
       }

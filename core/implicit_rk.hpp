@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/method.hpp"
+#include "core/small_lu.hpp"
 
 namespace steplab {
 
@@ -23,16 +24,21 @@ template <int Stages> struct ButcherTableau {
   std::array<double, Stages> b;
 };
 
-template <int Stages, Scene S>
-StepStatus implicit_rk_step_dense(const S& s, State<S::dim>& y, double h, const ButcherTableau<Stages>& t) {
+// On a fixed size, also for a pack of runs (T a Pack; S its scene): each lane iterates as its
+// run alone would and stops where that run stops, as in solve_implicit (and always inlined, as it is).
+template <int Stages, class S, class T>
+[[gnu::always_inline]] inline Status<T> implicit_rk_step_dense(const S& s, State<S::dim, T>& y, Time<T> h, const ButcherTableau<Stages>& t) {
+  using std::abs;
+  using Mk = MaskOf<T>;
   constexpr int D = S::dim, N = Stages * D;
-  using Big = Eigen::Matrix<double, N, 1>;
-  const Vec<D> m = s.mass();
+  using Big = Eigen::Matrix<T, N, 1>;
+  const Vec<D, T> m = s.mass();
   Big V;
   for (int i = 0; i < Stages; ++i) V.template segment<D>(i * D) = y.v;
-  std::array<Vec<D>, Stages> X, F;
-  std::array<Jacobians<D>, Stages> J;
-  double force_terms = 0;
+  std::array<Vec<D, T>, Stages> X, F;
+  std::array<Jacobians<D, T>, Stages> J;
+  T force_terms = 0;
+  Mk done(false), failed(false);
   for (int it = 0;; ++it) {
     for (int i = 0; i < Stages; ++i) {
       X[i] = y.x;
@@ -40,39 +46,44 @@ StepStatus implicit_rk_step_dense(const S& s, State<S::dim>& y, double h, const 
       F[i] = s.force(X[i], V.template segment<D>(i * D));
     }
     Big r;
-    double f_norm = 0;
+    T f_norm = 0;
     for (int i = 0; i < Stages; ++i) {
-      Vec<D> g = m.cwiseProduct(V.template segment<D>(i * D) - y.v);
+      Vec<D, T> g = m.cwiseProduct(V.template segment<D>(i * D) - y.v);
       for (int j = 0; j < Stages; ++j) g -= (h * t.a[i][j]) * F[j];
       r.template segment<D>(i * D) = g;
       f_norm += F[i].norm();
     }
     if (it > 0) {
-      const double scale = (m.asDiagonal() * V.reshaped(D, Stages)).norm() + Stages * m.cwiseProduct(y.v).norm() +
-                           std::abs(h) * (f_norm + force_terms);
-      if (r.norm() <= NewtonSettings::tolerance * scale) break;
+      const T scale = (m.asDiagonal() * V.reshaped(D, Stages)).norm() + Stages * m.cwiseProduct(y.v).norm() +
+                      abs(h) * (f_norm + force_terms);
+      done = done || r.norm() <= NewtonSettings::tolerance * scale;
     }
-    if (it == NewtonSettings::max_iterations || !r.allFinite()) return StepStatus::NoConvergence;
+    const Mk gave_up = !done && (Mk(it == NewtonSettings::max_iterations) || !all_finite(r));
+    failed = failed || gave_up;
+    done = done || gave_up;
+    if (all(done)) break;
     for (int i = 0; i < Stages; ++i) J[i] = s.jacobians(X[i], V.template segment<D>(i * D));
     if (it == 0)
       for (int i = 0; i < Stages; ++i) force_terms += J[i].dx.norm() * X[i].norm() + J[i].dv.norm() * V.template segment<D>(i * D).norm();
-    if (r.isZero(0.0)) break;  // already solved (at rest in equilibrium)
-    Eigen::Matrix<double, N, N> G;
+    done = done || all_zero(r);  // already solved (at rest in equilibrium)
+    if (all(done)) break;
+    Eigen::Matrix<T, N, N> G;
     for (int i = 0; i < Stages; ++i)
       for (int k = 0; k < Stages; ++k) {
-        Mat<D> block = -(h * t.a[i][k]) * J[k].dv;
+        Mat<D, T> block = -(h * t.a[i][k]) * J[k].dv;
         for (int j = 0; j < Stages; ++j) block -= (h * h * t.a[i][j] * t.a[j][k]) * J[j].dx;
         if (i == k) block.diagonal() += m;
         G.template block<D, D>(i * D, k * D) = block;
       }
-    V -= G.partialPivLu().solve(r);
+    V = select(!done, Big(V - lu_solve(G, r)), V);
   }
-  const Vec<D> inv_m = s.inverse_mass();
+  if (all(failed)) return status_of(failed);  // a failed lane's state is dropped
+  const Vec<D, T> inv_m = s.inverse_mass();
   for (int i = 0; i < Stages; ++i) {
     y.x += (h * t.b[i]) * V.template segment<D>(i * D);
     y.v += (h * t.b[i]) * F[i].cwiseProduct(inv_m);
   }
-  return StepStatus::Ok;
+  return status_of(failed);
 }
 
 // The same Newton iteration on a scene of run-time size n: the stage velocities in one vector of
@@ -140,8 +151,8 @@ StepStatus implicit_rk_step_sparse(const S& s, State<S::dim>& y, double h, const
   return StepStatus::Ok;
 }
 
-template <int Stages, Scene S>
-StepStatus implicit_rk_step(const S& s, State<S::dim>& y, double h, const ButcherTableau<Stages>& t) {
+template <int Stages, class S, class T>
+[[gnu::always_inline]] inline Status<T> implicit_rk_step(const S& s, State<S::dim, T>& y, Time<T> h, const ButcherTableau<Stages>& t) {
   if constexpr (S::dim == Eigen::Dynamic) return implicit_rk_step_sparse(s, y, h, t);
   else return implicit_rk_step_dense(s, y, h, t);
 }

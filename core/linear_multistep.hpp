@@ -70,18 +70,28 @@ template <auto A, double Beta> struct BdfMethod {
   template <Scene S, class Past> static History<S::dim, history> remember(const S&, Past&& past) {
     return history_of<S::dim, history>(past);
   }
-  template <Scene S>
-  static StepStatus step(const S& s, State<S::dim>& y, double t, double h, History<S::dim, history>& mem) {
-    const State<S::dim> now = y;
-    if (mem.count < history) {
+  // Also on packs: Gauss-Legendre where a lane is still starting, the BDF step where it is not.
+  template <class S, class T>
+  static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h, History<S::dim, history, T>& mem) {
+    const State<S::dim, T> now = y;
+    const auto starting = mem.count < double(history);
+    if (all(starting)) {
       mem.push(now);
       return GaussLegendre4::step(s, y, t, h);
     }
-    const State<S::dim> w = combination<A>(now, mem);
-    const StepStatus st = solve_implicit(s, w.x, Beta * h, w.v, Beta * h, y.v);
-    y.x = w.x + (Beta * h) * y.v;
+    const State<S::dim, T> w = combination<A>(now, mem);
     mem.push(now);
-    return st;
+    if (!any(starting)) {
+      const Status<T> st = solve_implicit(s, w.x, Beta * h, w.v, Beta * h, y.v);
+      y.x = w.x + (Beta * h) * y.v;
+      return st;
+    }
+    State<S::dim, T> started = y;  // some lanes of a pack (one run is all or none)
+    const Status<T> start_st = GaussLegendre4::step(s, started, t, h);
+    const Status<T> st = solve_implicit(s, w.x, Beta * h, w.v, Beta * h, y.v);
+    y.x = select(starting, started.x, Vec<S::dim, T>(w.x + (Beta * h) * y.v));
+    y.v = select(starting, started.v, y.v);
+    return status_of((starting && failed(start_st)) || (!starting && failed(st)));
   }
 };
 

@@ -3,12 +3,15 @@
 // A method is a struct with
 //   static constexpr MethodInfo info;                       name, order, flags
 //   template <Scene S> static StepStatus step(const S&, State<S::dim>& y, double t, double h);
-// that advances y from time t to t + h in place. It allocates nothing.
+// that advances y from time t to t + h in place. It allocates nothing. Written over the scalar,
+//   template <class S, class T> static Status<T> step(const S&, State<S::dim, T>& y, Time<T> t, Time<T> h);
+// the same step also advances a pack of runs (T = Pack<W>, core/pack.hpp; core/batch.hpp).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <string_view>
+#include <type_traits>
 
 #include "core/scene.hpp"
 #include "core/sparse.hpp"
@@ -60,6 +63,17 @@ constexpr bool has_stability_function(const MethodInfo& m) { return m.family != 
 // Eigen's ComputationInfo in spirit: a step reports, it never throws or exits.
 enum class StepStatus { Ok, NoConvergence };
 
+// What a step of T reports: one run's StepStatus, or for a pack of runs (core/batch.hpp) the
+// lanes whose Newton iteration failed, a Mask. status_of(lanes) makes either from the lanes that
+// failed; failed(status) gives those lanes back (a bool for one run).
+template <class T> struct StatusOf { using type = StepStatus; };
+template <int W> struct StatusOf<Pack<W>> { using type = Mask<W>; };
+template <class T> using Status = typename StatusOf<T>::type;
+inline StepStatus status_of(bool failed) { return failed ? StepStatus::NoConvergence : StepStatus::Ok; }
+template <int W> Mask<W> status_of(const Mask<W>& failed) { return failed; }
+inline bool failed(StepStatus s) { return s != StepStatus::Ok; }
+template <int W> Mask<W> failed(const Mask<W>& s) { return s; }
+
 // Newton's method for the implicit stages. Solves for the velocity u in
 //
 //     M (u - w) = c F(x0 + cx u, u)
@@ -77,27 +91,31 @@ struct NewtonSettings {
   static constexpr double tolerance = 1e-12;
 };
 
-// Newton's update u -= J^{-1} r with J = M - c dF/dv - c cx dF/dx: dense LU on a fixed size
-// (a division for D = 1); a sparse LDL^T or LU on a run-time size (core/sparse.hpp, stage_solve
-// below), its ordering computed once per run (the thread's solver keeps it). False if J is singular.
-template <int D> struct StageSolve {
-  bool update(const Jacobians<D>& jac, const Vec<D>& m, double c, double cx, const Vec<D>& r, Vec<D>& u) {
-    Mat<D> J = -c * jac.dv - (c * cx) * jac.dx;
+// Newton's update u -= J^{-1} r with J = M - c dF/dv - c cx dF/dx, where `on` (the lanes of a
+// pack still iterating; one run: always): dense LU on a fixed size (a division for D = 1); a
+// sparse LDL^T or LU on a run-time size (core/sparse.hpp, stage_solve below), its ordering
+// computed once per run (the thread's solver keeps it). False if J is singular.
+template <int D, class T = double> struct StageSolve {
+  static_assert(D == 1 || std::is_same_v<T, double>, "a pack's stage solve is a division (D = 1) so far");
+  template <class C>
+  [[gnu::always_inline]] bool update(const Jacobians<D, T>& jac, const Vec<D, T>& m, const T& c, const T& cx, const Vec<D, T>& r, const C& on,
+              Vec<D, T>& u) {
+    Mat<D, T> J = -c * jac.dv - (c * cx) * jac.dx;
     J.diagonal() += m;
     if constexpr (D == 1) {
-      u[0] -= r[0] / J(0, 0);
+      u[0] = select(on, u[0] - r[0] / J(0, 0), u[0]);
     } else {
       u -= J.partialPivLu().solve(r);
     }
     return true;
   }
 };
-template <> struct StageSolve<Eigen::Dynamic> {
+template <> struct StageSolve<Eigen::Dynamic, double> {
   SparseSolver& solver;
   SparseMat J;
   Eigen::VectorXd du;
   bool update(const Jacobians<Eigen::Dynamic>& jac, const Eigen::VectorXd& m, double c, double cx,
-              const Eigen::VectorXd& r, Eigen::VectorXd& u) {
+              const Eigen::VectorXd& r, bool /*on*/, Eigen::VectorXd& u) {
     J = -c * jac.dv - (c * cx) * jac.dx;
     J += m.asDiagonal();
     J.makeCompressed();
@@ -113,33 +131,44 @@ template <> struct StageSolve<Eigen::Dynamic> {
 // LDL^T, otherwise (the soft body's dashpots) by LU.
 template <class S> constexpr bool kSymmetricJacobians = requires { requires S::symmetric_jacobians; };
 
-template <Scene S> StageSolve<S::dim> stage_solve() {
+template <class S, class T = double> StageSolve<S::dim, T> stage_solve() {
   if constexpr (S::dim == Eigen::Dynamic)
     return {local_solver(kSymmetricJacobians<S> ? SparseSolver::Kind::Symmetric : SparseSolver::Kind::General), {}, {}};
   else return {};
 }
 
-template <Scene S>
-StepStatus solve_implicit(const S& s, const Vec<S::dim>& x0, double cx, const Vec<S::dim>& w, double c,
-                          Vec<S::dim>& u) {
+// One run (T = double), or a pack of runs (S the pack's scene): each lane iterates as its run
+// would alone and stops where that run stops (solved, or given up: failed); the pack's loop ends
+// when every lane has stopped. A stopped lane's u is not touched again. Always inlined: a call
+// left out of line would be compiled for the default instruction set, not the batch's (core/batch.hpp).
+template <class S, class T>
+[[gnu::always_inline]] inline Status<T> solve_implicit(const S& s, const std::type_identity_t<Vec<S::dim, T>>& x0, Time<T> cx,
+                         const std::type_identity_t<Vec<S::dim, T>>& w, Time<T> c, Vec<S::dim, T>& u) {
+  using std::abs;
+  using Mk = MaskOf<T>;
   constexpr int D = S::dim;
-  const Vec<D>& m = s.mass();
+  const Vec<D, T>& m = s.mass();
   u = w;
-  double force_terms = 0;
-  StageSolve<D> linear = stage_solve<S>();
+  T force_terms = 0;
+  Mk done(false), failed(false);
+  StageSolve<D, T> linear = stage_solve<S, T>();
   for (int it = 0;; ++it) {
-    const Vec<D> x = x0 + cx * u;
-    const Vec<D> f = s.force(x, u);
-    const Vec<D> r = m.cwiseProduct(u - w) - c * f;
+    const Vec<D, T> x = x0 + cx * u;
+    const Vec<D, T> f = s.force(x, u);
+    const Vec<D, T> r = m.cwiseProduct(u - w) - c * f;
     if (it > 0) {
-      const double scale = m.cwiseProduct(u).norm() + m.cwiseProduct(w).norm() + std::abs(c) * (f.norm() + force_terms);
-      if (r.norm() <= NewtonSettings::tolerance * scale) return StepStatus::Ok;
+      const T scale = m.cwiseProduct(u).norm() + m.cwiseProduct(w).norm() + abs(c) * (f.norm() + force_terms);
+      done = done || r.norm() <= NewtonSettings::tolerance * scale;
     }
-    if (it == NewtonSettings::max_iterations || !r.allFinite()) return StepStatus::NoConvergence;
-    const Jacobians<D>& jac = s.jacobians(x, u);  // a reference where the scene keeps its own (the rope)
+    const Mk gave_up = !done && (Mk(it == NewtonSettings::max_iterations) || !all_finite(r));
+    failed = failed || gave_up;
+    done = done || gave_up;
+    if (all(done)) return status_of(failed);
+    const Jacobians<D, T>& jac = s.jacobians(x, u);  // a reference where the scene keeps its own (the rope)
     if (it == 0) force_terms = jac.dx.norm() * x.norm() + jac.dv.norm() * u.norm();
-    if (r.isZero(0.0)) return StepStatus::Ok;  // already solved (e.g. at rest in equilibrium)
-    if (!linear.update(jac, m, c, cx, r, u)) return StepStatus::NoConvergence;
+    done = done || all_zero(r);  // already solved (e.g. at rest in equilibrium)
+    if (all(done)) return status_of(failed);
+    if (!linear.update(jac, m, c, cx, r, !done, u)) return status_of(Mk(true));
   }
 }
 

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 #include <Eigen/Core>
 
@@ -72,6 +73,7 @@ template <int W> struct Mask {
   using Bits = typename Pack<W>::Bits;
   Bits b;
   Mask() = default;
+  explicit Mask(bool on) : b(Bits{} + (on ? -1 : 0)) {}  // every lane on, or none (bool(on) for one run)
   Mask(const Mask& o) : b(o.b) {}  // not trivially copyable: see Pack
   Mask& operator=(const Mask& o) { return b = o.b, *this; }
   static Mask of(const Bits& bits) {
@@ -87,6 +89,9 @@ template <int W> struct Mask {
 };
 
 // --- The same names for one run (double, bool) and for a pack --------------------------------
+
+// What comparing two T gives: bool for one run, Mask<W> for a pack. MaskOf<T>(b) is b in every lane.
+template <class T> using MaskOf = decltype(std::declval<const T&>() < std::declval<const T&>());
 
 inline double select(bool c, double a, double b) { return c ? a : b; }
 template <int W> Pack<W> select(const Mask<W>& c, const Pack<W>& a, const Pack<W>& b) { return Pack<W>::of(c.b ? a.v : b.v); }

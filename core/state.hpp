@@ -42,16 +42,16 @@ template <int D, class T = double> State<D, T> zero_state() {
   else return {Vec<D, T>::Zero(), Vec<D, T>::Zero()};
 }
 
-// Force Jacobians for the implicit methods: dF/dx and dF/dv at one state.
-template <int D> struct Jacobians {
-  Mat<D> dx;
-  Mat<D> dv;
+// Force Jacobians for the implicit methods: dF/dx and dF/dv at one state (of a pack's lanes, T a Pack).
+template <int D, class T = double> struct Jacobians {
+  Mat<D, T> dx;
+  Mat<D, T> dv;
 };
 
 // A scene of run-time size N has sparse ones (tridiagonal for the rope): a dense N x N would
 // cost N^2 memory and N^3 to factorise.
 using SparseMat = Eigen::SparseMatrix<double>;
-template <> struct Jacobians<Eigen::Dynamic> {
+template <> struct Jacobians<Eigen::Dynamic, double> {
   SparseMat dx;
   SparseMat dv;
 };
@@ -62,5 +62,15 @@ template <> struct Jacobians<Eigen::Dynamic> {
 // 1.8e308, which is a blow-up too. (Eigen's allFinite costs ~4x more instructions.)
 // On a pack of runs, lane by lane (a Mask).
 template <int D, class T> auto all_finite(const State<D, T>& s) { return finite(s.x.sum() + s.v.sum()); }
+
+// Exactly Eigen's allFinite (x - x is NaN for inf and NaN, 0 otherwise) and isZero(0), over the
+// scalar: lane by lane on a vector of packs.
+template <class V> auto all_finite(const Eigen::MatrixBase<V>& v) { return finite((v - v).sum()); }
+template <class V> auto all_zero(const Eigen::MatrixBase<V>& v) {
+  using T = typename V::Scalar;
+  MaskOf<T> zero(true);
+  for (Eigen::Index j = 0; j < v.size(); ++j) zero = zero && v[j] == T(0.0);
+  return zero;
+}
 
 }  // namespace steplab

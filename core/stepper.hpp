@@ -46,7 +46,7 @@ template <class M> concept Multistep = requires { M::history; };
 // S: a scene, or the scene of a pack of runs with T its pack (step is then there only where M's
 // step is written over the scalar: core/batch.hpp's PackedStep asks).
 template <class M, class S, class T = double> struct Stepper {
-  StepStatus step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h)
+  auto step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h)
     requires requires { M::step(s, y, t, h); }
   {
     return M::step(s, y, t, h);
@@ -55,7 +55,7 @@ template <class M, class S, class T = double> struct Stepper {
 
 template <Multistep M, class S, class T> struct Stepper<M, S, T> {
   History<S::dim, M::history, T> memory{};
-  StepStatus step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h)
+  auto step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h)
     requires requires { M::step(s, y, t, h, memory); }
   {
     return M::step(s, y, t, h, memory);

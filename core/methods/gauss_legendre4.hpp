@@ -15,7 +15,7 @@ struct GaussLegendre4 {
                                    .summary = "two-stage Gauss-Legendre collocation, both stages by Newton"};
   static constexpr double r3 = 1.7320508075688772935;  // sqrt(3)
   static constexpr ButcherTableau<2> tableau{{{{0.25, 0.25 - r3 / 6}, {0.25 + r3 / 6, 0.25}}}, {0.5, 0.5}};
-  template <Scene S> static StepStatus step(const S& s, State<S::dim>& y, double /*t*/, double h) {
+  template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> /*t*/, Time<T> h) {
     return implicit_rk_step(s, y, h, tableau);
   }
 };

@@ -12,9 +12,9 @@ struct ImplicitEuler {
   static constexpr MethodInfo info{.name = "implicit_euler", .order = 1, .family = Family::ImplicitRungeKutta,
                                    .implicit = true, .a_stable = true,
                                    .summary = "x += h v', v += h a(x', v') at the new state, by Newton", .also = Family::Bdf};
-  template <Scene S> static StepStatus step(const S& s, State<S::dim>& y, double /*t*/, double h) {
-    Vec<S::dim> v1;
-    const StepStatus status = solve_implicit(s, y.x, h, y.v, h, v1);
+  template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> /*t*/, Time<T> h) {
+    Vec<S::dim, T> v1;
+    const Status<T> status = solve_implicit(s, y.x, h, y.v, h, v1);
     y.x += h * v1;
     y.v = v1;
     return status;

@@ -12,9 +12,9 @@ struct ImplicitMidpoint {
   static constexpr MethodInfo info{.name = "implicit_midpoint", .order = 2, .family = Family::ImplicitRungeKutta,
                                    .symplectic = true, .implicit = true, .a_stable = true,
                                    .summary = "backward Euler for h/2 to the midpoint, then extrapolate to h"};
-  template <Scene S> static StepStatus step(const S& s, State<S::dim>& y, double /*t*/, double h) {
-    Vec<S::dim> vm;
-    const StepStatus status = solve_implicit(s, y.x, 0.5 * h, y.v, 0.5 * h, vm);
+  template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> /*t*/, Time<T> h) {
+    Vec<S::dim, T> vm;
+    const Status<T> status = solve_implicit(s, y.x, 0.5 * h, y.v, 0.5 * h, vm);
     y.x += h * vm;
     y.v = 2 * vm - y.v;
     return status;

@@ -15,10 +15,14 @@ struct Yoshida4 {
                                    .summary = "velocity Verlet steps of w1 h, w0 h, w1 h (triple jump)"};
   static constexpr double cbrt2 = 1.2599210498948731648;  // 2^(1/3)
   static constexpr double w1 = 1 / (2 - cbrt2), w0 = -cbrt2 / (2 - cbrt2);
-  template <Scene S> static StepStatus step(const S& s, State<S::dim>& y, double t, double h) {
-    for (const double w : {w1, w0, w1})
-      if (const StepStatus st = VelocityVerlet::step(s, y, t, w * h); st != StepStatus::Ok) return st;
-    return StepStatus::Ok;
+  // A lane of a pack whose Newton failed in one substep takes the others too; its state is dropped.
+  template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
+    MaskOf<T> failed_lanes(false);
+    for (const double w : {w1, w0, w1}) {
+      failed_lanes = failed_lanes || failed(VelocityVerlet::step(s, y, t, w * h));
+      if (all(failed_lanes)) break;
+    }
+    return status_of(failed_lanes);
   }
 };
 

@@ -64,11 +64,11 @@ template <class T> struct SpringT {
   }
 
   // d/dy [-k (|y| - L) sign(y)] = -k away from the anchor; dF/dv = -gamma.
-  Jacobians<1> jacobians(const Vec<1>&, const Vec<1>&) const {
-    return {Mat<1>::Constant(-k), Mat<1>::Constant(-gamma)};
+  Jacobians<1, T> jacobians(const Vec<1, T>&, const Vec<1, T>&) const {
+    return {Mat<1, T>::Constant(-k), Mat<1, T>::Constant(-gamma)};
   }
 
-  bool velocity_dependent() const { return gamma != 0; }
+  auto velocity_dependent() const { return gamma != 0.0; }  // a Mask for a pack of springs
 
   // Oscillation energy about the equilibrium: E = 1/2 m v^2 + 1/2 k (y - y_eq)^2.
   // It is not zero at the rest start (y = -L): E(0) = (m g)^2 / (2 k).
