@@ -11,8 +11,8 @@
 // order of Eigen 3.4's unblocked factorisation and unrolled triangular solves (Eigen/src/LU/
 // PartialPivLU.h, Core/SolveTriangular.h), so that a lane has the bits of its run alone
 // (tests/core/small_lu_test.cpp, and every packed implicit method in tests/analysis/pack_test.cpp).
-// The solves' sums have at most N - 1 terms; up to N = 3 Eigen's order is the one written here, at N = 4
-// it is not (measured: the last bit differs): hence N <= 3 for a pack, the spring's stages.
+// Up to N = 3 that is Eigen's order of operations; at N = 4 last bits differ (measured, not
+// traced): hence N <= 3 for a pack, the spring's stages.
 #pragma once
 
 #include <type_traits>
