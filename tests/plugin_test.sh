@@ -8,6 +8,9 @@
 #   mysteplab study convergence --scene pendulum --methods heun,rk4
 #                                            against the reference solution (no exact one):
 #                                            fitted orders 2 and 4 within 0.1
+#   mysteplab study stability --methods heun,rk4 --lanes 1 and --lanes 2
+#                                            the same JSON (Heun is written over the scalar,
+#                                            so the spring's runs step two at a time)
 # Usage: plugin_test.sh BUILD_DIR [extra cmake arguments for the project]
 set -euo pipefail
 build=$1
@@ -28,8 +31,10 @@ cat > heun.hpp <<'EOF'
 struct Heun {
   static constexpr steplab::MethodInfo info{.name = "heun", .order = 2, .family = steplab::Family::ExplicitRungeKutta,
                                             .summary = "Heun's method: explicit trapezoidal rule"};
-  template <steplab::Scene S> static steplab::StepStatus step(const S& s, steplab::State<S::dim>& y, double, double h) {
-    using V = steplab::Vec<S::dim>;
+  // Over the scalar T: one run (double), or a pack of runs where the scene has packs (the spring).
+  template <class S, class T>
+  static steplab::StepStatus step(const S& s, steplab::State<S::dim, T>& y, steplab::Time<T>, steplab::Time<T> h) {
+    using V = steplab::Vec<S::dim, T>;
     const V kx1 = y.v, kv1 = steplab::acceleration(s, y.x, y.v);
     const V xp = y.x + h * kx1, vp = y.v + h * kv1;
     const V kx2 = vp, kv2 = steplab::acceleration(s, xp, vp);
@@ -122,6 +127,10 @@ for f in d["fits"]:
     print(f"{f['method']}: fitted order {f['order']:.3f} against the reference (declared {want[f['method']]})")
     assert abs(f["order"] - want[f["method"]]) <= 0.1, f
 EOF
+# the new method in packs on the spring: the same bytes one run at a time and two (SSE2) at a time
+"$tool" study stability --methods heun,rk4 --lanes 1 --json stability_1.json >/dev/null
+"$tool" study stability --methods heun,rk4 --lanes 2 --json stability_2.json >/dev/null
+cmp stability_1.json stability_2.json
 # the new method on a built-in scene, the built-in ones on the new scene
 "$tool" run --scene chain --method heun --dt 0.001 --t-end 1 >/dev/null
 "$tool" run --scene pendulum --method radau_iia5 --dt 0.01 --t-end 1 >/dev/null
