@@ -15,7 +15,6 @@
 #include <vector>
 
 #include "core/method.hpp"
-#include "core/small_lu.hpp"
 
 namespace steplab {
 
@@ -29,7 +28,6 @@ template <int Stages> struct ButcherTableau {
 template <int Stages, class S, class T>
 [[gnu::always_inline]] inline Status<T> implicit_rk_step_dense(const S& s, State<S::dim, T>& y, Time<T> h, const ButcherTableau<Stages>& t) {
   using std::abs;
-  using Mk = MaskOf<T>;
   constexpr int D = S::dim, N = Stages * D;
   using Big = Eigen::Matrix<T, N, 1>;
   const Vec<D, T> m = s.mass();
@@ -38,7 +36,7 @@ template <int Stages, class S, class T>
   std::array<Vec<D, T>, Stages> X, F;
   std::array<Jacobians<D, T>, Stages> J;
   T force_terms = 0;
-  Mk done(false), failed(false);
+  NewtonLanes<T> lanes;
   for (int it = 0;; ++it) {
     for (int i = 0; i < Stages; ++i) {
       X[i] = y.x;
@@ -56,17 +54,13 @@ template <int Stages, class S, class T>
     if (it > 0) {
       const T scale = (m.asDiagonal() * V.reshaped(D, Stages)).norm() + Stages * m.cwiseProduct(y.v).norm() +
                       abs(h) * (f_norm + force_terms);
-      done = done || r.norm() <= NewtonSettings::tolerance * scale;
+      lanes.solved(r.norm() <= NewtonSettings::tolerance * scale);
     }
-    const Mk gave_up = !done && (Mk(it == NewtonSettings::max_iterations) || !all_finite(r));
-    failed = failed || gave_up;
-    done = done || gave_up;
-    if (all(done)) break;
+    if (lanes.give_up(it, r)) break;
     for (int i = 0; i < Stages; ++i) J[i] = s.jacobians(X[i], V.template segment<D>(i * D));
     if (it == 0)
       for (int i = 0; i < Stages; ++i) force_terms += J[i].dx.norm() * X[i].norm() + J[i].dv.norm() * V.template segment<D>(i * D).norm();
-    done = done || all_zero(r);  // already solved (at rest in equilibrium)
-    if (all(done)) break;
+    if (lanes.solved(all_zero(r))) break;  // already solved (at rest in equilibrium)
     Eigen::Matrix<T, N, N> G;
     for (int i = 0; i < Stages; ++i)
       for (int k = 0; k < Stages; ++k) {
@@ -75,15 +69,15 @@ template <int Stages, class S, class T>
         if (i == k) block.diagonal() += m;
         G.template block<D, D>(i * D, k * D) = block;
       }
-    V = select(!done, Big(V - lu_solve(G, r)), V);
+    V = select(!lanes.done, Big(V - lu_solve(G, r)), V);
   }
-  if (all(failed)) return status_of(failed);  // a failed lane's state is dropped
+  if (all(lanes.failed)) return lanes.status();  // a failed lane's state is dropped
   const Vec<D, T> inv_m = s.inverse_mass();
   for (int i = 0; i < Stages; ++i) {
     y.x += (h * t.b[i]) * V.template segment<D>(i * D);
     y.v += (h * t.b[i]) * F[i].cwiseProduct(inv_m);
   }
-  return status_of(failed);
+  return lanes.status();
 }
 
 // The same Newton iteration on a scene of run-time size n: the stage velocities in one vector of

@@ -14,6 +14,7 @@
 #include <type_traits>
 
 #include "core/scene.hpp"
+#include "core/small_lu.hpp"
 #include "core/sparse.hpp"
 
 namespace steplab {
@@ -91,22 +92,34 @@ struct NewtonSettings {
   static constexpr double tolerance = 1e-12;
 };
 
+// Which lanes of a Newton iteration have stopped: solved, or given up (failed). Each call says
+// whether every lane has now stopped; the loop then returns status().
+template <class T> struct NewtonLanes {
+  MaskOf<T> done{false}, failed{false};
+  bool solved(const MaskOf<T>& now) {
+    done = done || now;
+    return all(done);
+  }
+  // A lane still iterating gives up at the last iteration or on a residual that is not finite.
+  template <class R> bool give_up(int it, const R& r) {
+    const MaskOf<T> now = !done && (MaskOf<T>(it == NewtonSettings::max_iterations) || !all_finite(r));
+    failed = failed || now;
+    return solved(now);
+  }
+  Status<T> status() const { return status_of(failed); }
+};
+
 // Newton's update u -= J^{-1} r with J = M - c dF/dv - c cx dF/dx, where `on` (the lanes of a
-// pack still iterating; one run: always): dense LU on a fixed size (a division for D = 1); a
-// sparse LDL^T or LU on a run-time size (core/sparse.hpp, stage_solve below), its ordering
-// computed once per run (the thread's solver keeps it). False if J is singular.
+// pack still iterating; one run: always): dense LU on a fixed size (lu_solve, core/small_lu.hpp:
+// a division for D = 1); a sparse LDL^T or LU on a run-time size (core/sparse.hpp, stage_solve
+// below), its ordering computed once per run (the thread's solver keeps it). False if J is singular.
 template <int D, class T = double> struct StageSolve {
-  static_assert(D == 1 || std::is_same_v<T, double>, "a pack's stage solve is a division (D = 1) so far");
   template <class C>
   [[gnu::always_inline]] bool update(const Jacobians<D, T>& jac, const Vec<D, T>& m, const T& c, const T& cx, const Vec<D, T>& r, const C& on,
               Vec<D, T>& u) {
     Mat<D, T> J = -c * jac.dv - (c * cx) * jac.dx;
     J.diagonal() += m;
-    if constexpr (D == 1) {
-      u[0] = select(on, u[0] - r[0] / J(0, 0), u[0]);
-    } else {
-      u -= J.partialPivLu().solve(r);
-    }
+    u = select(on, Vec<D, T>(u - lu_solve(J, r)), u);
     return true;
   }
 };
@@ -145,12 +158,11 @@ template <class S, class T>
 [[gnu::always_inline]] inline Status<T> solve_implicit(const S& s, const std::type_identity_t<Vec<S::dim, T>>& x0, Time<T> cx,
                          const std::type_identity_t<Vec<S::dim, T>>& w, Time<T> c, Vec<S::dim, T>& u) {
   using std::abs;
-  using Mk = MaskOf<T>;
   constexpr int D = S::dim;
   const Vec<D, T>& m = s.mass();
   u = w;
   T force_terms = 0;
-  Mk done(false), failed(false);
+  NewtonLanes<T> lanes;
   StageSolve<D, T> linear = stage_solve<S, T>();
   for (int it = 0;; ++it) {
     const Vec<D, T> x = x0 + cx * u;
@@ -158,17 +170,13 @@ template <class S, class T>
     const Vec<D, T> r = m.cwiseProduct(u - w) - c * f;
     if (it > 0) {
       const T scale = m.cwiseProduct(u).norm() + m.cwiseProduct(w).norm() + abs(c) * (f.norm() + force_terms);
-      done = done || r.norm() <= NewtonSettings::tolerance * scale;
+      lanes.solved(r.norm() <= NewtonSettings::tolerance * scale);
     }
-    const Mk gave_up = !done && (Mk(it == NewtonSettings::max_iterations) || !all_finite(r));
-    failed = failed || gave_up;
-    done = done || gave_up;
-    if (all(done)) return status_of(failed);
+    if (lanes.give_up(it, r)) return lanes.status();
     const Jacobians<D, T>& jac = s.jacobians(x, u);  // a reference where the scene keeps its own (the rope)
     if (it == 0) force_terms = jac.dx.norm() * x.norm() + jac.dv.norm() * u.norm();
-    done = done || all_zero(r);  // already solved (e.g. at rest in equilibrium)
-    if (all(done)) return status_of(failed);
-    if (!linear.update(jac, m, c, cx, r, !done, u)) return status_of(Mk(true));
+    if (lanes.solved(all_zero(r))) return lanes.status();  // already solved (e.g. at rest in equilibrium)
+    if (!linear.update(jac, m, c, cx, r, !lanes.done, u)) return status_of(MaskOf<T>(true));
   }
 }
 

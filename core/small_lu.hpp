@@ -6,7 +6,8 @@
 //   forward (L unit lower):   c_i = b_i - sum_{j<i} l_ij c_j
 //   backward (U upper):       x_i = (c_i - sum_{j>i} u_ij x_j) / u_ii
 //
-// One run (T = double) takes Eigen's PartialPivLU. A pack of runs (core/pack.hpp) takes the
+// One run (T = double) takes Eigen's PartialPivLU (N = 1: the one division it comes to, for
+// every T). A pack of runs (core/pack.hpp) takes the
 // lines above lane by lane, each lane its own pivot row (a select where Eigen swaps), in the
 // order of Eigen 3.4's unblocked factorisation and unrolled triangular solves (Eigen/src/LU/
 // PartialPivLU.h, Core/SolveTriangular.h), so that a lane has the bits of its run alone
@@ -22,11 +23,25 @@
 namespace steplab {
 
 template <int N, class T> [[gnu::always_inline]] inline Vec<N, T> lu_solve(Mat<N, T> a, Vec<N, T> b) {
-  if constexpr (std::is_same_v<T, double>) {
+  if constexpr (N == 1) {
+    return Vec<1, T>(b[0] / a(0, 0));  // what Eigen's LU of a 1 x 1 does, without its set-up
+  } else if constexpr (std::is_same_v<T, double>) {
     return a.partialPivLu().solve(b);
   } else {
     static_assert(N <= 3, "a pack's LU has Eigen's order of operations up to N = 3");
     using std::abs;
+    // p and q exchanged in the lanes of `where`.
+    const auto swap_where = [](const auto& where, T& p, T& q) {
+      const T old = p;
+      p = select(where, q, old);
+      q = select(where, old, q);
+    };
+    // sum_{j = from}^{to - 1} a_ij b_j, from the first term on (0 + a_i0 b_0 is not -0 where the product is).
+    const auto row_dot = [&](int i, int from, int to) {
+      T sum = a(i, from) * b[from];
+      for (int j = from + 1; j < to; ++j) sum += a(i, j) * b[j];
+      return sum;
+    };
     for (int k = 0; k + 1 < N; ++k) {
       T largest = abs(a(k, k)), pivot = double(k);
       for (int i = k + 1; i < N; ++i) {
@@ -38,31 +53,17 @@ template <int N, class T> [[gnu::always_inline]] inline Vec<N, T> lu_solve(Mat<N
       for (int i = k + 1; i < N; ++i) {
         const auto swap = pivot == T(double(i));
         if (!any(swap)) continue;
-        for (int j = 0; j < N; ++j) {
-          const T row_k = a(k, j);
-          a(k, j) = select(swap, a(i, j), row_k);
-          a(i, j) = select(swap, row_k, a(i, j));
-        }
-        const T b_k = b[k];
-        b[k] = select(swap, b[i], b_k);
-        b[i] = select(swap, b_k, b[i]);
+        for (int j = 0; j < N; ++j) swap_where(swap, a(k, j), a(i, j));
+        swap_where(swap, b[k], b[i]);
       }
       const auto nonzero = largest != T(0.0);
       for (int i = k + 1; i < N; ++i) a(i, k) = select(nonzero, a(i, k) / a(k, k), a(i, k));
       for (int j = k + 1; j < N; ++j)
         for (int i = k + 1; i < N; ++i) a(i, j) -= a(i, k) * a(k, j);
     }
-    for (int i = 1; i < N; ++i) {
-      T sum = a(i, 0) * b[0];
-      for (int j = 1; j < i; ++j) sum += a(i, j) * b[j];
-      b[i] -= sum;
-    }
+    for (int i = 1; i < N; ++i) b[i] -= row_dot(i, 0, i);
     for (int i = N - 1; i >= 0; --i) {
-      if (i + 1 < N) {
-        T sum = a(i, i + 1) * b[i + 1];
-        for (int j = i + 2; j < N; ++j) sum += a(i, j) * b[j];
-        b[i] -= sum;
-      }
+      if (i + 1 < N) b[i] -= row_dot(i, i + 1, N);
       b[i] /= a(i, i);
     }
     return b;
