@@ -80,35 +80,46 @@ template <class M, Packable S, class T> class BatchRunner {
  public:
   BatchRunner(std::span<const BatchRun> runs, AnyResult* out) : runs_(runs), out_(out) { start(); }
 
-  // Steps until every run of the batch has ended.
+  // Steps until every run of the batch has ended. The state is stepped in a local, y = next in
+  // every lane: the test of the new state is off the chain from one step to the next (a select
+  // on it had put ~11 cycles of latency on that chain), and the local stays in registers where
+  // a member would go through memory each step. A lane whose step diverged gets its last finite
+  // state back (y_ below) before its result is written; an idle lane steps a finite state with
+  // h = 0 (refill).
   [[gnu::always_inline]] inline void run() {
+    State<D, T> y = y_;
     while (any(active_)) {
       const T t_prev = (i_ - 1.0) * h_, t = i_ * h_;
-      State<D, T> next = y_;
+      State<D, T> next = y;
       const Mk failed = active_ && Mk(steplab::failed(stepper_.step(*scene_, next, t_prev, h_)));  // Newton gave up
       const Mk live = all_finite(next) && active_ && !failed;
       const Mk diverged = active_ && !live;  // or failed
-      y_.x = select(live, next.x, y_.x);
-      y_.v = select(live, next.v, y_.v);
-      const T e = scene_->energy(y_.x, y_.v);
+      const State<D, T> last = y;
+      y = next;
+      const T e = scene_->energy(y.x, y.v);
       const Mk has_e0 = live && (e0_ != T(0.0));
       const T ratio = e / e0_;
       ratio_max_ = select(has_e0, max(ratio_max_, ratio), ratio_max_);
       ratio_ = select(has_e0, ratio, ratio_);
       fit_.add(t, e, live && rate_ && e > 0.0 && finite(e));
       if constexpr (HasExact<S>)
-        if (const Mk on = live && errors_; any(on)) track_errors(on, t);
+        if (const Mk on = live && errors_; any(on)) track_errors(y, on, t);
       i_ = select(live, i_ + 1.0, i_);
       const Mk out = ratio_ > above_ || ratio_ < below_;
       const Mk ended = diverged || (live && (out || i_ > steps_));
-      if (any(ended)) end_lanes(ended, diverged, failed, t);
+      if (any(ended)) {
+        y_.x = select(diverged, last.x, y.x);
+        y_.v = select(diverged, last.v, y.v);
+        end_lanes(ended, diverged, failed, t);
+        y = y_;
+      }
     }
   }
 
  private:
   // The exact state, one step on: the affine map, or the closed form every kResync-th step
-  // (ExactTracker::at, lane by lane); the position and velocity errors against it.
-  [[gnu::always_inline]] inline void track_errors(const Mk& on, const T& t) {
+  // (ExactTracker::at, lane by lane); the position and velocity errors of y against it.
+  [[gnu::always_inline]] inline void track_errors(const State<D, T>& y, const Mk& on, const T& t) {
     const Vec<D, T> x = ex_c_.x + ex_xx_ * ex_.x + ex_xv_ * ex_.v;
     const Vec<D, T> v = ex_c_.v + ex_vx_ * ex_.x + ex_vv_ * ex_.v;
     ex_.x = select(on, x, ex_.x);
@@ -117,7 +128,7 @@ template <class M, Packable S, class T> class BatchRunner {
     const T next_left = select(left_ > 1.0, left_ - 1.0, select(left_ == T(1.0), T(double(ExactTracker<S>::kResync)), T(0.0)));
     left_ = select(on, next_left, left_);
     if (any(closed)) [[unlikely]] closed_form(closed, t);
-    error_sums_.add(y_, ex_, on);
+    error_sums_.add(y, ex_, on);
   }
 
   [[gnu::noipa]] void closed_form(const Mk& closed, const T& t) {
@@ -188,9 +199,11 @@ template <class M, Packable S, class T> class BatchRunner {
   // of no steps; none left: the lane goes idle.
   void refill(int l) {
     for (;;) {
-      if (next_ >= runs_.size()) {
+      if (next_ >= runs_.size()) {  // idle: a finite state that a step of 0 leaves as it is
         job_[l] = -1;
         active_.set(l, false);
+        set_lane(y_, l, make_default_scene<S>().initial());
+        h_.set(l, 0);
         return;
       }
       job_[l] = static_cast<long long>(next_++);
