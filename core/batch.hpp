@@ -4,7 +4,7 @@
 // select on a mask.
 //
 //   live   = active lanes whose step left a finite state       (a diverged lane ends here)
-//   y      = live ? next : y
+//   y      = next  (a diverged lane's result takes its last finite state: run() below)
 //   E/E0, its largest, the ln E fit (Welford) and the errors against the stepped exact state,
 //          each updated where live
 //   a lane ends when its steps are done or E/E0 leaves [stop_below, stop_above]; its result
