@@ -85,10 +85,12 @@ template <class M, Packable S, class T> class BatchRunner {
   // on it had put ~11 cycles of latency on that chain), and the local stays in registers where
   // a member would go through memory each step. A lane whose step diverged gets its last finite
   // state back (y_ below) before its result is written; an idle lane steps a finite state with
-  // h = 0 (refill).
+  // h = 0 (refill). What holds for the whole pack between two refills (a lane with an energy
+  // fit, a lane with errors, E0 != 0) is set by refilled(), not tested each step.
   [[gnu::always_inline]] inline void run() {
     State<D, T> y = y_;
-    while (any(active_)) {
+    if (!any(active_)) return;
+    for (;;) {
       const T t_prev = (i_ - 1.0) * h_, t = i_ * h_;
       State<D, T> next = y;
       const Mk failed = active_ && Mk(steplab::failed(stepper_.step(*scene_, next, t_prev, h_)));  // Newton gave up
@@ -97,13 +99,14 @@ template <class M, Packable S, class T> class BatchRunner {
       const State<D, T> last = y;
       y = next;
       const T e = scene_->energy(y.x, y.v);
-      const Mk has_e0 = live && (e0_ != T(0.0));
+      const Mk has_e0 = live && e0_nonzero_;
       const T ratio = e / e0_;
       ratio_max_ = select(has_e0, max(ratio_max_, ratio), ratio_max_);
       ratio_ = select(has_e0, ratio, ratio_);
-      fit_.add(t, e, live && rate_ && e > 0.0 && finite(e));
+      if (some_rate_) fit_.add(t, e, live && rate_ && e > 0.0 && finite(e));
       if constexpr (HasExact<S>)
-        if (const Mk on = live && errors_; any(on)) track_errors(y, on, t);
+        if (some_errors_)
+          if (const Mk on = live && errors_; any(on)) track_errors(y, on, t);
       i_ = select(live, i_ + 1.0, i_);
       const Mk out = ratio_ > above_ || ratio_ < below_;
       const Mk ended = diverged || (live && (out || i_ > steps_));
@@ -111,6 +114,7 @@ template <class M, Packable S, class T> class BatchRunner {
         y_.x = select(diverged, last.x, y.x);
         y_.v = select(diverged, last.v, y.v);
         end_lanes(ended, diverged, failed, t);
+        if (!any(active_)) return;
         y = y_;
       }
     }
@@ -162,7 +166,7 @@ template <class M, Packable S, class T> class BatchRunner {
       job_[l] = -1;
     }
     for (int l = 0; l < W; ++l) refill(l);
-    make_scene();
+    refilled();
   }
 
   // Writes the results of the lanes that ended, refills them, and remakes the pack's scene.
@@ -179,7 +183,7 @@ template <class M, Packable S, class T> class BatchRunner {
       finish(l);
       refill(l);
     }
-    make_scene();
+    refilled();
   }
 
   // Run::finish for lane l.
@@ -244,7 +248,13 @@ template <class M, Packable S, class T> class BatchRunner {
     left_.set(l, tracker.stepping() ? ExactTracker<S>::kResync : 0);
   }
 
-  void make_scene() { scene_.emplace(std::span<const T>(params_)); }
+  // After lanes were (re)filled: the pack's scene, and what holds for the pack until the next refill.
+  void refilled() {
+    scene_.emplace(std::span<const T>(params_));
+    some_rate_ = any(rate_ && active_);
+    some_errors_ = any(errors_ && active_);
+    e0_nonzero_ = e0_ != T(0.0);
+  }
 
   std::span<const BatchRun> runs_;
   AnyResult* out_;
@@ -254,7 +264,8 @@ template <class M, Packable S, class T> class BatchRunner {
   std::array<T, P> params_{};
   std::optional<PS> scene_;
   Stepper<M, PS, T> stepper_;  // a multistep method's memory, lane by lane
-  Mk active_{}, rate_{}, errors_{};
+  Mk active_{}, rate_{}, errors_{}, e0_nonzero_{};
+  bool some_rate_ = false, some_errors_ = false;
   State<D, T> y_ = zero_state<D, T>();
   T h_ = 0, i_ = 1, steps_ = 0, above_ = 0, below_ = 0;
   T e0_ = 0, ratio_ = 1, ratio_max_ = 1;
