@@ -106,8 +106,7 @@ template <class M, Packable S, class T> class BatchRunner {
       ratio_ = select(has_e0, ratio, ratio_);
       if (some_rate_) fit_.add(t, e, live && rate_ && e > 0.0 && finite(e));
       if constexpr (HasExact<S>)
-        if (some_errors_)
-          if (const Mk on = live && errors_; any(on)) track_errors(y, on, t);
+        if (some_errors_) track_errors(y, live && errors_, t);  // a lane not `on` keeps its values
       i_ = select(live, i_ + 1.0, i_);
       const Mk out = ratio_ > above_ || ratio_ < below_;
       const Mk ended = diverged || (live && (out || i_ > steps_));

@@ -98,19 +98,14 @@ template <int W> Pack<W> select(const Mask<W>& c, const Pack<W>& a, const Pack<W
 
 inline bool any(bool c) { return c; }
 inline bool all(bool c) { return c; }
-// Any lane on: the halves OR-ed together down to one lane (a loop over the lanes went through
-// memory for 8 lanes).
+// Any lane on: the two halves OR-ed together until two lanes are left. Tested lane by lane, a
+// packed step took 1.4-5.5 more instructions per trajectory-step in packs of 4 (callgrind, study
+// convergence on the spring: implicit Euler 147.9 against 142.4) and throughput_w8 3 % longer.
 template <int W> bool any(const Mask<W>& c) {
   const typename Mask<W>::Bits& b = c.b;
-  if constexpr (W == 8) {
-    const typename GccVector<4>::bits h = __builtin_shufflevector(b, b, 0, 1, 2, 3) | __builtin_shufflevector(b, b, 4, 5, 6, 7);
-    return any(Mask<4>::of(h));
-  } else if constexpr (W == 4) {
-    const typename GccVector<2>::bits h = __builtin_shufflevector(b, b, 0, 1) | __builtin_shufflevector(b, b, 2, 3);
-    return (h[0] | h[1]) != 0;
-  } else {
-    return (b[0] | b[1]) != 0;
-  }
+  if constexpr (W == 8) return any(Mask<4>::of(__builtin_shufflevector(b, b, 0, 1, 2, 3) | __builtin_shufflevector(b, b, 4, 5, 6, 7)));
+  else if constexpr (W == 4) return any(Mask<2>::of(__builtin_shufflevector(b, b, 0, 1) | __builtin_shufflevector(b, b, 2, 3)));
+  else return (b[0] | b[1]) != 0;
 }
 template <int W> bool all(const Mask<W>& c) { return !any(!c); }
 
