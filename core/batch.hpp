@@ -80,64 +80,88 @@ template <class M, Packable S, class T> class BatchRunner {
  public:
   BatchRunner(std::span<const BatchRun> runs, AnyResult* out) : runs_(runs), out_(out) { start(); }
 
-  // Steps until every run of the batch has ended. The state is stepped in a local, y = next in
-  // every lane: the test of the new state is off the chain from one step to the next (a select
-  // on it lengthened that chain), and the local stays in registers where a member went through
-  // memory each step (throughput_w4 in make bench: 302 us before the two, 210 us after). A lane
-  // whose step diverged gets its last finite state back (y_ below) before its result is
-  // written; an idle lane steps a finite state with h = 0 (refill). What holds for the whole
-  // pack between two refills (a lane with an energy fit, a lane with errors, E0 != 0, a lane
-  // still running) is set by refilled(), not tested each step.
+  // Steps until every run of the batch has ended. Between two refills the pack is stepped in
+  // locals (the scene, the stepper's memory, the state and what the loop accumulates), copied in
+  // before and back after: the inner loop makes no call that could reach them (closed_form
+  // takes and returns its state by value), so GCC keeps them in registers or in stack slots it
+  // only reads, and hoists what the scene's parameters give (0.5 m, -k) out of the loop. The
+  // state is stepped with y = next in every lane: the test of the new state is off the chain from
+  // one step to the next. A lane whose step diverged gets its last finite state back (y_ below)
+  // before its result is written; an idle lane steps a finite state with h = 0 (refill). What
+  // holds for the whole pack between two refills (a lane with an energy fit, a lane with errors,
+  // E0 != 0, a lane still running) is set by refilled(), not tested each step.
   [[gnu::always_inline]] inline void run() {
-    State<D, T> y = y_;
     if (!any(active_)) return;
     for (;;) {
-      const T t_prev = (i_ - 1.0) * h_, t = i_ * h_;
-      State<D, T> next = y;
-      const Mk failed = active_ && Mk(steplab::failed(stepper_.step(*scene_, next, t_prev, h_)));  // Newton gave up
-      const Mk live = all_finite(next) && active_ && !failed;
-      const Mk diverged = active_ && !live;  // or failed
-      const State<D, T> last = y;
-      y = next;
-      const T e = scene_->energy(y.x, y.v);
-      const Mk has_e0 = live && e0_nonzero_;
-      const T ratio = e / e0_;
-      ratio_max_ = select(has_e0, max(ratio_max_, ratio), ratio_max_);
-      ratio_ = select(has_e0, ratio, ratio_);
-      if (some_rate_) fit_.add(t, e, live && rate_ && e > 0.0 && finite(e));
-      if constexpr (HasExact<S>)
-        if (some_errors_) track_errors(y, live && errors_, t);  // a lane not `on` keeps its values
-      i_ = select(live, i_ + 1.0, i_);
-      const Mk out = ratio_ > above_ || ratio_ < below_;
-      const Mk ended = diverged || (live && (out || i_ > steps_));
-      if (any(ended)) {
-        y_.x = select(diverged, last.x, y.x);
-        y_.v = select(diverged, last.v, y.v);
-        end_lanes(ended, diverged, failed, t);
-        if (!any(active_)) return;
-        y = y_;
-      }
+      const PS scene = *scene_;
+      Stepper<M, PS, T> stepper = stepper_;
+      const Mk active = active_, rate = rate_, errors = errors_, e0_nonzero = e0_nonzero_;
+      const bool some_rate = some_rate_, some_errors = some_errors_;
+      const T h = h_, steps = steps_, above = above_, below = below_, e0 = e0_;
+      State<D, T> y = y_, last = y_;
+      T i = i_, ratio = ratio_, ratio_max = ratio_max_, t = 0;
+      EnergyFit<T> fit = fit_;
+      Exact ex = ex_;
+      Mk failed, diverged, ended;
+      do {
+        const T t_prev = (i - 1.0) * h;
+        t = i * h;
+        State<D, T> next = y;
+        failed = active && Mk(steplab::failed(stepper.step(scene, next, t_prev, h)));  // Newton gave up
+        const Mk live = all_finite(next) && active && !failed;
+        diverged = active && !live;  // or failed
+        last = y;
+        y = next;
+        const T e = scene.energy(y.x, y.v);
+        const Mk has_e0 = live && e0_nonzero;
+        const T r = e / e0;
+        ratio_max = select(has_e0, max(ratio_max, r), ratio_max);
+        ratio = select(has_e0, r, ratio);
+        if (some_rate) fit.add(t, e, live && rate && e > 0.0 && finite(e));
+        if constexpr (HasExact<S>)
+          if (some_errors) track_errors(ex, y, live && errors, t);  // a lane not `on` keeps its values
+        i = select(live, i + 1.0, i);
+        const Mk out = ratio > above || ratio < below;
+        ended = diverged || (live && (out || i > steps));
+      } while (!any(ended));
+      stepper_ = stepper;
+      y_.x = select(diverged, last.x, y.x);
+      y_.v = select(diverged, last.v, y.v);
+      i_ = i, ratio_ = ratio, ratio_max_ = ratio_max, fit_ = fit, ex_ = ex;
+      end_lanes(ended, diverged, failed, t);
+      if (!any(active_)) return;
     }
   }
 
  private:
+  // The exact state a lane's errors are taken against, stepped with it (ExactTracker: the affine
+  // map one step on, the closed form every kResync-th step), and the errors' sums.
+  struct Exact {
+    State<D, T> y = zero_state<D, T>(), c = zero_state<D, T>();
+    Mat<D, T> xx = Mat<D, T>::Zero(), xv = Mat<D, T>::Zero(), vx = Mat<D, T>::Zero(), vv = Mat<D, T>::Zero();
+    T left = 0;  // steps to the closed form: 1 now, then kResync - 1 steps again; 0: always
+    ErrorSums<T> sums;
+  };
+
   // The exact state, one step on: the affine map, or the closed form every kResync-th step
   // (ExactTracker::at, lane by lane); the position and velocity errors of y against it.
-  [[gnu::always_inline]] inline void track_errors(const State<D, T>& y, const Mk& on, const T& t) {
-    const Vec<D, T> x = ex_c_.x + ex_xx_ * ex_.x + ex_xv_ * ex_.v;
-    const Vec<D, T> v = ex_c_.v + ex_vx_ * ex_.x + ex_vv_ * ex_.v;
-    ex_.x = select(on, x, ex_.x);
-    ex_.v = select(on, v, ex_.v);
-    const Mk closed = on && left_ <= 1.0;  // 1: the closed form now, then kResync - 1 steps again; 0: always
-    const T next_left = select(left_ > 1.0, left_ - 1.0, select(left_ == T(1.0), T(double(ExactTracker<S>::kResync)), T(0.0)));
-    left_ = select(on, next_left, left_);
-    if (any(closed)) [[unlikely]] closed_form(closed, t);
-    error_sums_.add(y, ex_, on);
+  [[gnu::always_inline]] inline void track_errors(Exact& ex, const State<D, T>& y, const Mk& on, const T& t) const {
+    const Vec<D, T> x = ex.c.x + ex.xx * ex.y.x + ex.xv * ex.y.v;
+    const Vec<D, T> v = ex.c.v + ex.vx * ex.y.x + ex.vv * ex.y.v;
+    ex.y.x = select(on, x, ex.y.x);
+    ex.y.v = select(on, v, ex.y.v);
+    const Mk closed = on && ex.left <= 1.0;
+    const T next_left = select(ex.left > 1.0, ex.left - 1.0, select(ex.left == T(1.0), T(double(ExactTracker<S>::kResync)), T(0.0)));
+    ex.left = select(on, next_left, ex.left);
+    if (any(closed)) [[unlikely]] ex.y = closed_form(closed, t, ex.y);
+    ex.sums.add(y, ex.y, on);
   }
 
-  [[gnu::noipa]] void closed_form(const Mk& closed, const T& t) {
+  // Its arguments by value: a copy's address escapes into the call, not the loop's locals.
+  [[gnu::noipa]] State<D, T> closed_form(Mk closed, T t, State<D, T> y) const {
     for (int l = 0; l < W; ++l)
-      if (closed[l]) set_lane(ex_, l, scalar_[l]->exact_at(t[l]));
+      if (closed[l]) set_lane(y, l, scalar_[l]->exact_at(t[l]));
+    return y;
   }
 
   static void set_lane(State<D, T>& y, int l, const State<D>& s) {
@@ -170,7 +194,8 @@ template <class M, Packable S, class T> class BatchRunner {
   }
 
   // Writes the results of the lanes that ended, refills them, and remakes the pack's scene.
-  [[gnu::noipa]] void end_lanes(const Mk& ended, const Mk& diverged, const Mk& failed, const T& t) {
+  // Its arguments by value, like closed_form's.
+  [[gnu::noipa]] void end_lanes(Mk ended, Mk diverged, Mk failed, T t) {
     for (int l = 0; l < W; ++l) {
       if (!ended[l]) continue;
       AnyResult& r = out_[job_[l]];
@@ -195,7 +220,7 @@ template <class M, Packable S, class T> class BatchRunner {
     r.final.x.resize(D), r.final.v.resize(D);
     for (int j = 0; j < D; ++j) r.final.x[j] = y_.x[j][l], r.final.v[j] = y_.v[j][l];
     r.energy0 = e0_[l];
-    finish_run(r, HasExact<S> && spec.errors, lane(error_sums_, l), ratio_[l], ratio_max_[l]);
+    finish_run(r, HasExact<S> && spec.errors, lane(ex_.sums, l), ratio_[l], ratio_max_[l]);
     if (spec.energy_rate) r.energy_rate = lane(fit_, l).slope();
   }
 
@@ -226,7 +251,7 @@ template <class M, Packable S, class T> class BatchRunner {
       EnergyFit<double> fit;  // as Run's constructor starts it
       if (run.spec.energy_rate) fit.add(0.0, e0, e0 > 0 && std::isfinite(e0));
       set_lane(fit_, l, fit);
-      set_lane(error_sums_, l, ErrorSums<double>{});
+      set_lane(ex_.sums, l, ErrorSums<double>{});
       if constexpr (HasExact<S>) {
         if (errors_[l]) load_tracker(l, s, run.spec.dt);
       }
@@ -241,11 +266,11 @@ template <class M, Packable S, class T> class BatchRunner {
 
   void load_tracker(int l, const S& s, double h) {
     const ExactTracker<S> tracker(s, h);
-    set_lane(ex_c_, l, tracker.offset());
-    set_block(ex_xx_, l, tracker.xx()), set_block(ex_xv_, l, tracker.xv());
-    set_block(ex_vx_, l, tracker.vx()), set_block(ex_vv_, l, tracker.vv());
-    set_lane(ex_, l, s.initial());
-    left_.set(l, tracker.stepping() ? ExactTracker<S>::kResync : 0);
+    set_lane(ex_.c, l, tracker.offset());
+    set_block(ex_.xx, l, tracker.xx()), set_block(ex_.xv, l, tracker.xv());
+    set_block(ex_.vx, l, tracker.vx()), set_block(ex_.vv, l, tracker.vv());
+    set_lane(ex_.y, l, s.initial());
+    ex_.left.set(l, tracker.stepping() ? ExactTracker<S>::kResync : 0);
   }
 
   // After lanes were (re)filled: the pack's scene, and what holds for the pack until the next refill.
@@ -270,10 +295,7 @@ template <class M, Packable S, class T> class BatchRunner {
   T h_ = 0, i_ = 1, steps_ = 0, above_ = 0, below_ = 0;
   T e0_ = 0, ratio_ = 1, ratio_max_ = 1;
   EnergyFit<T> fit_;
-  ErrorSums<T> error_sums_;
-  State<D, T> ex_ = zero_state<D, T>(), ex_c_ = zero_state<D, T>();
-  Mat<D, T> ex_xx_ = Mat<D, T>::Zero(), ex_xv_ = Mat<D, T>::Zero(), ex_vx_ = Mat<D, T>::Zero(), ex_vv_ = Mat<D, T>::Zero();
-  T left_ = 0;
+  Exact ex_;
 };
 
 }  // namespace steplab
