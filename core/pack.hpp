@@ -73,7 +73,10 @@ template <int W> struct Mask {
   using Bits = typename Pack<W>::Bits;
   Bits b;
   Mask() = default;
-  explicit Mask(bool on) : b(Bits{} + (on ? -1 : 0)) {}  // every lane on, or none (bool(on) for one run)
+  // Every lane on, or none (bool(on) for one run). A select of two constants, which GCC folds
+  // where `on` is known; Bits{} + (on ? -1 : 0) was built lane by lane from a register of 0 in
+  // the stepping loop of an explicit method (core/batch.hpp: the lanes whose step failed).
+  explicit Mask(bool on) : b(on ? Bits{} - 1 : Bits{}) {}
   Mask(const Mask& o) : b(o.b) {}  // not trivially copyable: see Pack
   Mask& operator=(const Mask& o) { return b = o.b, *this; }
   static Mask of(const Bits& bits) {
@@ -94,7 +97,18 @@ template <int W> struct Mask {
 template <class T> using MaskOf = decltype(std::declval<const T&>() < std::declval<const T&>());
 
 inline double select(bool c, double a, double b) { return c ? a : b; }
-template <int W> Pack<W> select(const Mask<W>& c, const Pack<W>& a, const Pack<W>& b) { return Pack<W>::of(c.b ? a.v : b.v); }
+// Per width, as GCC 12 compiles it best. A mask's lanes are all ones or all zeros, so on AVX2 its
+// sign bit is the lane: c < 0 is one vblendvpd, where c != 0 compared the mask with zero twice
+// first (throughput_w4 in make bench: 135 us against 163 us, with the run loop's locals). SSE2
+// has no blend and GCC made either form a branch per lane: the bits are and-ed and or-ed
+// (throughput_w2 336 us against 398). On AVX-512, c < 0 is a comparison typed for plain x86-64
+// (core/pack.hpp's header) that GCC did lane by lane (throughput_w8 610 us against 434): c != 0.
+template <int W> Pack<W> select(const Mask<W>& c, const Pack<W>& a, const Pack<W>& b) {
+  using P = Pack<W>;
+  if constexpr (W == 2) return P::of(typename P::Lanes((typename P::Bits(a.v) & c.b) | (typename P::Bits(b.v) & ~c.b)));
+  else if constexpr (W == 4) return P::of(c.b < 0 ? a.v : b.v);
+  else return P::of(c.b ? a.v : b.v);
+}
 
 inline bool any(bool c) { return c; }
 inline bool all(bool c) { return c; }
