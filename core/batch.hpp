@@ -37,8 +37,12 @@ inline bool cpu_has_width(int width) {
 #if defined(__x86_64__) && defined(__GNUC__)
   if (width == 4) return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
   if (width == 8)
+#if defined(STEPLAB_NO_AVX512)
+    return false;  // the sanitized build (CMakeLists.txt) compiles no AVX-512 loop
+#else
     return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
            __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512bw");
+#endif
   return width == 1 || width == 2;
 #else
   return width == 1;
