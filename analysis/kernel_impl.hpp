@@ -174,19 +174,17 @@ template <class M, Scene S> struct BatchCode {
   [[gnu::target("avx2,fma"), gnu::flatten]] static void avx2(std::span<const BatchRun> runs, AnyResult* out) {
     body<4>(runs, out);
   }
-#if !defined(STEPLAB_NO_AVX512)
   [[gnu::target("avx512f,avx512dq,avx512vl,avx512bw,avx2,fma"), gnu::flatten]] static void avx512(
       std::span<const BatchRun> runs, AnyResult* out) {
     body<8>(runs, out);
   }
 #endif
-#endif
   static void run_batch(std::span<const BatchRun> runs, AnyResult* out, int width) {
 #if defined(__x86_64__) && defined(__GNUC__)
     if (width == 4) return avx2(runs, out);
-#if !defined(STEPLAB_NO_AVX512)
-    if (width == 8) return avx512(runs, out);
-#endif
+    // Not named where kAvx512Loop is false (core/batch.hpp), so not instantiated: not compiled.
+    if constexpr (kAvx512Loop)
+      if (width == 8) return avx512(runs, out);
 #endif
     sse2(runs, out);
   }

@@ -33,16 +33,19 @@ namespace steplab {
 // a pack is not passed in registers across calls: core/pack.hpp). 1 is one run at a time.
 inline constexpr int kPackWidths[] = {1, 2, 4, 8};
 
+// Whether the AVX-512 loop is compiled: not in the sanitized build (CMakeLists.txt).
+#if defined(STEPLAB_NO_AVX512)
+inline constexpr bool kAvx512Loop = false;
+#else
+inline constexpr bool kAvx512Loop = true;
+#endif
+
 inline bool cpu_has_width(int width) {
 #if defined(__x86_64__) && defined(__GNUC__)
   if (width == 4) return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
   if (width == 8)
-#if defined(STEPLAB_NO_AVX512)
-    return false;  // the sanitized build (CMakeLists.txt) compiles no AVX-512 loop
-#else
-    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+    return kAvx512Loop && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
            __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512bw");
-#endif
   return width == 1 || width == 2;
 #else
   return width == 1;

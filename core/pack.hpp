@@ -102,7 +102,7 @@ inline double select(bool c, double a, double b) { return c ? a : b; }
 // first (throughput_w4 in make bench: 135 us against 163 us, with the run loop's locals). SSE2
 // has no blend and GCC made either form a branch per lane: the bits are and-ed and or-ed
 // (throughput_w2 336 us against 398). On AVX-512, c < 0 is a comparison typed for plain x86-64
-// (core/pack.hpp's header) that GCC did lane by lane (throughput_w8 610 us against 434): c != 0.
+// (README, SIMD packs: GCC 12's typing of a comparison) that GCC did lane by lane (throughput_w8 610 us against 434): c != 0.
 template <int W> Pack<W> select(const Mask<W>& c, const Pack<W>& a, const Pack<W>& b) {
   using P = Pack<W>;
   if constexpr (W == 2) return P::of(typename P::Lanes((typename P::Bits(a.v) & c.b) | (typename P::Bits(b.v) & ~c.b)));
