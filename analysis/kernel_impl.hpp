@@ -163,18 +163,26 @@ template <class M, Scene S> struct PairCode {
 // The batched runs (core/batch.hpp), the loop compiled once per instruction set, each with
 // the pack of its register width, and flattened (everything it calls inlined, so compiled for
 // that instruction set, but for the noipa bookkeeping of a lane). The target names instruction
-// sets, not an arch=: GCC inlines no function into one whose arch differs.
+// sets, not an arch=: GCC inlines no function into one whose arch differs. Not flattened in the
+// sanitized build (STEPLAB_NO_FLATTEN, CMakeLists.txt), which compiles at -O1: what is not
+// inlined there runs at the plain x86-64 width, with the same bits (a pack is passed by
+// reference: core/pack.hpp).
+#if defined(STEPLAB_NO_FLATTEN)
+#define STEPLAB_FLATTEN
+#else
+#define STEPLAB_FLATTEN gnu::flatten
+#endif
 template <class M, Scene S> struct BatchCode {
   template <int W> [[gnu::always_inline]] static inline void body(std::span<const BatchRun> runs, AnyResult* out) {
     BatchRunner<M, S, Pack<W>> batch(runs, out);
     batch.run();
   }
-  [[gnu::flatten]] static void sse2(std::span<const BatchRun> runs, AnyResult* out) { body<2>(runs, out); }
+  [[STEPLAB_FLATTEN]] static void sse2(std::span<const BatchRun> runs, AnyResult* out) { body<2>(runs, out); }
 #if defined(__x86_64__) && defined(__GNUC__)
-  [[gnu::target("avx2,fma"), gnu::flatten]] static void avx2(std::span<const BatchRun> runs, AnyResult* out) {
+  [[gnu::target("avx2,fma"), STEPLAB_FLATTEN]] static void avx2(std::span<const BatchRun> runs, AnyResult* out) {
     body<4>(runs, out);
   }
-  [[gnu::target("avx512f,avx512dq,avx512vl,avx512bw,avx2,fma"), gnu::flatten]] static void avx512(
+  [[gnu::target("avx512f,avx512dq,avx512vl,avx512bw,avx2,fma"), STEPLAB_FLATTEN]] static void avx512(
       std::span<const BatchRun> runs, AnyResult* out) {
     body<8>(runs, out);
   }
