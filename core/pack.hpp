@@ -7,8 +7,11 @@
 // The lanes are one GCC vector (`vector_size`) of the register width of the instruction set the
 // batched run loop is compiled for (core/batch.hpp, analysis/kernel_impl.hpp): 2 on SSE2, 4 on
 // AVX2, 8 on AVX-512. A vector wider than the target's registers is lowered through memory
-// (3-4x slower, measured); two registers per pack, for two chains of a step in flight, measured
-// slower too. Comparisons give a Mask; a branch on the state becomes a select.
+// (3-4x slower, measured). Two packs stepped as one, for two chains of a step in flight, gained
+// little once the loop kept its state in registers, and cost elsewhere (throughput_w4 126 us
+// against 132, w2 350 against 334, w8 723 against 386, make bench at a4fdd68): the loop is
+// bound by its instruction count, not by its latency. Comparisons give a Mask; a branch on the
+// state becomes a select.
 #pragma once
 
 #include <cmath>
