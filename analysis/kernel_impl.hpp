@@ -197,6 +197,7 @@ template <class M, Scene S> struct BatchCode {
     sse2(runs, out);
   }
 };
+#undef STEPLAB_FLATTEN
 
 // The counting run only where a study counts (the work-precision study on scenes with an exact
 // solution, the scaling study on scenes of run-time size), the observed run only where the
