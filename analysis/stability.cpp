@@ -167,11 +167,16 @@ std::vector<RateRun> measure_rates(std::size_t method, const std::vector<Spring>
   return out;
 }
 
-StableSet measured_stable_set(std::size_t method, const Spring& s) {
+StableSet measured_stable_set(std::size_t method, const Spring& s, int width) {
   const double w = s.omega();
-  const PairKernel& k = spring_kernel(method);
-  return stable_set(kMeasureMinWh / w, kMaxWh / w, kMeasureFactor, 1e-4,
-                    [&](double h) { return !rate_of(k, s, h, kRateSteps, false).stable(); });
+  if (width == 0) width = best_width();
+  const int ahead = spring_kernel(method).run_batch ? width : 1;  // runs one at a time: nothing to gain
+  return stable_set_batched(kMeasureMinWh / w, kMaxWh / w, kMeasureFactor, 1e-4, ahead, [&](const std::vector<double>& hs) {
+    std::vector<char> unstable;
+    for (const RateRun& r : measure_rates(method, std::vector<Spring>(hs.size(), s), hs, kRateSteps, false, width))
+      unstable.push_back(!r.stable());
+    return unstable;
+  });
 }
 
 std::vector<double> default_dampings(const Spring& s) {
@@ -189,7 +194,7 @@ std::vector<ThresholdRow> threshold_study(const StabilityConfig& c) {
     const std::size_t m = c.methods[task / ng];
     const double gamma = c.threshold_dampings[task % ng];
     const Spring s = linear_spring(c.params, gamma);
-    const StableSet predicted = predicted_stable_set(m, s), measured = measured_stable_set(m, s);
+    const StableSet predicted = predicted_stable_set(m, s), measured = measured_stable_set(m, s, c.pack_width);
     return ThresholdRow{m, gamma, predicted.dt_star, measured.dt_star, predicted.again, measured.again};
   });
 }

@@ -76,25 +76,49 @@ struct StableSet {
 //   again  the smallest h > dt* from which the scan finds stable steps again (inf if none up to
 //          hi; not looked for if !find_again). The scan beyond dt* goes by 1.05: stable windows
 //          there can be narrow (yoshida4 undamped has some).
-// unstable(h) is the verdict at step h.
+// unstable(hs) gives the verdicts at the steps hs (a vector<char>, true: unstable), which a study
+// runs as one batch, several at a time in SIMD packs. With ahead > 1 the searches ask ahead of
+// the verdicts they wait for: a scan the next `ahead` steps at once (those past the one it stops
+// at are not used), a bisection with its midpoint the two midpoints the next round could take,
+// so two rounds at a time. The steps tried and the result are those of asking one at a time
+// (ahead = 1): each h is computed by the same operations, and a verdict only ever decides what
+// it decides there.
 template <class Unstable>
-StableSet stable_set(double lo, double hi, double factor, double precision, Unstable unstable, bool find_again = true) {
+StableSet stable_set_batched(double lo, double hi, double factor, double precision, int ahead, Unstable unstable,
+                             bool find_again = true) {
   constexpr double kInf = std::numeric_limits<double>::infinity(), kAgainFactor = 1.05;
   const double top = hi * (1 + 1e-12);
   const auto wide = [&](double a, double b) { return std::max(a, b) / std::min(a, b) - 1 > precision; };
   const auto bisect = [&](double good, double bad) {  // the edge between a stable and an unstable h
     while (wide(good, bad)) {
       const double mid = std::sqrt(good * bad);
-      (unstable(mid) ? bad : good) = mid;
+      std::vector<double> hs{mid};
+      const bool down = ahead > 1 && wide(good, mid), up = ahead > 1 && wide(mid, bad);  // the next round's, either way
+      if (down) hs.push_back(std::sqrt(good * mid));
+      if (up) hs.push_back(std::sqrt(mid * bad));
+      const std::vector<char> v = unstable(hs);
+      if (v[0]) {
+        bad = mid;
+        if (down) (v[1] ? bad : good) = hs[1];
+      } else {
+        good = mid;
+        if (up) (v.back() ? bad : good) = hs.back();
+      }
     }
     return good;
   };
   // The first h of h, h f, h f^2, ... (up to top) whose verdict is `want`; h > top if there is
   // none. `before` becomes the step tried last before it (left as given if it is the first).
   const auto first = [&](double h, double f, bool want, double& before) {
-    for (; h <= top; h *= f) {
-      if (unstable(h) == want) return h;
-      before = h;
+    while (h <= top) {
+      std::vector<double> hs;
+      for (double g = h; g <= top && std::ssize(hs) < ahead; g *= f) hs.push_back(g);
+      const std::vector<char> v = unstable(hs);
+      for (std::size_t i = 0; i < hs.size(); ++i) {
+        if (static_cast<bool>(v[i]) == want) return hs[i];
+        before = hs[i];
+      }
+      h = hs.back() * f;
     }
     return h;
   };
@@ -108,6 +132,15 @@ StableSet stable_set(double lo, double hi, double factor, double precision, Unst
   const double again = first(h * kAgainFactor, kAgainFactor, false, last_bad);
   if (again <= top) out.again = bisect(again, last_bad);
   return out;
+}
+// The same, the verdict asked at one step at a time: unstable(h) is a bool.
+template <class Unstable>
+StableSet stable_set(double lo, double hi, double factor, double precision, Unstable unstable, bool find_again = true) {
+  return stable_set_batched(lo, hi, factor, precision, 1, [&](const std::vector<double>& hs) {
+    std::vector<char> v;
+    for (double h : hs) v.push_back(unstable(h));
+    return v;
+  }, find_again);
 }
 
 // Predicted stable at step h: the step matrix's spectral radius <= 1 (within kRhoTolerance).
@@ -136,8 +169,10 @@ std::vector<RateRun> measure_rates(std::size_t method, const std::vector<Spring>
                                    long long steps, bool errors, int width = 0);
 
 // From runs (measure_rates): h scanned by factors of 2 from kMeasureMinWh/omega up to dt*, by
-// 1.05 beyond it, each edge bisected to 1e-4 relative.
-StableSet measured_stable_set(std::size_t method, const Spring& s);
+// 1.05 beyond it, each edge bisected to 1e-4 relative. `width` as measure_rates': where the
+// method's runs are packed (width > 1), the searches ask ahead a pack's width of steps at once
+// (stable_set_batched), with the result of asking one at a time.
+StableSet measured_stable_set(std::size_t method, const Spring& s, int width = 1);
 
 inline double predicted_threshold(std::size_t method, const Spring& s) { return predicted_stable_set(method, s).dt_star; }
 inline double measured_threshold(std::size_t method, const Spring& s) { return measured_stable_set(method, s).dt_star; }

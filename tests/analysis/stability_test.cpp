@@ -1,7 +1,10 @@
 // Tests of analysis/stability.cpp on the default spring (m = 1, k = 5, gamma = 0.1, L = 5).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 #include "analysis/stability.hpp"
 #include "analysis/kernel.hpp"
@@ -133,6 +136,64 @@ TEST(Threshold, MeasuredWithinOnePercentOfPredicted) {
       }
       if (name == "implicit_euler") {
         EXPECT_TRUE(std::isinf(r.dt_measured));
+      }
+    }
+  }
+}
+
+// Asking ahead (stable_set_batched) changes how many verdicts are asked at once, not which steps
+// decide: on sets whose edges are known (an unstable band with a stable window above it, every
+// step stable, unstable from the start) every `ahead` gives the bits of asking one at a time, and
+// the edges it finds are the known ones to the precision asked.
+TEST(Threshold, AskingAheadFindsWhatAskingOneAtATimeFinds) {
+  const double inf = std::numeric_limits<double>::infinity();
+  struct Case {
+    double edge, window_lo, window_hi;  // unstable on [edge, window_lo) and [window_hi, inf)
+  };
+  for (const Case& c : {Case{0.37, 1.9, 2.3}, Case{0.37, inf, inf}, Case{inf, inf, inf}, Case{1e-9, 5.0, 7.0}}) {
+    const auto unstable = [&](double h) { return h >= c.edge && !(h >= c.window_lo && h < c.window_hi); };
+    const StableSet one = stable_set(0.01, 100.0, 2.0, 1e-6, unstable);
+    for (int ahead = 1; ahead <= 8; ++ahead) {
+      int asked = 0;
+      const StableSet batched = stable_set_batched(0.01, 100.0, 2.0, 1e-6, ahead, [&](const std::vector<double>& hs) {
+        EXPECT_LE(hs.size(), static_cast<std::size_t>(std::max(ahead, 3)));
+        asked += static_cast<int>(hs.size());
+        std::vector<char> v;
+        for (double h : hs) v.push_back(unstable(h));
+        return v;
+      });
+      EXPECT_EQ(batched.dt_star, one.dt_star) << c.edge << " ahead " << ahead;
+      EXPECT_EQ(batched.again, one.again) << c.edge << " ahead " << ahead;
+      EXPECT_GT(asked, 0);
+    }
+    if (c.edge == inf) {
+      EXPECT_TRUE(std::isinf(one.dt_star));
+    } else if (c.edge < 0.01) {
+      EXPECT_EQ(one.dt_star, 0.0);
+    } else {
+      EXPECT_NEAR(one.dt_star / c.edge, 1.0, 2e-6);
+    }
+    if (std::isinf(c.window_lo)) {
+      EXPECT_TRUE(std::isinf(one.again));
+    } else {
+      EXPECT_NEAR(one.again / c.window_lo, 1.0, 2e-6);
+    }
+  }
+}
+
+// The measured searches ask ahead in packs (threshold_study's pack width): the same thresholds,
+// bit for bit, as one run at a time, for methods with one edge, none (implicit Euler), and
+// stable windows past dt* (Yoshida 4 and BDF 3 undamped).
+TEST(Threshold, MeasuredTheSameAtEveryPackWidth) {
+  for (double gamma : {0.0, 1.0}) {
+    const Spring s = linear_spring(spring_params(gamma), gamma);
+    for (const char* name : {"explicit_euler", "rk4", "implicit_euler", "yoshida4", "bdf3"}) {
+      const StableSet one = measured_stable_set(id(name), s, 1);
+      for (int width : {2, 4, 8}) {
+        if (!cpu_has_width(width)) continue;
+        const StableSet packed = measured_stable_set(id(name), s, width);
+        EXPECT_EQ(packed.dt_star, one.dt_star) << name << " " << gamma << " width " << width;
+        EXPECT_EQ(packed.again, one.again) << name << " " << gamma << " width " << width;
       }
     }
   }
