@@ -143,14 +143,10 @@ RateRun rate_run(const AnyResult& r) {
                  r.status,      r.steps,             r.failed_step};
 }
 
-RateRun rate_of(const PairKernel& k, const Spring& s, double h, long long steps, bool errors) {
-  return rate_run(k.run(s.values(), rate_spec(h, steps, errors)));
-}
-
 }  // namespace
 
 RateRun measure_rate(std::size_t method, const Spring& s, double h, long long steps) {
-  return rate_of(spring_kernel(method), s, h, steps, true);
+  return rate_run(spring_kernel(method).run(s.values(), rate_spec(h, steps, true)));
 }
 
 std::vector<RateRun> measure_rates(std::size_t method, const std::vector<Spring>& s, const std::vector<double>& h,
@@ -169,8 +165,8 @@ std::vector<RateRun> measure_rates(std::size_t method, const std::vector<Spring>
 
 StableSet measured_stable_set(std::size_t method, const Spring& s, int width) {
   const double w = s.omega();
-  if (width == 0) width = best_width();
-  const int ahead = spring_kernel(method).run_batch ? width : 1;  // runs one at a time: nothing to gain
+  // as run_all steps them: width 0 is the CPU's best; one at a time, asking ahead gains nothing
+  const int ahead = spring_kernel(method).run_batch ? (width == 0 ? best_width() : width) : 1;
   return stable_set_batched(kMeasureMinWh / w, kMaxWh / w, kMeasureFactor, 1e-4, ahead, [&](const std::vector<double>& hs) {
     std::vector<char> unstable;
     for (const RateRun& r : measure_rates(method, std::vector<Spring>(hs.size(), s), hs, kRateSteps, false, width))
