@@ -66,12 +66,11 @@ struct BatchRun {
   RunSpec spec;
 };
 
-// Whether M steps packs of runs of S: S is Packable, M's step (with its memory, for a multistep
-// method) is written over the scalar (core/method.hpp), and an exact flow, where S has one, is
-// stepped as an affine map.
+// Whether M steps packs of runs of S: S is Packable and M's step (with its memory, for a
+// multistep method) is written over the scalar (core/method.hpp).
+// Its stages' dense solves, if any, are up to kPackLuSize unknowns (core/method.hpp).
 template <class M, class S>
-concept PackedStep = Packable<S> &&
-                     (!HasExact<S> || (HasAffineFlow<S> && requires(const S& s) { s.exact_at(0.0); })) &&
+concept PackedStep = Packable<S> && solve_stages<M>() * S::dim <= kPackLuSize &&
                      requires(Stepper<M, PackScene<S, Pack<8>>, Pack<8>>& st, const PackScene<S, Pack<8>>& s,
                               State<S::dim, Pack<8>>& y, Pack<8> h) {
                        st.step(s, y, h, h);  // a StepStatus, or the lanes that failed (a Mask)
@@ -83,6 +82,9 @@ template <class M, Packable S, class T> class BatchRunner {
   using Mk = decltype(T() < T());
   static constexpr int D = S::dim;
   static constexpr std::size_t P = S::params.size();
+  template <class U> struct TrackerOf { using type = char; };  // a scene without an exact flow: none
+  template <HasExact U> struct TrackerOf<U> { using type = ExactTracker<U>; };
+  using LaneTracker = typename TrackerOf<S>::type;
 
  public:
   BatchRunner(std::span<const BatchRun> runs, AnyResult* out) : runs_(runs), out_(out) { start(); }
@@ -141,8 +143,9 @@ template <class M, Packable S, class T> class BatchRunner {
   }
 
  private:
-  // The exact state a lane's errors are taken against, stepped with it (ExactTracker: the affine
-  // map one step on, the closed form every kResync-th step), and the errors' sums.
+  // The exact state a lane's errors are taken against, stepped with it (ExactTracker: on a scene
+  // with an affine flow the map one step on and the closed form every kResync-th step; on the
+  // others the lane's own tracker every step, scalar), and the errors' sums.
   struct Exact {
     State<D, T> y = zero_state<D, T>(), c = zero_state<D, T>();
     Mat<D, T> xx = Mat<D, T>::Zero(), xv = Mat<D, T>::Zero(), vx = Mat<D, T>::Zero(), vv = Mat<D, T>::Zero();
@@ -150,8 +153,9 @@ template <class M, Packable S, class T> class BatchRunner {
     ErrorSums<T> sums;
   };
 
-  // The exact state, one step on: the affine map, or the closed form every kResync-th step
-  // (ExactTracker::at, lane by lane); the position and velocity errors of y against it.
+  // The exact state, one step on: the affine map, or ExactTracker::at lane by lane (the closed
+  // form every kResync-th step; every step where the flow is not affine: left stays 0); the
+  // position and velocity errors of y against it.
   [[gnu::always_inline]] inline void track_errors(Exact& ex, const State<D, T>& y, const Mk& on, const T& t) const {
     const Vec<D, T> x = ex.c.x + ex.xx * ex.y.x + ex.xv * ex.y.v;
     const Vec<D, T> v = ex.c.v + ex.vx * ex.y.x + ex.vv * ex.y.v;
@@ -167,7 +171,7 @@ template <class M, Packable S, class T> class BatchRunner {
   // Its arguments by value: a copy's address escapes into the call, not the loop's locals.
   [[gnu::noipa]] State<D, T> closed_form(Mk closed, T t, State<D, T> y) const {
     for (int l = 0; l < W; ++l)
-      if (closed[l]) set_lane(y, l, scalar_[l]->exact_at(t[l]));
+      if (closed[l]) set_lane(y, l, tracker_[l]->at(t[l]));
     return y;
   }
 
@@ -273,6 +277,7 @@ template <class M, Packable S, class T> class BatchRunner {
 
   void load_tracker(int l, const S& s, double h) {
     const ExactTracker<S> tracker(s, h);
+    tracker_[l].emplace(s);  // what closed_form asks: at(t) as a tracker that does not step gives it
     set_lane(ex_.c, l, tracker.offset());
     set_block(ex_.xx, l, tracker.xx()), set_block(ex_.xv, l, tracker.xv());
     set_block(ex_.vx, l, tracker.vx()), set_block(ex_.vv, l, tracker.vv());
@@ -293,6 +298,8 @@ template <class M, Packable S, class T> class BatchRunner {
   std::size_t next_ = 0;
   std::array<long long, W> job_{};
   std::array<std::optional<S>, W> scalar_;  // each lane's scene, for its exact flow
+  // on scalar_[l], emplaced after it; stepped by closed_form (const: it leaves the loop's state alone)
+  mutable std::array<std::optional<LaneTracker>, W> tracker_;
   std::array<T, P> params_{};
   std::optional<PS> scene_;
   Stepper<M, PS, T> stepper_;  // a multistep method's memory, lane by lane

@@ -66,6 +66,7 @@ template <auto B> struct AdamsBashforthMethod {
 // A: a_0 .. a_K; Beta: beta.
 template <auto A, double Beta> struct BdfMethod {
   static constexpr int history = static_cast<int>(A.size()) - 1;
+  static constexpr int solve_stages = GaussLegendre4::solve_stages;  // its start (core/method.hpp)
   // Memory of a run whose state k steps back was past(k): those states.
   template <Scene S, class Past> static History<S::dim, history> remember(const S&, Past&& past) {
     return history_of<S::dim, history>(past);

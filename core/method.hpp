@@ -57,6 +57,19 @@ struct MethodInfo {
   Family also = Family::None;  // a second family the method is the first member of
 };
 
+// A method whose step solves for its stages by Newton (solve_implicit, core/implicit_rk.hpp)
+// says how many it solves together: `static constexpr int solve_stages = K;`, K times the
+// scene's coordinates unknowns in one dense system (Gauss-Legendre 4: 2, Radau IIA 5: 3; 1 for
+// the one-stage solves). A pack solves up to kPackLuSize of them lane-wise in SIMD (core/
+// small_lu.hpp); a larger one lane by lane, scalar, which made packs slower than one run at a
+// time (Radau IIA on the chain 0.71 s against 0.59 s), so such a pair is stepped one run at a
+// time (core/batch.hpp). A method that solves and does not say so is still packed: the same
+// bits, only slower.
+template <class M> constexpr int solve_stages() {
+  if constexpr (requires { M::solve_stages; }) return M::solve_stages;
+  else return 0;
+}
+
 // A partitioned method (x and v updated by different rules) has no scalar stability function
 // R(z): its step matrix on the oscillator is not a function of h A alone.
 constexpr bool has_stability_function(const MethodInfo& m) { return m.family != Family::Splitting && !m.exact_flow; }

@@ -147,6 +147,17 @@ template <int W> Pack<W> log(const Pack<W>& a) {
   for (int l = 0; l < W; ++l) p.v[l] = std::log(a.v[l]);
   return p;
 }
+// Lane by lane std::cos and std::sin (a scene's set-up from its parameters, not a step).
+template <int W> Pack<W> cos(const Pack<W>& a) {
+  Pack<W> p;
+  for (int l = 0; l < W; ++l) p.v[l] = std::cos(a.v[l]);
+  return p;
+}
+template <int W> Pack<W> sin(const Pack<W>& a) {
+  Pack<W> p;
+  for (int l = 0; l < W; ++l) p.v[l] = std::sin(a.v[l]);
+  return p;
+}
 // Finite in every coordinate: x - x is 0 for a finite x, NaN for inf and NaN (std::isfinite).
 inline bool finite(double x) { return std::isfinite(x); }
 template <int W> Mask<W> finite(const Pack<W>& x) { return (x - x) == Pack<W>(0.0); }

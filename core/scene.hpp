@@ -165,7 +165,10 @@ template <HasExact S> class ExactTracker {
 // from F / m by at most an ulp.
 // x and v are vectors (or Eigen expressions of them) of doubles for one run, of packs where S is
 // the scene of a pack of runs (Packable below).
-template <class S, class X, class V> Vec<S::dim, typename X::Scalar> acceleration(const S& s, const X& x, const V& v) {
+// Always inlined: left out of line (GCC's stack-frame growth limit, on the falling triangle) it was
+// compiled for the default instruction set, not the batch's (core/batch.hpp).
+template <class S, class X, class V>
+[[gnu::always_inline]] inline Vec<S::dim, typename X::Scalar> acceleration(const S& s, const X& x, const V& v) {
   return s.force(x, v).cwiseProduct(s.inverse_mass());
 }
 

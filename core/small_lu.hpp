@@ -13,7 +13,10 @@
 // PartialPivLU.h, Core/SolveTriangular.h), so that a lane has the bits of its run alone
 // (tests/core/small_lu_test.cpp, and every packed implicit method in tests/analysis/pack_test.cpp).
 // Up to N = 3 that is Eigen's order of operations; at N = 4 last bits differ (measured, not
-// traced): hence N <= 3 for a pack, the spring's stages.
+// traced). A larger system of a pack is solved lane by lane by Eigen's PartialPivLU itself, out
+// of line (lu_lanes): the bits of a run alone, slower than one run at a time. The built-in
+// methods are not packed on a scene where theirs would be (core/method.hpp, solve_stages); a
+// plug-in method that does not declare its solves may come here.
 #pragma once
 
 #include <type_traits>
@@ -22,13 +25,34 @@
 
 namespace steplab {
 
+// The largest system a pack solves lane-wise in SIMD (below).
+inline constexpr int kPackLuSize = 3;
+
+// Out of line (noipa): not inlined into, nor compiled for the instruction set of, a batch's
+// flattened loop (core/batch.hpp), so Eigen's double code is the one a run alone executes. The
+// solution through b (a pack is passed by reference: core/pack.hpp).
+template <int N, class T> [[gnu::noipa]] void lu_lanes(const Mat<N, T>& a, Vec<N, T>& b) {
+  for (int l = 0; l < T::width; ++l) {
+    Mat<N> al;
+    Vec<N> bl;
+    for (int i = 0; i < N; ++i) {
+      bl[i] = b[i][l];
+      for (int j = 0; j < N; ++j) al(i, j) = a(i, j)[l];
+    }
+    const Vec<N> x = al.partialPivLu().solve(bl);
+    for (int i = 0; i < N; ++i) b[i].set(l, x[i]);
+  }
+}
+
 template <int N, class T> [[gnu::always_inline]] inline Vec<N, T> lu_solve(Mat<N, T> a, Vec<N, T> b) {
   if constexpr (N == 1) {
     return Vec<1, T>(b[0] / a(0, 0));  // what Eigen's LU of a 1 x 1 does, without its set-up
   } else if constexpr (std::is_same_v<T, double>) {
     return a.partialPivLu().solve(b);
+  } else if constexpr (N > 3) {
+    lu_lanes(a, b);
+    return b;
   } else {
-    static_assert(N <= 3, "a pack's LU has Eigen's order of operations up to N = 3");
     using std::abs;
     // p and q exchanged in the lanes of `where`.
     const auto swap_where = [](const auto& where, T& p, T& q) {

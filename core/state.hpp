@@ -29,11 +29,31 @@ template <int D, class T = double> struct State {
   Vec<D, T> v;
 };
 
-// Lane by lane a where c holds, else b (c a bool for one run, a Mask for a pack).
-template <class C, int D, class T> Vec<D, T> select(const C& c, const Vec<D, T>& a, const Vec<D, T>& b) {
-  Vec<D, T> r = b;
-  for (int j = 0; j < a.size(); ++j) r[j] = select(c, a[j], b[j]);
+// Lane by lane a where c holds, else b (c a bool for one run, a Mask for a pack), for vectors
+// and matrices alike, coefficient by coefficient.
+template <class C, class T, int R, int K, int O, int MR, int MK>
+Eigen::Matrix<T, R, K, O, MR, MK> select(const C& c, const Eigen::Matrix<T, R, K, O, MR, MK>& a, const Eigen::Matrix<T, R, K, O, MR, MK>& b) {
+  Eigen::Matrix<T, R, K, O, MR, MK> r = b;
+  for (Eigen::Index j = 0; j < a.size(); ++j) r(j) = select(c, a(j), b(j));
   return r;
+}
+
+// |v|^2 as Eigen sums it for one run. Eigen adds a vector of doubles in SIMD pairs (v0^2 + v2^2 +
+// v4^2 in one half, v1^2 + ... in the other, for 6 coordinates) and a vector of packs in another
+// order, so for more than 2 coordinates a pack's lanes are summed one by one, each by Eigen's own
+// code: the bits of a run alone (tests/analysis/pack_test.cpp, the falling triangle's energy).
+template <int D, class T> T squared_norm(const Vec<D, T>& v) {
+  if constexpr (std::is_same_v<T, double> || D <= 2) {
+    return v.squaredNorm();
+  } else {
+    T sum;
+    for (int l = 0; l < T::width; ++l) {
+      Vec<D> lane;
+      for (int j = 0; j < D; ++j) lane[j] = v[j][l];
+      sum.set(l, lane.squaredNorm());
+    }
+    return sum;
+  }
 }
 
 // A zero state; empty for a state whose size is set at run time (D = Eigen::Dynamic).

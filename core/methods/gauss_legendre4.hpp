@@ -14,6 +14,7 @@ struct GaussLegendre4 {
                                    .symplectic = true, .implicit = true, .a_stable = true,
                                    .summary = "two-stage Gauss-Legendre collocation, both stages by Newton"};
   static constexpr double r3 = 1.7320508075688772935;  // sqrt(3)
+  static constexpr int solve_stages = 2;  // core/method.hpp
   static constexpr ButcherTableau<2> tableau{{{{0.25, 0.25 - r3 / 6}, {0.25 + r3 / 6, 0.25}}}, {0.5, 0.5}};
   template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> /*t*/, Time<T> h) {
     return implicit_rk_step(s, y, h, tableau);

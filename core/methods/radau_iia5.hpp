@@ -15,6 +15,7 @@ struct RadauIIA5 {
   static constexpr MethodInfo info{.name = "radau_iia5", .order = 5, .family = Family::ImplicitRungeKutta,
                                    .implicit = true, .a_stable = true,
                                    .summary = "three-stage Radau IIA (L-stable), all stages by Newton"};
+  static constexpr int solve_stages = 3;  // core/method.hpp
   static constexpr double s6 = 2.4494897427831780982;  // sqrt(6)
   static constexpr ButcherTableau<3> tableau{{{{(88 - 7 * s6) / 360, (296 - 169 * s6) / 1800, (-2 + 3 * s6) / 225},
                                                {(296 + 169 * s6) / 1800, (88 + 7 * s6) / 360, (-2 - 3 * s6) / 225},

@@ -24,7 +24,10 @@
 
 namespace steplab {
 
-struct Bounce {
+// T = double: one bounce; T = Pack<W>: W bounces, one per lane (core/batch.hpp). The exact flow
+// below is the scalar's (a pack's errors are taken lane by lane).
+template <class T> struct BounceT {
+  template <class U> using as = BounceT<U>;
   static constexpr int dim = 1;
   static constexpr std::string_view name = "bounce";
   static constexpr std::array<ParamSpec, 4> params{{
@@ -34,30 +37,30 @@ struct Bounce {
       {"ground-damping", 0.0, Bound::NonNegative, "damping c_g of the ground's penalty spring"},
   }};
 
-  double m, g;
-  double inv_m = 1 / m;  // initialized after m (declaration order)
-  Ground ground;
-  Spring contact;  // the contact phase as a hanging spring: k_g, c_g, L = 1
+  T m, g;
+  T inv_m = 1 / m;  // initialized after m (declaration order)
+  GroundT<T> ground;
+  SpringT<T> contact;  // the contact phase as a hanging spring: k_g, c_g, L = 1
 
-  explicit Bounce(std::span<const double> p)
-      : m(p[0]), g(p[1]), ground{p[2], p[3]}, contact(std::array<double, 5>{p[0], p[2], p[3], 1.0, p[1]}) {}
+  explicit BounceT(std::span<const T> p)
+      : m(p[0]), g(p[1]), ground{p[2], p[3]}, contact(std::array<T, 5>{p[0], p[2], p[3], T(1.0), p[1]}) {}
 
-  Vec<1> mass() const { return Vec<1>::Constant(m); }
-  Vec<1> inverse_mass() const { return Vec<1>::Constant(inv_m); }
-  Vec<1> force(const Vec<1>& x, const Vec<1>& v) const { return Vec<1>::Constant(-m * g + ground.force(x[0], v[0])); }
-  Jacobians<1> jacobians(const Vec<1>& x, const Vec<1>&) const {
-    return {Mat<1>::Constant(ground.dforce_dy(x[0])), Mat<1>::Constant(ground.dforce_dv(x[0]))};
+  Vec<1, T> mass() const { return Vec<1, T>::Constant(m); }
+  Vec<1, T> inverse_mass() const { return Vec<1, T>::Constant(inv_m); }
+  Vec<1, T> force(const Vec<1, T>& x, const Vec<1, T>& v) const { return Vec<1, T>::Constant(-m * g + ground.force(x[0], v[0])); }
+  Jacobians<1, T> jacobians(const Vec<1, T>& x, const Vec<1, T>&) const {
+    return {Mat<1, T>::Constant(ground.dforce_dy(x[0])), Mat<1, T>::Constant(ground.dforce_dv(x[0]))};
   }
-  bool velocity_dependent() const { return ground.c != 0; }
+  auto velocity_dependent() const { return ground.c != 0.0; }  // a Mask for a pack
   double penetration(const Vec<1>& x) const { return ground.penetration(x[0]); }
 
   // Total mechanical energy, height measured from the ground (so E0 = m g > 0 at the drop):
   // 1/2 m v^2 + m g (y + 1) + 1/2 k_g p^2.
-  double energy(const Vec<1>& x, const Vec<1>& v) const {
+  T energy(const Vec<1, T>& x, const Vec<1, T>& v) const {
     return 0.5 * m * v[0] * v[0] + m * g * (x[0] - Ground::level) + ground.energy(x[0]);
   }
 
-  State<1> initial() const { return {Vec<1>::Zero(), Vec<1>::Zero()}; }
+  State<1, T> initial() const { return {Vec<1, T>::Zero(), Vec<1, T>::Zero()}; }
 
   State<1> flow(State<1> y, double h) const {
     for (int phase = 0; h > 0 && phase < 100000; ++phase) {
@@ -103,6 +106,8 @@ struct Bounce {
     }
   }
 };
+
+using Bounce = BounceT<double>;
 
 }  // namespace steplab
 

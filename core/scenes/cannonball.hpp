@@ -13,7 +13,10 @@
 
 namespace steplab {
 
-struct Cannonball {
+// T = double: one cannon ball; T = Pack<W>: W of them, one per lane (core/batch.hpp). The exact
+// flow below is the scalar's.
+template <class T> struct CannonballT {
+  template <class U> using as = CannonballT<U>;
   static constexpr int dim = 2;
   static constexpr std::string_view name = "cannonball";
   // Defaults from the 2018 sheet: mass 1, from the origin at 100 * (cos 1.047, sin 1.047).
@@ -24,29 +27,33 @@ struct Cannonball {
       {"angle", 1.047, Bound::Any, "launch angle in radians from the horizontal"},
   }};
 
-  double m;
-  double inv_m = 1 / m;  // initialized after m (declaration order)
-  Vec<2> g;
-  Vec<2> v0;
+  T m;
+  T inv_m = 1 / m;  // initialized after m (declaration order)
+  Vec<2, T> g;
+  Vec<2, T> v0;
 
-  explicit Cannonball(std::span<const double> p)
-      : m(p[0]), g(0.0, -p[1]), v0(p[2] * std::cos(p[3]), p[2] * std::sin(p[3])) {}
+  explicit CannonballT(std::span<const T> p) : m(p[0]), g(T(0.0), -p[1]) {
+    using std::cos, std::sin;
+    v0 << p[2] * cos(p[3]), p[2] * sin(p[3]);
+  }
 
-  Vec<2> mass() const { return Vec<2>::Constant(m); }
-  Vec<2> inverse_mass() const { return Vec<2>::Constant(inv_m); }
-  Vec<2> force(const Vec<2>&, const Vec<2>&) const { return m * g; }
-  Jacobians<2> jacobians(const Vec<2>&, const Vec<2>&) const { return {Mat<2>::Zero(), Mat<2>::Zero()}; }
+  Vec<2, T> mass() const { return Vec<2, T>::Constant(m); }
+  Vec<2, T> inverse_mass() const { return Vec<2, T>::Constant(inv_m); }
+  Vec<2, T> force(const Vec<2, T>&, const Vec<2, T>&) const { return m * g; }
+  Jacobians<2, T> jacobians(const Vec<2, T>&, const Vec<2, T>&) const { return {Mat<2, T>::Zero(), Mat<2, T>::Zero()}; }
 
   // Total mechanical energy: 1/2 m |v|^2 - m g . x.
-  double energy(const Vec<2>& x, const Vec<2>& v) const { return 0.5 * m * v.squaredNorm() - m * g.dot(x); }
+  T energy(const Vec<2, T>& x, const Vec<2, T>& v) const { return 0.5 * m * v.squaredNorm() - m * g.dot(x); }
 
-  State<2> initial() const { return {Vec<2>::Zero(), v0}; }
+  State<2, T> initial() const { return {Vec<2, T>::Zero(), v0}; }
 
-  bool velocity_dependent() const { return false; }
+  auto velocity_dependent() const { return MaskOf<T>(false); }
 
   State<2> exact_at(double t) const { return flow(initial(), t); }
   State<2> flow(const State<2>& y, double t) const { return {y.x + y.v * t + 0.5 * g * t * t, y.v + g * t}; }
 };
+
+using Cannonball = CannonballT<double>;
 
 }  // namespace steplab
 

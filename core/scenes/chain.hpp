@@ -21,10 +21,12 @@ namespace steplab {
 // fast mode (the masses against each other, omega^2 ~ k2 (1/m1 + 1/m2) = 1e5, so omega ~ 316,
 // eigenvalue ~ -10 +- 316i) carries almost none of the motion but bounds every explicit step:
 // accuracy alone would allow steps set by omega ~ 1.6, stability allows about 1/100 of that.
-struct Chain {
+// Its dynamics, T = double for one chain, a Pack for one per lane (core/batch.hpp); Chain below
+// adds the exact flow, scalar.
+template <class T> struct ChainT {
+  template <class U> using as = ChainT<U>;
   static constexpr int dim = 2;
   static constexpr std::string_view name = "chain";
-  static constexpr bool affine_flow = true;  // flow(y, h) = e^{A h} y (core/scene.hpp)
   static constexpr std::array<ParamSpec, 8> params{{
       {"mass1", 1.0, Bound::Positive, "mass m1 (next to the wall)"},
       {"mass2", 1.0, Bound::Positive, "mass m2 (the free end)"},
@@ -36,6 +38,33 @@ struct Chain {
       {"u2", 1.0, Bound::Any, "start displacement of m2 (at rest)"},
   }};
 
+  Vec<2, T> m, inv_m, u0;
+  Mat<2, T> K, C;
+
+  explicit ChainT(std::span<const T> p) : m(p[0], p[1]), inv_m(1 / p[0], 1 / p[1]), u0(p[6], p[7]) {
+    const T k1 = p[2], k2 = p[3], c1 = p[4], c2 = p[5];
+    K << k1 + k2, -k2, -k2, k2;
+    C << c1 + c2, -c2, -c2, c2;
+  }
+
+  Vec<2, T> mass() const { return m; }
+  Vec<2, T> inverse_mass() const { return inv_m; }
+  Vec<2, T> force(const Vec<2, T>& x, const Vec<2, T>& v) const { return -(K * x) - C * v; }
+  Jacobians<2, T> jacobians(const Vec<2, T>&, const Vec<2, T>&) const { return {-K, -C}; }
+  // C != 0: a Mask for a pack
+  auto velocity_dependent() const { return C(0, 0) != 0.0 || C(0, 1) != 0.0 || C(1, 1) != 0.0; }
+
+  // Kinetic energy plus the springs' potential: 1/2 v^T M v + 1/2 u^T K u.
+  T energy(const Vec<2, T>& x, const Vec<2, T>& v) const {
+    return 0.5 * v.dot(m.cwiseProduct(v)) + 0.5 * x.dot(K * x);
+  }
+
+  State<2, T> initial() const { return {u0, Vec<2, T>::Zero()}; }
+};
+
+struct Chain : ChainT<double> {
+  static constexpr bool affine_flow = true;  // flow(y, h) = e^{A h} y (core/scene.hpp)
+
   using Vec4 = Eigen::Vector4d;
   using CMat4 = Eigen::Matrix4cd;
   using CVec4 = Eigen::Vector4cd;
@@ -43,8 +72,6 @@ struct Chain {
   using LMat4 = Eigen::Matrix<long double, 4, 4>;
   using LCMat4 = Eigen::Matrix<std::complex<long double>, 4, 4>;
 
-  Vec<2> m, inv_m, u0;
-  Mat<2> K, C;
   // The first-order system z' = A z, z = (u1, u2, v1, v2): A = [[0, I], [-M^-1 K, -M^-1 C]],
   // its entries rounded once from the parameters in long double.
   LMat4 A;
@@ -62,19 +89,6 @@ struct Chain {
 
   // Defined at the end of this file, compiled once (STEPLAB_SCENE_SOURCE below).
   explicit Chain(std::span<const double> p);
-
-  Vec<2> mass() const { return m; }
-  Vec<2> inverse_mass() const { return inv_m; }
-  Vec<2> force(const Vec<2>& x, const Vec<2>& v) const { return -(K * x) - C * v; }
-  Jacobians<2> jacobians(const Vec<2>&, const Vec<2>&) const { return {-K, -C}; }
-  bool velocity_dependent() const { return C.cwiseAbs().maxCoeff() != 0; }
-
-  // Kinetic energy plus the springs' potential: 1/2 v^T M v + 1/2 u^T K u.
-  double energy(const Vec<2>& x, const Vec<2>& v) const {
-    return 0.5 * v.dot(m.cwiseProduct(v)) + 0.5 * x.dot(K * x);
-  }
-
-  State<2> initial() const { return {u0, Vec<2>::Zero()}; }
 
   State<2> exact_at(double t) const { return use_eigen ? modal(start, t) : flow(initial(), t); }
 
@@ -105,10 +119,8 @@ struct Chain {
 
 namespace steplab {
 
-Chain::Chain(std::span<const double> p) : m(p[0], p[1]), inv_m(1 / p[0], 1 / p[1]), u0(p[6], p[7]) {
+Chain::Chain(std::span<const double> p) : ChainT<double>(p) {
   const double k1 = p[2], k2 = p[3], c1 = p[4], c2 = p[5];
-  K << k1 + k2, -k2, -k2, k2;
-  C << c1 + c2, -c2, -c2, c2;
   const long double lm1 = p[0], lm2 = p[1], lk1 = k1, lk2 = k2, lc1 = c1, lc2 = c2;
   A << 0, 0, 1, 0, 0, 0, 0, 1, -(lk1 + lk2) / lm1, lk2 / lm1, -(lc1 + lc2) / lm1, lc2 / lm1, lk2 / lm2, -lk2 / lm2,
       lc2 / lm2, -lc2 / lm2;

@@ -19,7 +19,9 @@
 
 namespace steplab {
 
-struct Falling {
+// T = double: one triangle; T = Pack<W>: W of them, one per lane (core/batch.hpp).
+template <class T> struct FallingT {
+  template <class U> using as = FallingT<U>;
   static constexpr int dim = 6;
   static constexpr std::string_view name = "falling";
   // The old command-line framework's defaults: mass 0.1, stiffness 10, damping 0.01; ground 100.
@@ -33,77 +35,82 @@ struct Falling {
   }};
   static constexpr std::array<std::array<int, 2>, 3> springs{{{0, 1}, {1, 2}, {2, 0}}};
 
-  double m, k, gamma, g;
-  double inv_m = 1 / m;  // initialized after m (declaration order)
-  PairSpring spring{k, gamma};
-  Ground ground;
-  double rest;  // rest length of every spring: the side of the start triangle, sqrt(3)
+  T m, k, gamma, g;
+  T inv_m = 1 / m;  // initialized after m (declaration order)
+  PairSpringT<T> spring{k, gamma};
+  GroundT<T> ground;
+  // Rest length of every spring: the side of the start triangle, sqrt(3), the same in every lane.
+  double rest = (FallingT<double>::start().segment<2>(0) - FallingT<double>::start().segment<2>(2)).norm();
 
-  explicit Falling(std::span<const double> p)
-      : m(p[0]), k(p[1]), gamma(p[2]), g(p[3]), ground{p[4], p[5]} {
-    const Vec<6> x0 = initial().x;
-    rest = (x0.segment<2>(0) - x0.segment<2>(2)).norm();
-  }
+  explicit FallingT(std::span<const T> p) : m(p[0]), k(p[1]), gamma(p[2]), g(p[3]), ground{p[4], p[5]} {}
 
-  Vec<6> mass() const { return Vec<6>::Constant(m); }
-  Vec<6> inverse_mass() const { return Vec<6>::Constant(inv_m); }
+  Vec<6, T> mass() const { return Vec<6, T>::Constant(m); }
+  Vec<6, T> inverse_mass() const { return Vec<6, T>::Constant(inv_m); }
 
-  Vec<6> force(const Vec<6>& x, const Vec<6>& v) const {
-    Vec<6> f = Vec<6>::Zero();
+  // force and jacobians always inlined: left out of line (GCC's stack-frame growth limit) a pack's
+  // were compiled for the default instruction set, not the batch's (core/batch.hpp), and packs of
+  // 4 ran slower than one run at a time.
+  [[gnu::always_inline]] Vec<6, T> force(const Vec<6, T>& x, const Vec<6, T>& v) const {
+    Vec<6, T> f = Vec<6, T>::Zero();
     for (int i = 0; i < 3; ++i) f[2 * i + 1] = -m * g + ground.force(x[2 * i + 1], v[2 * i + 1]);
     for (const auto& [i, j] : springs) {
-      const Eigen::Vector2d fi =
-          spring.force(x.segment<2>(2 * i) - x.segment<2>(2 * j), v.segment<2>(2 * i) - v.segment<2>(2 * j), rest);
-      f.segment<2>(2 * i) += fi;
-      f.segment<2>(2 * j) -= fi;
+      const Vec<2, T> fi = spring.force(x.template segment<2>(2 * i) - x.template segment<2>(2 * j),
+                                        v.template segment<2>(2 * i) - v.template segment<2>(2 * j), rest);
+      f.template segment<2>(2 * i) += fi;
+      f.template segment<2>(2 * j) -= fi;
     }
     return f;
   }
 
-  Jacobians<6> jacobians(const Vec<6>& x, const Vec<6>& v) const {
-    Jacobians<6> jac{Mat<6>::Zero(), Mat<6>::Zero()};
+  [[gnu::always_inline]] Jacobians<6, T> jacobians(const Vec<6, T>& x, const Vec<6, T>& v) const {
+    Jacobians<6, T> jac{Mat<6, T>::Zero(), Mat<6, T>::Zero()};
     for (int i = 0; i < 3; ++i) {
       jac.dx(2 * i + 1, 2 * i + 1) = ground.dforce_dy(x[2 * i + 1]);
       jac.dv(2 * i + 1, 2 * i + 1) = ground.dforce_dv(x[2 * i + 1]);
     }
     for (const auto& [i, j] : springs) {
-      const auto [dfd, dfv] = spring.blocks(x.segment<2>(2 * i) - x.segment<2>(2 * j), v.segment<2>(2 * i) - v.segment<2>(2 * j), rest);
-      jac.dx.block<2, 2>(2 * i, 2 * i) += dfd;
-      jac.dx.block<2, 2>(2 * i, 2 * j) -= dfd;
-      jac.dx.block<2, 2>(2 * j, 2 * i) -= dfd;
-      jac.dx.block<2, 2>(2 * j, 2 * j) += dfd;
-      jac.dv.block<2, 2>(2 * i, 2 * i) += dfv;
-      jac.dv.block<2, 2>(2 * i, 2 * j) -= dfv;
-      jac.dv.block<2, 2>(2 * j, 2 * i) -= dfv;
-      jac.dv.block<2, 2>(2 * j, 2 * j) += dfv;
+      const auto [dfd, dfv] = spring.blocks(x.template segment<2>(2 * i) - x.template segment<2>(2 * j),
+                                            v.template segment<2>(2 * i) - v.template segment<2>(2 * j), rest);
+      jac.dx.template block<2, 2>(2 * i, 2 * i) += dfd;
+      jac.dx.template block<2, 2>(2 * i, 2 * j) -= dfd;
+      jac.dx.template block<2, 2>(2 * j, 2 * i) -= dfd;
+      jac.dx.template block<2, 2>(2 * j, 2 * j) += dfd;
+      jac.dv.template block<2, 2>(2 * i, 2 * i) += dfv;
+      jac.dv.template block<2, 2>(2 * i, 2 * j) -= dfv;
+      jac.dv.template block<2, 2>(2 * j, 2 * i) -= dfv;
+      jac.dv.template block<2, 2>(2 * j, 2 * j) += dfv;
     }
     return jac;
   }
 
-  bool velocity_dependent() const { return gamma != 0 || ground.c != 0; }
+  auto velocity_dependent() const { return gamma != 0.0 || ground.c != 0.0; }  // a Mask for a pack
   // The deepest of the three particles below the ground.
   double penetration(const Vec<6>& x) const {
-    double p = ground.penetration(x[1]);
+    double p = ground.penetration(x[1]);  // one run's (T = double)
     for (int i = 1; i < 3; ++i) p = std::max(p, ground.penetration(x[2 * i + 1]));
     return p;
   }
 
   // Total mechanical energy: kinetic + gravity (height above the ground) + springs + ground penalty.
-  double energy(const Vec<6>& x, const Vec<6>& v) const {
-    double e = 0.5 * m * v.squaredNorm();
+  T energy(const Vec<6, T>& x, const Vec<6, T>& v) const {
+    T e = 0.5 * m * squared_norm(v);  // v.squaredNorm(), in a pack lane by lane (core/state.hpp)
     for (int i = 0; i < 3; ++i) e += m * g * (x[2 * i + 1] - Ground::level) + ground.energy(x[2 * i + 1]);
-    for (const auto& [i, j] : springs) e += spring.energy(x.segment<2>(2 * i) - x.segment<2>(2 * j), rest);
+    for (const auto& [i, j] : springs) e += spring.energy(x.template segment<2>(2 * i) - x.template segment<2>(2 * j), rest);
     return e;
   }
 
-  State<6> initial() const {
+  // The start positions: p1 = (0, 1), p2 = (cos 210°, sin 210°), p3 = (cos 330°, sin 330°).
+  static Vec<6> start() {
     using std::numbers::pi;
     const double a2 = 210 * pi / 180, a3 = 330 * pi / 180;
     Vec<6> x;
     x << 0, 1, std::cos(a2), std::sin(a2), std::cos(a3), std::sin(a3);
-    return {x, Vec<6>::Zero()};
+    return x;
   }
+  State<6, T> initial() const { return {start().template cast<T>(), Vec<6, T>::Zero()}; }
 };
+
+using Falling = FallingT<double>;
 
 }  // namespace steplab
 

@@ -7,20 +7,25 @@
 //
 // The force is continuous at contact (p = 0) but its derivative jumps there: the motion is
 // only piecewise smooth, which is what the collision study measures the methods against.
+// T = double: one ground; a Pack: one per lane, "while p > 0" a select (core/pack.hpp).
 #pragma once
+
+#include "core/pack.hpp"
 
 namespace steplab {
 
-struct Ground {
+template <class T> struct GroundT {
   static constexpr double level = -1.0;
-  double k, c;  // stiffness k_g, damping c_g
+  T k, c;  // stiffness k_g, damping c_g
 
-  double penetration(double y) const { return level - y; }
-  bool touching(double y) const { return y < level; }
-  double force(double y, double vy) const { return touching(y) ? k * penetration(y) - c * vy : 0.0; }
-  double dforce_dy(double y) const { return touching(y) ? -k : 0.0; }
-  double dforce_dv(double y) const { return touching(y) ? -c : 0.0; }
-  double energy(double y) const { return touching(y) ? 0.5 * k * penetration(y) * penetration(y) : 0.0; }
+  T penetration(const T& y) const { return level - y; }
+  auto touching(const T& y) const { return y < level; }  // a Mask for a pack
+  T force(const T& y, const T& vy) const { return select(touching(y), k * penetration(y) - c * vy, T(0.0)); }
+  T dforce_dy(const T& y) const { return select(touching(y), -k, T(0.0)); }
+  T dforce_dv(const T& y) const { return select(touching(y), -c, T(0.0)); }
+  T energy(const T& y) const { return select(touching(y), 0.5 * k * penetration(y) * penetration(y), T(0.0)); }
 };
+
+using Ground = GroundT<double>;
 
 }  // namespace steplab

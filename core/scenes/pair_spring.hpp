@@ -9,36 +9,46 @@
 // masses (l = 0) have no direction: no force, zero blocks.
 #pragma once
 
-#include <Eigen/Core>
+#include <cmath>
+
+#include "core/state.hpp"
 
 namespace steplab {
 
-struct PairSpring {
-  double k, gamma;
+// T = double: one spring; a Pack: one per lane, "zero where l = 0" a select (core/pack.hpp).
+template <class T> struct PairSpringT {
+  using V2 = Eigen::Matrix<T, 2, 1>;
+  using M2 = Eigen::Matrix<T, 2, 2>;
+  T k, gamma;
 
   // F_i; zero where l = 0.
-  Eigen::Vector2d force(const Eigen::Vector2d& d, const Eigen::Vector2d& w, double rest) const {
-    const double l = d.norm();
-    if (l == 0) return Eigen::Vector2d::Zero();
-    const Eigen::Vector2d n = d / l;
-    return -(k * (l - rest) + gamma * n.dot(w)) * n;
+  V2 force(const V2& d, const V2& w, const T& rest) const {
+    using std::sqrt;
+    const T l = sqrt(d.squaredNorm());  // d.norm(), as Eigen computes it
+    const V2 n = d / l;
+    return select(l == 0.0, V2(V2::Zero()), V2(-(k * (l - rest) + gamma * n.dot(w)) * n));
   }
 
   struct Blocks {
-    Eigen::Matrix2d dd, dv;  // dF_i/dd, dF_i/dv_i
+    M2 dd, dv;  // dF_i/dd, dF_i/dv_i
   };
-  Blocks blocks(const Eigen::Vector2d& d, const Eigen::Vector2d& w, double rest) const {
-    const double l = d.norm();
-    if (l == 0) return {Eigen::Matrix2d::Zero(), Eigen::Matrix2d::Zero()};
-    const Eigen::Vector2d n = d / l;
-    const Eigen::Matrix2d nn = n * n.transpose(), P = Eigen::Matrix2d::Identity() - nn;
-    return {-k * (nn + (l - rest) / l * P) - gamma / l * (n * w.transpose() * P + n.dot(w) * P), -gamma * nn};
+  Blocks blocks(const V2& d, const V2& w, const T& rest) const {
+    using std::sqrt;
+    const T l = sqrt(d.squaredNorm());
+    const V2 n = d / l;
+    const M2 nn = n * n.transpose(), P = M2::Identity() - nn;
+    const M2 dd = -k * (nn + (l - rest) / l * P) - gamma / l * (n * w.transpose() * P + n.dot(w) * P), dv = -gamma * nn;
+    const auto zero = l == 0.0;
+    return {select(zero, M2(M2::Zero()), dd), select(zero, M2(M2::Zero()), dv)};
   }
 
-  double energy(const Eigen::Vector2d& d, double rest) const {
-    const double stretch = d.norm() - rest;
+  T energy(const V2& d, const T& rest) const {
+    using std::sqrt;
+    const T stretch = sqrt(d.squaredNorm()) - rest;
     return 0.5 * k * stretch * stretch;
   }
 };
+
+using PairSpring = PairSpringT<double>;
 
 }  // namespace steplab
