@@ -134,30 +134,20 @@ template <int W> Pack<W> abs(const Pack<W>& a) {
 }
 template <int W> Pack<W> max(const Pack<W>& a, const Pack<W>& b) { return select(a < b, b, a); }
 template <int W> Pack<W> min(const Pack<W>& a, const Pack<W>& b) { return select(b < a, b, a); }
+// f(a) lane by lane, for the functions of <cmath> below: each lane the bits of one run.
+template <int W, class F> [[gnu::always_inline]] inline Pack<W> lanewise(const Pack<W>& a, F f) {
+  Pack<W> p;
+  for (int l = 0; l < W; ++l) p.v[l] = f(a.v[l]);
+  return p;
+}
 // Correctly rounded in every lane, like std::sqrt (GCC emits one sqrtpd for the loop: with
 // -fno-math-errno, CMakeLists.txt).
-template <int W> Pack<W> sqrt(const Pack<W>& a) {
-  Pack<W> p;
-  for (int l = 0; l < W; ++l) p.v[l] = std::sqrt(a.v[l]);
-  return p;
-}
-// Lane by lane std::log: the bits of a run of its own.
-template <int W> Pack<W> log(const Pack<W>& a) {
-  Pack<W> p;
-  for (int l = 0; l < W; ++l) p.v[l] = std::log(a.v[l]);
-  return p;
-}
-// Lane by lane std::cos and std::sin (a scene's set-up from its parameters, not a step).
-template <int W> Pack<W> cos(const Pack<W>& a) {
-  Pack<W> p;
-  for (int l = 0; l < W; ++l) p.v[l] = std::cos(a.v[l]);
-  return p;
-}
-template <int W> Pack<W> sin(const Pack<W>& a) {
-  Pack<W> p;
-  for (int l = 0; l < W; ++l) p.v[l] = std::sin(a.v[l]);
-  return p;
-}
+template <int W> Pack<W> sqrt(const Pack<W>& a) { return lanewise(a, [](double x) { return std::sqrt(x); }); }
+// libm's log in every lane (the ln E fit).
+template <int W> Pack<W> log(const Pack<W>& a) { return lanewise(a, [](double x) { return std::log(x); }); }
+// cos and sin: a scene's set-up from its parameters (the cannon ball's launch), not a step.
+template <int W> Pack<W> cos(const Pack<W>& a) { return lanewise(a, [](double x) { return std::cos(x); }); }
+template <int W> Pack<W> sin(const Pack<W>& a) { return lanewise(a, [](double x) { return std::sin(x); }); }
 // Finite in every coordinate: x - x is 0 for a finite x, NaN for inf and NaN (std::isfinite).
 inline bool finite(double x) { return std::isfinite(x); }
 template <int W> Mask<W> finite(const Pack<W>& x) { return (x - x) == Pack<W>(0.0); }

@@ -33,13 +33,7 @@ inline constexpr int kPackLuSize = 3;
 // solution through b (a pack is passed by reference: core/pack.hpp).
 template <int N, class T> [[gnu::noipa]] void lu_lanes(const Mat<N, T>& a, Vec<N, T>& b) {
   for (int l = 0; l < T::width; ++l) {
-    Mat<N> al;
-    Vec<N> bl;
-    for (int i = 0; i < N; ++i) {
-      bl[i] = b[i][l];
-      for (int j = 0; j < N; ++j) al(i, j) = a(i, j)[l];
-    }
-    const Vec<N> x = al.partialPivLu().solve(bl);
+    const Vec<N> x = lane_of(a, l).partialPivLu().solve(lane_of(b, l));
     for (int i = 0; i < N; ++i) b[i].set(l, x[i]);
   }
 }
@@ -49,7 +43,7 @@ template <int N, class T> [[gnu::always_inline]] inline Vec<N, T> lu_solve(Mat<N
     return Vec<1, T>(b[0] / a(0, 0));  // what Eigen's LU of a 1 x 1 does, without its set-up
   } else if constexpr (std::is_same_v<T, double>) {
     return a.partialPivLu().solve(b);
-  } else if constexpr (N > 3) {
+  } else if constexpr (N > kPackLuSize) {
     lu_lanes(a, b);
     return b;
   } else {

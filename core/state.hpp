@@ -38,6 +38,11 @@ Eigen::Matrix<T, R, K, O, MR, MK> select(const C& c, const Eigen::Matrix<T, R, K
   return r;
 }
 
+// Lane l of a vector or matrix of packs, as one run's doubles.
+template <class T, int R, int K> Eigen::Matrix<double, R, K> lane_of(const Eigen::Matrix<T, R, K>& m, int l) {
+  return m.unaryExpr([l](const T& p) { return p[l]; });
+}
+
 // |v|^2 as Eigen sums it for one run. Eigen adds a vector of doubles in SIMD pairs (v0^2 + v2^2 +
 // v4^2 in one half, v1^2 + ... in the other, for 6 coordinates) and a vector of packs in another
 // order, so for more than 2 coordinates a pack's lanes are summed one by one, each by Eigen's own
@@ -47,11 +52,7 @@ template <int D, class T> T squared_norm(const Vec<D, T>& v) {
     return v.squaredNorm();
   } else {
     T sum;
-    for (int l = 0; l < T::width; ++l) {
-      Vec<D> lane;
-      for (int j = 0; j < D; ++j) lane[j] = v[j][l];
-      sum.set(l, lane.squaredNorm());
-    }
+    for (int l = 0; l < T::width; ++l) sum.set(l, lane_of(v, l).squaredNorm());
     return sum;
   }
 }

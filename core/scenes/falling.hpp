@@ -39,10 +39,12 @@ template <class T> struct FallingT {
   T inv_m = 1 / m;  // initialized after m (declaration order)
   PairSpringT<T> spring{k, gamma};
   GroundT<T> ground;
-  // Rest length of every spring: the side of the start triangle, sqrt(3), the same in every lane.
-  double rest = (FallingT<double>::start().segment<2>(0) - FallingT<double>::start().segment<2>(2)).norm();
+  double rest;  // rest length of every spring: the side of the start triangle, sqrt(3), in every lane
 
-  explicit FallingT(std::span<const T> p) : m(p[0]), k(p[1]), gamma(p[2]), g(p[3]), ground{p[4], p[5]} {}
+  explicit FallingT(std::span<const T> p) : m(p[0]), k(p[1]), gamma(p[2]), g(p[3]), ground{p[4], p[5]} {
+    const Vec<6> x0 = start();
+    rest = (x0.segment<2>(0) - x0.segment<2>(2)).norm();
+  }
 
   Vec<6, T> mass() const { return Vec<6, T>::Constant(m); }
   Vec<6, T> inverse_mass() const { return Vec<6, T>::Constant(inv_m); }

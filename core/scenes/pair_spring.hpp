@@ -23,8 +23,10 @@ template <class T> struct PairSpringT {
 
   // F_i; zero where l = 0.
   V2 force(const V2& d, const V2& w, const T& rest) const {
+    // d.norm() written out: with Eigen's norm() the falling triangle's one-at-a-time runs took
+    // 3 % more instructions (callgrind, study convergence with RK4)
     using std::sqrt;
-    const T l = sqrt(d.squaredNorm());  // d.norm(), as Eigen computes it
+    const T l = sqrt(d.squaredNorm());
     const V2 n = d / l;
     return select(l == 0.0, V2(V2::Zero()), V2(-(k * (l - rest) + gamma * n.dot(w)) * n));
   }
