@@ -189,9 +189,10 @@ template <class M, Scene S> struct BatchCode {
 #endif
   static void run_batch(std::span<const BatchRun> runs, AnyResult* out, int width) {
 #if defined(__x86_64__) && defined(__GNUC__)
-    if (width == 4) return avx2(runs, out);
-    // Not named where kAvx512Loop is false (core/batch.hpp), so not instantiated: not compiled.
-    if constexpr (kAvx512Loop)
+    // A loop wider than kMaxPackWidth (core/batch.hpp) is not named, so not instantiated.
+    if constexpr (kMaxPackWidth >= 4)
+      if (width == 4) return avx2(runs, out);
+    if constexpr (kMaxPackWidth >= 8)
       if (width == 8) return avx512(runs, out);
 #endif
     sse2(runs, out);

@@ -33,18 +33,21 @@ namespace steplab {
 // a pack is not passed in registers across calls: core/pack.hpp). 1 is one run at a time.
 inline constexpr int kPackWidths[] = {1, 2, 4, 8};
 
-// Whether the AVX-512 loop is compiled: not in the sanitized build (CMakeLists.txt).
-#if defined(STEPLAB_NO_AVX512)
-inline constexpr bool kAvx512Loop = false;
+// The widest loop compiled: 8 (AVX-512) unless the build says less. The sanitized build
+// compiles the 2-lane loop only (STEPLAB_MAX_PACK_WIDTH=2, CMakeLists.txt): the loop is one
+// template at every width, and each width more was another copy of it in every method's file.
+#if defined(STEPLAB_MAX_PACK_WIDTH)
+inline constexpr int kMaxPackWidth = STEPLAB_MAX_PACK_WIDTH;
 #else
-inline constexpr bool kAvx512Loop = true;
+inline constexpr int kMaxPackWidth = 8;
 #endif
 
 inline bool cpu_has_width(int width) {
+  if (width > kMaxPackWidth) return false;
 #if defined(__x86_64__) && defined(__GNUC__)
   if (width == 4) return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
   if (width == 8)
-    return kAvx512Loop && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
            __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512bw");
   return width == 1 || width == 2;
 #else
