@@ -157,17 +157,21 @@ template <class M, Packable S, class T> class BatchRunner {
   };
 
   // The exact state, one step on: the affine map, or ExactTracker::at lane by lane (the closed
-  // form every kResync-th step; every step where the flow is not affine: left stays 0); the
-  // position and velocity errors of y against it.
+  // form every kResync-th step; every step on a scene whose tracker does not step a map, which
+  // skips the map); the position and velocity errors of y against it.
   [[gnu::always_inline]] inline void track_errors(Exact& ex, const State<D, T>& y, const Mk& on, const T& t) const {
-    const Vec<D, T> x = ex.c.x + ex.xx * ex.y.x + ex.xv * ex.y.v;
-    const Vec<D, T> v = ex.c.v + ex.vx * ex.y.x + ex.vv * ex.y.v;
-    ex.y.x = select(on, x, ex.y.x);
-    ex.y.v = select(on, v, ex.y.v);
-    const Mk closed = on && ex.left <= 1.0;
-    const T next_left = select(ex.left > 1.0, ex.left - 1.0, select(ex.left == T(1.0), T(double(ExactTracker<S>::kResync)), T(0.0)));
-    ex.left = select(on, next_left, ex.left);
-    if (any(closed)) [[unlikely]] ex.y = closed_form(closed, t, ex.y);
+    if constexpr (ExactTracker<S>::kCanStep) {
+      const Vec<D, T> x = ex.c.x + ex.xx * ex.y.x + ex.xv * ex.y.v;
+      const Vec<D, T> v = ex.c.v + ex.vx * ex.y.x + ex.vv * ex.y.v;
+      ex.y.x = select(on, x, ex.y.x);
+      ex.y.v = select(on, v, ex.y.v);
+      const Mk closed = on && ex.left <= 1.0;
+      const T next_left = select(ex.left > 1.0, ex.left - 1.0, select(ex.left == T(1.0), T(double(ExactTracker<S>::kResync)), T(0.0)));
+      ex.left = select(on, next_left, ex.left);
+      if (any(closed)) [[unlikely]] ex.y = closed_form(closed, t, ex.y);
+    } else if (any(on)) {
+      ex.y = closed_form(on, t, ex.y);  // no map to step: the lane's tracker every step
+    }
     ex.sums.add(y, ex.y, on);
   }
 
@@ -279,13 +283,15 @@ template <class M, Packable S, class T> class BatchRunner {
   }
 
   void load_tracker(int l, const S& s, double h) {
-    const ExactTracker<S> tracker(s, h);
     tracker_[l].emplace(s);  // what closed_form asks: at(t) as a tracker that does not step gives it
-    set_lane(ex_.c, l, tracker.offset());
-    set_block(ex_.xx, l, tracker.xx()), set_block(ex_.xv, l, tracker.xv());
-    set_block(ex_.vx, l, tracker.vx()), set_block(ex_.vv, l, tracker.vv());
     set_lane(ex_.y, l, s.initial());
-    ex_.left.set(l, tracker.stepping() ? ExactTracker<S>::kResync : 0);
+    if constexpr (ExactTracker<S>::kCanStep) {
+      const ExactTracker<S> map(s, h);  // the fixed step's map, copied into the lane
+      set_lane(ex_.c, l, map.offset());
+      set_block(ex_.xx, l, map.xx()), set_block(ex_.xv, l, map.xv());
+      set_block(ex_.vx, l, map.vx()), set_block(ex_.vv, l, map.vv());
+      ex_.left.set(l, map.stepping() ? ExactTracker<S>::kResync : 0);
+    }
   }
 
   // After lanes were (re)filled: the pack's scene, and what holds for the pack until the next refill.

@@ -94,10 +94,11 @@ concept HasAffineFlow = HasExact<S> && requires { requires S::affine_flow; };
 // instructions a step, five times explicit Euler's step with its run loop (callgrind).
 template <HasExact S> class ExactTracker {
   static constexpr int D = S::dim;
-  static constexpr bool kCanStep = D != Eigen::Dynamic && HasAffineFlow<S> && requires(const S& s) { s.exact_at(0.0); };
   using Block = Eigen::Matrix<double, D, D>;
 
  public:
+  // Whether it can step the affine map (given h > 0); else at(t) is the closed form or the flow.
+  static constexpr bool kCanStep = D != Eigen::Dynamic && HasAffineFlow<S> && requires(const S& s) { s.exact_at(0.0); };
   static constexpr int kResync = 32;
 
   explicit ExactTracker(const S& s, double h = 0) : s_(s), y_(s.initial()) {
