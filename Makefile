@@ -31,6 +31,12 @@ bench: build
 	@$(BUILD)/steplab_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
 	  --benchmark_out=$(BUILD)/bench.json --benchmark_out_format=json --ratios=$(BUILD)/bench-ratios.md
 	@echo "wrote $(BUILD)/bench.json and $(BUILD)/bench-ratios.md"
+	@# CVODE as Debian builds it (no optimisation) against the build steplab uses: the same program,
+	@# the same rope, the same steps (bench/cvode_rope.c)
+	@if [ -x $(BUILD)/cvode_rope_debian ]; then \
+	  o=$$($(BUILD)/cvode_rope 1024 1e-5 adams); d=$$($(BUILD)/cvode_rope_debian 1024 1e-5 adams); \
+	  echo "CVODE Adams, rope of 1024 masses, tol 1e-5: steplab's build: $$o"; echo "  Debian's build: $$d"; \
+	  echo "$$o $$d" | awk '{ printf "  per step: %.1f us against %.1f us, Debian/optimised %.2f\n", 1e6*$$16/$$2, 1e6*$$34/$$20, ($$34/$$20)/($$16/$$2) }'; fi
 
 
 # The suite under AddressSanitizer and UndefinedBehaviorSanitizer, in its own build folder.

@@ -24,6 +24,7 @@
 
 #include <Eigen/Core>
 
+#include "analysis/counts.hpp"
 #include "core/batch.hpp"
 #include "core/dopri5.hpp"
 #include "core/method.hpp"
@@ -34,11 +35,6 @@ namespace steplab {
 using AnyState = State<Eigen::Dynamic>;
 using AnyAdaptiveResult = AdaptiveResult<Eigen::Dynamic>;
 using Params = std::span<const double>;  // a scene's parameter values, in its table's order
-
-// What a counting run asked of the scene (the work-precision study's cost measure).
-struct Counts {
-  long long forces = 0, jacobians = 0;
-};
 
 struct BounceEvent {
   double t;               // time the mass left the ground
@@ -60,6 +56,7 @@ struct Observed {
 // predictions and the local error difference or apply them), others have them null.
 struct PairKernel {
   AnyResult (*run)(Params, const RunSpec&);
+  // The run, counting what it asked of the scene and its Newton solves (analysis/counts.hpp).
   AnyResult (*run_counted)(Params, const RunSpec&, Counts&);    // scenes with an exact solution or of run-time size
   AnyResult (*run_observed)(Params, const RunSpec&, Observed&);  // fixed-size scenes with contact, and 1-D ones
   // Wall-clock times of the same run repeated (analysis/timing.hpp: at least `repeats`, `seconds`

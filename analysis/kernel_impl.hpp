@@ -27,10 +27,12 @@ template <class M, class S> constexpr bool applies() {
   else return true;
 }
 
-// A scene that counts what a method asks of it; otherwise the scene itself.
+// A scene that counts what a method asks of it, and each linear solve of Newton's method
+// (count_newton_update, core/method.hpp); otherwise the scene itself.
 template <Scene S> struct Counted : S {
   explicit Counted(std::span<const double> p) : S(p) {}
-  mutable long long forces = 0, jacobian_calls = 0;
+  mutable long long forces = 0, jacobian_calls = 0, newton_updates = 0;
+  void newton_update() const { ++newton_updates; }
   Vec<S::dim> force(const Vec<S::dim>& x, const Vec<S::dim>& v) const {
     ++forces;
     return S::force(x, v);
@@ -94,7 +96,9 @@ template <class M, Scene S> struct PairCode {
   static AnyResult run_counted(Params p, const RunSpec& spec, Counts& n) {
     const Counted<S> s(p);
     AnyResult r = to_any(simulate<M>(s, spec));
-    n = {s.forces, s.jacobian_calls};
+    // each Newton update factorises its matrix and solves once (full Newton)
+    n = {.steps = r.steps, .forces = s.forces, .jacobians = s.jacobian_calls, .factorisations = s.newton_updates,
+         .solves = s.newton_updates, .newton = s.newton_updates};
     return r;
   }
 

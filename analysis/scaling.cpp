@@ -25,15 +25,16 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // A row crosses a shard as bytes (analysis/shard.hpp).
 template <class F> void encode_fields(ScalingRow& r, F&& f) {
-  f(r.solver), f(r.implicit), f(r.adaptive), f(r.n), f(r.masses), f(r.dt_stable), f(r.dt), f(r.error);
-  f(r.steps), f(r.forces), f(r.jacobians), f(r.seconds), f(r.runs);
+  f(r.solver), f(r.implicit), f(r.adaptive), f(r.n), f(r.masses), f(r.dt_stable), f(r.dt), f(r.capped), f(r.error);
+  f(r.steps), f(r.forces), f(r.jacobians), f(r.rejected), f(r.factorisations), f(r.solves), f(r.newton), f(r.seconds), f(r.runs);
 }
 
 namespace {
 
-// Timed runs: at least one and 0.05 s in all (a run of the largest sizes takes seconds alone).
+// Timed runs: at least one and 0.1 s in all, the minimum kept; so a run shorter than 0.1 s is
+// timed at least twice, and a run of the largest sizes (seconds alone) once.
 constexpr std::size_t kRepeats = 1;
-constexpr double kSeconds = 0.05;
+constexpr double kSeconds = 0.1;
 
 bool is_rope(const ScalingConfig& c) { return c.scene == Rope::name; }
 
@@ -73,16 +74,7 @@ Eigen::VectorXd target_positions(const ScalingConfig& c, int n) {
 double predicted_threshold(std::size_t m, const Rope& r) { return rope_predicted_threshold(m, r); }
 double predicted_threshold(std::size_t m, const SoftBody& s) { return softbody_predicted_threshold(m, s); }
 
-// The peers, by index: steplab's dopri5, CVODE (banded on the rope, KLU on the soft body), odeint.
-std::string peer_name(const ScalingConfig& c, int which) {
-  return which == 0 ? "dopri5" : which == 2 ? "odeint_dopri5" : is_rope(c) ? "cvode_band" : "cvode_klu";
-}
-State<Eigen::Dynamic> run_peer(int which, const Rope& r, double tol, double t_end, PeerCounts& counts) {
-  return which == 1 ? cvode_band_rope(r, tol, t_end, counts) : odeint_dopri5_rope(r, tol, t_end, counts);
-}
-State<Eigen::Dynamic> run_peer(int which, const SoftBody& s, double tol, double t_end, PeerCounts& counts) {
-  return which == 1 ? cvode_klu_softbody(s, tol, t_end, counts) : odeint_dopri5_softbody(s, tol, t_end, counts);
-}
+PeerScenes peer_scenes(std::string_view scene) { return scene == Rope::name ? PeerScenes::Rope : PeerScenes::SoftBody; }
 
 // The largest |x_i - x_i(t_end)| over the masses; inf for a run that did not finish.
 double max_error(const Eigen::VectorXd& x, const Eigen::VectorXd& exact, bool ok) {
@@ -93,7 +85,7 @@ double max_error(const Eigen::VectorXd& x, const Eigen::VectorXd& exact, bool ok
 // counts.
 struct Trial {
   double error;
-  long long steps = 0, forces = 0, jacobians = 0;
+  Counts counts;
 };
 
 // A run at `knob` (a step, or a tolerance) gives a Trial; the search keeps the largest knob whose
@@ -110,8 +102,11 @@ template <class Run> void search(ScalingRow& row, double start, double most, dou
     const Trial trial = run(knob);
     const double e = trial.error;
     if (std::isnan(e)) break;
-    if (e <= target && !(knob <= row.dt))
-      row.dt = knob, row.error = e, row.steps = trial.steps, row.forces = trial.forces, row.jacobians = trial.jacobians;
+    if (e <= target && !(knob <= row.dt)) {
+      const Counts& n = trial.counts;
+      row.dt = knob, row.error = e, row.steps = n.steps, row.forces = n.forces, row.jacobians = n.jacobians;
+      row.rejected = n.rejected, row.factorisations = n.factorisations, row.solves = n.solves, row.newton = n.newton;
+    }
     if (e <= target && e > 0.35 * target) break;  // within a factor 3 of the target: close enough
     double p = order;
     if (last_knob > 0 && std::isfinite(e) && e > 0 && last_error > 0) {
@@ -145,13 +140,15 @@ ScalingRow method_row(const ScalingConfig& c, const Eigen::VectorXd& exact, std:
     spec.errors = false;
     spec.dt = c.t_end / std::ceil(c.t_end / knob * (1 - 1e-12));
     spec.steps = steps_for(c.t_end, spec.dt);
-    if (spec.steps > c.max_steps) return Trial{kNaN};
+    if (spec.steps > c.max_steps) return Trial{kNaN, {}};
     Counts counts;
     const AnyResult res = k.run_counted(p, spec, counts);
-    return Trial{max_error(res.final.x, exact, res.status == RunStatus::Ok && res.steps == spec.steps), spec.steps,
-                 counts.forces, counts.jacobians};
+    return Trial{max_error(res.final.x, exact, res.status == RunStatus::Ok && res.steps == spec.steps), counts};
   });
-  if (row.reached()) row.dt = c.t_end / static_cast<double>(row.steps);
+  if (row.reached()) {
+    row.capped = row.dt >= most && 0.95 * row.dt_stable <= c.t_end / 2;  // the search stopped at 0.95 dt*
+    row.dt = c.t_end / static_cast<double>(row.steps);
+  }
   return row;
 }
 
@@ -163,24 +160,26 @@ AdaptiveSpec adaptive_spec(double tol, double t_end) {
   return spec;
 }
 
-// dopri5 (steplab's), CVODE, odeint_dopri5 at a tolerance.
-ScalingRow peer_row(const ScalingConfig& c, const Eigen::VectorXd& exact, int which, int n) {
+// dopri5 (steplab's) or a peer (analysis/peers.hpp) at a tolerance.
+ScalingRow peer_row(const ScalingConfig& c, const Eigen::VectorXd& exact, const std::string& solver, int n) {
   const std::vector<double> p = sized(c, n);
   const std::size_t scene = scene_index(c.scene);
-  ScalingRow row{peer_name(c, which), which == 1, true, n, scaling_masses(c, n), kNaN};
-  if (which == 0) {
+  const PeerInfo& peer = *find_peer(solver);
+  ScalingRow row{solver, peer.implicit, true, n, scaling_masses(c, n), kNaN};
+  if (solver == "dopri5") {
     search(row, 1e-4, 1e-2, 1, c.target_error, [&](double tol) {
       const AnyAdaptiveResult res = scene_kernel(scene).dopri5(p, adaptive_spec(tol, c.t_end));
-      return Trial{max_error(res.run.final.x, exact, res.run.status == RunStatus::Ok), res.stats.accepted,
-                   res.stats.force_evaluations, 0};
+      Counts counts;
+      counts.steps = res.stats.accepted, counts.rejected = res.stats.rejected, counts.forces = res.stats.force_evaluations;
+      return Trial{max_error(res.run.final.x, exact, res.run.status == RunStatus::Ok), counts};
     });
     return row;
   }
   with_scene(c, n, [&](const auto& s) {
     search(row, 1e-4, 1e-2, 1, c.target_error, [&](double tol) {
       PeerCounts counts;
-      const State<Eigen::Dynamic> end = run_peer(which, s, tol, c.t_end, counts);
-      return Trial{max_error(end.x, exact, !counts.failed), counts.steps, counts.evaluations, counts.jacobian_evaluations};
+      const State<Eigen::Dynamic> end = run_sized_peer(peer, s, tol, c.t_end, counts);
+      return Trial{max_error(end.x, exact, !counts.failed), counts};
     });
     return 0;
   });
@@ -200,10 +199,10 @@ double run_seconds(const ScalingConfig& c, const ScalingRow& row) {
   } else if (row.solver == "dopri5") {
     times = scene_kernel(scene).dopri5_timings(p, adaptive_spec(row.dt, c.t_end), kRepeats, kSeconds);
   } else {  // the scene made once, outside the timed runs
-    const int which = row.solver == "odeint_dopri5" ? 2 : 1;
+    const PeerInfo& peer = *find_peer(row.solver);
     times = with_scene(c, row.n, [&](const auto& s) {
       PeerCounts counts;
-      return repeated_timings([&] { run_peer(which, s, row.dt, c.t_end, counts); }, kRepeats, kSeconds);
+      return repeated_timings([&] { run_sized_peer(peer, s, row.dt, c.t_end, counts); }, kRepeats, kSeconds);
     });
   }
   return *std::min_element(times.begin(), times.end());
@@ -230,24 +229,34 @@ double scaling_cost(const ScalingConfig& c, const ScalingRow& r) { return c.timi
 
 int scaling_masses(const ScalingConfig& c, int n) { return is_rope(c) ? n : n * n; }
 
+std::vector<std::string> scaling_adaptive_solvers(std::string_view scene) {
+  std::vector<std::string> out;
+  for (const PeerInfo* p : peers_on(peer_scenes(scene))) out.emplace_back(p->name);
+  return out;
+}
+
 ScalingConfig scaling_config(std::string_view scene) {
   ScalingConfig c;
   c.scene = std::string(scene);
+  c.adaptive = scaling_adaptive_solvers(scene);
   c.params = default_param_values(scene_index(scene));
   if (!is_rope(c)) c.sizes = {4, 8, 16}, c.max_steps = 200'000;  // implicit soft-body steps pay a sparse LU each
   return c;
 }
 
 ScalingResult scaling_study(const ScalingConfig& c) {
+  for (const std::string& a : c.adaptive)
+    if (const PeerInfo* p = find_peer(a); !p || !p->built || !peer_runs_on(*p, peer_scenes(c.scene)))
+      throw std::logic_error("scaling_study: " + a + " is not an adaptive solver built for the " + c.scene);
   ScalingResult out;
   out.config = c;
-  const std::size_t nm = c.methods.size(), ns = c.sizes.size(), np = c.peers ? 3 : 0;
+  const std::size_t nm = c.methods.size(), ns = c.sizes.size(), np = c.adaptive.size();
   std::vector<Eigen::VectorXd> targets;
   for (int n : c.sizes) targets.push_back(target_positions(c, n));
   out.rows = study_map<ScalingRow>((nm + np) * ns, c.threads, [&](std::size_t task) {
     const std::size_t solver = task / ns, k = task % ns;
     const int n = c.sizes[k];
-    return solver < nm ? method_row(c, targets[k], c.methods[solver], n) : peer_row(c, targets[k], static_cast<int>(solver - nm), n);
+    return solver < nm ? method_row(c, targets[k], c.methods[solver], n) : peer_row(c, targets[k], c.adaptive[solver - nm], n);
   });
   if (c.timing)
     for (ScalingRow& r : out.rows)

@@ -11,9 +11,14 @@
 //     error per mass is asked at every N: a secant search in log-log on
 //     error ~ C dt^p (p the method's order; for a tolerance p = 1), the largest step tried whose
 //     error is at or below the target, from at most kSearchRuns runs;
-//   that run's cost: its wall-clock time (the minimum of repeated runs, at least one and 0.05 s in
-//     all, one at a time after the searches), its steps, force and Jacobian evaluations; the cost
-//     of one step is their ratio.
+//     A fixed-step method's search is capped at 0.95 dt*: it is told where its steps stop being
+//     stable, from the exact modes, which no adaptive solver is told (ScalingRow::capped marks
+//     the rows that stopped there).
+//   that run's cost: its wall-clock time (the minimum of repeated runs, at least one and kSeconds
+//     in all, one at a time after the searches; for every solver alike the scene is made outside
+//     the timed region, the solver's set-up, run and clean-up inside), its counts (analysis/
+//     counts.hpp: steps, rejected steps, force and Jacobian evaluations, factorisations, linear
+//     solves, Newton iterations); the cost of one step is their ratio.
 // Then per solver the exponents p of cost ~ N^p, N the number of masses (least squares in log-log
 // over the sizes) for one
 // step and for the whole run, and the size from which an implicit method's whole run is cheaper
@@ -37,7 +42,9 @@ struct ScalingConfig {
   std::vector<double> params;  // the scene's parameters, table order (the first, its size, replaced by each size)
   std::vector<int> sizes{16, 64, 256, 1024};
   std::vector<std::size_t> methods;  // numerical methods of the table
-  bool peers = true;                 // steplab's dopri5, CVODE (banded), Boost.Odeint's dopri5
+  // steplab's dopri5 and the peers (analysis/peers.hpp) that run on the scene: by default all
+  // that are built (scaling_config)
+  std::vector<std::string> adaptive;
   double target_error = 1e-4;
   double t_end = 2;
   long long max_steps = 2'000'000;   // a search does not try steps that need more
@@ -46,15 +53,17 @@ struct ScalingConfig {
 };
 
 struct ScalingRow {
-  std::string solver;    // a method's name, dopri5, cvode_band (rope), cvode_klu (soft body) or odeint_dopri5
+  std::string solver;    // a method's name, dopri5 or a peer's (analysis/peers.hpp)
   bool implicit = false;
   bool adaptive = false; // dt below is then the tolerance
   int n = 0;             // the size: the rope's masses, the soft body's grid side
   int masses = 0;        // N
   double dt_stable = 0;  // predicted dt* (inf: none; NaN for the adaptive solvers)
   double dt = 0;         // the step (tolerance) that reaches the target; NaN if none did
+  bool capped = false;   // a fixed step at the search's cap, 0.95 dt* (told by the modes)
   double error = 0;      // its error (largest over the coordinates at t_end)
   long long steps = 0, forces = 0, jacobians = 0;
+  long long rejected = 0, factorisations = 0, solves = 0, newton = 0;  // analysis/counts.hpp
   double seconds = 0;    // the whole run (0 without timing)
   int runs = 0;          // runs the search took
   bool reached() const { return dt == dt; }
@@ -84,7 +93,7 @@ struct ScalingResult {
 
 // The study's defaults on a scene: its default parameters; the rope at 16, 64, 256, 1024 masses
 // with searches of up to 2 000 000 steps, the soft body at n = 4, 8, 16 with up to 200 000 (its
-// implicit steps pay a sparse LU each).
+// implicit steps pay a sparse LU each); dopri5 and every peer built that runs on the scene.
 ScalingConfig scaling_config(std::string_view scene);
 
 ScalingResult scaling_study(const ScalingConfig& c);
@@ -94,5 +103,7 @@ ScalingResult scaling_study(const ScalingConfig& c);
 double scaling_cost(const ScalingConfig& c, const ScalingRow& r);
 // The number of masses at size n: n on the rope, n^2 on the soft body.
 int scaling_masses(const ScalingConfig& c, int n);
+// The adaptive solvers that run on the scene: dopri5 and the peers built for it.
+std::vector<std::string> scaling_adaptive_solvers(std::string_view scene);
 
 }  // namespace steplab

@@ -1,10 +1,19 @@
 #include "analysis/sized_peers.hpp"
 
+#include <stdexcept>
+#include <string>
+
+#include <boost/numeric/odeint.hpp>
 #include <boost/numeric/odeint/external/eigen/eigen.hpp>
 #include <sunlinsol/sunlinsol_band.h>
+#if STEPLAB_HAVE_KLU
 #include <sunlinsol/sunlinsol_klu.h>
+#endif
 #include <sunmatrix/sunmatrix_band.h>
 #include <sunmatrix/sunmatrix_sparse.h>
+
+#include "analysis/cvode.hpp"
+#include "analysis/fixed_peers.hpp"  // odeint_adaptive
 
 namespace steplab {
 namespace {
@@ -76,20 +85,17 @@ template <class S> State<Eigen::Dynamic> odeint_dopri5(const S& s, double tol, d
   Z z(2 * d);
   z << y0.x, y0.v;
   const auto rhs = [&](const Z& a, Z& da, double) {
-    ++n.evaluations;
+    ++n.forces;
     da.resize(a.size());
     da.head(d) = a.tail(d);
     da.tail(d) = acceleration(s, Eigen::VectorXd(a.head(d)), Eigen::VectorXd(a.tail(d)));
   };
   using Stepper = odeint::runge_kutta_dopri5<Z, double, Z, double, odeint::vector_space_algebra>;
-  n.steps = static_cast<long long>(
-      odeint::integrate_adaptive(odeint::make_controlled(tol, tol, Stepper()), rhs, z, 0.0, t_end, 1e-6 * t_end));
+  odeint_adaptive(odeint::make_controlled(tol, tol, Stepper()), rhs, z, t_end, 1e-6 * t_end, n, [](const Z&, double) {});
   return {z.head(d), z.tail(d)};
 }
 
-}  // namespace
-
-State<Eigen::Dynamic> cvode_band_rope(const Rope& r, double tol, double t_end, PeerCounts& n) {
+State<Eigen::Dynamic> cvode_band_rope(const Rope& r, const CvodeSettings& settings, double tol, double t_end, PeerCounts& n) {
   const sunindextype size = 2 * r.n;
   CvodeRun c(size);
   const State<Eigen::Dynamic> y0 = r.initial();
@@ -97,13 +103,14 @@ State<Eigen::Dynamic> cvode_band_rope(const Rope& r, double tol, double t_end, P
   for (int i = 0; i < r.n; ++i) a[2 * i] = y0.x[i], a[2 * i + 1] = y0.v[i];
   c.J = SUNBandMatrix(size, 2, 3, c.ctx);
   c.ls = SUNLinSol_Band(c.z, c.J, c.ctx);
-  cvode_bdf(c, rope_rhs, rope_jacobian, &r, tol, t_end, n, [](double) {});
+  cvode_solve(c, rope_rhs, rope_jacobian, &r, settings, tol, t_end, n, [](double) {});
   State<Eigen::Dynamic> end{Eigen::VectorXd(r.n), Eigen::VectorXd(r.n)};
   for (int i = 0; i < r.n; ++i) end.x[i] = a[2 * i], end.v[i] = a[2 * i + 1];
   return end;
 }
 
-State<Eigen::Dynamic> cvode_klu_softbody(const SoftBody& s, double tol, double t_end, PeerCounts& n) {
+#if STEPLAB_HAVE_KLU
+State<Eigen::Dynamic> cvode_klu_softbody(const SoftBody& s, const CvodeSettings& settings, double tol, double t_end, PeerCounts& n) {
   const State<Eigen::Dynamic> y0 = s.initial();
   const sunindextype d = y0.x.size();
   CvodeRun c(2 * d);
@@ -111,14 +118,30 @@ State<Eigen::Dynamic> cvode_klu_softbody(const SoftBody& s, double tol, double t
   const Jacobians<Eigen::Dynamic> j0 = s.jacobians(y0.x, y0.v);
   c.J = SUNSparseMatrix(2 * d, 2 * d, d + j0.dx.nonZeros() + j0.dv.nonZeros(), CSR_MAT, c.ctx);
   c.ls = SUNLinSol_KLU(c.z, c.J, c.ctx);
-  cvode_bdf(c, blocked_rhs<SoftBody>, csr_jacobian<SoftBody>, &s, tol, t_end, n, [](double) {});
+  cvode_solve(c, blocked_rhs<SoftBody>, csr_jacobian<SoftBody>, &s, settings, tol, t_end, n, [](double) {});
   const Eigen::Map<const Eigen::VectorXd> a(c.data(), 2 * d);
   return {a.head(d), a.tail(d)};
 }
+#endif
 
-State<Eigen::Dynamic> odeint_dopri5_rope(const Rope& r, double tol, double t_end, PeerCounts& n) { return odeint_dopri5(r, tol, t_end, n); }
-State<Eigen::Dynamic> odeint_dopri5_softbody(const SoftBody& s, double tol, double t_end, PeerCounts& n) {
-  return odeint_dopri5(s, tol, t_end, n);
+[[noreturn]] void not_here(const PeerInfo& peer, std::string_view scene) {
+  throw std::logic_error("run_sized_peer: " + std::string(peer.name) + " does not run on the " + std::string(scene));
+}
+
+}  // namespace
+
+State<Eigen::Dynamic> run_sized_peer(const PeerInfo& peer, const Rope& r, double tol, double t_end, PeerCounts& n) {
+  if (peer.name == "odeint_dopri5") return odeint_dopri5(r, tol, t_end, n);
+  if (peer.linear_solver == "band") return cvode_band_rope(r, peer.cvode, tol, t_end, n);
+  not_here(peer, "rope");
+}
+
+State<Eigen::Dynamic> run_sized_peer(const PeerInfo& peer, const SoftBody& s, double tol, double t_end, PeerCounts& n) {
+  if (peer.name == "odeint_dopri5") return odeint_dopri5(s, tol, t_end, n);
+#if STEPLAB_HAVE_KLU
+  if (peer.linear_solver == "KLU" && peer.built) return cvode_klu_softbody(s, peer.cvode, tol, t_end, n);
+#endif
+  not_here(peer, "soft body");
 }
 
 }  // namespace steplab

@@ -50,6 +50,12 @@ double solution_scale(const Where& w, double t_end) {
 
 // The point of a run of method m at dt, counting what it asked of the scene (scale:
 // solution_scale(w, t_end)).
+// A point's counts (analysis/counts.hpp).
+void set_counts(WorkPoint& p, const Counts& n) {
+  p.steps = n.steps, p.rejected = n.rejected, p.force_evaluations = n.forces, p.jacobian_evaluations = n.jacobians;
+  p.factorisations = n.factorisations, p.solves = n.solves, p.newton = n.newton;
+}
+
 WorkPoint fixed_point(const Where& w, std::size_t m, double dt, double t_end, double scale) {
   Counts n;
   const AnyResult r = pair_kernel(m, w.scene).run_counted(w.params, fixed_spec(dt, t_end), n);
@@ -58,9 +64,7 @@ WorkPoint fixed_point(const Where& w, std::size_t m, double dt, double t_end, do
   p.status = r.status;
   if (p.status == RunStatus::Ok && blown_up(p.error, scale)) p.status = RunStatus::Diverged;
   if (p.status != RunStatus::Ok) p.error = kInf;
-  p.steps = r.steps;
-  p.force_evaluations = n.forces;
-  p.jacobian_evaluations = n.jacobians;
+  set_counts(p, n);
   return p;
 }
 
@@ -82,32 +86,25 @@ WorkPoint dopri5_point(const Where& w, double tol, double t_end) {
   p.status = r.run.status;
   p.error = p.status == RunStatus::Ok ? r.run.error_max : kInf;
   p.steps = r.stats.accepted;
+  p.rejected = r.stats.rejected;
   p.force_evaluations = r.stats.force_evaluations;
   return p;
 }
 
-// The peers (analysis/peers.hpp) on the study's two scenes: f.template operator()<S>(scene).
-template <class F> auto on_peer_scene(const Where& w, F&& f) {
-  if (scene_name(w.scene) == Spring::name) return f(Spring(w.params));
-  if (scene_name(w.scene) == Chain::name) return f(Chain(w.params));
-  throw std::logic_error("the work-precision peers run on the spring and the chain only");
-}
-
-// A peer's point: "odeint_dopri5" or "cvode_bdf".
-WorkPoint peer_point(const char* name, const Where& w, double tol, double t_end) {
-  WorkPoint p{name, true, tol};
+// A peer's point (analysis/peers.hpp).
+WorkPoint peer_point(const PeerInfo& peer, const Where& w, double tol, double t_end) {
+  WorkPoint p{std::string(peer.name), true, tol};
   p.error = 0;
   PeerCounts n;
-  on_peer_scene(w, [&]<class S>(const S& s) {
-    if (std::string_view(name) == "odeint_dopri5") OdeintDopri5<S>::run(s, tol, t_end, n, &p.error);
-    else CvodeBdf<S>::run(s, tol, t_end, n, &p.error);
-    return 0;
-  });
-  p.steps = n.steps;
-  p.force_evaluations = n.evaluations;
-  p.jacobian_evaluations = n.jacobian_evaluations;
+  run_fixed_peer(peer, scene_name(w.scene), w.params, tol, t_end, n, &p.error);
+  set_counts(p, n);
   if (n.failed || !std::isfinite(p.error)) p.status = RunStatus::Diverged, p.error = kInf;
   return p;
+}
+
+// An adaptive solver's point: steplab's dopri5 or a peer.
+WorkPoint adaptive_point(const std::string& solver, const Where& w, double tol, double t_end) {
+  return solver == "dopri5" ? dopri5_point(w, tol, t_end) : peer_point(*find_peer(solver), w, tol, t_end);
 }
 
 // Times a point's run again, without counting or errors, one run at a time.
@@ -119,12 +116,10 @@ double time_point(const Where& w, const WorkPoint& p, double t_end) {
     spec.errors = false;
     return fastest(scene_kernel(w.scene).dopri5_timings(w.params, spec, kMinRepeats, kMinSeconds));
   }
-  PeerCounts n;
-  if (p.method == "odeint_dopri5" || p.method == "cvode_bdf")
-    return on_peer_scene(w, [&]<class S>(const S& s) {
-      if (p.method == "odeint_dopri5") return min_time([&] { OdeintDopri5<S>::run(s, p.setting, t_end, n); });
-      return min_time([&] { CvodeBdf<S>::run(s, p.setting, t_end, n); });
-    });
+  if (const PeerInfo* peer = find_peer(p.method)) {
+    PeerCounts n;
+    return min_time([&] { run_fixed_peer(*peer, scene_name(w.scene), w.params, p.setting, t_end, n); });
+  }
   RunSpec spec;
   spec.dt = p.setting;
   spec.steps = steps_for(t_end, p.setting);
@@ -135,17 +130,15 @@ double time_point(const Where& w, const WorkPoint& p, double t_end) {
 // Every point of one scene: the dt sweep of each fixed-step method, the tolerance sweeps.
 std::vector<WorkPoint> scene_points(const Where& w, const WorkPrecisionConfig& c, const std::vector<double>& dts,
                                     double t_end, const std::vector<std::size_t>& methods) {
-  const std::size_t nm = methods.size(), nf = nm * dts.size(), nt = c.tolerances.size();
-  // tasks: a method's dt sweep, then one per tolerance and adaptive solver; the implicit
+  const std::size_t nm = methods.size(), nt = c.tolerances.size(), na = c.adaptive.size();
+  // tasks: a method's dt sweep, then one per adaptive solver and tolerance; the implicit
   // methods' sweeps start first
   std::vector<std::size_t> order = implicit_first(methods);
-  for (std::size_t job = nm; job < nm + 3 * nt; ++job) order.push_back(job);
-  const auto parts = study_map<std::vector<WorkPoint>>(nm + 3 * nt, c.threads, [&](std::size_t job) {
+  for (std::size_t job = nm; job < nm + na * nt; ++job) order.push_back(job);
+  const auto parts = study_map<std::vector<WorkPoint>>(nm + na * nt, c.threads, [&](std::size_t job) {
     if (job < nm) return fixed_points(w, methods[job], dts, t_end);
-    const std::size_t task = job - nm + nf;
-    if (task < nf + nt) return std::vector{dopri5_point(w, c.tolerances[task - nf], t_end)};
-    if (task < nf + 2 * nt) return std::vector{peer_point("odeint_dopri5", w, c.tolerances[task - nf - nt], t_end)};
-    return std::vector{peer_point("cvode_bdf", w, c.tolerances[task - nf - 2 * nt], t_end)};
+    const std::size_t task = job - nm;
+    return std::vector{adaptive_point(c.adaptive[task / nt], w, c.tolerances[task % nt], t_end)};
   }, order);
   std::vector<WorkPoint> points;
   for (const auto& part : parts) points.insert(points.end(), part.begin(), part.end());
@@ -166,10 +159,13 @@ bool cheaper(bool timing, double seconds, long long evals, double than_seconds, 
 // The cheapest run of `points` whose error is at most `level`, by time and by evaluations.
 Cheapest cheapest_at(const std::vector<WorkPoint>& points, double level) {
   Cheapest c{level, "", ""};
-  for (const WorkPoint& p : points) {
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const WorkPoint& p = points[i];
     if (p.status != RunStatus::Ok || !(p.error <= level)) continue;
-    if (p.seconds >= 0 && (c.seconds < 0 || p.seconds < c.seconds)) c.seconds = p.seconds, c.by_time = p.method;
-    if (c.by_evaluations.empty() || evaluations(p) < c.evaluations) c.evaluations = evaluations(p), c.by_evaluations = p.method;
+    if (p.seconds >= 0 && (c.seconds < 0 || p.seconds < c.seconds))
+      c.seconds = p.seconds, c.by_time = p.method, c.time_point = static_cast<std::ptrdiff_t>(i);
+    if (c.by_evaluations.empty() || evaluations(p) < c.evaluations)
+      c.evaluations = evaluations(p), c.by_evaluations = p.method, c.evaluations_point = static_cast<std::ptrdiff_t>(i);
   }
   return c;
 }
@@ -299,6 +295,12 @@ std::vector<StiffnessRow> stiffness_rows(const WorkPrecisionConfig& c) {
 }
 
 }  // namespace
+
+std::vector<std::string> adaptive_solvers() {
+  std::vector<std::string> out;
+  for (const PeerInfo* p : peers_on(PeerScenes::FixedSize)) out.emplace_back(p->name);
+  return out;
+}
 
 WorkPrecisionResult work_precision_study(const WorkPrecisionConfig& config) {
   WorkPrecisionResult out;

@@ -11,8 +11,9 @@
 //
 // Fixed-step methods run over a dt sweep; steplab's dopri5 (core/dopri5.hpp) and the peers users
 // would pick instead (analysis/peers.hpp), Boost.Odeint's controlled runge_kutta_dopri5 (the same
-// tableau, odeint's own controller) and SUNDIALS CVODE's variable-order BDF, over a tolerance
-// sweep with rtol = atol = tol.
+// tableau, odeint's own controller) and SUNDIALS CVODE with Adams-Moulton and with BDF (dense LU,
+// the analytic Jacobian), over a tolerance sweep with rtol = atol = tol. Every solver is timed
+// alike: the scene made outside the timed region, the solver's own set-up, run and clean-up inside.
 #pragma once
 
 #include <array>
@@ -25,22 +26,24 @@
 
 namespace steplab {
 
-// The adaptive solvers' names in the points, steplab's first, then the peers.
-inline constexpr std::array<std::string_view, 3> kAdaptiveSolvers{"dopri5", "odeint_dopri5", "cvode_bdf"};
+// The adaptive solvers of the study on its fixed-size scenes: steplab's dopri5 first, then the
+// peers built into this steplab (analysis/peers.hpp, PeerScenes::FixedSize).
+std::vector<std::string> adaptive_solvers();
 
 struct WorkPoint {
-  std::string method;    // a table method, "dopri5", "odeint_dopri5" or "cvode_bdf"
+  std::string method;    // a table method, or an adaptive solver: "dopri5", "odeint_dopri5", "cvode_bdf_dense", ...
   bool adaptive = false;
   double setting = 0;    // dt, or the tolerance of an adaptive method
   RunStatus status = RunStatus::Ok;
   double error = 0;      // largest position error at the steps; inf if diverged
   long long steps = 0, force_evaluations = 0, jacobian_evaluations = 0;
+  long long rejected = 0, factorisations = 0, solves = 0, newton = 0;  // analysis/counts.hpp
   double seconds = -1;   // minimum of the timings; -1 without timing
 };
 
 template <class F> void encode_fields(WorkPoint& p, F&& f) {  // analysis/shard.hpp
   f(p.method), f(p.adaptive), f(p.setting), f(p.status), f(p.error), f(p.steps), f(p.force_evaluations);
-  f(p.jacobian_evaluations), f(p.seconds);
+  f(p.jacobian_evaluations), f(p.rejected), f(p.factorisations), f(p.solves), f(p.newton), f(p.seconds);
 }
 
 struct Cheapest {
@@ -48,6 +51,7 @@ struct Cheapest {
   std::string by_time, by_evaluations;  // empty: no run reached the level
   double seconds = -1;
   long long evaluations = 0;           // force + Jacobian evaluations
+  std::ptrdiff_t time_point = -1, evaluations_point = -1;  // those runs in SceneWork::points (their counts)
 };
 
 // On the chain: where each explicit method's steps stop being stable, against the step its
@@ -75,6 +79,7 @@ struct StiffnessRow {
 
 struct WorkPrecisionConfig {
   std::vector<std::size_t> methods;  // fixed-step methods (indices into the table)
+  std::vector<std::string> adaptive = adaptive_solvers();  // dopri5 and the peers run
   std::vector<double> tolerances{1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11};
   std::vector<double> error_levels{1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8};
   std::vector<double> stiffnesses{5, 5e1, 5e2, 5e3, 5e4, 5e5, 5e6};  // k2 of the stiffness sweep

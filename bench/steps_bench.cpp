@@ -30,6 +30,9 @@
 #include "core/scenes/spring.hpp"
 
 void register_odeint_implicit_euler();
+// peers_bench.cpp: steplab's CVODE peer against plain C on the rope, and their ratios
+void register_peers();
+std::string peer_ratio_lines(const std::map<std::string, double>& ns);
 // throughput_bench.cpp: registers the throughput rows; returns their trajectories and trajectory-steps per iteration
 std::pair<int, long long> register_throughput();
 
@@ -344,6 +347,7 @@ int main(int argc, char** argv) {
   register_baselines();
   register_odeint_all();
   throughput_work = register_throughput();
+  register_peers();
   // Read before Initialize, which takes the flags it knows out of argv.
   const std::string format = flag_value(argc, argv, "--benchmark_format", "console");
   if (format != "console" && format != "json" && format != "csv") {
@@ -363,7 +367,7 @@ int main(int argc, char** argv) {
                                                                              : benchmark::ConsoleReporter::OO_Tabular);
 #pragma GCC diagnostic pop
   benchmark::Shutdown();
-  const std::string table = ratio_table(ns_per_step);
+  const std::string table = ratio_table(ns_per_step) + "\n" + peer_ratio_lines(ns_per_step);
   if (format == "console") {  // json and csv on stdout stay machine-readable
     std::printf("\nTime per step, median of the repetitions (ratios < 1: steplab is faster)\n\n%s", table.c_str());
     for (const auto& [name, ns] : ns_per_step) {

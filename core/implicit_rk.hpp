@@ -69,6 +69,7 @@ template <int Stages, class S, class T>
         if (i == k) block.diagonal() += m;
         G.template block<D, D>(i * D, k * D) = block;
       }
+    count_newton_update(s);
     V = select(!lanes.done, Big(V - lu_solve(G, r)), V);
   }
   if (all(lanes.failed)) return lanes.status();  // a failed lane's state is dropped
@@ -133,6 +134,7 @@ StepStatus implicit_rk_step_sparse(const S& s, State<S::dim>& y, double h, const
           for (Eigen::Index c = 0; c < n; ++c) entries.emplace_back(i * n + c, k * n + c, m[c]);
       }
     G.setFromTriplets(entries.begin(), entries.end());
+    count_newton_update(s);
     if (!solver.factorize(G)) return StepStatus::NoConvergence;
     solver.solve(r, dV);
     V -= dV;

@@ -122,6 +122,12 @@ template <class T> struct NewtonLanes {
   Status<T> status() const { return status_of(failed); }
 };
 
+// A scene that counts (analysis/kernel_impl.hpp, Counted) is told of each Newton update, one
+// matrix factorised and one linear solve; for any other scene this is nothing at all.
+template <class S> [[gnu::always_inline]] inline void count_newton_update(const S& s) {
+  if constexpr (requires { s.newton_update(); }) s.newton_update();
+}
+
 // Newton's update u -= J^{-1} r with J = M - c dF/dv - c cx dF/dx, where `on` (the lanes of a
 // pack still iterating; one run: always): dense LU on a fixed size (lu_solve, core/small_lu.hpp:
 // a division for D = 1); a sparse LDL^T or LU on a run-time size (core/sparse.hpp, stage_solve
@@ -189,6 +195,7 @@ template <class S, class T>
     const Jacobians<D, T>& jac = s.jacobians(x, u);  // a reference where the scene keeps its own (the rope)
     if (it == 0) force_terms = jac.dx.norm() * x.norm() + jac.dv.norm() * u.norm();
     if (lanes.solved(all_zero(r))) return lanes.status();  // already solved (e.g. at rest in equilibrium)
+    count_newton_update(s);
     if (!linear.update(jac, m, c, cx, r, !lanes.done, u)) return status_of(MaskOf<T>(true));
   }
 }

@@ -179,7 +179,8 @@ int cli_main(int argc, const char* const* argv) {
   WorkPrecisionArgs wp;
   CLI::App* wp_cmd = study->add_subcommand("work-precision", "cost against error on the spring and the stiff chain; "
                                                              "cheapest method per error level; stiffness crossover");
-  wp_cmd->add_option("--methods", wp.methods, "comma-separated fixed-step methods (default: every numerical method)");
+  wp_cmd->add_option("--methods", wp.methods, "comma-separated methods and adaptive solvers (dopri5, odeint_dopri5, cvode_adams_dense, "
+                                                "cvode_bdf_dense, cvode_bdf_max2_dense; default: every numerical method, and every adaptive solver where the list names none)");
   wp_cmd->add_option("--points", wp.points, "fixed-step methods: steps in each scene's dt sweep, 3 .. 100")->capture_default_str();
   wp_cmd->add_option("--stiffnesses", wp.stiffnesses, "comma-separated k2 of the stiffness sweep (the chain's k1 is 5)")
       ->capture_default_str();

@@ -2,8 +2,12 @@
 // (before writing anything) and returns the exit status.
 #pragma once
 
+#include <span>
 #include <string>
+#include <string_view>
+#include <vector>
 
+#include "analysis/peers.hpp"
 #include "reports/scene_args.hpp"
 
 namespace steplab {
@@ -50,6 +54,16 @@ int convergence_command(ConvergenceArgs& args);
 // Shared by the commands.
 std::size_t resolve_method(std::string_view name);
 std::vector<std::size_t> resolve_methods(const std::string& list, bool with_analytic);
+// --methods of a study with peers: the table's numerical methods and the adaptive solvers
+// `available` on its scene (dopri5 and the peers, analysis/peers.hpp). The adaptive ones named are
+// run, or every available one where none is named (none with --no-peers). A peer not built into
+// this steplab, or not running on `scene`, is a UsageError. `table`: the peers (a test's own).
+struct Solvers {
+  std::vector<std::size_t> methods;
+  std::vector<std::string> adaptive;
+};
+Solvers resolve_solvers(const std::string& list, const std::vector<std::string>& available, std::string_view scene, bool no_peers,
+                        std::span<const PeerInfo> table = peers());
 unsigned resolve_thread_count(const std::string& text);
 int resolve_lanes(const std::string& text);
 // --lanes on a study command.

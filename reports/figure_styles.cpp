@@ -7,6 +7,7 @@
 
 #include "analysis/work_precision.hpp"
 #include "analysis/kernel.hpp"
+#include "analysis/peers.hpp"
 #include "reports/report_text.hpp"
 
 namespace steplab {
@@ -65,19 +66,24 @@ std::string styles_gp(const std::vector<std::size_t>& methods) {
     if (!names.empty()) names += ' ';
     names += name(m);
   }
-  // the adaptive solvers of the work-precision figure: black and greys, and the sky blue the
-  // families leave free, with points and dashes of their own
-  const MethodStyle adaptive[] = {{"#000000", 7, 1}, {"#777777", 6, 2}, {"#56B4E9", 15, 4}};
-  for (std::size_t k = 0; k < kAdaptiveSolvers.size(); ++k) {
-    out += fmt::format("set linetype {} lc rgb \"{}\" pt {} dt {} lw 1.5 ps 0.6  # {}\n", method_count() + k + 1,
-                       adaptive[k].colour, adaptive[k].point, adaptive[k].dash, kAdaptiveSolvers[k]);
-    names += fmt::format(" {}", kAdaptiveSolvers[k]);
+  // the adaptive solvers (analysis/peers.hpp): steplab's dopri5 black, odeint's grey, CVODE in
+  // the sky blue the families leave free (Adams and BDF by point and dash, whatever the linear
+  // solver: one figure has one of each), each with a point and a dash of its own
+  std::string adaptive;
+  std::size_t lt = method_count();
+  for (const PeerInfo& p : peers()) {
+    const bool cvode = p.library == "SUNDIALS CVODE";
+    const MethodStyle st = p.name == "dopri5"          ? MethodStyle{"#000000", 7, 1}
+                           : !cvode                    ? MethodStyle{"#777777", 6, 2}
+                           : p.cvode.adams             ? MethodStyle{"#56B4E9", 13, 2}
+                           : p.cvode.max_order == 2    ? MethodStyle{"#56B4E9", 9, 5}
+                                                       : MethodStyle{"#56B4E9", 15, 4};
+    out += fmt::format("set linetype {} lc rgb \"{}\" pt {} dt {} lw 1.5 ps 0.6  # {}\n", ++lt, st.colour, st.point, st.dash, p.name);
+    names += fmt::format(" {}", p.name);
   }
-  // the scaling study's CVODE, with its banded solver: CVODE's grey, another point
-  out += fmt::format("set linetype {} lc rgb \"#777777\" pt 8 dt 3 lw 1.5 ps 0.6  # cvode_band\n", method_count() + kAdaptiveSolvers.size() + 1);
-  names += " cvode_band";
+  for (const std::string& a : adaptive_solvers()) adaptive += (adaptive.empty() ? "" : " ") + a;
   out += fmt::format("style_names = \"{}\"\n", names);
-  out += fmt::format("adaptive = \"{} {} {}\"\n", kAdaptiveSolvers[0], kAdaptiveSolvers[1], kAdaptiveSolvers[2]);
+  out += fmt::format("adaptive = \"{}\"\n", adaptive);
   out += "mlt(m) = sum [k=1:words(style_names)] (word(style_names, k) eq m ? k : 0)\n";
   out += "in_list(m, list) = strstrt(\" \".list.\" \", \" \".m.\" \") > 0\n";
   int n = 0;

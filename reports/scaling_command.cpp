@@ -22,7 +22,10 @@ CLI::App* add_scaling_command(CLI::App* study, ScalingArgs& a) {
                                                    "given error, largest stable step, against N; fitted exponents, crossover");
   a.scene.scene = "rope";  // the default; softbody the other scene it accepts
   a.scene.add_to(cmd);
-  cmd->add_option("--methods", a.methods, "comma-separated methods (default: every numerical method)");
+  cmd->add_option("--methods", a.methods, "comma-separated methods and adaptive solvers (dopri5, odeint_dopri5, cvode_adams_band, "
+                                          "cvode_bdf_band, cvode_bdf_max2_band on the rope, cvode_adams_klu, cvode_bdf_klu, "
+                                          "cvode_bdf_max2_klu on the soft body; default: "
+                                          "every numerical method, and every adaptive solver where the list names none)");
   cmd->add_option("--sizes", a.sizes, "comma-separated sizes: the rope's numbers of masses (1 .. 100000), the soft body's "
                                       "grid sides n (1 .. 300; default 16,64,256,1024 masses on the rope, 4,8,16 on the soft body)");
   cmd->add_option("--error", a.error, "target position error (largest over the coordinates at t_end)")->capture_default_str();
@@ -52,14 +55,17 @@ Json scaling_json(const ScalingResult& r) {
   p["max_steps"] = c.max_steps;
   p["timing"] = c.timing;
   j["params"] = std::move(p);
+  j["peer_builds"] = peer_builds_json();
   const auto num = [](double x) { return std::isnan(x) ? Json(nullptr) : threshold_json(x); };
   Json rows = Json::array();
   for (const ScalingRow& w : r.rows) {
     Json row = {{"solver", w.solver}, {"implicit", w.implicit}, {"adaptive", w.adaptive}, {size_key, w.n},
                 {"dt_stable", num(w.dt_stable)}, {w.adaptive ? "tolerance" : "dt", num(w.dt)},
-                {"error", w.reached() ? Json(w.error) : Json(nullptr)}, {"steps", w.steps}, {"forces", w.forces},
-                {"jacobians", w.jacobians}, {"seconds", w.reached() && c.timing ? Json(w.seconds) : Json(nullptr)},
-                {"search_runs", w.runs}};
+                {"error", w.reached() ? Json(w.error) : Json(nullptr)}, {"steps", w.steps}, {"rejected_steps", w.rejected},
+                {"forces", w.forces}, {"jacobians", w.jacobians}, {"factorisations", w.factorisations},
+                {"linear_solves", w.solves}, {"newton_iterations", w.newton},
+                {"seconds", w.reached() && c.timing ? Json(w.seconds) : Json(nullptr)}, {"search_runs", w.runs}};
+    if (!w.adaptive) row["dt_capped_at_stable"] = w.capped;
     row["masses"] = w.masses;
     rows.push_back(std::move(row));
   }
@@ -76,17 +82,25 @@ Json scaling_json(const ScalingResult& r) {
 std::string scaling_table(const ScalingResult& r) {
   const ScalingConfig& c = r.config;
   const char* unit = c.timing ? "run [s]" : "evals x N";
-  std::string out = fmt::format("{}, error {:g} (largest over the coordinates at t = {:g}, against the {}); cost by {}\n\n{:<18} {:>7} {:>11} {:>11} {:>10} {:>10} {:>12} {:>12}\n",
+  std::string out = fmt::format("{}, error {:g} (largest over the coordinates at t = {:g}, against the {}); cost by {}\n\n"
+                                "{:<20} {:>7} {:>11} {:>12} {:>10} {:>9} {:>6} {:>9} {:>7} {:>7} {:>8} {:>12} {:>12}\n",
                                 c.scene == "rope" ? "Rope of N masses" : "Soft body of N = n x n masses", c.target_error, c.t_end,
                                 scene_kernel(scene_index(c.scene)).has_exact ? "exact solution" : "reference solution", c.timing ? "run time" : "force + Jacobian evaluations x N", "solver",
-                                "N", "dt*", "dt / tol", "error", "steps", unit, "per step");
+                                "N", "dt*", "dt / tol", "error", "steps", "rej", "forces", "jacs", "LUs", "Newton", unit, "per step");
+  bool capped = false;
   for (const ScalingRow& w : r.rows) {
     const double cost = scaling_cost(c, w);
-    out += fmt::format("{:<18} {:>7} {:>11} {:>11} {:>10} {:>10} {:>12} {:>12}\n", w.solver, w.masses,
-                       std::isnan(w.dt_stable) ? "-" : threshold_text(w.dt_stable), w.reached() ? fmt::format("{:.4g}", w.dt) : "not reached",
-                       w.reached() ? fmt::format("{:.2e}", w.error) : "-", w.reached() ? std::to_string(w.steps) : "-",
+    const auto count = [&](long long x) { return w.reached() ? std::to_string(x) : std::string("-"); };
+    capped = capped || (w.reached() && w.capped);
+    out += fmt::format("{:<20} {:>7} {:>11} {:>12} {:>10} {:>9} {:>6} {:>9} {:>7} {:>7} {:>8} {:>12} {:>12}\n", w.solver, w.masses,
+                       std::isnan(w.dt_stable) ? "-" : threshold_text(w.dt_stable),
+                       w.reached() ? fmt::format("{:.4g}{}", w.dt, w.capped ? "^" : "") : "not reached",
+                       w.reached() ? fmt::format("{:.2e}", w.error) : "-", count(w.steps), count(w.rejected), count(w.forces),
+                       count(w.jacobians), count(w.factorisations), count(w.newton),
                        w.reached() ? fmt::format("{:.4g}", cost) : "-", w.reached() && w.steps > 0 ? fmt::format("{:.4g}", cost / w.steps) : "-");
   }
+  if (capped)
+    out += "^ the step search stopped at its cap, 0.95 dt*: dt* predicted from the exact modes, which no adaptive solver is told\n";
   out += fmt::format("\nExponents p of cost ~ N^p (least squares over the sizes reached)\n{:<18} {:>10} {:>10}\n", "solver", "one step", "whole run");
   for (const ScalingFit& f : r.fits)
     out += fmt::format("{:<18} {:>10} {:>10}\n", f.solver, std::isnan(f.step_exponent) ? "-" : fmt::format("{:.2f}", f.step_exponent),
@@ -100,9 +114,11 @@ std::string scaling_table(const ScalingResult& r) {
 int scaling_command(ScalingArgs& a) {
   if (a.scene.scene != "rope" && a.scene.scene != "softbody")
     throw UsageError(fmt::format("--scene '{}' is not accepted by study scaling; accepted: rope, softbody", a.scene.scene));
-  ScalingConfig c = scaling_config(a.scene.scene);  // the scene's default sizes and step cap
+  ScalingConfig c = scaling_config(a.scene.scene);  // the scene's default sizes, step cap and solvers
   c.params = a.scene.values(a.scene.scene_index());
-  c.methods = resolve_methods(a.methods, false);
+  Solvers solvers = resolve_solvers(a.methods, c.adaptive, a.scene.scene == "rope" ? "rope" : "soft body", a.no_peers);
+  c.methods = std::move(solvers.methods);
+  c.adaptive = std::move(solvers.adaptive);
   if (!a.sizes.empty()) {
     c.sizes.clear();
     const ParamSpec& size = scene_kernel(a.scene.scene_index()).params[0];  // --masses, --grid: its range
@@ -113,7 +129,6 @@ int scaling_command(ScalingArgs& a) {
   if (!a.max_steps.empty()) c.max_steps = parse_count("--max-steps", a.max_steps, 1, 1'000'000'000);
   c.threads = resolve_thread_count(a.threads);
   c.timing = !a.no_timing;
-  c.peers = !a.no_peers;
   begin_shard(a.shard, a.json, c.timing);
   if (stop_after_validation(a.json)) return 0;
   const ScalingResult r = scaling_study(c);

@@ -1,5 +1,6 @@
 // `steplab study ...`: reads and checks the arguments, runs the study, prints its table and
 // writes its JSON.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
@@ -7,6 +8,7 @@
 
 #include "analysis/convergence.hpp"
 #include "analysis/kernel.hpp"
+#include "analysis/peers.hpp"
 #include "reports/commands.hpp"
 #include "reports/inputs.hpp"
 #include "reports/output.hpp"
@@ -27,6 +29,40 @@ std::vector<std::size_t> resolve_methods(const std::string& list, bool with_anal
     if (std::find(out.begin(), out.end(), m) != out.end())
       throw UsageError(fmt::format("--methods names '{}' twice; accepted: each method once", name));
     out.push_back(m);
+  }
+  return out;
+}
+
+Solvers resolve_solvers(const std::string& list, const std::vector<std::string>& available, std::string_view scene, bool no_peers,
+                        std::span<const PeerInfo> table) {
+  Solvers out{{}, no_peers ? std::vector<std::string>{} : available};
+  if (list.empty()) return {resolve_methods(list, false), out.adaptive};
+  const auto accepted = [&] { return fmt::format("{}; and here {}", method_names(), fmt::join(available, ", ")); };
+  std::vector<std::string> named;
+  for (const std::string& name : split_list(list)) {
+    const auto it = std::find_if(table.begin(), table.end(), [&](const PeerInfo& p) { return p.name == name; });
+    const PeerInfo* peer = it == table.end() ? nullptr : &*it;
+    if (!peer) {
+      if (!find_method(name)) throw UsageError(fmt::format("--methods '{}' is unknown; accepted: {}", name, accepted()));
+      const std::size_t m = *find_method(name);
+      if (std::find(out.methods.begin(), out.methods.end(), m) != out.methods.end())
+        throw UsageError(fmt::format("--methods names '{}' twice; accepted: each method once", name));
+      out.methods.push_back(m);
+      continue;
+    }
+    if (!peer->built)
+      throw UsageError(fmt::format("--methods '{}' is not built into this steplab (its {} solver is missing from SUNDIALS); "
+                                   "accepted here: {}", name, peer->linear_solver, fmt::join(available, ", ")));
+    if (std::find(available.begin(), available.end(), name) == available.end())
+      throw UsageError(fmt::format("--methods '{}' does not run on the {}; accepted adaptive solvers there: {}", name, scene,
+                                   fmt::join(available, ", ")));
+    if (std::find(named.begin(), named.end(), name) != named.end())
+      throw UsageError(fmt::format("--methods names '{}' twice; accepted: each method once", name));
+    named.push_back(name);
+  }
+  if (!named.empty()) {
+    if (no_peers) throw UsageError("--methods names adaptive solvers and --no-peers leaves them out; accepted: one of the two");
+    out.adaptive = named;
   }
   return out;
 }

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "analysis/kernel.hpp"
+#include "analysis/peers.hpp"
 #include "reports/run_json.hpp"
 
 namespace steplab {
@@ -17,6 +18,13 @@ Json number_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr
 
 Json scene_params_json(std::size_t scene, const std::vector<double>& values) {
   return params_json(scene_kernel(scene).params, values);
+}
+
+Json peer_builds_json() {
+  Json out = Json::array();
+  for (const PeerBuild& b : peer_builds())
+    out.push_back({{"library", b.library}, {"version", b.version}, {"optimised", b.optimised}, {"flags", b.flags}});
+  return out;
 }
 
 Json convergence_json(const ConvergenceResult& r) {

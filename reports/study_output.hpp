@@ -12,6 +12,9 @@ namespace steplab {
 using Json = nlohmann::ordered_json;
 
 Json scene_params_json(std::size_t scene, const std::vector<double>& values);
+// The library builds the peers ran on (analysis/peers.hpp, peer_builds): [{library, version,
+// optimised, flags}], in every study's JSON that has peers.
+Json peer_builds_json();
 
 Json convergence_json(const ConvergenceResult& r);   // schema steplab.convergence/2
 std::string convergence_table(const ConvergenceResult& r);

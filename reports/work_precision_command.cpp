@@ -19,6 +19,23 @@ namespace {
 Json null_if_negative(double x) { return x >= 0 ? Json(x) : Json(nullptr); }
 Json name_or_null(const std::string& s) { return s.empty() ? Json(nullptr) : Json(s); }
 
+// A run's counts (analysis/counts.hpp) by their JSON names.
+Json counts_json(const WorkPoint& p) {
+  return {{"steps", p.steps}, {"rejected_steps", p.rejected}, {"force_evaluations", p.force_evaluations},
+          {"jacobian_evaluations", p.jacobian_evaluations}, {"factorisations", p.factorisations},
+          {"linear_solves", p.solves}, {"newton_iterations", p.newton}};
+}
+Json point_counts(const SceneWork& w, std::ptrdiff_t i) { return i < 0 ? Json(nullptr) : counts_json(w.points[i]); }
+
+// "rk4 0.00123 s (1000 steps, 4000 forces)", with the Jacobians and factorisations an implicit run pays.
+std::string counts_text(const WorkPoint& p) {
+  std::string t = fmt::format("{} steps, {} forces", p.steps, p.force_evaluations);
+  if (p.rejected > 0) t += fmt::format(", {} rejected", p.rejected);
+  if (p.jacobian_evaluations > 0) t += fmt::format(", {} Jacobians", p.jacobian_evaluations);
+  if (p.factorisations > 0) t += fmt::format(", {} LUs", p.factorisations);
+  return t;
+}
+
 }  // namespace
 
 Json work_precision_json(const WorkPrecisionResult& r) {
@@ -27,31 +44,34 @@ Json work_precision_json(const WorkPrecisionResult& r) {
   j["schema"] = "steplab.work_precision/1";
   j["params"] = {{"t_end", c.t_end},          {"sweep_t_end", c.sweep_t_end},   {"points", c.points},
                  {"tolerances", c.tolerances}, {"error_levels", c.error_levels}, {"stiffnesses", c.stiffnesses},
-                 {"crossover_error", c.crossover_error}, {"timing", c.timing}};
+                 {"crossover_error", c.crossover_error}, {"timing", c.timing}, {"adaptive_solvers", c.adaptive}};
+  j["peer_builds"] = peer_builds_json();
   Json scenes = Json::array();
   for (const SceneWork& w : r.scenes) {
     Json s;
     s["scene"] = scene_name(w.scene);
     s["params"] = scene_params_json(w.scene, w.params);
     Json pts = Json::array();
-    for (const WorkPoint& p : w.points)
-      pts.push_back({{"method", p.method},
-                     {"adaptive", p.adaptive},
-                     {p.adaptive ? "tolerance" : "dt", p.setting},
-                     {"status", to_string(p.status)},
-                     {"error_max", std::isfinite(p.error) ? Json(p.error) : Json(nullptr)},
-                     {"steps", p.steps},
-                     {"force_evaluations", p.force_evaluations},
-                     {"jacobian_evaluations", p.jacobian_evaluations},
-                     {"seconds", null_if_negative(p.seconds)}});
+    for (const WorkPoint& p : w.points) {
+      Json point = {{"method", p.method},
+                    {"adaptive", p.adaptive},
+                    {p.adaptive ? "tolerance" : "dt", p.setting},
+                    {"status", to_string(p.status)},
+                    {"error_max", std::isfinite(p.error) ? Json(p.error) : Json(nullptr)}};
+      point.update(counts_json(p));
+      point["seconds"] = null_if_negative(p.seconds);
+      pts.push_back(std::move(point));
+    }
     s["points"] = std::move(pts);
     Json cheapest = Json::array();
     for (const Cheapest& ch : w.cheapest)
       cheapest.push_back({{"error_level", ch.error_level},
                           {"by_time", name_or_null(ch.by_time)},
                           {"seconds", null_if_negative(ch.seconds)},
+                          {"by_time_counts", point_counts(w, ch.time_point)},
                           {"by_evaluations", name_or_null(ch.by_evaluations)},
-                          {"evaluations", ch.by_evaluations.empty() ? Json(nullptr) : Json(ch.evaluations)}});
+                          {"evaluations", ch.by_evaluations.empty() ? Json(nullptr) : Json(ch.evaluations)},
+                          {"by_evaluations_counts", point_counts(w, ch.evaluations_point)}});
     s["cheapest"] = std::move(cheapest);
     scenes.push_back(std::move(s));
   }
@@ -81,11 +101,14 @@ std::string work_precision_table(const WorkPrecisionResult& r) {
   for (const SceneWork& w : r.scenes) {
     out += fmt::format("Cheapest run with its largest error at most the level, {} (t_end {}):\n", scene_name(w.scene),
                        r.config.t_end);
-    out += fmt::format("{:>8}  {:<34} {}\n", "error", timed ? "by run time (minimum of repeats)" : "", "by force + Jacobian evaluations");
+    out += fmt::format("{:>8}  {:<64} {}\n", "error", timed ? "by run time (minimum of repeats)" : "", "by force + Jacobian evaluations");
     for (const Cheapest& ch : w.cheapest)
-      out += fmt::format("{:>8.0e}  {:<34} {}\n", ch.error_level,
-                         ch.by_time.empty() ? (timed ? "none" : "") : fmt::format("{} {:.3g} s", ch.by_time, ch.seconds),
-                         ch.by_evaluations.empty() ? "none" : fmt::format("{} {}", ch.by_evaluations, ch.evaluations));
+      out += fmt::format("{:>8.0e}  {:<64} {}\n", ch.error_level,
+                         ch.by_time.empty() ? (timed ? "none" : "")
+                                            : fmt::format("{} {:.3g} s ({})", ch.by_time, ch.seconds, counts_text(w.points[ch.time_point])),
+                         ch.by_evaluations.empty() ? "none"
+                                                   : fmt::format("{} {} ({})", ch.by_evaluations, ch.evaluations,
+                                                                 counts_text(w.points[ch.evaluations_point])));
     out += "\n";
   }
   out += fmt::format(
@@ -113,7 +136,9 @@ std::string work_precision_table(const WorkPrecisionResult& r) {
 
 int work_precision_command(WorkPrecisionArgs& a) {
   WorkPrecisionConfig c;
-  c.methods = resolve_methods(a.methods, false);
+  Solvers solvers = resolve_solvers(a.methods, adaptive_solvers(), "spring and chain", false);
+  c.methods = std::move(solvers.methods);
+  c.adaptive = std::move(solvers.adaptive);
   c.points = static_cast<int>(parse_count("--points", a.points, 3, 100));
   c.stiffnesses = number_list("--stiffnesses", a.stiffnesses, Bound::Positive);
   c.threads = resolve_thread_count(a.threads);

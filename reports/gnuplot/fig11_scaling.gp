@@ -2,7 +2,7 @@
 # a panel per family and one for the adaptive solvers; in the last panel the explicit methods'
 # stable step dt* against N (points) beside its 1/N prediction from the smallest N (dashed).
 # Variables set by steplab report: datadir, outfile, format (png|pdf), costname, limited (the
-# explicit methods with a finite dt* at every N);
+# explicit methods with a finite dt* at every N), scaled (the adaptive solvers: dopri5 and the peers);
 # styles.gp (written beside this script): each method's style, nfam, fam1.., famname1..
 load "styles.gp"
 npanel = nfam + 2
@@ -14,7 +14,6 @@ set key top left samplen 2.5 spacing 0.9 noenhanced  # method names have undersc
 set logscale xy
 set format y "10^{%L}"
 set multiplot layout nrow,3
-scaled = "dopri5 odeint_dopri5 cvode_band"
 do for [f=1:nfam+1] {
   ms = f <= nfam ? value("fam".f) : scaled
   set title (f <= nfam ? value("famname".f) : "adaptive solvers") noenhanced

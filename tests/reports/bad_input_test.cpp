@@ -107,7 +107,14 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"study stability --threshold-dampings -1", "--threshold-dampings"},
         BadInput{"study stability --map-dt-points 1", "--map-dt-points"}, BadInput{"study collision --dts 0", "--dts"},
         BadInput{"study collision --rest-length 3", "--rest-length"}, BadInput{"study collision --t-end nan", "--t-end"},
-        BadInput{"study scaling --scene spring", "--scene"}, BadInput{"study scaling --scene softbody --sizes 2.5", "--sizes"},
+        BadInput{"study scaling --scene spring", "--scene"},
+        // a peer that does not run on the scene, one of an old name, one named twice, with --no-peers
+        BadInput{"study scaling --scene rope --methods rk4,cvode_bdf_klu --json {dir}/s.json", "--methods 'cvode_bdf_klu'"},
+        BadInput{"study scaling --scene softbody --methods cvode_adams_band", "--methods 'cvode_adams_band'"},
+        BadInput{"study scaling --methods cvode_band", "--methods 'cvode_band'"},
+        BadInput{"study scaling --methods dopri5,dopri5", "--methods names 'dopri5' twice"},
+        BadInput{"study scaling --methods rk4,odeint_dopri5 --no-peers", "--no-peers"},
+        BadInput{"study work-precision --methods cvode_bdf_band", "--methods 'cvode_bdf_band'"}, BadInput{"study scaling --scene softbody --sizes 2.5", "--sizes"},
         BadInput{"study scaling --scene softbody --sizes 301", "--sizes"}, BadInput{"study scaling --max-steps 0", "--max-steps"},
         BadInput{"run --scene softbody --grid 0", "--grid"}, BadInput{"run --scene softbody --masses 4", "--masses"},
         // check
