@@ -43,13 +43,13 @@ bench: build
 # Without -Werror: under the sanitizers GCC 12 reports -Wmaybe-uninitialized inside libstdc++
 # (<regex>, std::function) that the normal build, which CI holds to -Werror, does not.
 # A study runs 10-20x slower there, so the tests that run the same code again on whole reports
-# or work-precision studies with other parameters run in `make test` only (SANITIZE_SKIP, 1330 s
-# of the sanitized suite's 2359 s of test time at bdc3d3f); every other test runs here, with a
-# whole report (ReportFindings.FollowTheDataWithDefaults) and a work-precision study
+# or work-precision studies with other parameters run in `make test` only (SANITIZE_SKIP: they
+# were more than half the sanitized suite's time); every other test runs here, with a whole
+# report (ReportFindings.FollowTheDataWithDefaults) and a work-precision study
 # (WorkPrecision.CountsWhatTheFormulasSay) among them. Also skipped here: ReportUpToDate (a second
-# whole report, 136 s of 1144 s at a4fdd68, for the up-to-date test) and package.plugin (178 s: a
-# project that instantiates the same templates on a new method and scene; package.consumer still
-# builds and links one against the sanitized package). Both run in `make test`.
+# whole report, for the up-to-date test) and package.plugin (a project that instantiates the same
+# templates on a new method and scene; package.consumer still builds and links one against the
+# sanitized package). Both run in `make test`.
 SANITIZE_SKIP ?= ReportGrowth|ReportInterrupted|ReportUpToDate|package\.plugin|ReportFindings\.(FollowTheDataWithoutDamping|FollowTheDataWithAStiffSpring|ChangedParameters)|WorkPrecision\.(Rk4Accuracy|BdfSteps|AdaptiveErrors|ImplicitPays)
 test-sanitize: deps
 	@tools/install-deps test

@@ -7,11 +7,10 @@
 // The lanes are one GCC vector (`vector_size`) of the register width of the instruction set the
 // batched run loop is compiled for (core/batch.hpp, analysis/kernel_impl.hpp): 2 on SSE2, 4 on
 // AVX2, 8 on AVX-512. A vector wider than the target's registers is lowered through memory
-// (3-4x slower, measured). Two packs stepped as one, for two chains of a step in flight, gained
-// little once the loop kept its state in registers, and cost elsewhere (throughput_w4 126 us
-// against 132, w2 350 against 334, w8 723 against 386, make bench at a4fdd68): the loop is
-// bound by its instruction count, not by its latency. Comparisons give a Mask; a branch on the
-// state becomes a select.
+// (3-4x slower). One pack is stepped at a time, not two interleaved: the loop is bound by its
+// instruction count, not by its latency, so a second chain of a step in flight gained nothing
+// (docs/performance.md, SIMD packs). Comparisons give a Mask; a branch on the state becomes a
+// select.
 #pragma once
 
 #include <cmath>
@@ -100,12 +99,11 @@ template <int W> struct Mask {
 template <class T> using MaskOf = decltype(std::declval<const T&>() < std::declval<const T&>());
 
 inline double select(bool c, double a, double b) { return c ? a : b; }
-// Per width, as GCC 12 compiles it best. A mask's lanes are all ones or all zeros, so on AVX2 its
-// sign bit is the lane: c < 0 is one vblendvpd, where c != 0 compared the mask with zero twice
-// first (throughput_w4 in make bench: 135 us against 163 us, with the run loop's locals). SSE2
-// has no blend and GCC made either form a branch per lane: the bits are and-ed and or-ed
-// (throughput_w2 336 us against 398). On AVX-512, c < 0 is a comparison typed for plain x86-64
-// (README, SIMD packs: GCC 12's typing of a comparison) that GCC did lane by lane (throughput_w8 610 us against 434): c != 0.
+// Per width, as GCC 12 compiles it best (docs/performance.md, SIMD packs). A mask's lanes are all
+// ones or all zeros, so on AVX2 its sign bit is the lane: c < 0 is one vblendvpd, where c != 0
+// compares the mask with zero twice first. SSE2 has no blend and GCC makes either form a branch
+// per lane: the bits are and-ed and or-ed. On AVX-512, c < 0 is a comparison typed for plain
+// x86-64, which GCC 12 does lane by lane: c != 0.
 template <int W> Pack<W> select(const Mask<W>& c, const Pack<W>& a, const Pack<W>& b) {
   using P = Pack<W>;
   if constexpr (W == 2) return P::of(typename P::Lanes((typename P::Bits(a.v) & c.b) | (typename P::Bits(b.v) & ~c.b)));
@@ -115,10 +113,8 @@ template <int W> Pack<W> select(const Mask<W>& c, const Pack<W>& a, const Pack<W
 
 inline bool any(bool c) { return c; }
 inline bool all(bool c) { return c; }
-// Any lane on: the two halves OR-ed together until two lanes are left. Tested lane by lane, a
-// packed step took 1.4-5.5 more instructions per trajectory-step in packs of 4 (callgrind, study
-// convergence on the spring: implicit Euler 147.9 against 142.4) and throughput_w8 2 % longer
-// (444 us against 435).
+// Any lane on: the two halves OR-ed together until two lanes are left, in log2(W) operations
+// rather than a test per lane (fewer instructions per step: docs/performance.md, SIMD packs).
 template <int W> bool any(const Mask<W>& c) {
   const typename Mask<W>::Bits& b = c.b;
   if constexpr (W == 8) return any(Mask<4>::of(__builtin_shufflevector(b, b, 0, 1, 2, 3) | __builtin_shufflevector(b, b, 4, 5, 6, 7)));

@@ -113,8 +113,8 @@ struct NoObserver {
 // at the end, its largest and its sum of squares (for the RMS), and the velocity error at the
 // end. T a pack for runs stepped together (core/batch.hpp): each lane adds where `take` holds.
 // Shared by this run loop, dopri5's (core/dopri5.hpp) and the batch's. add is forced inline:
-// left to itself GCC 12 called the scalar version, and the call cost RK4 on the spring 31 %
-// more instructions a step (callgrind).
+// left to itself GCC 12 calls the scalar version out of line, a call in every step of the
+// cheapest methods (docs/performance.md).
 template <class T> struct ErrorSums {
   T error_max = 0, err_sq_sum = 0, error_final = 0, error_v_final = 0;
   static constexpr auto fields() {
@@ -133,8 +133,7 @@ template <class T> struct ErrorSums {
 // The least-squares slope of ln E against t, accumulated with Welford's update: a point (t, l =
 // ln E) makes n += 1, dt = t - mean_t, mean_t += dt / n, mean_l += (l - mean_l) / n,
 // c_tl += dt (l - mean_l), m2_t += dt (t - mean_t); the slope is c_tl / m2_t. Lanes of a pack
-// add where `take` holds. add is forced inline for the same reason as ErrorSums::add: where
-// GCC called it, `study stability` on one run at a time took 3 % more instructions.
+// add where `take` holds. add is forced inline for the same reason as ErrorSums::add.
 template <class T> struct EnergyFit {
   T n = 0, mean_t = 0, mean_l = 0, c_tl = 0, m2_t = 0;
   static constexpr auto fields() {
