@@ -36,6 +36,13 @@ using AnyState = State<Eigen::Dynamic>;
 using AnyAdaptiveResult = AdaptiveResult<Eigen::Dynamic>;
 using Params = std::span<const double>;  // a scene's parameter values, in its table's order
 
+// dopri5's counts (core/dopri5.hpp) as every solver's (analysis/counts.hpp).
+inline Counts counts_of(const AdaptiveStats& s) {
+  Counts n;
+  n.steps = s.accepted, n.rejected = s.rejected, n.forces = s.force_evaluations;
+  return n;
+}
+
 struct BounceEvent {
   double t;               // time the mass left the ground
   double energy_ratio;    // E/E0 then

@@ -24,28 +24,24 @@ constexpr CvodeSettings kBdf{.adams = false};
 constexpr CvodeSettings kBdfMax2{.adams = false, .max_order = 2};
 constexpr bool kKlu = STEPLAB_HAVE_KLU;
 
+// A CVODE peer: implicit (Newton), its linear solver and its settings.
+constexpr PeerInfo cvode(std::string_view name, std::string_view solver, PeerScenes scenes, CvodeSettings settings,
+                         bool built = true) {
+  return {name, kCvodeLibrary, solver, scenes, true, built, settings};
+}
+
 constexpr PeerInfo kPeers[] = {
-    {"dopri5", "steplab", "", PeerScenes::Any, false, true, {}, "steplab's Dormand-Prince 5(4) with its own controller"},
-    {"odeint_dopri5", "Boost.Odeint", "", PeerScenes::Any, false, true, {},
-     "Boost.Odeint's controlled runge_kutta_dopri5"},
-    {"cvode_adams_dense", "SUNDIALS CVODE", "dense", PeerScenes::FixedSize, true, true, kAdams,
-     "CVODE, Adams-Moulton (orders 1-12), Newton with dense LU on the analytic Jacobian"},
-    {"cvode_bdf_dense", "SUNDIALS CVODE", "dense", PeerScenes::FixedSize, true, true, kBdf,
-     "CVODE, BDF (orders 1-5), Newton with dense LU on the analytic Jacobian"},
-    {"cvode_bdf_max2_dense", "SUNDIALS CVODE", "dense", PeerScenes::FixedSize, true, true, kBdfMax2,
-     "CVODE, BDF of orders 1-2 (CVodeSetMaxOrd 2), Newton with dense LU on the analytic Jacobian"},
-    {"cvode_adams_band", "SUNDIALS CVODE", "band", PeerScenes::Rope, true, true, kAdams,
-     "CVODE, Adams-Moulton (orders 1-12), Newton with banded LU on the analytic Jacobian"},
-    {"cvode_bdf_band", "SUNDIALS CVODE", "band", PeerScenes::Rope, true, true, kBdf,
-     "CVODE, BDF (orders 1-5), Newton with banded LU on the analytic Jacobian"},
-    {"cvode_bdf_max2_band", "SUNDIALS CVODE", "band", PeerScenes::Rope, true, true, kBdfMax2,
-     "CVODE, BDF of orders 1-2 (CVodeSetMaxOrd 2), Newton with banded LU on the analytic Jacobian"},
-    {"cvode_adams_klu", "SUNDIALS CVODE", "KLU", PeerScenes::SoftBody, true, kKlu, kAdams,
-     "CVODE, Adams-Moulton (orders 1-12), Newton with KLU (sparse LU) on the analytic Jacobian"},
-    {"cvode_bdf_klu", "SUNDIALS CVODE", "KLU", PeerScenes::SoftBody, true, kKlu, kBdf,
-     "CVODE, BDF (orders 1-5), Newton with KLU (sparse LU) on the analytic Jacobian"},
-    {"cvode_bdf_max2_klu", "SUNDIALS CVODE", "KLU", PeerScenes::SoftBody, true, kKlu, kBdfMax2,
-     "CVODE, BDF of orders 1-2 (CVodeSetMaxOrd 2), Newton with KLU (sparse LU) on the analytic Jacobian"},
+    {"dopri5", "steplab", "", PeerScenes::Any, false, true, {}},
+    {"odeint_dopri5", "Boost.Odeint", "", PeerScenes::Any, false, true, {}},
+    cvode("cvode_adams_dense", "dense", PeerScenes::FixedSize, kAdams),
+    cvode("cvode_bdf_dense", "dense", PeerScenes::FixedSize, kBdf),
+    cvode("cvode_bdf_max2_dense", "dense", PeerScenes::FixedSize, kBdfMax2),
+    cvode("cvode_adams_band", "band", PeerScenes::Rope, kAdams),
+    cvode("cvode_bdf_band", "band", PeerScenes::Rope, kBdf),
+    cvode("cvode_bdf_max2_band", "band", PeerScenes::Rope, kBdfMax2),
+    cvode("cvode_adams_klu", "KLU", PeerScenes::SoftBody, kAdams, kKlu),
+    cvode("cvode_bdf_klu", "KLU", PeerScenes::SoftBody, kBdf, kKlu),
+    cvode("cvode_bdf_max2_klu", "KLU", PeerScenes::SoftBody, kBdfMax2, kKlu),
 };
 
 }  // namespace
@@ -70,19 +66,23 @@ std::vector<const PeerInfo*> peers_on(PeerScenes scenes) {
   return out;
 }
 
-std::vector<PeerBuild> peer_builds() {
-  return {{"SUNDIALS CVODE", SUNDIALS_VERSION, STEPLAB_CVODE_FLAGS, STEPLAB_CVODE_OPTIMISED != 0},
-          {"Boost.Odeint", BOOST_LIB_VERSION, "header-only, compiled with steplab's own flags", true}};
+std::vector<std::string> peer_names(PeerScenes scenes) {
+  std::vector<std::string> out;
+  for (const PeerInfo* p : peers_on(scenes)) out.emplace_back(p->name);
+  return out;
 }
 
-bool fixed_peer_scene(std::string_view scene) { return scene == Spring::name || scene == Chain::name; }
+std::vector<PeerBuild> peer_builds() {
+  return {{std::string(kCvodeLibrary), SUNDIALS_VERSION, STEPLAB_CVODE_FLAGS, STEPLAB_CVODE_OPTIMISED != 0},
+          {"Boost.Odeint", BOOST_LIB_VERSION, "header-only, compiled with steplab's own flags", true}};
+}
 
 State<Eigen::Dynamic> run_fixed_peer(const PeerInfo& peer, std::string_view scene, std::span<const double> params, double tol,
                                      double t_end, PeerCounts& n, double* error_max) {
   const auto on = [&]<class S>(const S& s) -> State<Eigen::Dynamic> {
     State<S::dim> end;
     if (peer.name == "odeint_dopri5") end = OdeintDopri5<S>::run(s, tol, t_end, n, error_max);
-    else if (peer.library == "SUNDIALS CVODE" && peer.scenes == PeerScenes::FixedSize)
+    else if (peer.is_cvode() && peer.linear_solver == "dense")
       end = CvodeDense<S>::run(s, peer.cvode, tol, t_end, n, error_max);
     else throw std::logic_error("run_fixed_peer: " + std::string(peer.name) + " does not run on a scene of fixed size");
     return {end.x, end.v};

@@ -48,15 +48,17 @@ struct CvodeSettings {
 // dense Jacobian), or one of the scaling study's scenes of run-time size.
 enum class PeerScenes { FixedSize, Rope, SoftBody, Any };
 
+inline constexpr std::string_view kCvodeLibrary = "SUNDIALS CVODE";
+
 struct PeerInfo {
   std::string_view name;
-  std::string_view library;        // "steplab", "Boost.Odeint", "SUNDIALS CVODE"
+  std::string_view library;        // "steplab", "Boost.Odeint", kCvodeLibrary
   std::string_view linear_solver;  // "" for an explicit solver; dense, band, KLU
   PeerScenes scenes;
   bool implicit;
   bool built;                      // compiled into this steplab (CVODE's KLU solver may not be)
   CvodeSettings cvode;             // CVODE's only
-  std::string_view summary;        // for tables and the report
+  constexpr bool is_cvode() const { return library == kCvodeLibrary; }
 };
 
 // "Adams-Moulton", "BDF", "BDF of orders 1-2": a CVODE peer's method in words.
@@ -67,6 +69,8 @@ std::span<const PeerInfo> peers();
 const PeerInfo* find_peer(std::string_view name);
 bool peer_runs_on(const PeerInfo& p, PeerScenes scenes);
 std::vector<const PeerInfo*> peers_on(PeerScenes scenes);
+// The names of peers_on(scenes): a study's default adaptive solvers.
+std::vector<std::string> peer_names(PeerScenes scenes);
 
 // The library builds the peers run on: the SUNDIALS version, whether it was compiled optimised,
 // with which flags; Boost's version. In every study's JSON that has peers, and in the report.
@@ -82,6 +86,5 @@ std::vector<PeerBuild> peer_builds();
 // runs use), and is left out of a timed run.
 State<Eigen::Dynamic> run_fixed_peer(const PeerInfo& peer, std::string_view scene, std::span<const double> params, double tol,
                                      double t_end, PeerCounts& n, double* error_max = nullptr);
-bool fixed_peer_scene(std::string_view scene);  // whether run_fixed_peer takes it
 
 }  // namespace steplab

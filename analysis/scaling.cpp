@@ -169,9 +169,7 @@ ScalingRow peer_row(const ScalingConfig& c, const Eigen::VectorXd& exact, const 
   if (solver == "dopri5") {
     search(row, 1e-4, 1e-2, 1, c.target_error, [&](double tol) {
       const AnyAdaptiveResult res = scene_kernel(scene).dopri5(p, adaptive_spec(tol, c.t_end));
-      Counts counts;
-      counts.steps = res.stats.accepted, counts.rejected = res.stats.rejected, counts.forces = res.stats.force_evaluations;
-      return Trial{max_error(res.run.final.x, exact, res.run.status == RunStatus::Ok), counts};
+      return Trial{max_error(res.run.final.x, exact, res.run.status == RunStatus::Ok), counts_of(res.stats)};
     });
     return row;
   }
@@ -229,11 +227,7 @@ double scaling_cost(const ScalingConfig& c, const ScalingRow& r) { return c.timi
 
 int scaling_masses(const ScalingConfig& c, int n) { return is_rope(c) ? n : n * n; }
 
-std::vector<std::string> scaling_adaptive_solvers(std::string_view scene) {
-  std::vector<std::string> out;
-  for (const PeerInfo* p : peers_on(peer_scenes(scene))) out.emplace_back(p->name);
-  return out;
-}
+std::vector<std::string> scaling_adaptive_solvers(std::string_view scene) { return peer_names(peer_scenes(scene)); }
 
 ScalingConfig scaling_config(std::string_view scene) {
   ScalingConfig c;

@@ -31,6 +31,7 @@
 #include <string_view>
 #include <vector>
 
+#include "analysis/counts.hpp"
 #include "core/simulate.hpp"
 
 namespace steplab {
@@ -66,6 +67,7 @@ struct ScalingRow {
   long long rejected = 0, factorisations = 0, solves = 0, newton = 0;  // analysis/counts.hpp
   double seconds = 0;    // the whole run (0 without timing)
   int runs = 0;          // runs the search took
+  Counts counts() const { return {steps, rejected, forces, jacobians, factorisations, solves, newton}; }
   bool reached() const { return dt == dt; }
 };
 

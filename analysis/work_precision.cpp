@@ -85,9 +85,7 @@ WorkPoint dopri5_point(const Where& w, double tol, double t_end) {
   const AnyAdaptiveResult r = scene_kernel(w.scene).dopri5(w.params, spec);
   p.status = r.run.status;
   p.error = p.status == RunStatus::Ok ? r.run.error_max : kInf;
-  p.steps = r.stats.accepted;
-  p.rejected = r.stats.rejected;
-  p.force_evaluations = r.stats.force_evaluations;
+  set_counts(p, counts_of(r.stats));
   return p;
 }
 
@@ -148,8 +146,6 @@ std::vector<WorkPoint> scene_points(const Where& w, const WorkPrecisionConfig& c
   return points;
 }
 
-long long evaluations(const WorkPoint& p) { return p.force_evaluations + p.jacobian_evaluations; }
-
 // Whether a run of (seconds, evaluations) is cheaper than one of (than_seconds, than_evaluations):
 // by time where the study times its runs, else by evaluations.
 bool cheaper(bool timing, double seconds, long long evals, double than_seconds, long long than_evals) {
@@ -164,8 +160,8 @@ Cheapest cheapest_at(const std::vector<WorkPoint>& points, double level) {
     if (p.status != RunStatus::Ok || !(p.error <= level)) continue;
     if (p.seconds >= 0 && (c.seconds < 0 || p.seconds < c.seconds))
       c.seconds = p.seconds, c.by_time = p.method, c.time_point = static_cast<std::ptrdiff_t>(i);
-    if (c.by_evaluations.empty() || evaluations(p) < c.evaluations)
-      c.evaluations = evaluations(p), c.by_evaluations = p.method, c.evaluations_point = static_cast<std::ptrdiff_t>(i);
+    if (c.by_evaluations.empty() || p.evaluations() < c.evaluations)
+      c.evaluations = p.evaluations(), c.by_evaluations = p.method, c.evaluations_point = static_cast<std::ptrdiff_t>(i);
   }
   return c;
 }
@@ -286,8 +282,8 @@ std::vector<StiffnessRow> stiffness_rows(const WorkPrecisionConfig& c) {
       std::string& best = implicit ? row.best_implicit : row.best_explicit;
       double& secs = implicit ? row.implicit_seconds : row.explicit_seconds;
       long long& evals = implicit ? row.implicit_evaluations : row.explicit_evaluations;
-      if (best.empty() || cheaper(c.timing, w.seconds, evaluations(w), secs, evals))
-        best = w.method, secs = w.seconds, evals = evaluations(w);
+      if (best.empty() || cheaper(c.timing, w.seconds, w.evaluations(), secs, evals))
+        best = w.method, secs = w.seconds, evals = w.evaluations();
     }
     rows.push_back(std::move(row));
   }
@@ -296,11 +292,7 @@ std::vector<StiffnessRow> stiffness_rows(const WorkPrecisionConfig& c) {
 
 }  // namespace
 
-std::vector<std::string> adaptive_solvers() {
-  std::vector<std::string> out;
-  for (const PeerInfo* p : peers_on(PeerScenes::FixedSize)) out.emplace_back(p->name);
-  return out;
-}
+std::vector<std::string> adaptive_solvers() { return peer_names(PeerScenes::FixedSize); }
 
 WorkPrecisionResult work_precision_study(const WorkPrecisionConfig& config) {
   WorkPrecisionResult out;

@@ -22,6 +22,7 @@
 #include <string_view>
 #include <vector>
 
+#include "analysis/counts.hpp"
 #include "core/simulate.hpp"
 
 namespace steplab {
@@ -39,6 +40,8 @@ struct WorkPoint {
   long long steps = 0, force_evaluations = 0, jacobian_evaluations = 0;
   long long rejected = 0, factorisations = 0, solves = 0, newton = 0;  // analysis/counts.hpp
   double seconds = -1;   // minimum of the timings; -1 without timing
+  Counts counts() const { return {steps, rejected, force_evaluations, jacobian_evaluations, factorisations, solves, newton}; }
+  long long evaluations() const { return force_evaluations + jacobian_evaluations; }  // the study's cost untimed
 };
 
 template <class F> void encode_fields(WorkPoint& p, F&& f) {  // analysis/shard.hpp

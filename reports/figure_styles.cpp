@@ -72,7 +72,7 @@ std::string styles_gp(const std::vector<std::size_t>& methods) {
   std::string adaptive;
   std::size_t lt = method_count();
   for (const PeerInfo& p : peers()) {
-    const bool cvode = p.library == "SUNDIALS CVODE";
+    const bool cvode = p.is_cvode();
     const MethodStyle st = p.name == "dopri5"          ? MethodStyle{"#000000", 7, 1}
                            : !cvode                    ? MethodStyle{"#777777", 6, 2}
                            : p.cvode.adams             ? MethodStyle{"#56B4E9", 13, 2}

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "analysis/convergence.hpp"
+#include "analysis/counts.hpp"
 #include "core/method.hpp"
 #include "reports/report.hpp"
 
@@ -26,6 +27,11 @@ std::string words(const std::vector<double>& v);          // gnuplot word list: 
 std::string join(const std::vector<double>& v);           // CLI list: "a,b,c"
 std::string join(const std::vector<int>& v);
 std::string method_words(const std::vector<std::size_t>& methods);
+// "427 steps, 1708 forces": a run's counts (analysis/counts.hpp), with the rejected steps,
+// Jacobians and factorisations where it has them.
+std::string counts_text(const Counts& n);
+// "6.4.1, built optimised": the CVODE the peers ran on (its flags are in the studies' JSON).
+std::string cvode_build_text();
 
 // The families the report groups methods by, and a family's members among `methods` (its own
 // and those that open it: explicit Euler for Adams-Bashforth, implicit Euler for BDF), by order.

@@ -10,6 +10,7 @@
 #include "reports/commands.hpp"
 #include "reports/inputs.hpp"
 #include "reports/output.hpp"
+#include "reports/report_text.hpp"
 #include "reports/shard.hpp"
 #include "reports/study_output.hpp"
 
@@ -26,15 +27,6 @@ Json counts_json(const WorkPoint& p) {
           {"linear_solves", p.solves}, {"newton_iterations", p.newton}};
 }
 Json point_counts(const SceneWork& w, std::ptrdiff_t i) { return i < 0 ? Json(nullptr) : counts_json(w.points[i]); }
-
-// "rk4 0.00123 s (1000 steps, 4000 forces)", with the Jacobians and factorisations an implicit run pays.
-std::string counts_text(const WorkPoint& p) {
-  std::string t = fmt::format("{} steps, {} forces", p.steps, p.force_evaluations);
-  if (p.rejected > 0) t += fmt::format(", {} rejected", p.rejected);
-  if (p.jacobian_evaluations > 0) t += fmt::format(", {} Jacobians", p.jacobian_evaluations);
-  if (p.factorisations > 0) t += fmt::format(", {} LUs", p.factorisations);
-  return t;
-}
 
 }  // namespace
 
@@ -105,10 +97,10 @@ std::string work_precision_table(const WorkPrecisionResult& r) {
     for (const Cheapest& ch : w.cheapest)
       out += fmt::format("{:>8.0e}  {:<64} {}\n", ch.error_level,
                          ch.by_time.empty() ? (timed ? "none" : "")
-                                            : fmt::format("{} {:.3g} s ({})", ch.by_time, ch.seconds, counts_text(w.points[ch.time_point])),
+                                            : fmt::format("{} {:.3g} s ({})", ch.by_time, ch.seconds, counts_text(w.points[ch.time_point].counts())),
                          ch.by_evaluations.empty() ? "none"
                                                    : fmt::format("{} {} ({})", ch.by_evaluations, ch.evaluations,
-                                                                 counts_text(w.points[ch.evaluations_point])));
+                                                                 counts_text(w.points[ch.evaluations_point].counts())));
     out += "\n";
   }
   out += fmt::format(

@@ -16,14 +16,6 @@ namespace steplab {
 namespace {
 
 std::string scene_word(const SceneWork& w) { return std::string(scene_name(w.scene)); }
-long long evaluations_of(const WorkPoint& p) { return p.force_evaluations + p.jacobian_evaluations; }
-
-// "6.4.1, built optimised" (analysis/peers.hpp).
-std::string cvode_build_text() {
-  for (const PeerBuild& b : peer_builds())
-    if (b.library == "SUNDIALS CVODE") return fmt::format("{}, {}", b.version, b.optimised ? "built optimised" : "Debian's unoptimised build");
-  return "?";
-}
 
 // "1.2 µs" / "3.4 ms" or "812 evaluations".
 std::string cost_text(bool timed, double seconds, long long evaluations) {
@@ -50,7 +42,7 @@ std::string level_runs(const SceneWork& w, bool timed) {
 
 // A run's cost: seconds, or force and Jacobian evaluations untimed.
 double point_cost(const WorkPoint& p, bool timed) {
-  return timed ? p.seconds : static_cast<double>(p.force_evaluations + p.jacobian_evaluations);
+  return timed ? p.seconds : static_cast<double>(p.evaluations());
 }
 // The cheapest run of `method` with error at most `level` (null if none reaches it).
 const WorkPoint* cheapest_point(const SceneWork& w, const std::string& method, double level, bool timed) {
@@ -59,15 +51,6 @@ const WorkPoint* cheapest_point(const SceneWork& w, const std::string& method, d
     if (p.method == method && p.status == RunStatus::Ok && p.error <= level && (!best || point_cost(p, timed) < point_cost(*best, timed)))
       best = &p;
   return best;
-}
-
-// "400 steps, 2400 forces, 1200 Jacobians, 400 factorisations": a run's counts, the Jacobians and
-// factorisations where it has them.
-std::string counts_words(const WorkPoint& p) {
-  std::string t = fmt::format("{} steps, {} forces", p.steps, p.force_evaluations);
-  if (p.jacobian_evaluations > 0) t += fmt::format(", {} Jacobians", p.jacobian_evaluations);
-  if (p.factorisations > 0) t += fmt::format(", {} factorisations", p.factorisations);
-  return t;
 }
 
 class Cost : public Section {
@@ -79,8 +62,7 @@ class Cost : public Section {
         std::string s = "# dt_or_tolerance error_max seconds evaluations\n";
         for (const WorkPoint& p : w.points)
           if (p.method == m && p.status == RunStatus::Ok && p.error > 0)
-            s += fmt::format("{} {} {} {}\n", num(p.setting), num(p.error), num(p.seconds),
-                             p.force_evaluations + p.jacobian_evaluations);
+            s += fmt::format("{} {} {} {}\n", num(p.setting), num(p.error), num(p.seconds), p.evaluations());
         dat.write(fmt::format("wp_{}_{}.dat", scene_word(w), m), s);
       }
   }
@@ -93,7 +75,7 @@ class Cost : public Section {
       double x0 = INFINITY, x1 = 0, y0 = INFINITY, y1 = 0;
       for (const WorkPoint& p : d.work.scenes[k].points) {
         if (p.status != RunStatus::Ok || !(p.error > 0)) continue;
-        const double x = timed ? p.seconds : static_cast<double>(p.force_evaluations + p.jacobian_evaluations);
+        const double x = point_cost(p, timed);
         x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, p.error), y1 = std::max(y1, p.error);
       }
       if (!(x0 <= x1)) x0 = 1, x1 = 10, y0 = 1e-10, y1 = 1;
@@ -194,13 +176,13 @@ class Cost : public Section {
       if (!best) continue;
       for (const std::string& solver : r.config.adaptive) {
         const PeerInfo* peer = find_peer(solver);
-        const WorkPoint* cv = peer && peer->library == "SUNDIALS CVODE" ? cheapest_point(chain, solver, level, timed) : nullptr;
+        const WorkPoint* cv = peer && peer->is_cvode() ? cheapest_point(chain, solver, level, timed) : nullptr;
         if (!cv) continue;
         md += fmt::format("- On the chain at error {:.0e}: steplab's cheapest implicit method, `{}`, costs {} ({}); CVODE with {} "
                           "(`{}`) {} ({}): {:.3g} times as much {} and {:.3g} times the force evaluations.\n",
-                          level, best->method, cost_text(timed, best->seconds, evaluations_of(*best)), counts_words(*best),
-                          cvode_method_words(*peer), solver, cost_text(timed, cv->seconds, evaluations_of(*cv)),
-                          counts_words(*cv), point_cost(*cv, timed) / point_cost(*best, timed), timed ? "in run time" : "in evaluations",
+                          level, best->method, cost_text(timed, best->seconds, best->evaluations()), counts_text(best->counts()),
+                          cvode_method_words(*peer), solver, cost_text(timed, cv->seconds, cv->evaluations()),
+                          counts_text(cv->counts()), point_cost(*cv, timed) / point_cost(*best, timed), timed ? "in run time" : "in evaluations",
                           double(cv->force_evaluations) / double(best->force_evaluations));
       }
     }

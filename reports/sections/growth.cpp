@@ -22,14 +22,6 @@ std::string params_but_size(std::string_view scene, const std::vector<double>& p
   return all.substr(all.find(", ") + 2);
 }
 
-// "6.4.1, built optimised: CMAKE_BUILD_TYPE=Release (-O3 -DNDEBUG)" (analysis/peers.hpp).
-std::string cvode_build() {
-  for (const PeerBuild& b : peer_builds())
-    if (b.library == "SUNDIALS CVODE")
-      return fmt::format("{}, {}: {}", b.version, b.optimised ? "built optimised" : "Debian's build, not optimised", b.flags);
-  return "?";
-}
-
 // The exponents, and where a fixed-step method's step was held at its cap 0.95 dt* (told by the modes).
 std::string exponents_table(const ScalingResult& r) {
   std::string md = "| solver | cost ~ N^p^: one step | whole run | dt* ~ N^q^ | step at 0.95 dt* |\n|---|---:|---:|---:|---|\n";
@@ -45,14 +37,6 @@ std::string exponents_table(const ScalingResult& r) {
   return md + "\n";
 }
 
-// "13636 forces, 31 Jacobians, 95 LUs": a row's counts, the Jacobians and factorisations where it has them.
-std::string counts_words(const ScalingRow& w) {
-  std::string t = fmt::format("{} steps, {} forces", w.steps, w.forces);
-  if (w.jacobians > 0) t += fmt::format(", {} Jacobians", w.jacobians);
-  if (w.factorisations > 0) t += fmt::format(", {} factorisations", w.factorisations);
-  return t;
-}
-
 // The crossover sentence, and steplab's cheapest against each CVODE configuration at the largest
 // size, in cost and in force evaluations, with their counts.
 std::string findings(const ScalingResult& r) {
@@ -66,7 +50,7 @@ std::string findings(const ScalingResult& r) {
   for (const ScalingRow& w : r.rows) {
     if (w.n != c.sizes.back() || !w.reached()) continue;
     const PeerInfo* peer = w.adaptive ? find_peer(w.solver) : nullptr;
-    if (peer && peer->library == "SUNDIALS CVODE") cvode.push_back(&w);
+    if (peer && peer->is_cvode()) cvode.push_back(&w);
     else if (peer && peer->library != "steplab") continue;  // the other peers
     else if (!best || scaling_cost(c, w) < scaling_cost(c, *best)) best = &w;
   }
@@ -79,8 +63,8 @@ std::string findings(const ScalingResult& r) {
                       scaling_masses(c, c.sizes.back()), best->solver,
                       best->capped ? " (its step at the cap 0.95 dt*, from the modes)" : "",
                       scaling_cost(c, *best) / scaling_cost(c, *p), cvode_method_words(peer),
-                      peer.linear_solver, p->solver, what, double(best->forces) / double(p->forces), counts_words(*best),
-                      counts_words(*p));
+                      peer.linear_solver, p->solver, what, double(best->forces) / double(p->forces), counts_text(best->counts()),
+                      counts_text(p->counts()));
   }
   return md + "\n";
 }
@@ -153,7 +137,7 @@ class Growth : public Section {
                       "each with Newton on the analytic Jacobian and its banded LU. Every solver is timed alike: the scene made "
                       "outside, the solver's set-up, run and clean-up inside, the minimum of repeats.\n\n",
                       params_but_size("rope", c.params), join(c.sizes), c.t_end,
-                      c.target_error, c.timing ? "run time" : "force and Jacobian evaluations times N", cvode_build());
+                      c.target_error, c.timing ? "run time" : "force and Jacobian evaluations times N", cvode_build_text());
     md += exponents_table(r_) + findings(r_);
     md += page.figure("fig11_scaling", "rope of N masses: whole-run cost at the target error against N, a panel per family and "
                                               "one for the adaptive solvers; last panel: explicit methods' dt* against N, "
