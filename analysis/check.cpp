@@ -14,12 +14,12 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-template <class S> OrderCheck order_check(std::size_t method, const MethodInfo& claims, unsigned threads) {
+template <class S> OrderCheck order_check(std::size_t method, const MethodInfo& claims, const Workers& workers) {
   ConvergenceConfig c;
   c.scene = scene_index(S::name);
   c.params = default_param_values(c.scene);
   c.methods = {method};
-  c.threads = threads;
+  c.workers = workers;
   const ConvergenceResult r = convergence_study(c);
   const ConvergenceRecord& fine = r.records.back();
   OrderCheck o{S::name, r.fits.front().fit, fine.dt, kInf, fine.dt, fine.error_final, false, false, false};
@@ -73,18 +73,18 @@ bool CheckResult::all_hold() const {
   return ok;
 }
 
-CheckResult check_method(std::size_t method, const MethodInfo& claims, unsigned threads) {
+CheckResult check_method(std::size_t method, const MethodInfo& claims, const Workers& workers) {
   CheckResult r;
   r.method = method;
   r.claims = claims;
-  r.orders = {order_check<Spring>(method, claims, threads), order_check<Cannonball>(method, claims, threads)};
+  r.orders = {order_check<Spring>(method, claims, workers), order_check<Cannonball>(method, claims, workers)};
   r.energy = energy_check(method, claims);
 
   StabilityConfig c;
   c.params = default_param_values(scene_index(Spring::name));
   c.methods = {method};
   c.threshold_dampings.assign(std::begin(kCheckDampings), std::end(kCheckDampings));
-  c.threads = threads;
+  c.workers = workers;
   bool all_infinite = true;
   for (const ThresholdRow& row : threshold_study(c)) {
     const StableSet predicted{row.dt_theory, row.again_theory}, measured{row.dt_measured, row.again_measured};

@@ -95,8 +95,8 @@ struct CheckResult {
 };
 
 // The method's step code (the table row `method`) against `claims` (its row's info, or any other
-// to test the check itself). Runs in parallel on `threads` (0: all cores); the result does not
-// depend on the count.
-CheckResult check_method(std::size_t method, const MethodInfo& claims, unsigned threads = 0);
+// to test the check itself). Runs in parallel on the workers' threads; the result does not
+// depend on their count.
+CheckResult check_method(std::size_t method, const MethodInfo& claims, const Workers& workers = {});
 
 }  // namespace steplab

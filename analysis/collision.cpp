@@ -51,7 +51,7 @@ CollisionResult collision_study(const CollisionConfig& c) {
   CollisionResult out;
   out.config = c;
   const std::size_t nm = c.methods.size(), nd = c.dts.size(), falling = scene_index("falling");
-  std::vector<CollisionRun> runs = study_map<CollisionRun>(nm * nd + nm, c.threads, [&](std::size_t task) {
+  std::vector<CollisionRun> runs = study_map<CollisionRun>(nm * nd + nm, c.workers, [&](std::size_t task) {
     if (task < nm * nd) return bounce_run(c.methods[task / nd], c.bounce_params, c.dts[task % nd], c.t_end);
     const std::size_t m = c.methods[task - nm * nd];
     if (!applies(m, falling)) return CollisionRun{};

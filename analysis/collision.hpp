@@ -8,6 +8,7 @@
 
 #include <vector>
 
+#include "analysis/parallel.hpp"
 #include "analysis/kernel.hpp"
 
 namespace steplab {
@@ -36,7 +37,7 @@ struct CollisionConfig {
   double t_end = 10;
   double triangle_dt = 0.001;
   long long path_samples = 1001;
-  unsigned threads = 0;
+  Workers workers;  // threads (0: all cores), progress, shard log
 };
 
 struct CollisionResult {

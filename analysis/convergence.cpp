@@ -150,7 +150,7 @@ ConvergenceResult convergence_study(const ConvergenceConfig& config) {
   const double scale = solution_scale(out);
   // a task per method: its dt sweep, the smallest dt (the longest run) first; a method that does
   // not apply to the scene leaves its records empty
-  const auto sweeps = study_map<std::vector<ConvergenceRecord>>(nm, config.threads, [&](std::size_t m) {
+  const auto sweeps = study_map<std::vector<ConvergenceRecord>>(nm, config.workers, [&](std::size_t m) {
     const std::size_t method = config.methods[m];
     std::vector<ConvergenceRecord> sweep(nd);
     if (!applies(method, config.scene)) return sweep;

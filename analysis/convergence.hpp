@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "analysis/parallel.hpp"
 #include "analysis/order_fit.hpp"
 #include "core/simulate.hpp"
 
@@ -31,7 +32,7 @@ struct ConvergenceConfig {
   double dt_max = 0.1, dt_min = 1e-4;
   int points = 16;
   ErrorKind fit_error = ErrorKind::Final;  // which error the order is fitted to
-  unsigned threads = 0;                    // 0: all cores
+  Workers workers;  // threads (0: all cores), progress, shard log
   int pack_width = 0;  // a method's runs stepped together in SIMD lanes (run_all, analysis/kernel.hpp): 0 the CPU's best, 2, 4, 8, or 1 (one at a time); the same numbers
   // Work-precision: time every run again, one at a time, repeated until kTimingSeconds of
   // runs and at least 3 repetitions; the median is kept. Wall-clock times differ from run to

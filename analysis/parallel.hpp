@@ -17,7 +17,17 @@ namespace steplab {
 // Called (from one thread at a time) after each task with the tasks done, the total and the
 // seconds since the work began; the front end shows progress with it. Null: nothing shown.
 using ProgressHook = void (*)(std::size_t done, std::size_t total, double seconds);
-inline ProgressHook progress_hook = nullptr;
+
+struct WorkLog;  // analysis/shard.hpp
+
+// How a study's work runs, handed down from the command that started it (nothing of it is
+// process-wide): on how many threads, with what progress shown, and, in a shard or a merge,
+// which of its tasks run here (analysis/shard.hpp; null: every task runs here).
+struct Workers {
+  unsigned threads = 0;  // 0: all cores
+  ProgressHook progress = nullptr;
+  WorkLog* log = nullptr;
+};
 
 // Set (from a signal handler) to stop the work: no task starts after it, and parallel_for
 // throws Interrupted once the running tasks are done.
@@ -31,10 +41,11 @@ inline unsigned resolve_threads(unsigned requested) {
   return requested ? requested : std::max(1u, std::thread::hardware_concurrency());
 }
 
-// Runs task(i) for i in [0, n) on `threads` threads, each taking the next index from a shared
-// counter (long and short tasks balance themselves). The first exception is rethrown.
-template <class Task> void parallel_for(std::size_t n, unsigned threads, Task&& task) {
-  threads = std::min<unsigned>(resolve_threads(threads), static_cast<unsigned>(std::max<std::size_t>(n, 1)));
+// Runs task(i) for i in [0, n) on `workers.threads` threads, each taking the next index from a
+// shared counter (long and short tasks balance themselves). The first exception is rethrown.
+template <class Task> void parallel_for(std::size_t n, const Workers& workers, Task&& task) {
+  const ProgressHook progress_hook = workers.progress;
+  const unsigned threads = std::min<unsigned>(resolve_threads(workers.threads), static_cast<unsigned>(std::max<std::size_t>(n, 1)));
   std::atomic<std::size_t> next{0};
   std::size_t done = 0;
   std::exception_ptr error;

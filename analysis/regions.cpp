@@ -21,7 +21,7 @@ RegionResult stability_regions(const RegionConfig& c) {
   const std::size_t nr = out.re.size(), ni = out.im.size();
   for (StabilityRegion& r : out.regions) r.rho.assign(ni, std::vector<double>(nr));
   // one task per (method, im) row
-  parallel_for(out.regions.size() * ni, c.threads, [&](std::size_t task) {
+  parallel_for(out.regions.size() * ni, c.workers, [&](std::size_t task) {
     StabilityRegion& r = out.regions[task / ni];
     const std::size_t j = task % ni;
     for (std::size_t i = 0; i < nr; ++i) r.rho[j][i] = region_rho(r.method, out.re[i], out.im[j]);

@@ -14,13 +14,15 @@
 #include <cstddef>
 #include <vector>
 
+#include "analysis/parallel.hpp"
+
 namespace steplab {
 
 struct RegionConfig {
   std::vector<std::size_t> methods;  // those without a stability function are skipped
   double re_min = -7, re_max = 3, im_max = 5;
   int re_points = 161, im_points = 81;  // im from 0 to im_max; the region is symmetric about the real axis
-  unsigned threads = 0;
+  Workers workers;  // threads (0: all cores), progress, shard log
 };
 
 struct StabilityRegion {

@@ -59,7 +59,7 @@ double rope_measured_threshold(std::size_t method, const std::vector<double>& pa
 
 std::vector<RopeThresholdRow> rope_threshold_study(const RopeStabilityConfig& c) {
   const Rope r(c.params);
-  return study_map<RopeThresholdRow>(c.methods.size(), c.threads, [&](std::size_t i) {
+  return study_map<RopeThresholdRow>(c.methods.size(), c.workers, [&](std::size_t i) {
     const std::size_t m = c.methods[i];
     RopeThresholdRow row{m, r.omega(r.n), 0, 0, 0};
     row.dt_theory = rope_predicted_threshold(m, r, &row.binding_mode);

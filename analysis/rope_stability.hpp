@@ -20,6 +20,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "analysis/parallel.hpp"
+
 namespace steplab {
 
 struct Rope;  // core/scenes/rope.hpp
@@ -28,7 +30,7 @@ struct RopeStabilityConfig {
   std::vector<double> params;  // Rope parameters, table order
   std::vector<std::size_t> methods;
   long long steps = 5'000;
-  unsigned threads = 0;
+  Workers workers;  // threads (0: all cores), progress, shard log
 };
 
 struct RopeThresholdRow {

@@ -247,7 +247,7 @@ ScalingResult scaling_study(const ScalingConfig& c) {
   const std::size_t nm = c.methods.size(), ns = c.sizes.size(), np = c.adaptive.size();
   std::vector<Eigen::VectorXd> targets;
   for (int n : c.sizes) targets.push_back(target_positions(c, n));
-  out.rows = study_map<ScalingRow>((nm + np) * ns, c.threads, [&](std::size_t task) {
+  out.rows = study_map<ScalingRow>((nm + np) * ns, c.workers, [&](std::size_t task) {
     const std::size_t solver = task / ns, k = task % ns;
     const int n = c.sizes[k];
     return solver < nm ? method_row(c, targets[k], c.methods[solver], n) : peer_row(c, targets[k], c.adaptive[solver - nm], n);

@@ -31,6 +31,7 @@
 #include <string_view>
 #include <vector>
 
+#include "analysis/parallel.hpp"
 #include "analysis/counts.hpp"
 #include "core/simulate.hpp"
 
@@ -50,7 +51,7 @@ struct ScalingConfig {
   double t_end = 2;
   long long max_steps = 2'000'000;   // a search does not try steps that need more
   bool timing = true;
-  unsigned threads = 0;
+  Workers workers;  // threads (0: all cores), progress, shard log
 };
 
 struct ScalingRow {

@@ -1,7 +1,8 @@
 // A study's work split across processes (`--shard i/N`) and put back together (`steplab merge`).
 //
 // A study's independent work goes through study_map: call k of a study maps task i -> T_i, in
-// parallel. The process-wide `work_log` says what a call does:
+// parallel. The study's WorkLog (Workers::log, analysis/parallel.hpp; none: All) says what a
+// call does:
 //   All     every task runs (a study alone, the report);
 //   Shard   only tasks [(i-1) n / N, i n / N) of each call run, and their results are kept in the
 //           log, bytes for bytes (encode below), to be written as the shard's part;
@@ -34,7 +35,6 @@ struct WorkLog {
   std::vector<std::vector<std::optional<std::string>>> calls;
   std::size_t next_call = 0;
 };
-inline WorkLog work_log;
 
 // The parts do not fit the study they claim to be from (a call with another number of tasks, a
 // result missing or of the wrong size).
@@ -127,14 +127,15 @@ template <class T> T decode(const std::string& bytes) {
   return x;
 }
 
-// task(i) for i in [0, n) on `threads` threads (parallel.hpp), as work_log says; out[i] is
+// task(i) for i in [0, n) on the workers' threads (parallel.hpp), as their log says; out[i] is
 // task i's result. `order` (a permutation of [0, n), or empty for 0 .. n-1) is the order in which
 // the tasks start: the dearest first, so that none starts last and runs alone while the other
 // threads idle. It changes no result.
 template <class T, class Task>
-std::vector<T> study_map(std::size_t n, unsigned threads, Task&& task, const std::vector<std::size_t>& order = {}) {
+std::vector<T> study_map(std::size_t n, const Workers& workers, Task&& task, const std::vector<std::size_t>& order = {}) {
   std::vector<T> out(n);
-  WorkLog& log = work_log;
+  WorkLog all;
+  WorkLog& log = workers.log ? *workers.log : all;
   if (log.mode != WorkMode::Replay) {
     const bool shard = log.mode == WorkMode::Shard;
     const std::size_t lo = shard ? shard_begin(n, log.index, log.count) : 0;
@@ -144,7 +145,7 @@ std::vector<T> study_map(std::size_t n, unsigned threads, Task&& task, const std
       if (const std::size_t i = order.empty() ? k : order[k]; lo <= i && i < hi) runs.push_back(i);
     const std::size_t call = shard ? log.next_call++ : 0;
     if (shard) log.calls.emplace_back(n);
-    parallel_for(runs.size(), threads, [&](std::size_t k) {
+    parallel_for(runs.size(), workers, [&](std::size_t k) {
       const std::size_t i = runs[k];
       out[i] = task(i);
       if (shard) log.calls[call][i] = encode(out[i]);

@@ -186,7 +186,7 @@ std::vector<double> default_dampings(const Spring& s) {
 
 std::vector<ThresholdRow> threshold_study(const StabilityConfig& c) {
   const std::size_t nm = c.methods.size(), ng = c.threshold_dampings.size();
-  return study_map<ThresholdRow>(nm * ng, c.threads, [&](std::size_t task) {
+  return study_map<ThresholdRow>(nm * ng, c.workers, [&](std::size_t task) {
     const std::size_t m = c.methods[task / ng];
     const double gamma = c.threshold_dampings[task % ng];
     const Spring s = linear_spring(c.params, gamma);
@@ -202,7 +202,7 @@ std::vector<SweepRow> damping_sweep(const StabilityConfig& c) {
   std::vector<Spring> springs;
   for (double gamma : gammas) springs.push_back(linear_spring(c.params, gamma));
   // a task per (method, dt): its dampings
-  const auto parts = study_map<std::vector<SweepRow>>(nm * nd, c.threads, [&](std::size_t task) {
+  const auto parts = study_map<std::vector<SweepRow>>(nm * nd, c.workers, [&](std::size_t task) {
     const std::size_t m = c.methods[task / nd];
     const double dt = c.sweep_dts[task % nd];
     const std::vector<RateRun> runs = measure_rates(m, springs, std::vector<double>(ng, dt), kRateSteps, true, c.pack_width);
@@ -225,7 +225,7 @@ StabilityMap stability_map(const StabilityConfig& c) {
   for (int j = 0; j < c.map_damping_points; ++j) map.damping.push_back(gmax * j / double(std::max(1, c.map_damping_points - 1)));
   const std::size_t nm = c.methods.size(), ng = map.damping.size(), nd = map.dt.size();
   // one task per (method, damping) row: its predicted dt* and every cell of the row
-  const std::vector<MapRow> rows = study_map<MapRow>(nm * ng, c.threads, [&](std::size_t task) {
+  const std::vector<MapRow> rows = study_map<MapRow>(nm * ng, c.workers, [&](std::size_t task) {
     const std::size_t mi = task / ng, gi = task % ng;
     const Spring s = linear_spring(c.params, map.damping[gi]);
     MapRow row{predicted_stable_set(c.methods[mi], s).dt_star, {}, {}};

@@ -30,6 +30,7 @@
 
 #include <Eigen/Core>
 
+#include "analysis/parallel.hpp"
 #include "core/simulate.hpp"
 
 namespace steplab {
@@ -213,7 +214,7 @@ struct StabilityConfig {
   double map_dt_min = 0.01, map_dt_max = 10;   // log-spaced
   double map_damping_max = 0;                  // 0: twice critical damping
   long long map_steps = kRateSteps;
-  unsigned threads = 0;
+  Workers workers;  // threads (0: all cores), progress, shard log
   int pack_width = 0;  // runs stepped together in SIMD lanes (run_all, analysis/kernel.hpp): 0 the CPU's best, 2, 4, 8, or 1 (one at a time); the same numbers
 };
 

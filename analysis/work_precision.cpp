@@ -133,7 +133,7 @@ std::vector<WorkPoint> scene_points(const Where& w, const WorkPrecisionConfig& c
   // methods' sweeps start first
   std::vector<std::size_t> order = implicit_first(methods);
   for (std::size_t job = nm; job < nm + na * nt; ++job) order.push_back(job);
-  const auto parts = study_map<std::vector<WorkPoint>>(nm + na * nt, c.threads, [&](std::size_t job) {
+  const auto parts = study_map<std::vector<WorkPoint>>(nm + na * nt, c.workers, [&](std::size_t job) {
     if (job < nm) return fixed_points(w, methods[job], dts, t_end);
     const std::size_t task = job - nm;
     return std::vector{adaptive_point(c.adaptive[task / nt], w, c.tolerances[task % nt], t_end)};
@@ -206,7 +206,7 @@ std::vector<StableStep> stable_steps(const WorkPrecisionConfig& c, const std::ve
   for (const std::size_t m : c.methods)
     if (!method_info(m).implicit) out.push_back({std::string(method_info(m).name), 0, -1});
   const Where slow = spring_where(slow_mode_spring(chain));
-  const std::vector<double> accuracy = study_map<double>(out.size(), c.threads, [&](std::size_t task) {
+  const std::vector<double> accuracy = study_map<double>(out.size(), c.workers, [&](std::size_t task) {
     return dt_reaching(fixed_points(slow, *find_method(out[task].method), dts, c.t_end), kLimitErrorLevel);
   });
   for (std::size_t task = 0; task < out.size(); ++task) {
@@ -260,7 +260,7 @@ std::vector<StiffnessRow> stiffness_rows(const WorkPrecisionConfig& c) {
   // tasks: a method's searches on every chain (the implicit methods' first), then dopri5's on each
   std::vector<std::size_t> order = implicit_first(c.methods);
   for (std::size_t task = nm; task < nm + ns; ++task) order.push_back(task);
-  const auto found = study_map<std::vector<WorkPoint>>(nm + ns, c.threads, [&](std::size_t task) {
+  const auto found = study_map<std::vector<WorkPoint>>(nm + ns, c.workers, [&](std::size_t task) {
     if (task < nm) return first_reaching(c, chains, c.methods[task], dts);
     for (const double tol : c.tolerances)
       if (WorkPoint w = dopri5_point(chains[task - nm], tol, c.sweep_t_end); reaches_crossover(c, w)) return std::vector{w};

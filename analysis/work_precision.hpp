@@ -22,6 +22,7 @@
 #include <string_view>
 #include <vector>
 
+#include "analysis/parallel.hpp"
 #include "analysis/counts.hpp"
 #include "core/simulate.hpp"
 
@@ -90,7 +91,7 @@ struct WorkPrecisionConfig {
   double t_end = 10, sweep_t_end = 2;  // the two scenes; the stiffness sweep
   int points = 14;                     // dt sweep points per decade range below
   bool timing = true;
-  unsigned threads = 0;
+  Workers workers;  // threads (0: all cores), progress, shard log
 };
 
 inline constexpr int kMinRepeats = 5;

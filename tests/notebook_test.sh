@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs reports/explore.ipynb headless with Debian's jupyter nbconvert on fresh study data, and
+# Runs reports/data/explore.ipynb headless with Debian's jupyter nbconvert on fresh study data, and
 # checks that every cell ran and that it redrew figure 3.
 # Usage: notebook_test.sh STEPLAB_EXE SOURCE_DIR
 set -euo pipefail
@@ -10,7 +10,7 @@ trap 'rm -rf "$tmp"' EXIT
 "$exe" study stability --map-dt-points 4 --map-damping-points 3 --threshold-dampings 0.1 --json "$tmp/stability.json" >/dev/null
 "$exe" study collision --dts 0.002 --t-end 2 --json "$tmp/collision.json" >/dev/null
 STEPLAB_DATA=$tmp STEPLAB_FIGURES=$tmp jupyter nbconvert --to notebook --execute --ExecutePreprocessor.timeout=120 \
-  --output-dir "$tmp" --output executed "$src/reports/explore.ipynb" 2>"$tmp/log" || { cat "$tmp/log"; exit 1; }
+  --output-dir "$tmp" --output executed "$src/reports/data/explore.ipynb" 2>"$tmp/log" || { cat "$tmp/log"; exit 1; }
 test -s "$tmp/convergence_from_notebook.png" || { echo "the notebook did not redraw figure 3"; exit 1; }
 grep -q '"output_type": "error"' "$tmp/executed.ipynb" && { echo "a cell failed"; exit 1; }
 echo "notebook ran: $(grep -c '"execution_count": [0-9]' "$tmp/executed.ipynb") cells"

@@ -8,20 +8,20 @@
 
 #include "analysis/check.hpp"
 #include "analysis/kernel.hpp"
-#include "reports/check_command.hpp"
+#include "reports/cli/check_command.hpp"
 
 namespace steplab {
 namespace {
 
 std::size_t index_of(std::string_view name) { return *find_method(name); }
 
-CheckResult check_as(std::string_view name, MethodInfo claims) { return check_method(index_of(name), claims, 2); }
+CheckResult check_as(std::string_view name, MethodInfo claims) { return check_method(index_of(name), claims, Workers{2}); }
 
 class EveryRow : public ::testing::TestWithParam<std::size_t> {};
 
 TEST_P(EveryRow, HoldsEveryClaim) {
   const std::size_t m = GetParam();
-  const CheckResult r = check_method(m, method_info(m), 2);
+  const CheckResult r = check_method(m, method_info(m), Workers{2});
   EXPECT_TRUE(r.all_hold()) << check_text(r);
   ASSERT_EQ(r.orders.size(), 2u);
   if (method_info(m).order > 0) {  // the spring's order is fitted, within 0.01 for every row
@@ -122,7 +122,7 @@ TEST(Check, AStabilityDeclaredWronglyFailsBothWays) {
 // The same result whatever the number of threads.
 TEST(Check, ThreadCountDoesNotChangeTheText) {
   const std::size_t m = index_of("bdf3");
-  EXPECT_EQ(check_text(check_method(m, method_info(m), 1)), check_text(check_method(m, method_info(m), 2)));
+  EXPECT_EQ(check_text(check_method(m, method_info(m), Workers{1})), check_text(check_method(m, method_info(m), Workers{2})));
 }
 
 }  // namespace

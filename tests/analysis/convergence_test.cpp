@@ -6,7 +6,7 @@
 #include "analysis/convergence.hpp"
 #include "analysis/kernel.hpp"
 #include "core/scenes/spring.hpp"
-#include "reports/study_output.hpp"
+#include "reports/data/study_output.hpp"
 
 namespace steplab {
 namespace {
@@ -129,11 +129,11 @@ TEST(Convergence, DivergedRunsAreKeptAndMarked) {
 
 TEST(Convergence, JsonIsTheSameForOneAndTwoThreads) {
   ConvergenceConfig c = defaults("spring");
-  c.threads = 1;
+  c.workers.threads = 1;
   const std::string one = convergence_json(convergence_study(c)).dump();
-  c.threads = 2;
+  c.workers.threads = 2;
   const std::string two = convergence_json(convergence_study(c)).dump();
-  c.threads = 5;
+  c.workers.threads = 5;
   const std::string five = convergence_json(convergence_study(c)).dump();
   EXPECT_EQ(one, two);
   EXPECT_EQ(one, five);

@@ -164,12 +164,12 @@ TEST(Packs, StudiesGiveTheSameNumbersAtEveryWidth) {
                *find_method("implicit_euler")};
   s.map_dt_points = 24, s.map_damping_points = 6, s.map_steps = 2000;
   s.sweep_dampings = {0.0, 0.1, 4.0};
-  s.threads = 1;
+  s.workers.threads = 1;
   ConvergenceConfig c;
   c.scene = spring();
   c.params = default_param_values(spring());
   c.methods = s.methods;
-  c.threads = 1;
+  c.workers.threads = 1;
   s.pack_width = c.pack_width = 1;
   const StabilityMap map1 = stability_map(s);
   const std::vector<SweepRow> sweep1 = damping_sweep(s);

@@ -10,8 +10,8 @@
 #include "analysis/sized_peers.hpp"
 #include "bench/cvode_rope.h"
 #include "core/scenes/chain.hpp"
-#include "reports/commands.hpp"
-#include "reports/inputs.hpp"
+#include "reports/cli/commands.hpp"
+#include "reports/data/inputs.hpp"
 
 namespace steplab {
 namespace {

@@ -21,7 +21,7 @@ ScalingConfig small_config() {
   for (const char* m : {"rk4", "implicit_midpoint", "radau_iia5", "symplectic_euler"}) c.methods.push_back(*find_method(m));
   c.adaptive = scaling_adaptive_solvers("rope");  // dopri5, odeint_dopri5 and CVODE's three
   c.timing = false;
-  c.threads = 2;
+  c.workers.threads = 2;
   return c;
 }
 
@@ -99,7 +99,7 @@ TEST(Scaling, SameRowsForOneAndTwoThreads) {
   ScalingConfig c = small_config();
   c.sizes = {4, 16};
   const ScalingResult two = scaling_study(c);
-  c.threads = 1;
+  c.workers.threads = 1;
   const ScalingResult one = scaling_study(c);
   ASSERT_EQ(one.rows.size(), two.rows.size());
   for (std::size_t i = 0; i < one.rows.size(); ++i) {

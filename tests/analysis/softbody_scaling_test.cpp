@@ -95,7 +95,7 @@ TEST(SoftBodyScaling, RowsReachTheTarget) {
   for (const char* m : {"rk4", "implicit_midpoint"}) c.methods.push_back(*find_method(m));
   c.adaptive = scaling_adaptive_solvers("softbody");  // dopri5, odeint_dopri5 and CVODE's three
   c.timing = false;
-  c.threads = 2;
+  c.workers.threads = 2;
   const ScalingResult r = scaling_study(c);
   ASSERT_EQ(c.adaptive.size(), 5u);
   ASSERT_EQ(r.rows.size(), (c.methods.size() + c.adaptive.size()) * c.sizes.size());

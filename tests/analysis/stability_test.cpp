@@ -9,7 +9,7 @@
 #include "analysis/stability.hpp"
 #include "analysis/kernel.hpp"
 #include "core/scenes/spring.hpp"
-#include "reports/study_output.hpp"
+#include "reports/data/study_output.hpp"
 
 namespace steplab {
 namespace {
@@ -260,7 +260,7 @@ TEST(StabilityJson, SameForOneAndTwoThreads) {
   c.threshold_dampings = {0.1};
   c.sweep_dampings = {0.0, 0.1, 2.0};
   const auto doc = [&](unsigned threads) {
-    c.threads = threads;
+    c.workers.threads = threads;
     const StabilityMap map = stability_map(c);
     return stability_json(c.params, threshold_study(c), damping_sweep(c), &map).dump();
   };

@@ -9,7 +9,7 @@
 #include "analysis/work_precision.hpp"
 #include "analysis/kernel.hpp"
 #include "core/scenes/chain.hpp"
-#include "reports/study_output.hpp"
+#include "reports/data/study_output.hpp"
 
 namespace steplab {
 namespace {
@@ -20,7 +20,7 @@ const WorkPrecisionResult& study() {
     for (std::size_t m = 0; m < method_count(); ++m)
       if (!method_info(m).exact_flow) c.methods.push_back(m);
     c.timing = false;
-    c.threads = 2;
+    c.workers.threads = 2;
     return work_precision_study(c);
   }();
   return r;
@@ -170,9 +170,9 @@ TEST(WorkPrecision, JsonIsTheSameForOneAndTwoThreads) {
   c.methods = {*find_method("rk4"), *find_method("bdf2")};
   c.timing = false;
   c.stiffnesses = {5, 5e4};
-  c.threads = 1;
+  c.workers.threads = 1;
   const std::string one = work_precision_json(work_precision_study(c)).dump();
-  c.threads = 2;
+  c.workers.threads = 2;
   EXPECT_EQ(one, work_precision_json(work_precision_study(c)).dump());
 }
 

@@ -98,7 +98,7 @@ ConvergenceConfig convergence_on_chain(std::initializer_list<std::string_view> m
   c.scene = *find_scene("chain");
   c.params = default_param_values<Chain>();
   for (const std::string_view m : methods) c.methods.push_back(*find_method(m));
-  c.threads = 2;
+  c.workers.threads = 2;
   return c;
 }
 

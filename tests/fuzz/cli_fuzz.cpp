@@ -13,13 +13,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "reports/cli.hpp"
-#include "reports/commands.hpp"
-#include "reports/inputs.hpp"
-#include "reports/report_config.hpp"
+#include "reports/cli/cli.hpp"
+#include "reports/data/inputs.hpp"
+#include "reports/document/report_config.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  steplab::dry_run = true;
   const std::string text(reinterpret_cast<const char*>(data), size);
   if (!text.empty() && (text[0] == '{' || text[0] == '[')) {
     nlohmann::ordered_json j;
@@ -48,7 +46,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (args.size() > 64) return 0;
   std::vector<const char*> argv;
   for (const auto& a : args) argv.push_back(a.c_str());
-  const int status = steplab::cli_main(static_cast<int>(argv.size()), argv.data());
+  const int status = steplab::cli_main(static_cast<int>(argv.size()), argv.data(), /*dry_run=*/true);
   if (status != 0 && status != 2) std::abort();  // bad input is exit 2, never anything else
   return 0;
 }

@@ -1,4 +1,4 @@
-// Tests of the steplab command line (reports/cli.cpp, reports/run_command.cpp): runs the built
+// Tests of the steplab command line (reports/cli/cli.cpp, reports/cli/run_command.cpp): runs the built
 // binary and checks exit status, stderr and the files it writes or must not write.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The methods' figure styles (reports/figure_styles.cpp): each method its own, members of a family
+// The methods' figure styles (reports/document/figure_styles.cpp): each method its own, members of a family
 // panel told apart without colour (grey-scale print, colour-blind readers), and the gnuplot side
 // (styles.gp) run through gnuplot itself.
 #include <gtest/gtest.h>
@@ -11,8 +11,8 @@
 
 #include "cli_helpers.hpp"
 #include "analysis/kernel.hpp"
-#include "reports/figure_styles.hpp"
-#include "reports/report_text.hpp"
+#include "reports/document/figure_styles.hpp"
+#include "reports/document/report_text.hpp"
 
 namespace steplab {
 namespace {

@@ -1,4 +1,4 @@
-// Tests of the report's findings (reports/report_studies.cpp, reports/report.cpp): the sentences
+// Tests of the report's findings (reports/document/report_studies.cpp, reports/document/report.cpp): the sentences
 // follow the data, also when the parameters change. Each check recomputes what the sentence
 // claims from the study data themselves, not from the Findings that produced the sentence.
 #include <gtest/gtest.h>
@@ -12,8 +12,8 @@
 
 #include "analysis/kernel.hpp"
 #include "analysis/scaling.hpp"
-#include "reports/inputs.hpp"
-#include "reports/report.hpp"
+#include "reports/data/inputs.hpp"
+#include "reports/document/report.hpp"
 
 namespace steplab {
 namespace {

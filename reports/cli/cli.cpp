@@ -1,0 +1,275 @@
+#include "reports/cli/cli.hpp"
+
+#include <array>
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "reports/cli/commands.hpp"
+#include "analysis/kernel.hpp"
+#include "reports/data/inputs.hpp"
+#include "reports/cli/parts.hpp"
+#include "reports/data/study_output.hpp"
+#include "analysis/parallel.hpp"
+#include "analysis/local_error.hpp"
+
+namespace steplab {
+namespace {
+
+// The old command-line framework (the exercise slides): single-dash flags, its own defaults.
+//   steplab -testcase spring1d -method euler -step 0.01 -damp 0.1 -mass 1 -stiff 10 [-length 1]
+constexpr std::array<std::string_view, 7> legacy_flags{"-testcase", "-method", "-step", "-damp",
+                                                       "-mass",     "-stiff",  "-length"};
+// Its defaults: step 0.003, mass 0.1, stiffness 10, damping 0.01, rest length 1.
+struct LegacyArgs {
+  std::string testcase = "spring1d";
+  std::string method = "euler";
+  std::string step = "0.003";
+  std::string damp, mass, stiff, length;
+};
+
+void add_legacy_options(CLI::App& app, LegacyArgs& l) {
+  const char* group = "The old framework's flags (single or double dash; its defaults apply)";
+  app.add_option("--testcase", l.testcase, "spring1d, falling, error_measurement, stability_measurement")
+      ->capture_default_str()->group(group);
+  app.add_option("--method", l.method, "integrator (old or new name)")->capture_default_str()->group(group);
+  app.add_option("--step", l.step, "time step")->capture_default_str()->group(group);
+  app.add_option("--damp", l.damp, "damping (default 0.01)")->group(group);
+  app.add_option("--mass", l.mass, "mass (default 0.1)")->group(group);
+  app.add_option("--stiff", l.stiff, "stiffness (default 10)")->group(group);
+  app.add_option("--length", l.length, "rest length (default 1)")->group(group);
+}
+
+int legacy_command(const LegacyArgs& l, Context& ctx) {
+  if (l.testcase != "spring1d" && l.testcase != "falling" && l.testcase != "error_measurement" &&
+      l.testcase != "stability_measurement")
+    throw UsageError(fmt::format("-testcase '{}' is unknown; accepted: spring1d, falling, error_measurement, "
+                                 "stability_measurement", l.testcase));
+  // Checked here first so that a message names the flag as typed.
+  parse_number("-step", l.step, Bound::Positive);
+  for (const auto& [flag, value] : {std::pair{"-mass", &l.mass}, {"-stiff", &l.stiff}, {"-damp", &l.damp}, {"-length", &l.length}})
+    if (!value->empty()) parse_number(flag, *value, std::string_view(flag) == "-mass" ? Bound::Positive : Bound::NonNegative);
+  RunArgs run;
+  run.scene.scene = l.testcase == "falling" ? "falling" : "spring";
+  run.scene.fallback = {{"mass", 0.1}, {"stiffness", 10.0}, {"damping", 0.01}, {"rest-length", 1.0}};
+  if (l.testcase == "falling") run.scene.fallback.erase("rest-length");
+  if (!l.mass.empty()) run.scene.set("mass", l.mass);
+  if (!l.stiff.empty()) run.scene.set("stiffness", l.stiff);
+  if (!l.damp.empty()) run.scene.set("damping", l.damp);
+  if (!l.length.empty()) run.scene.set("rest-length", l.length);
+  if (l.testcase == "error_measurement") {
+    LocalErrorConfig c;
+    c.params = run.scene.values(run.scene.scene_index());
+    c.step = parse_number("-step", l.step, Bound::Positive);
+    c.methods = resolve_methods("", false);
+    if (ctx.dry_run) return 0;
+    std::fputs(local_error_tables(local_error_study(c)).c_str(), stdout);
+    return 0;
+  }
+  if (l.testcase == "stability_measurement")
+    return amplitude_command(run.scene.values(run.scene.scene_index()), parse_number("-step", l.step, Bound::Positive), ctx);
+  run.method = l.method;
+  run.dt = l.step;
+  return run_command(run, ctx);
+}
+
+// What each option takes, shown in --help instead of CLI11's TEXT (every value is read as text and
+// checked by reports/data/inputs.cpp, so that a bad one gets steplab's own message).
+std::string_view value_kind(std::string_view option) {
+  static constexpr std::pair<std::string_view, std::string_view> kinds[] = {
+      {"--samples", "WHOLE"},         {"--points", "WHOLE"},          {"--threads", "WHOLE"},
+      {"--lanes", "auto|WHOLE"},      {"--shard", "i/N"},
+      {"--map-dt-points", "WHOLE"},   {"--map-damping-points", "WHOLE"},
+      {"--methods", "NAME,..."},      {"--dts", "NUMBER,..."},        {"--threshold-dampings", "NUMBER,..."},
+      {"--dampings", "NUMBER,..."},   {"--method", "NAME"},           {"--scene", "NAME"},
+      {"--error", "NAME"},            {"--testcase", "NAME"},         {"--json", "FILE"},
+      {"--config", "FILE"},           {"--out", "FOLDER"}};
+  for (const auto& [name, kind] : kinds)
+    if (name == option) return kind;
+  return "NUMBER";  // steps, times, ranges and every scene parameter
+}
+
+void name_value_kinds(CLI::App& app) {
+  for (CLI::Option* o : app.get_options())
+    if (o->get_expected_max() != 0 && !o->get_lnames().empty() && o != app.get_help_ptr())  // not flags, not --help
+      o->type_name(std::string(value_kind("--" + o->get_lnames()[0])));
+  for (CLI::App* sub : app.get_subcommands({})) name_value_kinds(*sub);
+}
+
+// Progress of a study on stderr, only when stderr is a terminal and the study has run for a
+// second: "steplab: 1234/4096 runs".
+void terminal_progress(std::size_t done, std::size_t total, double seconds) {
+  if (seconds < 1) return;
+  std::fprintf(stderr, "\r\033[Ksteplab: %zu/%zu runs", done, total);
+  if (done == total) std::fputs("\r\033[K", stderr);
+}
+
+}  // namespace
+
+int cli_main(int argc, const char* const* argv, bool dry_run) {
+  Context ctx;
+  ctx.dry_run = dry_run;
+  if (isatty(STDERR_FILENO)) ctx.progress = terminal_progress;
+  // The old single-dash flags become GNU long options; everything else is left as typed.
+  std::vector<std::string> args;
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    for (auto flag : legacy_flags)
+      if (a == flag) a = "-" + a;
+    args.push_back(std::move(a));
+  }
+  return dispatch(args, ctx);
+}
+
+int dispatch(const std::vector<std::string>& args, Context& ctx) {
+  bool legacy = false;
+  for (const std::string& a : args)
+    for (auto flag : legacy_flags)
+      if (a == "-" + std::string(flag)) legacy = true;
+
+  CLI::App app{"steplab: measures how time integrators behave (convergence order, stability, cost)"};
+  app.name("steplab");
+  app.set_version_flag("--version", "steplab " STEPLAB_VERSION);
+  app.failure_message([](const CLI::App*, const CLI::Error& e) { return std::string(e.what()) + "\n"; });
+
+  LegacyArgs legacy_args;
+  add_legacy_options(app, legacy_args);
+
+  RunArgs run;
+  CLI::App* run_cmd = app.add_subcommand("run", "one method on one scene: CSV (t, x..., v..., energy) on stdout, or --json");
+  run.scene.add_to(run_cmd);
+  run_cmd->add_option("--method", run.method, "integrator: " + method_names() + ", or the adaptive dopri5")
+      ->capture_default_str();
+  run_cmd->add_option("--dt", run.dt, "time step h (> 0; default 0.01); fixed-step methods only");
+  run_cmd->add_option("--rtol", run.rtol, "dopri5: relative tolerance, 1e-13 .. 1 (default 1e-3, as SciPy's RK45)");
+  run_cmd->add_option("--atol", run.atol, "dopri5: absolute tolerance, > 0 (default 1e-6)");
+  run_cmd->add_option("--t-end", run.t_end, "simulated time; t_end / dt steps, rounded up")->capture_default_str();
+  run_cmd->add_option("--samples", run.samples, "at most this many rows, evenly decimated, last step kept")
+      ->capture_default_str();
+  run_cmd->add_option("--json", run.json, "write JSON (schema steplab.run/1) to this file instead of CSV");
+
+  CLI::App* study = app.add_subcommand("study", "a study over many runs; prints a table, --json writes its data");
+  study->require_subcommand(1);
+  ConvergenceArgs conv;
+  CLI::App* conv_cmd = study->add_subcommand("convergence", "errors against the exact solution over a dt sweep, fitted orders");
+  conv.scene.add_to(conv_cmd);
+  conv_cmd->add_option("--methods", conv.methods, "comma-separated methods (default: every numerical method)");
+  conv_cmd->add_option("--dt-max", conv.dt_max, "largest step")->capture_default_str();
+  conv_cmd->add_option("--dt-min", conv.dt_min, "smallest step")->capture_default_str();
+  conv_cmd->add_option("--points", conv.points, "steps in the geometric sweep (>= 3)")->capture_default_str();
+  conv_cmd->add_option("--t-end", conv.t_end,
+                       "simulated time of every run (default 10; 1 against a reference solution, as on falling)");
+  conv_cmd->add_flag("--reference", conv.reference,
+                     "errors against a reference solution (dopri5 at rtol 1e-13) even where an exact one exists; "
+                     "a scene without one always uses it");
+  conv_cmd->add_option("--error", conv.error, "error the order is fitted to: final, max, rms")->capture_default_str();
+  conv_cmd->add_option("--threads", conv.threads, "worker threads, 0 = all cores")->capture_default_str();
+  add_lanes_option(conv_cmd, conv.lanes);
+  add_shard_option(conv_cmd, conv.shard);
+  conv_cmd->add_flag("--timing", conv.timing, "also time every run (work-precision; not reproducible byte for byte)");
+  conv_cmd->add_option("--json", conv.json, "write JSON (schema steplab.convergence/2) to this file");
+
+  StabilityArgs damp, stab;
+  CLI::App* damp_cmd = study->add_subcommand("damping", "spring: energy growth rate measured and predicted over damping and dt");
+  add_stability_options(damp_cmd, damp, true, false);
+  CLI::App* stab_cmd = study->add_subcommand("stability", "stability thresholds dt* predicted and measured: the spring (and a (dt, damping) map) or the rope of N masses");
+  add_stability_options(stab_cmd, stab, false, true);
+
+  WorkPrecisionArgs wp;
+  CLI::App* wp_cmd = study->add_subcommand("work-precision", "cost against error on the spring and the stiff chain; "
+                                                             "cheapest method per error level; stiffness crossover");
+  wp_cmd->add_option("--methods", wp.methods, "comma-separated methods and adaptive solvers (dopri5, odeint_dopri5, cvode_adams_dense, "
+                                                "cvode_bdf_dense, cvode_bdf_max2_dense; default: every numerical method, and every adaptive solver where the list names none)");
+  wp_cmd->add_option("--points", wp.points, "fixed-step methods: steps in each scene's dt sweep, 3 .. 100")->capture_default_str();
+  wp_cmd->add_option("--stiffnesses", wp.stiffnesses, "comma-separated k2 of the stiffness sweep (the chain's k1 is 5)")
+      ->capture_default_str();
+  wp_cmd->add_option("--threads", wp.threads, "worker threads for the error runs (timings run one at a time)")
+      ->capture_default_str();
+  add_lanes_option(wp_cmd, wp.lanes);
+  add_shard_option(wp_cmd, wp.shard);
+  wp_cmd->add_flag("--no-timing", wp.no_timing, "cost by force and Jacobian evaluations only (reproducible byte for byte)");
+  wp_cmd->add_option("--json", wp.json, "write JSON (schema steplab.work_precision/1) to this file");
+  CollisionArgs coll;
+  CLI::App* coll_cmd = study->add_subcommand("collision", "the bounce and the falling triangle on the penalty ground");
+  coll.scene.add_to(coll_cmd, false);
+  coll_cmd->add_option("--methods", coll.methods, "comma-separated methods (default: every numerical method)");
+  coll_cmd->add_option("--dts", coll.dts, "steps for the bounce")->capture_default_str();
+  coll_cmd->add_option("--t-end", coll.t_end, "simulated time")->capture_default_str();
+  coll_cmd->add_option("--triangle-dt", coll.triangle_dt, "step for the falling triangle")->capture_default_str();
+  coll_cmd->add_option("--threads", coll.threads, "worker threads, 0 = all cores")->capture_default_str();
+  add_shard_option(coll_cmd, coll.shard);
+  coll_cmd->add_option("--json", coll.json, "write JSON (schema steplab.collision/1) to this file");
+
+  ScalingArgs scaling;
+  CLI::App* scaling_cmd = add_scaling_command(study, scaling);
+
+  ReportArgs rep;
+  CLI::App* rep_cmd = app.add_subcommand("report", "run every study and write report.md, report.pdf, figures/ and data/ into one folder");
+  rep_cmd->add_option("--out", rep.out, "output folder")->capture_default_str();
+  rep_cmd->add_option("--config", rep.config, "JSON file overriding any study parameter (see --print-config)");
+  rep_cmd->add_flag("--force", rep.force, "redo the report even if it is up to date");
+  rep_cmd->add_flag("--print-config", rep.print_config, "print the configuration (defaults, or --config applied) and exit");
+
+  CheckArgs check;
+  CLI::App* check_cmd = app.add_subcommand("check", "is a method what its row in the table claims? One line per claim, "
+                                                    "PASS or FAIL; exit 0 if all hold, 1 if one fails");
+  check_cmd->add_option("--method", check.method, "integrator: " + method_names());
+  check_cmd->add_option("--threads", check.threads, "worker threads, 0 = all cores")->capture_default_str();
+
+  MergeArgs merge;
+  add_merge_command(app, merge);
+
+  name_value_kinds(app);
+  ctx.invocation = args;
+
+  std::vector<const char*> cargv{"steplab"};
+  for (const auto& a : args) cargv.push_back(a.c_str());
+  try {
+    app.parse(static_cast<int>(cargv.size()), cargv.data());
+    if (run_cmd->parsed()) return run_command(run, ctx);
+    if (conv_cmd->parsed()) return convergence_command(conv, ctx);
+    if (damp_cmd->parsed()) return damping_command(damp, ctx);
+    if (stab_cmd->parsed()) return stability_command(stab, ctx);
+    if (coll_cmd->parsed()) return collision_command(coll, ctx);
+    if (wp_cmd->parsed()) return work_precision_command(wp, ctx);
+    if (scaling_cmd->parsed()) return scaling_command(scaling, ctx);
+    if (rep_cmd->parsed()) return report_command(rep, ctx);
+    if (check_cmd->parsed()) return check_command(check, ctx);
+    if (app.got_subcommand("merge")) return merge_command(merge, ctx);
+    if (legacy) return legacy_command(legacy_args, ctx);
+    throw UsageError("no command given; accepted: run, study, report, check, or the old flags -testcase ... (see steplab --help)");
+  } catch (const CLI::CallForHelp&) {
+    std::fputs(app.help().c_str(), stdout);
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) {
+      app.exit(e);
+      return 0;
+    }
+    fmt::print(stderr, "steplab: {}; see steplab --help\n", e.what());
+    return 2;
+  } catch (const UsageError& e) {
+    fmt::print(stderr, "steplab: {}\n", e.what());
+    return 2;
+  }
+}
+
+int program_main(int argc, char** argv) {
+  try {
+    return cli_main(argc, argv);
+  } catch (const Interrupted&) {
+    std::fputs("steplab: interrupted; nothing was written or replaced\n", stderr);
+    return 130;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "steplab: %s\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace steplab

@@ -1,0 +1,3 @@
+#include "reports/cli/cli.hpp"
+
+int main(int argc, char** argv) { return steplab::program_main(argc, argv); }

@@ -1,0 +1,130 @@
+// `steplab run`: one method on one scene; CSV (t, x..., v..., energy) on stdout or JSON to a file.
+#include <cstdio>
+
+#include <fmt/format.h>
+
+#include "core/dopri5.hpp"
+#include "analysis/kernel.hpp"
+#include "reports/cli/commands.hpp"
+#include "reports/data/inputs.hpp"
+#include "reports/data/output.hpp"
+#include "reports/data/run_json.hpp"
+
+namespace steplab {
+namespace {
+
+// The state's D coordinates: x (D = 1) or x0, x1, ...
+std::string csv(const AnyResult& r) {
+  const auto D = r.final.x.size();
+  std::string out = "t";
+  for (Eigen::Index i = 0; i < D; ++i) out += D == 1 ? ",x" : fmt::format(",x{}", i);
+  for (Eigen::Index i = 0; i < D; ++i) out += D == 1 ? ",v" : fmt::format(",v{}", i);
+  out += ",energy\n";
+  for (const auto& s : r.samples) {
+    out += fmt::format("{}", s.t);
+    for (Eigen::Index i = 0; i < D; ++i) out += fmt::format(",{}", s.x[i]);
+    for (Eigen::Index i = 0; i < D; ++i) out += fmt::format(",{}", s.v[i]);
+    out += fmt::format(",{}\n", s.energy);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::size_t resolve_method(std::string_view name) {
+  const auto m = find_method(name);
+  if (!m) throw UsageError(fmt::format("--method '{}' is unknown; accepted: {}", name, method_names()));
+  return *m;
+}
+
+bool Context::stop_after_validation(const std::string& output_path) const {
+  if (dry_run) return true;
+  if (!output_path.empty()) check_writable(output_path);
+  return false;
+}
+
+namespace {
+
+// --rtol and --atol (empty: the defaults), checked.
+Tolerance read_tolerance(const std::string& rtol, const std::string& atol) {
+  Tolerance t;
+  if (!rtol.empty()) t.rtol = parse_number("--rtol", rtol, Bound::Positive);
+  if (t.rtol < 1e-13 || t.rtol > 1)
+    throw UsageError(fmt::format("--rtol {} is out of range; accepted: 1e-13 .. 1 (below, round-off decides the steps)", rtol));
+  if (!atol.empty()) t.atol = parse_number("--atol", atol, Bound::Positive);
+  return t;
+}
+
+// dopri5's counts: "adaptive": {accepted_steps, rejected_steps, force_evaluations, h_min, h_max}.
+Json adaptive_json(const AdaptiveStats& s) {
+  return {{"accepted_steps", s.accepted},
+          {"rejected_steps", s.rejected},
+          {"force_evaluations", s.force_evaluations},
+          {"h_min", s.accepted > 0 ? Json(s.h_min) : Json(nullptr)},
+          {"h_max", s.accepted > 0 ? Json(s.h_max) : Json(nullptr)}};
+}
+
+// The adaptive Dormand-Prince: a tolerance instead of a step; its steps in the JSON.
+int run_dopri5(RunArgs& a, const Context& ctx) {
+  const std::size_t scene = a.scene.scene_index();
+  if (!a.dt.empty()) throw UsageError("--dt does not apply to dopri5, which chooses its own steps; give --rtol and --atol");
+  const std::vector<double> params = a.scene.values(scene);
+  AdaptiveSpec spec;
+  spec.tol = read_tolerance(a.rtol, a.atol);
+  spec.t_end = parse_number("--t-end", a.t_end, Bound::NonNegative);
+  spec.max_samples = parse_count("--samples", a.samples, 2, 100'000'000);
+  if (ctx.stop_after_validation(a.json)) return 0;
+  const SceneKernel& s = scene_kernel(scene);
+  const AnyAdaptiveResult r = s.dopri5(params, spec);
+  if (a.json.empty()) {
+    std::fputs(csv(r.run).c_str(), stdout);
+  } else {
+    Json p = params_json(s.params, params);
+    p["rtol"] = spec.tol.rtol;
+    p["atol"] = spec.tol.atol;
+    p["t_end"] = spec.t_end;
+    Json j = run_json(s.name, "dopri5", std::move(p), r.run);
+    j["adaptive"] = adaptive_json(r.stats);
+    write_atomic(a.json, j.dump(1) + "\n");
+  }
+  if (r.run.status != RunStatus::Ok)
+    fmt::print(stderr, "steplab: dopri5 {} at t = {}: the step size fell below round-off\n", to_string(r.run.status),
+               r.run.failed_t);
+  return 0;
+}
+
+}  // namespace
+
+int run_command(RunArgs& a, Context& ctx) {
+  if (a.method == "dopri5") return run_dopri5(a, ctx);
+  if (!a.rtol.empty() || !a.atol.empty())
+    throw UsageError(fmt::format("--rtol and --atol apply to the adaptive dopri5 only; --method {} takes --dt", a.method));
+  const std::size_t scene = a.scene.scene_index();
+  const std::size_t method = resolve_method(a.method);
+  const std::vector<double> params = a.scene.values(scene);
+  RunSpec spec;
+  spec.dt = a.dt.empty() ? 0.01 : parse_number("--dt", a.dt, Bound::Positive);
+  const double t_end = parse_number("--t-end", a.t_end, Bound::NonNegative);
+  spec.steps = step_count(t_end, spec.dt);
+  spec.max_samples = parse_count("--samples", a.samples, 2, 100'000'000);
+  if (ctx.stop_after_validation(a.json)) return 0;
+
+  const SceneKernel& s = scene_kernel(scene);
+  const std::string_view name = method_info(method).name;
+  if (!applies(method, scene))
+    throw UsageError(fmt::format("--method {} needs a scene with an exact solution; scene {} has none", name, s.name));
+  const AnyResult r = pair_kernel(method, scene).run(params, spec);
+  if (a.json.empty()) {
+    std::fputs(csv(r).c_str(), stdout);
+  } else {
+    Json p = params_json(s.params, params);
+    p["dt"] = spec.dt;
+    p["t_end"] = t_end;
+    write_atomic(a.json, run_json(s.name, name, std::move(p), r).dump(1) + "\n");
+  }
+  if (r.status != RunStatus::Ok)
+    fmt::print(stderr, "steplab: {} {} at step {} (t = {})\n", name, to_string(r.status), r.failed_step, r.failed_t);
+  return 0;
+}
+
+}  // namespace steplab

@@ -1,0 +1,72 @@
+#include "reports/cli/scene_args.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "analysis/kernel.hpp"
+#include "reports/data/inputs.hpp"
+
+namespace steplab {
+
+std::vector<std::string> all_scene_parameters() {
+  std::vector<std::string> out;
+  for (std::size_t s = 0; s < scene_count(); ++s)
+    for (const ParamSpec& p : scene_kernel(s).params)
+      if (std::find(out.begin(), out.end(), p.name) == out.end()) out.emplace_back(p.name);
+  return out;
+}
+
+std::string scene_parameters_help() {
+  std::string out = "Scene parameters (each a NUMBER), by scene:\n";
+  for (std::size_t s = 0; s < scene_count(); ++s) {
+    out += fmt::format("  {}:\n", scene_name(s));
+    for (const ParamSpec& p : scene_kernel(s).params)
+      out += fmt::format("    {:<28}{} (default {})\n", fmt::format("--{} NUMBER", p.name), p.help, p.fallback);
+  }
+  return out;
+}
+
+void SceneArgs::add_to(CLI::App* a, bool with_scene_option) {
+  app = a;
+  if (with_scene_option)
+    a->add_option("--scene", scene, "scene: " + scene_list() + " (spring1d is the old name of spring)")->capture_default_str();
+  // Listed once, by scene, in the footer; an empty group keeps them out of the merged option list.
+  for (const std::string& name : all_scene_parameters()) a->add_option("--" + name, text[name])->group("");
+  a->footer(scene_parameters_help());
+}
+
+bool SceneArgs::given(std::string_view name) const {
+  const auto it = text.find(name);
+  if (it != text.end() && !it->second.empty()) return true;
+  return app && app->count("--" + std::string(name)) > 0;  // given, but empty
+}
+
+std::size_t SceneArgs::scene_index() const {
+  const auto index = find_scene(scene);
+  if (!index) throw UsageError(fmt::format("--scene '{}' is unknown; accepted: {}", scene, scene_list()));
+  return *index;
+}
+
+std::vector<double> SceneArgs::values(std::size_t index) const {
+  const SceneKernel& s = scene_kernel(index);
+  for (const auto& [name, value] : text) {
+    if (!given(name)) continue;
+    if (!has_param(index, name)) {
+      std::string list;
+      for (const ParamSpec& p : s.params) list += (list.empty() ? "--" : ", --") + std::string(p.name);
+      throw UsageError(fmt::format("--{} does not apply to scene {}; accepted: {}", name, s.name, list));
+    }
+  }
+  std::vector<double> v;
+  for (const ParamSpec& p : s.params) {
+    const std::string option = "--" + std::string(p.name);
+    if (given(p.name) && p.whole) v.push_back(static_cast<double>(parse_count(option, text.at(std::string(p.name)), 1, static_cast<long long>(p.most))));
+    else if (given(p.name)) v.push_back(parse_number(option, text.at(std::string(p.name)), p.bound));
+    else if (auto f = fallback.find(p.name); f != fallback.end()) v.push_back(f->second);
+    else v.push_back(p.fallback);
+  }
+  return v;
+}
+
+}  // namespace steplab

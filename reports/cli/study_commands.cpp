@@ -1,0 +1,303 @@
+// `steplab study ...`: reads and checks the arguments, runs the study, prints its table and
+// writes its JSON.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "analysis/convergence.hpp"
+#include "analysis/kernel.hpp"
+#include "analysis/peers.hpp"
+#include "reports/cli/commands.hpp"
+#include "reports/data/inputs.hpp"
+#include "reports/data/output.hpp"
+#include "reports/cli/parts.hpp"
+#include "reports/data/study_output.hpp"
+
+namespace steplab {
+
+std::vector<std::size_t> resolve_methods(const std::string& list, bool with_analytic) {
+  std::vector<std::size_t> out;
+  if (list.empty()) {
+    for (std::size_t i = 0; i < method_count(); ++i)
+      if (with_analytic || !method_info(i).exact_flow) out.push_back(i);
+    return out;
+  }
+  for (const std::string& name : split_list(list)) {
+    const std::size_t m = resolve_method(name);
+    if (std::find(out.begin(), out.end(), m) != out.end())
+      throw UsageError(fmt::format("--methods names '{}' twice; accepted: each method once", name));
+    out.push_back(m);
+  }
+  return out;
+}
+
+Solvers resolve_solvers(const std::string& list, const std::vector<std::string>& available, std::string_view scene, bool no_peers,
+                        std::span<const PeerInfo> table) {
+  Solvers out{{}, no_peers ? std::vector<std::string>{} : available};
+  if (list.empty()) return {resolve_methods(list, false), out.adaptive};
+  const auto accepted = [&] { return fmt::format("{}; and here {}", method_names(), fmt::join(available, ", ")); };
+  std::vector<std::string> named;
+  for (const std::string& name : split_list(list)) {
+    const auto it = std::find_if(table.begin(), table.end(), [&](const PeerInfo& p) { return p.name == name; });
+    const PeerInfo* peer = it == table.end() ? nullptr : &*it;
+    if (!peer) {
+      if (!find_method(name)) throw UsageError(fmt::format("--methods '{}' is unknown; accepted: {}", name, accepted()));
+      const std::size_t m = *find_method(name);
+      if (std::find(out.methods.begin(), out.methods.end(), m) != out.methods.end())
+        throw UsageError(fmt::format("--methods names '{}' twice; accepted: each method once", name));
+      out.methods.push_back(m);
+      continue;
+    }
+    if (!peer->built)
+      throw UsageError(fmt::format("--methods '{}' is not built into this steplab (its {} solver is missing from SUNDIALS); "
+                                   "accepted here: {}", name, peer->linear_solver, fmt::join(available, ", ")));
+    if (std::find(available.begin(), available.end(), name) == available.end())
+      throw UsageError(fmt::format("--methods '{}' does not run on the {}; accepted adaptive solvers there: {}", name, scene,
+                                   fmt::join(available, ", ")));
+    if (std::find(named.begin(), named.end(), name) != named.end())
+      throw UsageError(fmt::format("--methods names '{}' twice; accepted: each method once", name));
+    named.push_back(name);
+  }
+  if (!named.empty()) {
+    if (no_peers) throw UsageError("--methods names adaptive solvers and --no-peers leaves them out; accepted: one of the two");
+    out.adaptive = named;
+  }
+  return out;
+}
+
+unsigned resolve_thread_count(const std::string& text) {
+  return static_cast<unsigned>(parse_count("--threads", text, 0, 1024));
+}
+
+int resolve_lanes(const std::string& text) {
+  if (text == "auto") return 0;
+  const long long n = parse_count("--lanes", text, 1, 64);
+  if (!cpu_has_width(static_cast<int>(n)))  // also false for a width that is none of 1, 2, 4, 8
+    throw UsageError(fmt::format("--lanes {} is not a pack width this CPU steps; accepted: auto, 1 (one run at a time), "
+                                 "2 (SSE2){}{}",
+                                 text, cpu_has_width(4) ? ", 4 (AVX2)" : "", cpu_has_width(8) ? ", 8 (AVX-512)" : ""));
+  return static_cast<int>(n);
+}
+
+void add_lanes_option(CLI::App* app, std::string& lanes) {
+  lanes = "auto";
+  app->add_option("--lanes", lanes,
+                  "runs of a method stepped together in SIMD lanes, where its kernel is packed (README, Speed): auto "
+                  "(4 with AVX2, else 2), 2 (SSE2), 4 (AVX2), 8 (AVX-512), or 1: one at a time. The output is the same")
+      ->capture_default_str();
+}
+
+int convergence_command(ConvergenceArgs& a, Context& ctx) {
+  ConvergenceConfig c;
+  c.scene = a.scene.scene_index();
+  const bool has_exact = scene_kernel(c.scene).has_exact;
+  c.reference = a.reference || !has_exact;
+  c.params = a.scene.values(c.scene);
+  c.methods = resolve_methods(a.methods, false);
+  c.t_end = a.t_end.empty() ? (c.reference ? 1.0 : 10.0) : parse_number("--t-end", a.t_end, Bound::Positive);
+  c.dt_max = parse_number("--dt-max", a.dt_max, Bound::Positive);
+  c.dt_min = parse_number("--dt-min", a.dt_min, Bound::Positive);
+  if (c.dt_min >= c.dt_max)
+    throw UsageError(fmt::format("--dt-min {} is not below --dt-max {}; accepted: dt-min < dt-max", c.dt_min, c.dt_max));
+  if (c.dt_max > c.t_end)
+    throw UsageError(fmt::format("--dt-max {} is longer than --t-end {}; accepted: dt-max <= t-end", c.dt_max, c.t_end));
+  c.points = static_cast<int>(parse_count("--points", a.points, 3, 1000));
+  step_count(c.t_end, c.dt_min);  // refuses more than 10^9 steps
+  if (a.error == "final") c.fit_error = ErrorKind::Final;
+  else if (a.error == "max") c.fit_error = ErrorKind::Max;
+  else if (a.error == "rms") c.fit_error = ErrorKind::Rms;
+  else throw UsageError(fmt::format("--error '{}' is unknown; accepted: final, max, rms", a.error));
+  if (c.reference && c.fit_error != ErrorKind::Final)
+    throw UsageError(fmt::format("--error {} needs the exact solution along the run; against the reference solution "
+                                 "(--scene {}{}) accepted: final",
+                                 a.error, a.scene.scene, a.reference ? ", --reference" : ""));
+  c.workers = ctx.workers(resolve_thread_count(a.threads));
+  c.pack_width = resolve_lanes(a.lanes);
+  c.timing = a.timing;
+  if (sweep_steps(c.t_end, c.dt_max, c.dt_min, c.points).size() < 3)
+    throw UsageError("--dt-max, --dt-min and --t-end leave fewer than 3 distinct steps; accepted: a wider range");
+  begin_shard(ctx, a.shard, a.json, c.timing);
+  if (ctx.stop_after_validation(a.json)) return 0;
+
+  const ConvergenceResult r = convergence_study(c);
+  if (finish_shard(ctx, a.json)) return 0;
+  std::fputs(convergence_table(r).c_str(), stdout);
+  if (!a.json.empty()) write_atomic(a.json, convergence_json(r).dump(1) + "\n");
+  return 0;
+}
+
+}  // namespace steplab
+
+#include "analysis/stability.hpp"
+
+namespace steplab {
+namespace {
+
+StabilityConfig stability_config(StabilityArgs& a, Context& ctx) {
+  StabilityConfig c;
+  c.params = a.scene.values(a.scene.scene_index());
+  c.methods = resolve_methods(a.methods, false);
+  c.workers = ctx.workers(resolve_thread_count(a.threads));
+  c.pack_width = resolve_lanes(a.lanes);
+  return c;
+}
+
+}  // namespace
+
+void add_stability_options(CLI::App* app, StabilityArgs& a, bool sweep, bool map) {
+  a.scene.add_to(app, map);  // study stability: the spring or the rope
+  app->add_option("--methods", a.methods, "comma-separated methods (default: every numerical method)");
+  if (sweep) {
+    app->add_option("--dts", a.dts, "comma-separated steps of the sweep")->capture_default_str();
+    app->add_option("--dampings", a.dampings, "comma-separated dampings (default: 0 to twice critical in 21 steps, and 0.1)");
+  } else {
+    app->add_option("--threshold-dampings", a.threshold_dampings, "dampings at which to find dt*")->capture_default_str();
+  }
+  if (map) {
+    app->add_option("--map-dt-points", a.map_dt_points, "map: steps, log-spaced")->capture_default_str();
+    app->add_option("--map-damping-points", a.map_damping_points, "map: dampings, 0 to twice critical")->capture_default_str();
+    app->add_option("--map-dt-min", a.map_dt_min, "map: smallest step")->capture_default_str();
+    app->add_option("--map-dt-max", a.map_dt_max, "map: largest step")->capture_default_str();
+  }
+  app->add_option("--threads", a.threads, "worker threads, 0 = all cores")->capture_default_str();
+  add_lanes_option(app, a.lanes);
+  add_shard_option(app, a.shard);
+  app->add_option("--json", a.json, "write JSON (schema steplab.stability/1) to this file");
+}
+
+int damping_command(StabilityArgs& a, Context& ctx) {
+  StabilityConfig c = stability_config(a, ctx);
+  c.sweep_dts = number_list("--dts", a.dts, Bound::Positive);
+  if (!a.dampings.empty()) c.sweep_dampings = number_list("--dampings", a.dampings, Bound::NonNegative);
+  begin_shard(ctx, a.shard, a.json, false);
+  if (ctx.stop_after_validation(a.json)) return 0;
+  const std::vector<SweepRow> rows = damping_sweep(c);
+  if (finish_shard(ctx, a.json)) return 0;
+  std::fputs(sweep_table(rows).c_str(), stdout);
+  if (!a.json.empty()) write_atomic(a.json, stability_json(c.params, {}, rows, nullptr).dump(1) + "\n");
+  return 0;
+}
+
+namespace {
+
+// The rope's thresholds: predicted from its modes, measured on the whole rope (analysis/rope_stability.hpp).
+int rope_stability_command(StabilityArgs& a, Context& ctx) {
+  for (const char* spring_only : {"--threshold-dampings", "--map-dt-points", "--map-damping-points", "--map-dt-min", "--map-dt-max"})
+    if (a.scene.app->count(spring_only) > 0)
+      throw UsageError(fmt::format("{} applies to --scene spring; the rope's damping is its own (--damping, --spring-damping)", spring_only));
+  RopeStabilityConfig c;
+  c.params = a.scene.values(a.scene.scene_index());
+  c.methods = resolve_methods(a.methods, false);
+  c.workers = ctx.workers(resolve_thread_count(a.threads));
+  resolve_lanes(a.lanes);  // checked; the rope's runs go one at a time
+  begin_shard(ctx, a.shard, a.json, false);
+  if (ctx.stop_after_validation(a.json)) return 0;
+  const std::vector<RopeThresholdRow> rows = rope_threshold_study(c);
+  if (finish_shard(ctx, a.json)) return 0;
+  std::fputs(rope_thresholds_table(rows).c_str(), stdout);
+  if (!a.json.empty()) write_atomic(a.json, rope_stability_json(c, rows).dump(1) + "\n");
+  return 0;
+}
+
+}  // namespace
+
+int stability_command(StabilityArgs& a, Context& ctx) {
+  if (a.scene.scene != "spring") {
+    if (a.scene.scene == "rope") return rope_stability_command(a, ctx);
+    throw UsageError(fmt::format("--scene '{}' is not accepted by study stability; accepted: spring, rope", a.scene.scene));
+  }
+  StabilityConfig c = stability_config(a, ctx);
+  c.threshold_dampings = number_list("--threshold-dampings", a.threshold_dampings, Bound::NonNegative);
+  c.map_dt_points = static_cast<int>(parse_count("--map-dt-points", a.map_dt_points, 2, 4096));
+  c.map_damping_points = static_cast<int>(parse_count("--map-damping-points", a.map_damping_points, 2, 4096));
+  c.map_dt_min = parse_number("--map-dt-min", a.map_dt_min, Bound::Positive);
+  c.map_dt_max = parse_number("--map-dt-max", a.map_dt_max, Bound::Positive);
+  if (c.map_dt_min >= c.map_dt_max)
+    throw UsageError(fmt::format("--map-dt-min {} is not below --map-dt-max {}; accepted: min < max", c.map_dt_min, c.map_dt_max));
+  begin_shard(ctx, a.shard, a.json, false);
+  if (ctx.stop_after_validation(a.json)) return 0;
+  const std::vector<ThresholdRow> rows = threshold_study(c);
+  const StabilityMap map = stability_map(c);
+  if (finish_shard(ctx, a.json)) return 0;
+  std::fputs(thresholds_table(rows).c_str(), stdout);
+  std::fputs(("\n" + map_summary(map)).c_str(), stdout);
+  if (!a.json.empty()) write_atomic(a.json, stability_json(c.params, rows, {}, &map).dump(1) + "\n");
+  return 0;
+}
+
+int amplitude_command(const std::vector<double>& spring_params, double step, const Context& ctx) {
+  if (ctx.dry_run) return 0;
+  std::vector<std::size_t> methods = resolve_methods("", true);
+  std::rotate(methods.begin(), methods.end() - 1, methods.end());  // the analytic column first
+  const AmplitudeTable t = amplitude_table(spring_params, methods, step, 10);
+  std::fputs(amplitude_table_text(t).c_str(), stdout);
+  return 0;
+}
+
+}  // namespace steplab
+
+#include "analysis/collision.hpp"
+
+namespace steplab {
+
+int collision_command(CollisionArgs& a, Context& ctx) {
+  CollisionConfig c;
+  // A parameter given applies to each scene that has it (--ground-stiffness to both, --stiffness
+  // to the triangle's springs).
+  const auto values_for = [&](std::string_view scene) {
+    SceneArgs only = a.scene;
+    only.scene = std::string(scene);
+    const std::size_t index = only.scene_index();
+    for (auto& [name, text] : only.text)
+      if (!has_param(index, name)) text.clear();
+    only.app = nullptr;
+    return only.values(index);
+  };
+  const std::size_t bounce = scene_index("bounce"), falling = scene_index("falling");
+  std::string accepted;  // the parameters of either collision scene
+  for (const auto& [name, text] : a.scene.text)
+    if (has_param(bounce, name) || has_param(falling, name)) accepted += (accepted.empty() ? "--" : ", --") + name;
+  for (const auto& [name, text] : a.scene.text)
+    if (a.scene.given(name) && !has_param(bounce, name) && !has_param(falling, name))
+      throw UsageError(fmt::format("--{} does not apply to the collision scenes; accepted: {}", name, accepted));
+  c.bounce_params = values_for("bounce");
+  c.falling_params = values_for("falling");
+  c.methods = resolve_methods(a.methods, false);
+  c.dts = number_list("--dts", a.dts, Bound::Positive);
+  c.t_end = parse_number("--t-end", a.t_end, Bound::Positive);
+  c.triangle_dt = parse_number("--triangle-dt", a.triangle_dt, Bound::Positive);
+  for (double dt : c.dts) step_count(c.t_end, dt);
+  step_count(c.t_end, c.triangle_dt);
+  c.workers = ctx.workers(resolve_thread_count(a.threads));
+  begin_shard(ctx, a.shard, a.json, false);
+  if (ctx.stop_after_validation(a.json)) return 0;
+  const CollisionResult r = collision_study(c);
+  if (finish_shard(ctx, a.json)) return 0;
+  std::fputs(collision_table(r).c_str(), stdout);
+  if (!a.json.empty()) write_atomic(a.json, collision_json(r).dump(1) + "\n");
+  return 0;
+}
+
+}  // namespace steplab
+
+#include "reports/document/report.hpp"
+
+namespace steplab {
+
+int report_command(ReportArgs& a, Context& ctx) {
+  const ReportConfig c = a.config.empty() ? default_report_config() : read_report_config(a.config);
+  if (a.print_config) {
+    std::fputs((report_config_json(c).dump(1) + "\n").c_str(), stdout);
+    return 0;
+  }
+  if (a.out.empty()) throw UsageError("--out is empty; accepted: a folder path");
+  if (ctx.dry_run) return 0;
+  check_writable((std::filesystem::path(a.out).parent_path().empty() ? std::filesystem::path(".")
+                                                                     : std::filesystem::path(a.out).parent_path()) /
+                 ".steplab-write-check");
+  return write_report(c, a.out, a.force, ctx.progress);
+}
+
+}  // namespace steplab

@@ -1,0 +1,73 @@
+#include "reports/data/inputs.hpp"
+
+#include "core/simulate.hpp"
+
+#include <charconv>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace steplab {
+
+std::string_view describe(Bound b) {
+  switch (b) {
+    case Bound::Positive: return "a finite number > 0";
+    case Bound::NonNegative: return "a finite number >= 0";
+    case Bound::Any: return "a finite number";
+  }
+  return "a number";
+}
+
+double check_number(std::string_view what, double value, Bound bound) {
+  const bool ok = std::isfinite(value) && (bound != Bound::Positive || value > 0) &&
+                  (bound != Bound::NonNegative || value >= 0);
+  if (!ok) throw UsageError(fmt::format("{} = {} is out of range; accepted: {}", what, value, describe(bound)));
+  return value;
+}
+
+double parse_number(std::string_view what, std::string_view text, Bound bound) {
+  double value = 0;
+  const auto* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (text.empty() || ec == std::errc::invalid_argument || ptr != end)
+    throw UsageError(fmt::format("{} '{}' is not a number; accepted: {}", what, text, describe(bound)));
+  if (ec == std::errc::result_out_of_range || !std::isfinite(value))
+    throw UsageError(fmt::format("{} '{}' is not finite; accepted: {}", what, text, describe(bound)));
+  return check_number(what, value, bound);
+}
+
+long long parse_count(std::string_view what, std::string_view text, long long lo, long long hi) {
+  long long value = 0;
+  const auto* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (text.empty() || ec != std::errc() || ptr != end || value < lo || value > hi)
+    throw UsageError(fmt::format("{} '{}' is not accepted; accepted: a whole number from {} to {}", what, text, lo, hi));
+  return value;
+}
+
+std::vector<std::string> split_list(std::string_view text) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    out.emplace_back(text.substr(start, comma - start));
+    start = comma + 1;
+  }
+  return out;
+}
+
+long long step_count(double t_end, double dt) {
+  const double ratio = t_end / dt;
+  if (!(ratio <= static_cast<double>(max_steps)))
+    throw UsageError(fmt::format("--t-end {} with --dt {} needs {:.3g} steps; accepted: at most {} steps", t_end, dt,
+                                 ratio, max_steps));
+  return steps_for(t_end, dt);
+}
+
+std::vector<double> number_list(std::string_view what, const std::string& text, Bound bound) {
+  std::vector<double> out;
+  for (const std::string& item : split_list(text)) out.push_back(parse_number(what, item, bound));
+  return out;
+}
+
+}  // namespace steplab

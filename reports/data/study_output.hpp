@@ -1,0 +1,74 @@
+// JSON documents and printed tables of the studies. Field names are an interface (README).
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/convergence.hpp"
+
+namespace steplab {
+
+using Json = nlohmann::ordered_json;
+
+Json scene_params_json(std::size_t scene, const std::vector<double>& values);
+// The library builds the peers ran on (analysis/peers.hpp, peer_builds): [{library, version,
+// optimised, flags}], in every study's JSON that has peers.
+Json peer_builds_json();
+
+Json convergence_json(const ConvergenceResult& r);   // schema steplab.convergence/2
+std::string convergence_table(const ConvergenceResult& r);
+
+}  // namespace steplab
+
+#include "analysis/local_error.hpp"
+
+namespace steplab {
+// The old framework's error_measurement tables, %.5e.
+std::string local_error_tables(const LocalErrorResult& r);
+}  // namespace steplab
+
+#include "analysis/stability.hpp"
+
+namespace steplab {
+// schema steplab.stability/1; a study fills the parts it computed, the others are empty.
+Json stability_json(const std::vector<double>& params, const std::vector<ThresholdRow>& thresholds,
+                    const std::vector<SweepRow>& sweep, const StabilityMap* map);
+std::string thresholds_table(const std::vector<ThresholdRow>& rows);
+std::string sweep_table(const std::vector<SweepRow>& rows);
+std::string map_summary(const StabilityMap& map);
+std::string amplitude_table_text(const AmplitudeTable& t);
+// A threshold dt*: a number, or "inf" (stable at every step).
+Json threshold_json(double x);
+std::string threshold_text(double x);
+}  // namespace steplab
+
+#include "analysis/rope_stability.hpp"
+
+namespace steplab {
+// `study stability --scene rope` (reports/data/rope_output.cpp): schema steplab.rope_stability/1.
+Json rope_stability_json(const RopeStabilityConfig& c, const std::vector<RopeThresholdRow>& rows);
+std::string rope_thresholds_table(const std::vector<RopeThresholdRow>& rows);
+}  // namespace steplab
+
+#include "analysis/scaling.hpp"
+
+namespace steplab {
+// `study scaling` (reports/cli/scaling_command.cpp): schema steplab.scaling/1.
+Json scaling_json(const ScalingResult& r);
+std::string scaling_table(const ScalingResult& r);
+}  // namespace steplab
+
+#include "analysis/collision.hpp"
+
+namespace steplab {
+Json collision_json(const CollisionResult& r);   // schema steplab.collision/1
+std::string collision_table(const CollisionResult& r);
+}  // namespace steplab
+
+#include "analysis/work_precision.hpp"
+
+namespace steplab {
+Json work_precision_json(const WorkPrecisionResult& r);   // schema steplab.work_precision/1
+std::string work_precision_table(const WorkPrecisionResult& r);
+}  // namespace steplab

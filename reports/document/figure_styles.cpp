@@ -1,0 +1,99 @@
+#include "reports/document/figure_styles.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "analysis/work_precision.hpp"
+#include "analysis/kernel.hpp"
+#include "analysis/peers.hpp"
+#include "reports/document/report_text.hpp"
+
+namespace steplab {
+namespace {
+
+// Okabe & Ito (2008), "Color Universal Design": distinguishable under every common colour-vision
+// deficiency.
+std::string_view family_hue(Family f) {
+  switch (f) {
+    case Family::ExplicitRungeKutta: return "#0072B2";  // blue
+    case Family::Splitting: return "#D55E00";           // vermillion
+    case Family::ImplicitRungeKutta: return "#009E73";  // bluish green
+    case Family::AdamsBashforth: return "#CC79A7";      // reddish purple
+    case Family::Bdf: return "#E69F00";                 // orange
+    default: return "#000000";
+  }
+}
+
+// The hue scaled towards black by the order: 1, 0.8, 0.62, 0.48, 0.38 of its brightness.
+std::string shade(std::string_view hue, int order) {
+  constexpr double scale[] = {1.0, 1.0, 0.8, 0.62, 0.48, 0.38};
+  const double k = scale[order];
+  const auto channel = [&](int at) {
+    return static_cast<int>(std::lround(k * std::stoi(std::string(hue.substr(at, 2)), nullptr, 16)));
+  };
+  return fmt::format("#{:02X}{:02X}{:02X}", channel(1), channel(3), channel(5));
+}
+
+}  // namespace
+
+MethodStyle method_style(std::size_t method) {
+  const MethodInfo& info = method_info(method);
+  // by order: filled circle, square, triangle, diamond, triangle down; solid, dashed, dash-dot,
+  // dotted, dash-dot-dot
+  constexpr int points[] = {7, 7, 5, 9, 13, 11}, dashes[] = {1, 1, 2, 4, 3, 5};
+  const int o = std::clamp(info.order, 0, 5);
+  // A method added beside a built-in one of the same family and order (steplab_add_executable)
+  // gets the open point (gnuplot's filled point - 1) and the next order's dash.
+  bool shares = false;
+  for (std::size_t m = 0; m < method; ++m)
+    shares = shares || (method_info(m).family == info.family && std::clamp(method_info(m).order, 0, 5) == o);
+  if (shares) return {shade(family_hue(info.family), std::max(o, 1)), points[o] - 1, dashes[(o + 1) % 6]};
+  return {shade(family_hue(info.family), std::max(o, 1)), points[o], dashes[o]};
+}
+
+std::string styles_gp(const std::vector<std::size_t>& methods) {
+  std::string out =
+      "# The methods' styles, the same in every figure (written by steplab report from\n"
+      "# reports/document/figure_styles.cpp): colour by family (Okabe-Ito), darker, another point and another\n"
+      "# dash with each order.\n";
+  std::string names;
+  for (std::size_t m = 0; m < method_count(); ++m) {
+    const MethodStyle s = method_style(m);
+    out += fmt::format("set linetype {} lc rgb \"{}\" pt {} dt {} lw 1.5 ps 0.6  # {}\n", m + 1, s.colour, s.point,
+                       s.dash, name(m));
+    if (!names.empty()) names += ' ';
+    names += name(m);
+  }
+  // the adaptive solvers (analysis/peers.hpp): steplab's dopri5 black, odeint's grey, CVODE in
+  // the sky blue the families leave free (Adams and BDF by point and dash, whatever the linear
+  // solver: one figure has one of each), each with a point and a dash of its own
+  std::string adaptive;
+  std::size_t lt = method_count();
+  for (const PeerInfo& p : peers()) {
+    const bool cvode = p.is_cvode();
+    const MethodStyle st = p.name == "dopri5"          ? MethodStyle{"#000000", 7, 1}
+                           : !cvode                    ? MethodStyle{"#777777", 6, 2}
+                           : p.cvode.adams             ? MethodStyle{"#56B4E9", 13, 2}
+                           : p.cvode.max_order == 2    ? MethodStyle{"#56B4E9", 9, 5}
+                                                       : MethodStyle{"#56B4E9", 15, 4};
+    out += fmt::format("set linetype {} lc rgb \"{}\" pt {} dt {} lw 1.5 ps 0.6  # {}\n", ++lt, st.colour, st.point, st.dash, p.name);
+    names += fmt::format(" {}", p.name);
+  }
+  for (const std::string& a : adaptive_solvers()) adaptive += (adaptive.empty() ? "" : " ") + a;
+  out += fmt::format("style_names = \"{}\"\n", names);
+  out += fmt::format("adaptive = \"{}\"\n", adaptive);
+  out += "mlt(m) = sum [k=1:words(style_names)] (word(style_names, k) eq m ? k : 0)\n";
+  out += "in_list(m, list) = strstrt(\" \".list.\" \", \" \".m.\" \") > 0\n";
+  int n = 0;
+  for (Family f : kReportFamilies) {
+    const std::vector<std::size_t> members = family_members(methods, f);
+    if (members.empty()) continue;
+    ++n;
+    out += fmt::format("fam{} = \"{}\"; famname{} = \"{}\"\n", n, method_words(members), n, to_string(f));
+  }
+  return out + fmt::format("nfam = {}\n", n);
+}
+
+}  // namespace steplab

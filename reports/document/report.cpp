@@ -1,0 +1,225 @@
+// The report's frame (reports/document/report.hpp): the sections of reports/document/sections/ run, rendered in
+// order into Markdown, their figures drawn with gnuplot, the PDF made with pandoc, and the output
+// folder swapped in atomically.
+#include "reports/document/report.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/utsname.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "analysis/parallel.hpp"
+#include "analysis/kernel.hpp"
+#include "reports/document/figure_styles.hpp"
+#include "reports/document/gnuplot_scripts.hpp"
+#include "reports/data/output.hpp"
+#include "reports/document/report_text.hpp"
+#include "reports/document/section.hpp"
+
+namespace steplab {
+namespace fs = std::filesystem;
+
+void DataDir::write(const std::string& file, const std::string& content) const {
+  std::ofstream out(dir_ / file, std::ios::binary);
+  out << content;
+  if (!out) throw std::runtime_error("cannot write " + (dir_ / file).string());
+}
+
+std::string Page::figure(const std::string& file, const std::string& caption) {
+  ++figure_;
+  const std::string label = ext_ == "pdf" ? caption : fmt::format("Figure {}: {}", figure_, caption);
+  return fmt::format("![{}](figures/{}.{})\n\n", label, file, ext_);
+}
+
+Report::Report() = default;
+Report::Report(Report&&) noexcept = default;
+Report::~Report() = default;
+
+Report build_report(const ReportConfig& config, ProgressHook progress) {
+  Report r;
+  r.data = run_report_studies(config, progress);
+  r.findings = compute_findings(r.data);
+  r.sections = report_sections();
+  for (const auto& s : r.sections) s->study(r.data);
+  return r;
+}
+
+std::string report_markdown(const Report& r, const std::string& ext, const std::string& footer) {
+  std::string md = "# steplab report: how time integrators behave, family by family, on the course's scenes\n\n";
+  md += fmt::format("The hanging spring: {}. Every number below was measured by the commands at the end of this report; "
+                    "every sentence that states a finding was generated from those numbers.\n\n",
+                    params_text(*find_scene("spring"), r.data.config.spring));
+  Page page(r.data, r.findings, ext);
+  for (const auto& s : r.sections) md += s->markdown(page);
+  return md + "---\n\n" + footer + "\n";
+}
+
+// ---------------------------------------------------------------- rendering
+
+namespace {
+
+// Runs `sh -c cmd` with its output discarded and returns its exit status. Not std::system:
+// that ignores SIGINT in the caller while the child runs, and an interrupt must not be lost.
+int run_quiet(const std::string& cmd) {
+  posix_spawn_file_actions_t io;
+  posix_spawn_file_actions_init(&io);
+  posix_spawn_file_actions_addopen(&io, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&io, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  const std::string full = cmd;
+  const char* argv[] = {"/bin/sh", "-c", full.c_str(), nullptr};
+  pid_t pid = 0;
+  const int err = posix_spawn(&pid, "/bin/sh", &io, nullptr, const_cast<char* const*>(argv), environ);
+  posix_spawn_file_actions_destroy(&io);
+  if (err != 0) return -1;
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (stop_requested) throw Interrupted();
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// Staging folders left by a run that was killed (SIGKILL cannot be handled): removed when the
+// process that made them is gone.
+void remove_stale_staging(const fs::path& out) {
+  const std::string prefix = fmt::format(".{}.staging-", out.filename().string());
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(out.parent_path(), ec)) {
+    const std::string n = entry.path().filename().string();
+    if (n.rfind(prefix, 0) != 0) continue;
+    const pid_t pid = static_cast<pid_t>(std::atol(n.c_str() + prefix.size()));
+    if (pid > 0 && kill(pid, 0) != 0 && errno == ESRCH) fs::remove_all(entry.path(), ec);
+  }
+}
+
+extern "C" void on_interrupt(int) { stop_requested = true; }
+
+std::string machine_footer() {
+  std::string cpu = "unknown CPU";
+  std::ifstream info("/proc/cpuinfo");
+  for (std::string line; std::getline(info, line);)
+    if (line.rfind("model name", 0) == 0) {
+      cpu = line.substr(line.find(':') + 2);
+      break;
+    }
+  utsname u{};
+  uname(&u);
+  const std::time_t now = std::time(nullptr);
+  char date[32];
+  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  return fmt::format("steplab {} · {} ({} cores) · {} {} · compiler {} · {}", STEPLAB_VERSION, cpu, sysconf(_SC_NPROCESSORS_ONLN),
+                     u.sysname, u.release, __VERSION__, date);
+}
+
+// What decides whether a report is up to date: the configuration and this very binary.
+std::string stamp_for(const ReportConfig& c) {
+  char exe[4096] = {};
+  const ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+  struct stat bin {};
+  if (n > 0) stat(exe, &bin);
+  return fmt::format("{}\nbinary {} {} {}\n", report_config_json(c).dump(), STEPLAB_VERSION, bin.st_size,
+                     static_cast<long long>(bin.st_mtime));
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+int write_report(const ReportConfig& c, const std::string& out_dir, bool force, ProgressHook progress) {
+  // SIGINT and SIGTERM stop the work at the next task or tool; the staging folder is removed
+  // and the previous report stays as it was. Installed first, so an early Ctrl-C exits 130 too.
+  struct sigaction sa {};
+  sa.sa_handler = on_interrupt;
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+  const fs::path out = fs::absolute(out_dir);
+  const std::string stamp = stamp_for(c);
+  if (!force && fs::exists(out / "data" / "stamp") && slurp(out / "data" / "stamp") == stamp && fs::exists(out / "report.pdf")) {
+    std::fprintf(stderr, "steplab: %s is up to date (same configuration, same binary); --force redoes it\n", out.c_str());
+    return 0;
+  }
+  remove_stale_staging(out);
+  if (run_quiet("command -v gnuplot") != 0 || run_quiet("command -v pandoc") != 0 || run_quiet("command -v pdflatex") != 0)
+    throw std::runtime_error("the report needs gnuplot, pandoc and pdflatex; run: tools/install-deps report");
+
+  const fs::path staging = out.parent_path() / fmt::format(".{}.staging-{}", out.filename().string(), getpid());
+  fs::remove_all(staging);
+  fs::create_directories(staging / "data");
+  fs::create_directories(staging / "figures");
+  try {
+    const auto t0 = std::chrono::steady_clock::now();
+    const Report report = build_report(c, progress);
+    const ReportData& d = report.data;
+    if (stop_requested) throw Interrupted();
+    const double study_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+    const DataDir data(staging / "data");
+    data.write("config.json", report_config_json(c).dump(1) + "\n");
+    for (const auto& s : report.sections) s->write_data(d, data);
+
+    // Figures: each script twice, PNG for the Markdown and PDF (vector) for the PDF.
+    const std::string all = method_words(d.methods), numeric = method_words(d.collision.config.methods);
+    DataDir(staging / "figures").write("styles.gp", styles_gp(d.methods));  // loaded by every script
+    for (const auto& s : report.sections)
+      for (const FigureSpec& fig : s->figures(d)) {
+        const auto gp = std::find_if(gnuplot_scripts.begin(), gnuplot_scripts.end(), [&](const GnuplotScript& g) { return g.name == fig.script; });
+        if (gp == gnuplot_scripts.end()) throw std::logic_error("no gnuplot script " + fig.script);
+        DataDir(staging / "figures").write(fig.script + ".gp", std::string(gp->text));
+        for (const char* fmt_name : {"png", "pdf"}) {
+          const std::string cmd = fmt::format(
+              "cd '{}' && gnuplot -e \"datadir='../data'; outfile='{}.{}'; format='{}'; methods='{}'; numeric='{}'; "
+              "springdts='{}'; largedt='{}'; {}\" '{}.gp'",
+              (staging / "figures").string(), fig.script, fmt_name, fmt_name, all, numeric, words(c.spring_figure_dts), c.large_dt,
+              fig.vars, fig.script);
+          if (run_quiet(cmd) != 0) throw std::runtime_error(fmt::format("gnuplot failed on {}.gp ({})", fig.script, fmt_name));
+        }
+      }
+    const std::string footer = machine_footer() + fmt::format(" · studies {:.1f} s", study_seconds);
+    write_atomic((staging / "report.md").string(), report_markdown(report, "png", footer));
+    write_atomic((staging / "report-pdf.md").string(), report_markdown(report, "pdf", footer));
+    const std::string pandoc = fmt::format(
+        "cd '{}' && pandoc report-pdf.md -o report.pdf --pdf-engine=pdflatex -V geometry:margin=1.8cm -V fontsize=10pt "
+        "-V colorlinks=true -V 'header-includes=\\usepackage{{float}}\\floatplacement{{figure}}{{H}}'",
+        staging.string());
+    if (run_quiet(pandoc) != 0) throw std::runtime_error("pandoc could not make report.pdf (rerun it by hand to see why)");
+    fs::remove(staging / "report-pdf.md");
+    data.write("stamp", stamp);
+    if (stop_requested) throw Interrupted();
+  } catch (...) {
+    fs::remove_all(staging);
+    throw;
+  }
+  // Swap the new report in: one atomic exchange of the two folders, then the old one goes.
+  if (fs::exists(out)) {
+    if (renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, out.c_str(), RENAME_EXCHANGE) != 0) {
+      fs::remove_all(staging);
+      throw std::runtime_error(fmt::format("cannot replace {}", out.string()));
+    }
+    fs::remove_all(staging);
+  } else {
+    fs::rename(staging, out);
+  }
+  std::printf("wrote %s: report.md, report.pdf, figures/, data/\n", out.c_str());
+  return 0;
+}
+
+}  // namespace steplab

@@ -1,0 +1,184 @@
+#include "reports/document/report_config.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "analysis/kernel.hpp"
+#include "reports/data/inputs.hpp"
+#include "reports/data/run_json.hpp"
+#include "reports/data/study_output.hpp"
+
+namespace steplab {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::string keys_of(const Json& j) {
+  std::string out;
+  for (const auto& [k, _] : j.items()) out += (out.empty() ? "" : ", ") + k;
+  return out;
+}
+
+// Reads `user` (an object shaped like `defaults`) over `defaults`, checking keys and types.
+void merge(Json& defaults, const Json& user, const std::string& path) {
+  if (!user.is_object())
+    throw UsageError(fmt::format("config: {} must be a JSON object; accepted keys: {}", path.empty() ? "the file" : path,
+                                 keys_of(defaults)));
+  for (const auto& [key, value] : user.items()) {
+    const std::string where = path.empty() ? key : path + "." + key;
+    if (!defaults.contains(key))
+      throw UsageError(fmt::format("config: unknown key '{}'; accepted: {}", where, keys_of(defaults)));
+    Json& target = defaults[key];
+    if (target.is_object()) {
+      merge(target, value, where);
+    } else if (target.is_array()) {
+      if (!value.is_array() || value.empty() || !std::all_of(value.begin(), value.end(), [](const Json& x) { return x.is_number(); }))
+        throw UsageError(fmt::format("config: '{}' must be a non-empty array of numbers", where));
+      target = value;
+    } else if (target.is_boolean()) {
+      if (!value.is_boolean()) throw UsageError(fmt::format("config: '{}' must be true or false", where));
+      target = value;
+    } else {
+      if (!value.is_number()) throw UsageError(fmt::format("config: '{}' must be a number", where));
+      target = value;
+    }
+  }
+}
+
+double num(const Json& j, const std::string& path, Bound bound) {
+  return check_number("config: " + path, j.get<double>(), bound);
+}
+
+std::vector<double> nums(const Json& j, const std::string& path, Bound bound) {
+  std::vector<double> out;
+  for (const Json& x : j) out.push_back(check_number("config: " + path, x.get<double>(), bound));
+  return out;
+}
+
+int count(const Json& j, const std::string& path, int lo, int hi) {
+  const double x = j.get<double>();
+  if (!(x == std::floor(x)) || x < lo || x > hi)
+    throw UsageError(fmt::format("config: {} = {} is not accepted; accepted: a whole number from {} to {}", path, x, lo, hi));
+  return static_cast<int>(x);
+}
+
+std::vector<double> scene_values(const Json& j, const std::string& section) {
+  std::vector<double> out;
+  for (const ParamSpec& p : scene_kernel(scene_index(section)).params) out.push_back(num(j[param_key(p)], section + "." + param_key(p), p.bound));
+  return out;
+}
+
+}  // namespace
+
+ReportConfig default_report_config() {
+  ReportConfig c;
+  c.spring = default_param_values(scene_index("spring"));
+  c.cannonball = default_param_values(scene_index("cannonball"));
+  c.bounce = default_param_values(scene_index("bounce"));
+  c.falling = default_param_values(scene_index("falling"));
+  return c;
+}
+
+Json report_config_json(const ReportConfig& c) {
+  Json j;
+  j["spring"] = scene_params_json(scene_index("spring"), c.spring);
+  j["cannonball"] = scene_params_json(scene_index("cannonball"), c.cannonball);
+  j["bounce"] = scene_params_json(scene_index("bounce"), c.bounce);
+  j["falling"] = scene_params_json(scene_index("falling"), c.falling);
+  j["convergence"] = {{"dt_max", c.conv_dt_max}, {"dt_min", c.conv_dt_min}, {"points", c.conv_points},
+                      {"t_end", c.conv_t_end}};
+  j["work_precision"] = {{"points", c.wp_points}, {"stiffnesses", c.wp_stiffnesses}, {"timing", c.timing}};
+  j["stability"] = {{"threshold_dampings", c.threshold_dampings}, {"sweep_dts", c.sweep_dts},
+                    {"map_dt_points", c.map_dt_points},           {"map_damping_points", c.map_damping_points},
+                    {"map_dt_min", c.map_dt_min},                 {"map_dt_max", c.map_dt_max},
+                    {"large_dt", c.large_dt},                     {"small_dt", c.small_dt}};
+  j["collision"] = {{"dts", c.collision_dts}, {"t_end", c.collision_t_end}, {"triangle_dt", c.triangle_dt}};
+  j["scaling"] = {{"sizes", c.scaling_sizes}, {"grids", c.scaling_grids}, {"error", c.scaling_error}, {"t_end", c.scaling_t_end}};
+  j["figures"] = {{"cannonball_dt", c.cannonball_dt},
+                  {"cannonball_t_end", c.cannonball_t_end},
+                  {"spring_dts", c.spring_figure_dts},
+                  {"spring_t_end", c.spring_figure_t_end},
+                  {"energy_t_end", c.energy_t_end}};
+  j["threads"] = c.threads;
+  return j;
+}
+
+ReportConfig report_config_from_json(const Json& user) {
+  Json j = report_config_json(default_report_config());
+  merge(j, user, "");
+  ReportConfig c;
+  c.spring = scene_values(j["spring"], "spring");
+  c.cannonball = scene_values(j["cannonball"], "cannonball");
+  c.bounce = scene_values(j["bounce"], "bounce");
+  c.falling = scene_values(j["falling"], "falling");
+  const Json& cv = j["convergence"];
+  c.conv_dt_max = num(cv["dt_max"], "convergence.dt_max", Bound::Positive);
+  c.conv_dt_min = num(cv["dt_min"], "convergence.dt_min", Bound::Positive);
+  c.conv_points = count(cv["points"], "convergence.points", 3, 1000);
+  c.conv_t_end = num(cv["t_end"], "convergence.t_end", Bound::Positive);
+  if (c.conv_dt_min >= c.conv_dt_max)
+    throw UsageError(fmt::format("config: convergence.dt_min {} is not below dt_max {}; accepted: dt_min < dt_max",
+                                 c.conv_dt_min, c.conv_dt_max));
+  if (c.conv_dt_max > c.conv_t_end)
+    throw UsageError("config: convergence.dt_max is longer than convergence.t_end; accepted: dt_max <= t_end");
+  step_count(c.conv_t_end, c.conv_dt_min);
+  const Json& wp = j["work_precision"];
+  c.wp_points = count(wp["points"], "work_precision.points", 3, 100);
+  c.wp_stiffnesses = nums(wp["stiffnesses"], "work_precision.stiffnesses", Bound::Positive);
+  c.timing = wp["timing"].get<bool>();
+  const Json& st = j["stability"];
+  c.threshold_dampings = nums(st["threshold_dampings"], "stability.threshold_dampings", Bound::NonNegative);
+  c.sweep_dts = nums(st["sweep_dts"], "stability.sweep_dts", Bound::Positive);
+  c.map_dt_points = count(st["map_dt_points"], "stability.map_dt_points", 2, 4096);
+  c.map_damping_points = count(st["map_damping_points"], "stability.map_damping_points", 2, 4096);
+  c.map_dt_min = num(st["map_dt_min"], "stability.map_dt_min", Bound::Positive);
+  c.map_dt_max = num(st["map_dt_max"], "stability.map_dt_max", Bound::Positive);
+  if (c.map_dt_min >= c.map_dt_max) throw UsageError("config: stability.map_dt_min is not below map_dt_max; accepted: min < max");
+  c.large_dt = num(st["large_dt"], "stability.large_dt", Bound::Positive);
+  c.small_dt = num(st["small_dt"], "stability.small_dt", Bound::Positive);
+  const Json& co = j["collision"];
+  c.collision_dts = nums(co["dts"], "collision.dts", Bound::Positive);
+  c.collision_t_end = num(co["t_end"], "collision.t_end", Bound::Positive);
+  c.triangle_dt = num(co["triangle_dt"], "collision.triangle_dt", Bound::Positive);
+  for (double dt : c.collision_dts) step_count(c.collision_t_end, dt);
+  step_count(c.collision_t_end, c.triangle_dt);
+  const Json& sc = j["scaling"];
+  c.scaling_sizes.clear();
+  const ParamSpec& masses = scene_kernel(scene_index("rope")).params[0];  // the rope's --masses: its range
+  for (const Json& n : sc["sizes"]) c.scaling_sizes.push_back(count(n, "scaling.sizes", 1, static_cast<int>(masses.most)));
+  c.scaling_grids.clear();
+  const ParamSpec& grid = scene_kernel(scene_index("softbody")).params[0];  // the soft body's --grid: its range
+  for (const Json& n : sc["grids"]) c.scaling_grids.push_back(count(n, "scaling.grids", 1, static_cast<int>(grid.most)));
+  c.scaling_error = num(sc["error"], "scaling.error", Bound::Positive);
+  c.scaling_t_end = num(sc["t_end"], "scaling.t_end", Bound::Positive);
+  const Json& fg = j["figures"];
+  c.cannonball_dt = num(fg["cannonball_dt"], "figures.cannonball_dt", Bound::Positive);
+  c.cannonball_t_end = num(fg["cannonball_t_end"], "figures.cannonball_t_end", Bound::Positive);
+  c.spring_figure_dts = nums(fg["spring_dts"], "figures.spring_dts", Bound::Positive);
+  c.spring_figure_t_end = num(fg["spring_t_end"], "figures.spring_t_end", Bound::Positive);
+  c.energy_t_end = num(fg["energy_t_end"], "figures.energy_t_end", Bound::Positive);
+  step_count(c.cannonball_t_end, c.cannonball_dt);
+  for (double dt : c.spring_figure_dts) step_count(c.spring_figure_t_end, dt);
+  step_count(c.energy_t_end, c.large_dt);
+  c.threads = static_cast<unsigned>(count(j["threads"], "threads", 0, 1024));
+  return c;
+}
+
+ReportConfig read_report_config(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw UsageError(fmt::format("--config '{}' cannot be read; accepted: a readable JSON file", path));
+  std::stringstream text;
+  text << in.rdbuf();
+  Json j;
+  try {
+    j = Json::parse(text.str());
+  } catch (const nlohmann::json::parse_error& e) {
+    throw UsageError(fmt::format("--config '{}' is not valid JSON (at byte {}); accepted: a JSON object", path, e.byte));
+  }
+  return report_config_from_json(j);
+}
+
+}  // namespace steplab

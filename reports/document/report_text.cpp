@@ -1,0 +1,140 @@
+#include "reports/document/report_text.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "analysis/kernel.hpp"
+#include "analysis/peers.hpp"
+
+namespace steplab {
+
+std::string name(std::size_t m) { return std::string(method_info(m).name); }
+std::string dt_text(double x) { return std::isinf(x) ? "inf" : std::isnan(x) ? "-" : fmt::format("{:.4g}", x); }
+std::string num(double x) { return std::isfinite(x) ? fmt::format("{}", x) : "NaN"; }
+
+std::string order_text(std::size_t m) {
+  const MethodInfo& info = method_info(m);
+  return info.exact_flow ? "exact" : std::to_string(info.order);
+}
+
+std::string fitted_text(const ConvergenceFit& fit) {
+  if (fit.fit.exact) return "exact (round-off)";
+  if (!fit.fit.fitted) return "-";
+  return fmt::format("{:.3f} [{:.3f}, {:.3f}]", fit.fit.order, fit.fit.bound_lo, fit.fit.bound_hi);
+}
+
+std::string and_list(const std::vector<std::string>& items) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (i > 0) out += i + 1 == items.size() ? " and " : ", ";
+    out += items[i];
+  }
+  return out;
+}
+
+std::string method_list(const std::vector<std::size_t>& methods) {
+  if (methods.empty()) return "none";
+  std::vector<std::string> quoted;
+  for (std::size_t m : methods) quoted.push_back(fmt::format("`{}`", name(m)));
+  return and_list(quoted);
+}
+
+std::string fits_table(const ConvergenceResult& r) {
+  std::string out =
+      "| method | declared | order | bound | window slope [95 % t] | R² | points | dt range |\n"
+      "|------------------|-----:|------:|-----------------|-----------------------|-------:|-----:|-------------------|\n";
+  for (const ConvergenceFit& f : r.fits) {
+    const MethodInfo& info = method_info(f.method);
+    const std::string declared = order_text(f.method);
+    if (f.fit.exact) out += fmt::format("| `{}` | {} | exact | - | - | - | - | - |\n", info.name, declared);
+    else if (!f.fit.fitted) out += fmt::format("| `{}` | {} | - ({}) | - | - | - | - | - |\n", info.name, declared, f.fit.note);
+    else
+      out += fmt::format("| `{}` | {} | {:.3f} | [{:.3f}, {:.3f}] | {:.3f} [{:.3f}, {:.3f}] | {:.5f} | {} | {:.3g} – {:.3g} |\n",
+                         info.name, declared, f.fit.order, f.fit.bound_lo, f.fit.bound_hi, f.fit.line.slope, f.fit.line.ci95_lo,
+                         f.fit.line.ci95_hi, f.fit.line.r2, f.fit.line.n, f.fit.dt_lo, f.fit.dt_hi);
+  }
+  return out;
+}
+
+std::string params_text(std::size_t scene, const std::vector<double>& v) {
+  const std::span<const ParamSpec> params = scene_kernel(scene).params;
+  std::string out;
+  for (std::size_t i = 0; i < params.size(); ++i) out += fmt::format("{}{} {}", i ? ", " : "", params[i].name, v[i]);
+  return out;
+}
+
+std::string wrapped(const std::string& cmd) {
+  std::string out, line;
+  std::size_t start = 0;
+  while (start < cmd.size()) {
+    std::size_t next = cmd.find(" --", start + 1);
+    if (next == std::string::npos) next = cmd.size();
+    const std::string piece = cmd.substr(start, next - start);
+    if (!line.empty() && line.size() + piece.size() > 76) {
+      out += line + " \\\n   ";
+      line.clear();
+    }
+    line += piece;
+    start = next;
+  }
+  return out + line + "\n";
+}
+
+std::string words(const std::vector<double>& v) {
+  std::string out;
+  for (double x : v) out += fmt::format("{}{}", out.empty() ? "" : " ", x);
+  return out;
+}
+
+std::string join(const std::vector<double>& v) {
+  std::string out;
+  for (double x : v) out += fmt::format("{}{}", out.empty() ? "" : ",", x);
+  return out;
+}
+
+std::string join(const std::vector<int>& v) { return join(std::vector<double>(v.begin(), v.end())); }
+
+std::string method_words(const std::vector<std::size_t>& methods) {
+  std::string out;
+  for (std::size_t m : methods) {
+    if (!out.empty()) out += ' ';
+    out += name(m);
+  }
+  return out;
+}
+
+std::vector<std::size_t> family_members(const std::vector<std::size_t>& methods, Family f) {
+  std::vector<std::size_t> out;
+  for (std::size_t m : methods)
+    if (method_info(m).family == f || method_info(m).also == f) out.push_back(m);
+  std::sort(out.begin(), out.end(), [](std::size_t a, std::size_t b) {
+    return std::pair(method_info(a).order, a) < std::pair(method_info(b).order, b);
+  });
+  return out;
+}
+
+bool family_order_less(std::size_t a, std::size_t b) {
+  const MethodInfo &x = method_info(a), &y = method_info(b);
+  return std::tuple(x.family, x.order, a) < std::tuple(y.family, y.order, b);
+}
+
+std::string counts_text(const Counts& n) {
+  std::string t = fmt::format("{} steps, {} forces", n.steps, n.forces);
+  if (n.rejected > 0) t += fmt::format(", {} rejected", n.rejected);
+  if (n.jacobians > 0) t += fmt::format(", {} Jacobians", n.jacobians);
+  if (n.factorisations > 0) t += fmt::format(", {} factorisations", n.factorisations);
+  return t;
+}
+
+std::string cvode_build_text() {
+  for (const PeerBuild& b : peer_builds())
+    if (b.library == kCvodeLibrary)
+      return fmt::format("{}, {}", b.version, b.optimised ? "built optimised" : "Debian's build, not optimised");
+  return "?";
+}
+
+}  // namespace steplab

@@ -1,0 +1,43 @@
+// Small text helpers the report's sections share: method names, numbers as the report prints
+// them, lists of methods in a sentence, fitted orders, and data-file lines.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "analysis/convergence.hpp"
+#include "analysis/counts.hpp"
+#include "core/method.hpp"
+#include "reports/document/report.hpp"
+
+namespace steplab {
+
+std::string name(std::size_t method);                     // the method's table name
+std::string dt_text(double x);                            // 4 significant digits, inf, or - for NaN
+std::string num(double x);                                // full precision for data files; NaN if not finite
+std::string order_text(std::size_t method);               // declared order, or "exact"
+std::string fitted_text(const ConvergenceFit& fit);       // headline order and its bound
+std::string and_list(const std::vector<std::string>& items);       // a, b and c
+std::string method_list(const std::vector<std::size_t>& methods);  // `a`, `b` and `c`; "none"
+std::string fits_table(const ConvergenceResult& r);       // the Markdown table of fitted orders
+std::string params_text(std::size_t scene, const std::vector<double>& values);
+std::string wrapped(const std::string& cmd);              // a shell command broken for the page
+std::string words(const std::vector<double>& v);          // gnuplot word list: "a b c"
+std::string join(const std::vector<double>& v);           // CLI list: "a,b,c"
+std::string join(const std::vector<int>& v);
+std::string method_words(const std::vector<std::size_t>& methods);
+// "427 steps, 1708 forces": a run's counts (analysis/counts.hpp), with the rejected steps,
+// Jacobians and factorisations where it has them.
+std::string counts_text(const Counts& n);
+// "6.4.1, built optimised": the CVODE the peers ran on (its flags are in the studies' JSON).
+std::string cvode_build_text();
+
+// The families the report groups methods by, and a family's members among `methods` (its own
+// and those that open it: explicit Euler for Adams-Bashforth, implicit Euler for BDF), by order.
+inline constexpr Family kReportFamilies[] = {Family::ExplicitRungeKutta, Family::Splitting, Family::ImplicitRungeKutta,
+                                             Family::AdamsBashforth, Family::Bdf};
+std::vector<std::size_t> family_members(const std::vector<std::size_t>& methods, Family f);
+bool family_order_less(std::size_t a, std::size_t b);  // by family, then order, then table position
+
+}  // namespace steplab

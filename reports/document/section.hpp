@@ -1,0 +1,60 @@
+// A report section: one unit with its own studies (beyond the shared ones in ReportData), its
+// findings, its data files, its figures and its Markdown. The report is the list of sections in
+// reports/document/sections/sections.hpp; adding a section is one file in reports/document/sections/ plus one line
+// there (and, if it draws a figure, its gnuplot script in reports/document/gnuplot/, which stays a plain
+// script a reader can rerun on the report's data/).
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "reports/document/report.hpp"
+
+namespace steplab {
+
+// The report's data/ folder.
+class DataDir {
+ public:
+  explicit DataDir(std::filesystem::path dir) : dir_(std::move(dir)) {}
+  void write(const std::string& file, const std::string& content) const;
+
+ private:
+  std::filesystem::path dir_;
+};
+
+// A figure a section draws: reports/document/gnuplot/<script>.gp, with gnuplot variables of its own
+// (`name='value'; ...`) beside the ones every script gets (datadir, outfile, format, methods, ...).
+struct FigureSpec {
+  std::string script;
+  std::string vars;
+};
+
+// What a section's Markdown may use: the shared data and findings, and the figure numbering.
+class Page {
+ public:
+  Page(const ReportData& d, const Findings& f, std::string ext) : data(d), findings(f), ext_(std::move(ext)) {}
+  const ReportData& data;
+  const Findings& findings;
+  // ![caption](figures/<file>.<ext>): numbered "Figure n:" in the Markdown; LaTeX numbers the PDF's.
+  std::string figure(const std::string& file, const std::string& caption);
+  int next_figure() const { return figure_ + 1; }
+
+ private:
+  std::string ext_;
+  int figure_ = 0;
+};
+
+class Section {
+ public:
+  virtual ~Section() = default;
+  virtual void study(const ReportData&) {}                                    // its own studies
+  virtual void write_data(const ReportData&, const DataDir&) const {}         // its data files
+  virtual std::vector<FigureSpec> figures(const ReportData&) const { return {}; }
+  virtual std::string markdown(Page& page) const = 0;
+};
+
+std::vector<std::unique_ptr<Section>> report_sections();  // reports/document/sections/sections.cpp
+
+}  // namespace steplab

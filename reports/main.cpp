@@ -1,3 +1,0 @@
-#include "reports/cli.hpp"
-
-int main(int argc, char** argv) { return steplab::program_main(argc, argv); }
