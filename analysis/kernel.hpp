@@ -62,35 +62,35 @@ struct Observed {
 // One method's code on one scene. A 1-D scene has the step-map entries too (the stability
 // predictions and the local error difference or apply them), others have them null.
 struct PairKernel {
-  AnyResult (*run)(Params, const RunSpec&);
+  AnyResult (*run)(Params, const RunSpec&) = nullptr;
   // The run, counting what it asked of the scene and its Newton solves (analysis/counts.hpp).
-  AnyResult (*run_counted)(Params, const RunSpec&, Counts&);    // scenes with an exact solution or of run-time size
-  AnyResult (*run_observed)(Params, const RunSpec&, Observed&);  // fixed-size scenes with contact, and 1-D ones
+  AnyResult (*run_counted)(Params, const RunSpec&, Counts&) = nullptr;    // scenes with an exact solution or of run-time size
+  AnyResult (*run_observed)(Params, const RunSpec&, Observed&) = nullptr;  // fixed-size scenes with contact, and 1-D ones
   // Wall-clock times of the same run repeated (analysis/timing.hpp: at least `repeats`, `seconds`
   // in all), the scene made once before: the integration alone, what a user pays (the chain's
   // constructor, an eigen-decomposition, costs as much as a short run).
-  std::vector<double> (*timings)(Params, const RunSpec&, std::size_t repeats, double seconds);
+  std::vector<double> (*timings)(Params, const RunSpec&, std::size_t repeats, double seconds) = nullptr;
   // n steps of h from the initial state in place, starting again every `restart` steps (a
   // multistep method with a fresh memory), each state kept from being optimised away as
   // benchmark::DoNotOptimize keeps it: the per-step rows of `make bench` (bench/steps_bench.cpp).
-  void (*time_steps)(Params, double h, long long n, int restart);
+  void (*time_steps)(Params, double h, long long n, int restart) = nullptr;
   // 1-D scenes. The step map flattened: x, v, then a multistep method's memory entries' x and v
   // (analysis/step_map.hpp), one step of h from z; the flattened memory of a run that has sat
   // at (x, v) forever.
-  Eigen::VectorXd (*step_flat)(Params, const Eigen::VectorXd& z, double h);
-  Eigen::VectorXd (*at_rest_flat)(Params, double x, double v);
+  Eigen::VectorXd (*step_flat)(Params, const Eigen::VectorXd& z, double h) = nullptr;
+  Eigen::VectorXd (*at_rest_flat)(Params, double x, double v) = nullptr;
   // One step of h from the exact state at t0, a multistep method remembering the exact past
   // (1-D scenes with an exact solution); y in: ignored, out: the state reached.
-  StepStatus (*exact_step)(Params, double t0, double h, AnyState& y);
+  StepStatus (*exact_step)(Params, double t0, double h, AnyState& y) = nullptr;
   // n steps of h from (x, v) with the method's own start-up, state k after step k + 1 in xs[k],
   // vs[k]; the first status that was not Ok (1-D scenes).
-  StepStatus (*steps_from)(Params, double x, double v, double h, int n, double* xs, double* vs);
+  StepStatus (*steps_from)(Params, double x, double v, double h, int n, double* xs, double* vs) = nullptr;
   // The runs, `width` (2, 4 or 8: cpu_has_width, core/batch.hpp) at a time in SIMD lanes, the
   // loop compiled for that width's instruction set; out[i] is what run() gives for runs[i], to
   // the bit. Where the method's step is written over the scalar and the scene is Packable (the
-  // explicit one-step methods and Adams-Bashforth on the spring, today); null elsewhere. Keeps
+  // methods that core/batch.hpp's PackedStep admits); null elsewhere. Keeps
   // no samples (run_all gives runs that ask for them to run()).
-  void (*run_batch)(std::span<const BatchRun> runs, AnyResult* out, int width);
+  void (*run_batch)(std::span<const BatchRun> runs, AnyResult* out, int width) = nullptr;
 };
 
 // One method, whatever the scene.

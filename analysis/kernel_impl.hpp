@@ -210,7 +210,7 @@ template <class M, Scene S> struct BatchCode {
 // one more instantiation of the run loop.
 template <class M, Scene S> constexpr PairKernel make_pair() {
   using C = PairCode<M, S>;
-  PairKernel k{&C::run, nullptr, nullptr, &C::timings, &C::time_steps, nullptr, nullptr, nullptr, nullptr, nullptr};
+  PairKernel k{.run = &C::run, .timings = &C::timings, .time_steps = &C::time_steps};
   if constexpr (PackedStep<M, S>) k.run_batch = &BatchCode<M, S>::run_batch;
   if constexpr (HasExact<S> || S::dim == Eigen::Dynamic) k.run_counted = &C::run_counted;
   if constexpr ((HasContact<S> && S::dim != Eigen::Dynamic) || S::dim == 1) k.run_observed = &C::run_observed;
@@ -243,7 +243,9 @@ template <class M> struct MethodCode {
   }
 };
 
-template <class M> constexpr MethodKernel make_method() { return {M::info, map_size<M>(), &MethodCode<M>::test_matrix}; }
+template <class M> constexpr MethodKernel make_method() {
+  return {.info = M::info, .map_size = map_size<M>(), .test_matrix = &MethodCode<M>::test_matrix};
+}
 
 template <Scene S> struct SceneCode {
   static AnyState initial(Params p) {
@@ -274,8 +276,15 @@ template <Scene S> constexpr SceneKernel make_scene() {
   using C = SceneCode<S>;
   AnyState (*exact_at)(Params, double) = nullptr;
   if constexpr (HasExact<S>) exact_at = &C::exact_at;
-  return {S::name, std::span<const ParamSpec>(S::params), S::dim, HasExact<S>, &C::initial, exact_at, &C::norm, &C::dopri5,
-          &C::dopri5_timings};
+  return {.name = S::name,
+          .params = std::span<const ParamSpec>(S::params),
+          .dim = S::dim,
+          .has_exact = HasExact<S>,
+          .initial = &C::initial,
+          .exact = exact_at,
+          .norm = &C::norm,
+          .dopri5 = &C::dopri5,
+          .dopri5_timings = &C::dopri5_timings};
 }
 
 }  // namespace steplab

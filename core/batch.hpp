@@ -76,13 +76,13 @@ template <class M, class S>
 concept PackedStep = Packable<S> && solve_stages<M>() * S::dim <= kPackLuSize &&
                      requires(Stepper<M, PackScene<S, Pack<8>>, Pack<8>>& st, const PackScene<S, Pack<8>>& s,
                               State<S::dim, Pack<8>>& y, Pack<8> h) {
-                       st.step(s, y, h, h);  // a StepStatus, or the lanes that failed (a Mask)
+                       st.step(s, y, h, h);  // a StepStatus, or the lanes that failed (a mask)
                      };
 
 template <class M, Packable S, class T> class BatchRunner {
   static constexpr int W = T::width;
-  using PS = PackScene<S, T>;
-  using Mk = decltype(T() < T());
+  using LaneScene = PackScene<S, T>;
+  using LaneMask = MaskOf<T>;
   static constexpr int D = S::dim;
   static constexpr std::size_t P = S::params.size();
   template <class U> struct TrackerOf { using type = char; };  // a scene without an exact flow: none
@@ -105,27 +105,27 @@ template <class M, Packable S, class T> class BatchRunner {
   [[gnu::always_inline]] inline void run() {
     if (!any(active_)) return;
     for (;;) {
-      const PS scene = *scene_;
-      Stepper<M, PS, T> stepper = stepper_;
-      const Mk active = active_, rate = rate_, errors = errors_, e0_nonzero = e0_nonzero_;
+      const LaneScene scene = *scene_;
+      Stepper<M, LaneScene, T> stepper = stepper_;
+      const LaneMask active = active_, rate = rate_, errors = errors_, e0_nonzero = e0_nonzero_;
       const bool some_rate = some_rate_, some_errors = some_errors_;
       const T h = h_, steps = steps_, above = above_, below = below_, e0 = e0_;
       State<D, T> y = y_, last = y_;
       T i = i_, ratio = ratio_, ratio_max = ratio_max_, t = 0;
       EnergyFit<T> fit = fit_;
-      Exact ex = ex_;
-      Mk failed, diverged, ended;
+      Exact ex = exact_;
+      LaneMask failed, diverged, ended;
       do {
         const T t_prev = (i - 1.0) * h;
         t = i * h;
         State<D, T> next = y;
-        failed = active && Mk(steplab::failed(stepper.step(scene, next, t_prev, h)));  // Newton gave up
-        const Mk live = all_finite(next) && active && !failed;
+        failed = active && LaneMask(steplab::failed(stepper.step(scene, next, t_prev, h)));  // Newton gave up
+        const LaneMask live = all_finite(next) && active && !failed;
         diverged = active && !live;  // or failed
         last = y;
         y = next;
         const T e = scene.energy(y.x, y.v);
-        const Mk has_e0 = live && e0_nonzero;
+        const LaneMask has_e0 = live && e0_nonzero;
         const T r = e / e0;
         ratio_max = select(has_e0, max(ratio_max, r), ratio_max);
         ratio = select(has_e0, r, ratio);
@@ -133,13 +133,13 @@ template <class M, Packable S, class T> class BatchRunner {
         if constexpr (HasExact<S>)
           if (some_errors) track_errors(ex, y, live && errors, t);  // a lane not `on` keeps its values
         i = select(live, i + 1.0, i);
-        const Mk out = ratio > above || ratio < below;
+        const LaneMask out = ratio > above || ratio < below;
         ended = diverged || (live && (out || i > steps));
       } while (!any(ended));
       stepper_ = stepper;
       y_.x = select(diverged, last.x, y.x);
       y_.v = select(diverged, last.v, y.v);
-      i_ = i, ratio_ = ratio, ratio_max_ = ratio_max, fit_ = fit, ex_ = ex;
+      i_ = i, ratio_ = ratio, ratio_max_ = ratio_max, fit_ = fit, exact_ = ex;
       end_lanes(ended, diverged, failed, t);
       if (!any(active_)) return;
     }
@@ -152,22 +152,22 @@ template <class M, Packable S, class T> class BatchRunner {
   struct Exact {
     State<D, T> y = zero_state<D, T>(), c = zero_state<D, T>();
     Mat<D, T> xx = Mat<D, T>::Zero(), xv = Mat<D, T>::Zero(), vx = Mat<D, T>::Zero(), vv = Mat<D, T>::Zero();
-    T left = 0;  // steps to the closed form: 1 now, then kResync - 1 steps again; 0: always
+    T until_closed_form = 0;  // steps to the closed form: 1 now, then kResync - 1 steps again; 0: always
     ErrorSums<T> sums;
   };
 
   // The exact state, one step on: the affine map, or ExactTracker::at lane by lane (the closed
   // form every kResync-th step; every step on a scene whose tracker does not step a map, which
   // skips the map); the position and velocity errors of y against it.
-  [[gnu::always_inline]] inline void track_errors(Exact& ex, const State<D, T>& y, const Mk& on, const T& t) const {
+  [[gnu::always_inline]] inline void track_errors(Exact& ex, const State<D, T>& y, const LaneMask& on, const T& t) const {
     if constexpr (ExactTracker<S>::kCanStep) {
       const Vec<D, T> x = ex.c.x + ex.xx * ex.y.x + ex.xv * ex.y.v;
       const Vec<D, T> v = ex.c.v + ex.vx * ex.y.x + ex.vv * ex.y.v;
       ex.y.x = select(on, x, ex.y.x);
       ex.y.v = select(on, v, ex.y.v);
-      const Mk closed = on && ex.left <= 1.0;
-      const T next_left = select(ex.left > 1.0, ex.left - 1.0, select(ex.left == T(1.0), T(double(ExactTracker<S>::kResync)), T(0.0)));
-      ex.left = select(on, next_left, ex.left);
+      const LaneMask closed = on && ex.until_closed_form <= 1.0;
+      const T next_until = select(ex.until_closed_form > 1.0, ex.until_closed_form - 1.0, select(ex.until_closed_form == T(1.0), T(double(ExactTracker<S>::kResync)), T(0.0)));
+      ex.until_closed_form = select(on, next_until, ex.until_closed_form);
       if (any(closed)) [[unlikely]] ex.y = closed_form(closed, t, ex.y);
     } else if (any(on)) {
       ex.y = closed_form(on, t, ex.y);  // no map to step: the lane's tracker every step
@@ -176,7 +176,7 @@ template <class M, Packable S, class T> class BatchRunner {
   }
 
   // Its arguments by value: a copy's address escapes into the call, not the loop's locals.
-  [[gnu::noipa]] State<D, T> closed_form(Mk closed, T t, State<D, T> y) const {
+  [[gnu::noipa]] State<D, T> closed_form(LaneMask closed, T t, State<D, T> y) const {
     for (int l = 0; l < W; ++l)
       if (closed[l]) set_lane(y, l, tracker_[l]->at(t[l]));
     return y;
@@ -204,7 +204,7 @@ template <class M, Packable S, class T> class BatchRunner {
   // for one instruction set stays small enough for the method's step to be inlined into it.
   [[gnu::noipa]] void start() {
     for (int l = 0; l < W; ++l) {
-      for (std::size_t p = 0; p < P; ++p) params_[p].set(l, S::params[p].fallback);  // idle lanes: a valid scene
+      for (std::size_t p = 0; p < P; ++p) params_[p].set(l, S::params[p].default_value);  // idle lanes: a valid scene
       job_[l] = -1;
     }
     for (int l = 0; l < W; ++l) refill(l);
@@ -213,7 +213,7 @@ template <class M, Packable S, class T> class BatchRunner {
 
   // Writes the results of the lanes that ended, refills them, and remakes the pack's scene.
   // Its arguments by value, like closed_form's.
-  [[gnu::noipa]] void end_lanes(Mk ended, Mk diverged, Mk failed, T t) {
+  [[gnu::noipa]] void end_lanes(LaneMask ended, LaneMask diverged, LaneMask failed, T t) {
     for (int l = 0; l < W; ++l) {
       if (!ended[l]) continue;
       AnyResult& r = out_[job_[l]];
@@ -238,7 +238,7 @@ template <class M, Packable S, class T> class BatchRunner {
     r.final.x.resize(D), r.final.v.resize(D);
     for (int j = 0; j < D; ++j) r.final.x[j] = y_.x[j][l], r.final.v[j] = y_.v[j][l];
     r.energy0 = e0_[l];
-    finish_run(r, HasExact<S> && spec.errors, lane(ex_.sums, l), ratio_[l], ratio_max_[l]);
+    finish_run(r, HasExact<S> && spec.errors, lane(exact_.sums, l), ratio_[l], ratio_max_[l]);
     if (spec.energy_rate) r.energy_rate = lane(fit_, l).slope();
   }
 
@@ -269,7 +269,7 @@ template <class M, Packable S, class T> class BatchRunner {
       EnergyFit<double> fit;  // as Run's constructor starts it
       if (run.spec.energy_rate) fit.add(0.0, e0, e0 > 0 && std::isfinite(e0));
       set_lane(fit_, l, fit);
-      set_lane(ex_.sums, l, ErrorSums<double>{});
+      set_lane(exact_.sums, l, ErrorSums<double>{});
       if constexpr (HasExact<S>) {
         if (errors_[l]) load_tracker(l, s, run.spec.dt);
       }
@@ -284,13 +284,13 @@ template <class M, Packable S, class T> class BatchRunner {
 
   void load_tracker(int l, const S& s, double h) {
     tracker_[l].emplace(s);  // what closed_form asks: at(t) as a tracker that does not step gives it
-    set_lane(ex_.y, l, s.initial());
+    set_lane(exact_.y, l, s.initial());
     if constexpr (ExactTracker<S>::kCanStep) {
       const ExactTracker<S> map(s, h);  // the fixed step's map, copied into the lane
-      set_lane(ex_.c, l, map.offset());
-      set_block(ex_.xx, l, map.xx()), set_block(ex_.xv, l, map.xv());
-      set_block(ex_.vx, l, map.vx()), set_block(ex_.vv, l, map.vv());
-      ex_.left.set(l, map.stepping() ? ExactTracker<S>::kResync : 0);
+      set_lane(exact_.c, l, map.offset());
+      set_block(exact_.xx, l, map.xx()), set_block(exact_.xv, l, map.xv());
+      set_block(exact_.vx, l, map.vx()), set_block(exact_.vv, l, map.vv());
+      exact_.until_closed_form.set(l, map.stepping() ? ExactTracker<S>::kResync : 0);
     }
   }
 
@@ -310,15 +310,15 @@ template <class M, Packable S, class T> class BatchRunner {
   // on scalar_[l], emplaced after it; stepped by closed_form (const: it leaves the loop's state alone)
   mutable std::array<std::optional<LaneTracker>, W> tracker_;
   std::array<T, P> params_{};
-  std::optional<PS> scene_;
-  Stepper<M, PS, T> stepper_;  // a multistep method's memory, lane by lane
-  Mk active_{}, rate_{}, errors_{}, e0_nonzero_{};
+  std::optional<LaneScene> scene_;
+  Stepper<M, LaneScene, T> stepper_;  // a multistep method's memory, lane by lane
+  LaneMask active_{}, rate_{}, errors_{}, e0_nonzero_{};
   bool some_rate_ = false, some_errors_ = false;
   State<D, T> y_ = zero_state<D, T>();
   T h_ = 0, i_ = 1, steps_ = 0, above_ = 0, below_ = 0;
   T e0_ = 0, ratio_ = 1, ratio_max_ = 1;
   EnergyFit<T> fit_;
-  Exact ex_;
+  Exact exact_;
 };
 
 }  // namespace steplab

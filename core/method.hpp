@@ -54,7 +54,7 @@ struct MethodInfo {
   bool a_stable = false;      // stable for every h lambda with Re <= 0: every step on a damped spring
   bool exact_flow = false;    // the analytic solution: needs a scene with an exact flow
   std::string_view summary;
-  Family also = Family::None;  // a second family the method is the first member of
+  Family first_of = Family::None;  // a second family whose first member the method is (explicit Euler: AB1)
 };
 
 // A method whose step solves for its stages by Newton (solve_implicit, core/implicit_rk.hpp)

@@ -33,11 +33,11 @@ enum class Bound { Positive, NonNegative, Any };
 
 struct ParamSpec {
   std::string_view name;  // CLI long option without the dashes, JSON key with '-' -> '_'
-  double fallback;        // the default
+  double default_value;
   Bound bound;
   std::string_view help;
-  bool whole = false;  // a count: a whole number from 1 to `most` (the rope's --masses)
-  double most = 0;
+  bool is_count = false;  // a whole number from 1 to `max_count` (the rope's --masses)
+  double max_count = 0;
 };
 
 template <class S>
@@ -118,12 +118,12 @@ template <HasExact S> class ExactTracker {
         xx_.col(i) = (from_x.x - c_.x) / a, vx_.col(i) = (from_x.v - c_.v) / a;
         xv_.col(i) = (from_v.x - c_.x) / a, vv_.col(i) = (from_v.v - c_.v) / a;
       }
-      left_ = kResync;
+      until_closed_form_ = kResync;
     }
   }
 
   // The fixed step's affine map, where it steps (core/batch.hpp copies it into a pack's lanes).
-  bool stepping() const { return left_ != 0; }
+  bool stepping() const { return until_closed_form_ != 0; }
   const State<D>& offset() const { return c_; }
   const Block& xx() const { return xx_; }
   const Block& xv() const { return xv_; }
@@ -132,14 +132,14 @@ template <HasExact S> class ExactTracker {
 
   const State<D>& at(double t) {
     if constexpr (kCanStep) {
-      if (left_ > 1) {
-        --left_;
+      if (until_closed_form_ > 1) {
+        --until_closed_form_;
         const Vec<D> x = c_.x + xx_ * y_.x + xv_ * y_.v;
         y_.v = c_.v + vx_ * y_.x + vv_ * y_.v;
         y_.x = x;
         return y_;
       }
-      if (left_ == 1) left_ = kResync;  // the closed form now, then kResync - 1 steps again
+      if (until_closed_form_ == 1) until_closed_form_ = kResync;  // the closed form now, then kResync - 1 steps again
     }
     if constexpr (requires { s_.exact_at(t); }) y_ = s_.exact_at(t);
     else y_ = s_.flow(y_, t - t_);
@@ -152,7 +152,7 @@ template <HasExact S> class ExactTracker {
   State<D> y_;
   double t_ = 0;
   // the fixed step's affine map, in blocks: x <- c.x + xx x + xv v, v <- c.v + vx x + vv v
-  int left_ = 0;  // 1 + the steps left before the closed form again; 0: not stepping
+  int until_closed_form_ = 0;  // 1 + the steps left before the closed form again; 0: not stepping
   static Block zero_block() {
     if constexpr (D == Eigen::Dynamic) return {};
     else return Block::Zero();
@@ -191,14 +191,14 @@ inline bool has_param(std::span<const ParamSpec> params, std::string_view name) 
 // A parameter table's default values, in table order: what the studies' configurations hold.
 inline std::vector<double> default_values(std::span<const ParamSpec> params) {
   std::vector<double> v;
-  for (const ParamSpec& p : params) v.push_back(p.fallback);
+  for (const ParamSpec& p : params) v.push_back(p.default_value);
   return v;
 }
 
 // The scene's default parameter values, in table order.
 template <Scene S> auto default_params() {
   std::array<double, S::params.size()> p{};
-  for (std::size_t i = 0; i < p.size(); ++i) p[i] = S::params[i].fallback;
+  for (std::size_t i = 0; i < p.size(); ++i) p[i] = S::params[i].default_value;
   return p;
 }
 

@@ -57,8 +57,8 @@ int legacy_command(const LegacyArgs& l, Context& ctx) {
     if (!value->empty()) parse_number(flag, *value, std::string_view(flag) == "-mass" ? Bound::Positive : Bound::NonNegative);
   RunArgs run;
   run.scene.scene = l.testcase == "falling" ? "falling" : "spring";
-  run.scene.fallback = {{"mass", 0.1}, {"stiffness", 10.0}, {"damping", 0.01}, {"rest-length", 1.0}};
-  if (l.testcase == "falling") run.scene.fallback.erase("rest-length");
+  run.scene.old_defaults = {{"mass", 0.1}, {"stiffness", 10.0}, {"damping", 0.01}, {"rest-length", 1.0}};
+  if (l.testcase == "falling") run.scene.old_defaults.erase("rest-length");
   if (!l.mass.empty()) run.scene.set("mass", l.mass);
   if (!l.stiff.empty()) run.scene.set("stiffness", l.stiff);
   if (!l.damp.empty()) run.scene.set("damping", l.damp);

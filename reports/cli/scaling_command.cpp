@@ -122,7 +122,7 @@ int scaling_command(ScalingArgs& a, Context& ctx) {
   if (!a.sizes.empty()) {
     c.sizes.clear();
     const ParamSpec& size = scene_kernel(a.scene.scene_index()).params[0];  // --masses, --grid: its range
-    for (const std::string& s : split_list(a.sizes)) c.sizes.push_back(static_cast<int>(parse_count("--sizes", s, 1, static_cast<long long>(size.most))));
+    for (const std::string& s : split_list(a.sizes)) c.sizes.push_back(static_cast<int>(parse_count("--sizes", s, 1, static_cast<long long>(size.max_count))));
   }
   c.target_error = parse_number("--error", a.error, Bound::Positive);
   c.t_end = parse_number("--t-end", a.t_end, Bound::Positive);

@@ -22,7 +22,7 @@ std::string scene_parameters_help() {
   for (std::size_t s = 0; s < scene_count(); ++s) {
     out += fmt::format("  {}:\n", scene_name(s));
     for (const ParamSpec& p : scene_kernel(s).params)
-      out += fmt::format("    {:<28}{} (default {})\n", fmt::format("--{} NUMBER", p.name), p.help, p.fallback);
+      out += fmt::format("    {:<28}{} (default {})\n", fmt::format("--{} NUMBER", p.name), p.help, p.default_value);
   }
   return out;
 }
@@ -61,10 +61,10 @@ std::vector<double> SceneArgs::values(std::size_t index) const {
   std::vector<double> v;
   for (const ParamSpec& p : s.params) {
     const std::string option = "--" + std::string(p.name);
-    if (given(p.name) && p.whole) v.push_back(static_cast<double>(parse_count(option, text.at(std::string(p.name)), 1, static_cast<long long>(p.most))));
+    if (given(p.name) && p.is_count) v.push_back(static_cast<double>(parse_count(option, text.at(std::string(p.name)), 1, static_cast<long long>(p.max_count))));
     else if (given(p.name)) v.push_back(parse_number(option, text.at(std::string(p.name)), p.bound));
-    else if (auto f = fallback.find(p.name); f != fallback.end()) v.push_back(f->second);
-    else v.push_back(p.fallback);
+    else if (auto f = old_defaults.find(p.name); f != old_defaults.end()) v.push_back(f->second);
+    else v.push_back(p.default_value);
   }
   return v;
 }

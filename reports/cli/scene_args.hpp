@@ -15,7 +15,7 @@ namespace steplab {
 struct SceneArgs {
   std::string scene = "spring";
   std::map<std::string, std::string, std::less<>> text;   // parameter -> value as typed
-  std::map<std::string, double, std::less<>> fallback;    // defaults that replace the scene's (old flags)
+  std::map<std::string, double, std::less<>> old_defaults;  // the old framework's defaults, in place of the scene's
   CLI::App* app = nullptr;
 
   // Adds --scene, one option per parameter name of any scene, and their help by scene.

@@ -148,10 +148,10 @@ ReportConfig report_config_from_json(const Json& user) {
   const Json& sc = j["scaling"];
   c.scaling_sizes.clear();
   const ParamSpec& masses = scene_kernel(scene_index("rope")).params[0];  // the rope's --masses: its range
-  for (const Json& n : sc["sizes"]) c.scaling_sizes.push_back(count(n, "scaling.sizes", 1, static_cast<int>(masses.most)));
+  for (const Json& n : sc["sizes"]) c.scaling_sizes.push_back(count(n, "scaling.sizes", 1, static_cast<int>(masses.max_count)));
   c.scaling_grids.clear();
   const ParamSpec& grid = scene_kernel(scene_index("softbody")).params[0];  // the soft body's --grid: its range
-  for (const Json& n : sc["grids"]) c.scaling_grids.push_back(count(n, "scaling.grids", 1, static_cast<int>(grid.most)));
+  for (const Json& n : sc["grids"]) c.scaling_grids.push_back(count(n, "scaling.grids", 1, static_cast<int>(grid.max_count)));
   c.scaling_error = num(sc["error"], "scaling.error", Bound::Positive);
   c.scaling_t_end = num(sc["t_end"], "scaling.t_end", Bound::Positive);
   const Json& fg = j["figures"];

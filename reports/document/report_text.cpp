@@ -110,7 +110,7 @@ std::string method_words(const std::vector<std::size_t>& methods) {
 std::vector<std::size_t> family_members(const std::vector<std::size_t>& methods, Family f) {
   std::vector<std::size_t> out;
   for (std::size_t m : methods)
-    if (method_info(m).family == f || method_info(m).also == f) out.push_back(m);
+    if (method_info(m).family == f || method_info(m).first_of == f) out.push_back(m);
   std::sort(out.begin(), out.end(), [](std::size_t a, std::size_t b) {
     return std::pair(method_info(a).order, a) < std::pair(method_info(b).order, b);
   });

@@ -277,8 +277,8 @@ TEST(MethodTable, NamesAliasesAndFlags) {
   }
   EXPECT_EQ(method_info(*find_method("rk4")).order, 4);
   // every family spans several orders; explicit and implicit Euler open Adams-Bashforth and BDF
-  EXPECT_EQ(method_info(*find_method("explicit_euler")).also, Family::AdamsBashforth);
-  EXPECT_EQ(method_info(*find_method("implicit_euler")).also, Family::Bdf);
+  EXPECT_EQ(method_info(*find_method("explicit_euler")).first_of, Family::AdamsBashforth);
+  EXPECT_EQ(method_info(*find_method("implicit_euler")).first_of, Family::Bdf);
   for (Family f : {Family::ExplicitRungeKutta, Family::Splitting, Family::ImplicitRungeKutta}) {
     std::set<int> orders;
     for (std::size_t m = 0; m < method_count(); ++m)

@@ -152,7 +152,7 @@ void expect_family_sentences_follow_data(const ReportData& d, const std::string&
   for (Family f : {Family::ExplicitRungeKutta, Family::Splitting, Family::ImplicitRungeKutta, Family::AdamsBashforth, Family::Bdf}) {
     std::vector<std::size_t> fam;
     for (std::size_t m = 0; m < method_count(); ++m)
-      if (method_info(m).family == f || method_info(m).also == f) fam.push_back(m);
+      if (method_info(m).family == f || method_info(m).first_of == f) fam.push_back(m);
     // std::sort, not stable_sort: GCC 12's stable_sort buffer trips ASan's new/free check
     std::sort(fam.begin(), fam.end(), [](auto a, auto b) { return std::pair(method_info(a).order, a) < std::pair(method_info(b).order, b); });
     ASSERT_GE(fam.size(), 3u) << to_string(f);  // every family spans at least three orders
