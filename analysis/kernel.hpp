@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -102,12 +103,38 @@ struct MethodKernel {
   Eigen::MatrixXd (*test_matrix)(double k, double c);
 };
 
+// A scene of run-time size made once and reached through the table (SceneKernel::made): what a
+// solver outside the table (the peers, analysis/sized_peers.cpp) asks of it. `scene` is the
+// object SceneKernel::make made.
+struct MadeSceneCode {
+  Eigen::VectorXd (*force)(const void* scene, const Eigen::VectorXd& x, const Eigen::VectorXd& v);
+  Jacobians<Eigen::Dynamic> (*jacobians)(const void* scene, const Eigen::VectorXd& x, const Eigen::VectorXd& v);
+  const Eigen::VectorXd& (*inverse_mass)(const void* scene);
+  State<Eigen::Dynamic> (*initial)(const void* scene);
+};
+
 // One scene, whatever the method.
 struct SceneKernel {
   std::string_view name;
+  std::string_view title;  // the scene in a few words, for a table's heading (its name if it gives none)
   std::span<const ParamSpec> params;
   int dim;
   bool has_exact;
+  // What the scene offers the studies (core/scene.hpp), asked for instead of its name; a
+  // parameter by its index in `params`, -1 where the scene declares none.
+  bool affine_flow = false;
+  bool contact = false;
+  int size_param = -1;       // the count that refines a scene of run-time size; -1: fixed size
+  int stiffness_param = -1;
+  int damping_param = -1;
+  int coords_per_mass = 1;   // N masses = dim / coords_per_mass
+  int jacobian_bandwidth = -1;  // -1: not declared banded
+  std::vector<Mode> (*modes)(Params) = nullptr;  // its linearisation's oscillators, slowest first
+  // Scenes of run-time size: the scene made once, its number of masses, and its code for solvers
+  // outside the table (null on fixed-size scenes).
+  std::shared_ptr<const void> (*make)(Params) = nullptr;
+  int (*masses)(Params) = nullptr;
+  const MadeSceneCode* made = nullptr;
   AnyState (*initial)(Params);
   AnyState (*exact)(Params, double t);  // null without an exact solution
   // The Euclidean norm of a vector of dim entries as the scene's fixed-size Vec computes it (Eigen

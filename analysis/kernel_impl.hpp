@@ -272,19 +272,43 @@ template <Scene S> struct SceneCode {
   }
 };
 
+// A scene of run-time size as MadeSceneCode (analysis/kernel.hpp) reaches it.
+template <Scene S> struct MadeCode {
+  static const S& of(const void* s) { return *static_cast<const S*>(s); }
+  static std::shared_ptr<const void> make(Params p) { return std::make_shared<const S>(p); }
+  static int masses(Params p) { return static_cast<int>(S(p).initial().x.size()) / coords_per_mass<S>(); }
+  static Eigen::VectorXd force(const void* s, const Eigen::VectorXd& x, const Eigen::VectorXd& v) { return of(s).force(x, v); }
+  static Jacobians<Eigen::Dynamic> jacobians(const void* s, const Eigen::VectorXd& x, const Eigen::VectorXd& v) {
+    return of(s).jacobians(x, v);
+  }
+  static const Eigen::VectorXd& inverse_mass(const void* s) { return of(s).inverse_mass(); }
+  static State<Eigen::Dynamic> initial(const void* s) { return of(s).initial(); }
+  static constexpr MadeSceneCode code{&force, &jacobians, &inverse_mass, &initial};
+};
+
 template <Scene S> constexpr SceneKernel make_scene() {
   using C = SceneCode<S>;
-  AnyState (*exact_at)(Params, double) = nullptr;
-  if constexpr (HasExact<S>) exact_at = &C::exact_at;
-  return {.name = S::name,
-          .params = std::span<const ParamSpec>(S::params),
-          .dim = S::dim,
-          .has_exact = HasExact<S>,
-          .initial = &C::initial,
-          .exact = exact_at,
-          .norm = &C::norm,
-          .dopri5 = &C::dopri5,
-          .dopri5_timings = &C::dopri5_timings};
+  SceneKernel k{.name = S::name,
+                .title = scene_title<S>(),
+                .params = std::span<const ParamSpec>(S::params),
+                .dim = S::dim,
+                .has_exact = HasExact<S>,
+                .affine_flow = HasAffineFlow<S>,
+                .contact = HasContact<S>,
+                .size_param = size_param_index<S>(),
+                .stiffness_param = stiffness_param_index<S>(),
+                .damping_param = damping_param_index<S>(),
+                .coords_per_mass = coords_per_mass<S>(),
+                .jacobian_bandwidth = jacobian_bandwidth<S>(),
+                .initial = &C::initial,
+                .exact = nullptr,
+                .norm = &C::norm,
+                .dopri5 = &C::dopri5,
+                .dopri5_timings = &C::dopri5_timings};
+  if constexpr (HasExact<S>) k.exact = &C::exact_at;
+  if constexpr (HasModes<S>) k.modes = [](Params p) { return S(p).modes(); };
+  if constexpr (S::dim == Eigen::Dynamic) k.make = &MadeCode<S>::make, k.masses = &MadeCode<S>::masses, k.made = &MadeCode<S>::code;
+  return k;
 }
 
 }  // namespace steplab

@@ -7,6 +7,7 @@
 #include <sundials/sundials_config.h>
 
 #include "analysis/fixed_peers.hpp"
+#include "analysis/kernel.hpp"
 #include "core/scenes/chain.hpp"
 #include "core/scenes/spring.hpp"
 
@@ -36,12 +37,12 @@ constexpr PeerInfo kPeers[] = {
     cvode("cvode_adams_dense", "dense", PeerScenes::FixedSize, kAdams),
     cvode("cvode_bdf_dense", "dense", PeerScenes::FixedSize, kBdf),
     cvode("cvode_bdf_max2_dense", "dense", PeerScenes::FixedSize, kBdfMax2),
-    cvode("cvode_adams_band", "band", PeerScenes::Rope, kAdams),
-    cvode("cvode_bdf_band", "band", PeerScenes::Rope, kBdf),
-    cvode("cvode_bdf_max2_band", "band", PeerScenes::Rope, kBdfMax2),
-    cvode("cvode_adams_klu", "KLU", PeerScenes::SoftBody, kAdams, kKlu),
-    cvode("cvode_bdf_klu", "KLU", PeerScenes::SoftBody, kBdf, kKlu),
-    cvode("cvode_bdf_max2_klu", "KLU", PeerScenes::SoftBody, kBdfMax2, kKlu),
+    cvode("cvode_adams_band", "band", PeerScenes::Banded, kAdams),
+    cvode("cvode_bdf_band", "band", PeerScenes::Banded, kBdf),
+    cvode("cvode_bdf_max2_band", "band", PeerScenes::Banded, kBdfMax2),
+    cvode("cvode_adams_klu", "KLU", PeerScenes::Sparse, kAdams, kKlu),
+    cvode("cvode_bdf_klu", "KLU", PeerScenes::Sparse, kBdf, kKlu),
+    cvode("cvode_bdf_max2_klu", "KLU", PeerScenes::Sparse, kBdfMax2, kKlu),
 };
 
 }  // namespace
@@ -55,6 +56,11 @@ std::string_view cvode_method_words(const PeerInfo& p) {
 const PeerInfo* find_peer(std::string_view name) {
   const auto it = std::find_if(std::begin(kPeers), std::end(kPeers), [&](const PeerInfo& p) { return p.name == name; });
   return it == std::end(kPeers) ? nullptr : &*it;
+}
+
+PeerScenes peer_scenes(const SceneKernel& scene) {
+  if (scene.dim != Eigen::Dynamic) return PeerScenes::FixedSize;
+  return scene.jacobian_bandwidth >= 0 ? PeerScenes::Banded : PeerScenes::Sparse;
 }
 
 bool peer_runs_on(const PeerInfo& p, PeerScenes scenes) { return p.scenes == PeerScenes::Any || p.scenes == scenes; }

@@ -12,7 +12,8 @@
 // its order capped at 2 where eigenvalues lie near the imaginary axis (every scene here is a
 // lightly damped oscillator); each with Newton's iteration on the scene's analytic Jacobian and
 // the linear solver that fits the Jacobian's structure: dense on the fixed-size scenes, band on
-// the rope (its state interleaved), KLU (SuiteSparse's sparse LU) on the soft body. Its other
+// the scenes that declare a banded Jacobian (the rope; its state interleaved), KLU (SuiteSparse's
+// sparse LU) on the other scenes of run-time size (the soft body). Its other
 // settings at their defaults (the iteration matrix reused for up to 20 steps, refreshed when gamma
 // changes by 30 %); what the other settings measured on the rope is in the README. CVODE is built
 // optimised from its Debian source package (tools/sundials.cmake); peer_builds() says which build
@@ -44,9 +45,13 @@ struct CvodeSettings {
   bool stability_limit_detection = false;  // BDF: lower the order where it is unstable
 };
 
-// Which scenes a peer runs on: the fixed-size scenes of the work-precision study (spring, chain:
-// dense Jacobian), or one of the scaling study's scenes of run-time size.
-enum class PeerScenes { FixedSize, Rope, SoftBody, Any };
+// Which scenes a peer runs on, by the linear solver that fits their Jacobian: the fixed-size
+// scenes of the work-precision study (dense), the scenes of run-time size that declare their
+// Jacobians banded (core/scene.hpp, jacobian_bandwidth: the rope), the other scenes of run-time
+// size (sparse: the soft body); or any scene (the explicit solvers).
+enum class PeerScenes { FixedSize, Banded, Sparse, Any };
+struct SceneKernel;  // analysis/kernel.hpp
+PeerScenes peer_scenes(const SceneKernel& scene);
 
 inline constexpr std::string_view kCvodeLibrary = "SUNDIALS CVODE";
 

@@ -10,10 +10,10 @@
 #include "analysis/convergence.hpp"
 #include "analysis/fit.hpp"
 #include "analysis/kernel.hpp"
-#include "analysis/rope_stability.hpp"
+#include "analysis/defaults.hpp"
+#include "analysis/mode_stability.hpp"
 #include "analysis/shard.hpp"
 #include "analysis/sized_peers.hpp"
-#include "analysis/softbody_stability.hpp"
 #include "analysis/timing.hpp"
 
 namespace steplab {
@@ -36,11 +36,12 @@ namespace {
 constexpr std::size_t kRepeats = 1;
 constexpr double kSeconds = 0.1;
 
-bool is_rope(const ScalingConfig& c) { return c.scene == Rope::name; }
+const SceneKernel& scene_of(const ScalingConfig& c) { return scene_kernel(scene_index(c.scene)); }
 
+// The study's parameters with the scene's size parameter (core/scene.hpp, size_param) at n.
 std::vector<double> sized(const ScalingConfig& c, int n) {
   std::vector<double> p = c.params;
-  p[0] = n;  // Rope::params and SoftBody::params: the size first
+  p[scene_of(c).size_param] = n;
   return p;
 }
 
@@ -51,15 +52,10 @@ std::string fmt_reference_error(double estimated, double target, int n) {
   return text;
 }
 
-// f(scene) on the study's scene at size n, made once: a Rope or a SoftBody.
-template <class F> auto with_scene(const ScalingConfig& c, int n, F&& f) {
-  const std::vector<double> p = sized(c, n);
-  return is_rope(c) ? f(Rope(p)) : f(SoftBody(p));
-}
-
-// Where each size's runs are measured against: the positions at t_end, exact (the rope) or the
-// reference solution (the soft body: dopri5 at rtol 1e-13, analysis/convergence.hpp), whose own
-// estimated error must stay a hundredth of the target's.
+// Where each size's runs are measured against: the positions at t_end, exact where the scene has
+// an exact solution (the rope), else the reference solution (the soft body: dopri5 at rtol
+// 1e-13, analysis/convergence.hpp), whose own estimated error must stay a hundredth of the
+// target's.
 Eigen::VectorXd target_positions(const ScalingConfig& c, int n) {
   const SceneKernel& s = scene_kernel(scene_index(c.scene));
   const std::vector<double> p = sized(c, n);
@@ -70,11 +66,10 @@ Eigen::VectorXd target_positions(const ScalingConfig& c, int n) {
   return Eigen::Map<const Eigen::VectorXd>(ref.x.data(), std::ssize(ref.x));
 }
 
-// The solvers' largest stable step: from the rope's modes, from the soft body's fastest mode.
-double predicted_threshold(std::size_t m, const Rope& r) { return rope_predicted_threshold(m, r); }
-double predicted_threshold(std::size_t m, const SoftBody& s) { return softbody_predicted_threshold(m, s); }
-
-PeerScenes peer_scenes(std::string_view scene) { return scene == Rope::name ? PeerScenes::Rope : PeerScenes::SoftBody; }
+// A method's largest stable step: from the scene's modes (analysis/mode_stability.hpp).
+double predicted_threshold(std::size_t m, const SceneKernel& s, const std::vector<double>& p) {
+  return modes_predicted_threshold(m, s.modes(p));
+}
 
 // The largest |x_i - x_i(t_end)| over the masses; inf for a run that did not finish.
 double max_error(const Eigen::VectorXd& x, const Eigen::VectorXd& exact, bool ok) {
@@ -127,7 +122,7 @@ ScalingRow method_row(const ScalingConfig& c, const Eigen::VectorXd& exact, std:
   const std::size_t scene = scene_index(c.scene);
   const MethodInfo& info = method_info(m);
   ScalingRow row{std::string(info.name), info.implicit, false, n, scaling_masses(c, n)};
-  row.dt_stable = with_scene(c, n, [&](const auto& s) { return predicted_threshold(m, s); });
+  row.dt_stable = predicted_threshold(m, scene_kernel(scene), p);
   const double most = std::min(0.95 * row.dt_stable, c.t_end / 2);
   if (!(most * c.max_steps >= c.t_end)) {  // no stable step covers t_end in max_steps
     row.dt = kNaN;
@@ -173,13 +168,12 @@ ScalingRow peer_row(const ScalingConfig& c, const Eigen::VectorXd& exact, const 
     });
     return row;
   }
-  with_scene(c, n, [&](const auto& s) {
-    search(row, 1e-4, 1e-2, 1, c.target_error, [&](double tol) {
-      PeerCounts counts;
-      const State<Eigen::Dynamic> end = run_sized_peer(peer, s, tol, c.t_end, counts);
-      return Trial{max_error(end.x, exact, !counts.failed), counts};
-    });
-    return 0;
+  const SceneKernel& s = scene_kernel(scene);
+  const std::shared_ptr<const void> made = s.make(p);
+  search(row, 1e-4, 1e-2, 1, c.target_error, [&](double tol) {
+    PeerCounts counts;
+    const State<Eigen::Dynamic> end = run_sized_peer(peer, s, made.get(), tol, c.t_end, counts);
+    return Trial{max_error(end.x, exact, !counts.failed), counts};
   });
   return row;
 }
@@ -198,10 +192,10 @@ double run_seconds(const ScalingConfig& c, const ScalingRow& row) {
     times = scene_kernel(scene).dopri5_timings(p, adaptive_spec(row.dt, c.t_end), kRepeats, kSeconds);
   } else {  // the scene made once, outside the timed runs
     const PeerInfo& peer = *find_peer(row.solver);
-    times = with_scene(c, row.n, [&](const auto& s) {
-      PeerCounts counts;
-      return repeated_timings([&] { run_sized_peer(peer, s, row.dt, c.t_end, counts); }, kRepeats, kSeconds);
-    });
+    const SceneKernel& s = scene_kernel(scene);
+    const std::shared_ptr<const void> made = s.make(p);
+    PeerCounts counts;
+    times = repeated_timings([&] { run_sized_peer(peer, s, made.get(), row.dt, c.t_end, counts); }, kRepeats, kSeconds);
   }
   return *std::min_element(times.begin(), times.end());
 }
@@ -225,22 +219,28 @@ ScalingFit fit_of(const ScalingConfig& c, std::span<const ScalingRow> rows) {
 
 double scaling_cost(const ScalingConfig& c, const ScalingRow& r) { return c.timing ? r.seconds : double(r.forces + r.jacobians) * r.masses; }
 
-int scaling_masses(const ScalingConfig& c, int n) { return is_rope(c) ? n : n * n; }
+int scaling_masses(const ScalingConfig& c, int n) { return scene_of(c).masses(sized(c, n)); }
 
-std::vector<std::string> scaling_adaptive_solvers(std::string_view scene) { return peer_names(peer_scenes(scene)); }
+std::vector<std::string> scaling_adaptive_solvers(std::string_view scene) {
+  return peer_names(peer_scenes(scene_kernel(scene_index(scene))));
+}
+
+bool scales(const SceneKernel& s) { return s.size_param >= 0 && s.modes; }
 
 ScalingConfig scaling_config(std::string_view scene) {
   ScalingConfig c;
   c.scene = std::string(scene);
   c.adaptive = scaling_adaptive_solvers(scene);
   c.params = default_param_values(scene_index(scene));
-  if (!is_rope(c)) c.sizes = {4, 8, 16}, c.max_steps = 200'000;  // implicit soft-body steps pay a sparse LU each
+  ScalingDefaults d = scaling_defaults(scene);
+  c.sizes = std::move(d.sizes), c.max_steps = d.max_steps;
   return c;
 }
 
 ScalingResult scaling_study(const ScalingConfig& c) {
+  if (!scales(scene_of(c))) throw std::logic_error("scaling_study: the " + c.scene + " has no size parameter or no modes");
   for (const std::string& a : c.adaptive)
-    if (const PeerInfo* p = find_peer(a); !p || !p->built || !peer_runs_on(*p, peer_scenes(c.scene)))
+    if (const PeerInfo* p = find_peer(a); !p || !p->built || !peer_runs_on(*p, peer_scenes(scene_of(c))))
       throw std::logic_error("scaling_study: " + a + " is not an adaptive solver built for the " + c.scene);
   ScalingResult out;
   out.config = c;

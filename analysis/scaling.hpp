@@ -1,10 +1,10 @@
-// How the choice of integrator changes as the system grows: a scene of run-time size refined,
-// its size over `sizes` (the rope of N masses, core/scenes/rope.hpp; the soft body of n x n
-// masses, core/scenes/softbody.hpp: N = n^2), every method and the peers at each size.
+// How the choice of integrator changes as the system grows: a scene of run-time size that
+// declares its modes (core/scene.hpp: size_param, modes(); the rope of N masses, the soft body of
+// n x n masses: N = n^2) refined over `sizes`, every method and the peers at each size.
 //
 // For each solver and size:
-//   the largest stable step dt*, predicted from the rope's modes (analysis/rope_stability.hpp;
-//     measured against runs there) or the soft body's fastest mode (analysis/softbody_stability.hpp);
+//   the largest stable step dt*, predicted from the scene's modes (analysis/mode_stability.hpp;
+//     measured against runs there);
 //   the step (dopri5 and the peers: the tolerance rtol = atol) at which the run reaches the
 //     target position error, the largest over the coordinates at t_end against the exact solution
 //     (the rope) or the reference solution (the soft body: dopri5 at rtol 1e-13), so that the same
@@ -33,6 +33,7 @@
 
 #include "analysis/parallel.hpp"
 #include "analysis/counts.hpp"
+#include "analysis/defaults.hpp"
 #include "core/simulate.hpp"
 
 namespace steplab {
@@ -40,8 +41,8 @@ namespace steplab {
 inline constexpr int kSearchRuns = 10;
 
 struct ScalingConfig {
-  std::string scene = "rope";  // rope or softbody
-  std::vector<double> params;  // the scene's parameters, table order (the first, its size, replaced by each size)
+  std::string scene{kDefaultSizedScene};  // a scene that scales(): of run-time size, with modes
+  std::vector<double> params;  // the scene's parameters, table order (its size parameter replaced by each size)
   std::vector<int> sizes{16, 64, 256, 1024};
   std::vector<std::size_t> methods;  // numerical methods of the table
   // steplab's dopri5 and the peers (analysis/peers.hpp) that run on the scene: by default all
@@ -58,7 +59,7 @@ struct ScalingRow {
   std::string solver;    // a method's name, dopri5 or a peer's (analysis/peers.hpp)
   bool implicit = false;
   bool adaptive = false; // dt below is then the tolerance
-  int n = 0;             // the size: the rope's masses, the soft body's grid side
+  int n = 0;             // the size: the value of the scene's size parameter
   int masses = 0;        // N
   double dt_stable = 0;  // predicted dt* (inf: none; NaN for the adaptive solvers)
   double dt = 0;         // the step (tolerance) that reaches the target; NaN if none did
@@ -94,9 +95,13 @@ struct ScalingResult {
   }
 };
 
-// The study's defaults on a scene: its default parameters; the rope at 16, 64, 256, 1024 masses
-// with searches of up to 2 000 000 steps, the soft body at n = 4, 8, 16 with up to 200 000 (its
-// implicit steps pay a sparse LU each); dopri5 and every peer built that runs on the scene.
+// Whether the study runs on a scene: of run-time size (a size parameter) with modes.
+struct SceneKernel;
+bool scales(const SceneKernel& scene);
+// The study's defaults on a scene: its default parameters; the sizes and step cap of
+// analysis/defaults.hpp (the rope at 16, 64, 256, 1024 masses with searches of up to 2 000 000
+// steps, the soft body at n = 4, 8, 16 with up to 200 000); dopri5 and every peer built that runs
+// on the scene.
 ScalingConfig scaling_config(std::string_view scene);
 
 ScalingResult scaling_study(const ScalingConfig& c);
@@ -104,7 +109,7 @@ ScalingResult scaling_study(const ScalingConfig& c);
 // What a row's run cost: its seconds, or without timing its force and Jacobian evaluations times
 // N (each touches every mass; the linear solves not counted).
 double scaling_cost(const ScalingConfig& c, const ScalingRow& r);
-// The number of masses at size n: n on the rope, n^2 on the soft body.
+// The number of masses at size n (the scene's: n on the rope, n^2 on the soft body).
 int scaling_masses(const ScalingConfig& c, int n);
 // The adaptive solvers that run on the scene: dopri5 and the peers built for it.
 std::vector<std::string> scaling_adaptive_solvers(std::string_view scene);

@@ -18,33 +18,49 @@
 namespace steplab {
 namespace {
 
-int rope_rhs(sunrealtype, N_Vector z, N_Vector dz, void* data) {
-  const Rope& r = *static_cast<const Rope*>(data);
-  const Eigen::Map<const Eigen::VectorXd, 0, Eigen::InnerStride<2>> x(N_VGetArrayPointer(z), r.n), v(N_VGetArrayPointer(z) + 1, r.n);
-  const Eigen::VectorXd a = acceleration(r, Eigen::VectorXd(x), Eigen::VectorXd(v));
-  double* d = N_VGetArrayPointer(dz);
-  for (int i = 0; i < r.n; ++i) d[2 * i] = v[i], d[2 * i + 1] = a[i];
+// A scene of run-time size as the templates below (and core/scene.hpp's acceleration) ask for it,
+// reached through the kernel table.
+struct MadeScene {
+  static constexpr int dim = Eigen::Dynamic;
+  const MadeSceneCode& code;
+  const void* scene;
+  Eigen::VectorXd force(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const { return code.force(scene, x, v); }
+  Jacobians<Eigen::Dynamic> jacobians(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const { return code.jacobians(scene, x, v); }
+  const Eigen::VectorXd& inverse_mass() const { return code.inverse_mass(scene); }
+  State<Eigen::Dynamic> initial() const { return code.initial(scene); }
+};
+
+// z' = (v, M^-1 F(x, v)), z = (x_1, v_1, x_2, v_2, ...) interleaved.
+int interleaved_rhs(sunrealtype, N_Vector z, N_Vector dz, void* data) {
+  const MadeScene& s = *static_cast<const MadeScene*>(data);
+  const Eigen::Index d = N_VGetLength(z) / 2;
+  const Eigen::Map<const Eigen::VectorXd, 0, Eigen::InnerStride<2>> x(N_VGetArrayPointer(z), d), v(N_VGetArrayPointer(z) + 1, d);
+  const Eigen::VectorXd a = acceleration(s, Eigen::VectorXd(x), Eigen::VectorXd(v));
+  double* out = N_VGetArrayPointer(dz);
+  for (Eigen::Index i = 0; i < d; ++i) out[2 * i] = v[i], out[2 * i + 1] = a[i];
   return 0;
 }
 
 // Rows and columns interleaved: x_i at 2i, v_i at 2i+1. d(x_i')/d(v_i) = 1; d(v_i')/d(x_j, v_j) =
-// M^-1 dF/dx, M^-1 dF/dv (tridiagonal).
-int rope_jacobian(sunrealtype, N_Vector z, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector, N_Vector) {
-  const Rope& r = *static_cast<const Rope*>(data);
-  const Eigen::Map<const Eigen::VectorXd, 0, Eigen::InnerStride<2>> x(N_VGetArrayPointer(z), r.n), v(N_VGetArrayPointer(z) + 1, r.n);
-  const Jacobians<Eigen::Dynamic>& j = r.jacobians(Eigen::VectorXd(x), Eigen::VectorXd(v));
+// M^-1 dF/dx, M^-1 dF/dv (banded).
+int band_jacobian(sunrealtype, N_Vector z, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector, N_Vector) {
+  const MadeScene& s = *static_cast<const MadeScene*>(data);
+  const Eigen::Index d = N_VGetLength(z) / 2;
+  const Eigen::Map<const Eigen::VectorXd, 0, Eigen::InnerStride<2>> x(N_VGetArrayPointer(z), d), v(N_VGetArrayPointer(z) + 1, d);
+  const Jacobians<Eigen::Dynamic> j = s.jacobians(Eigen::VectorXd(x), Eigen::VectorXd(v));
+  const Eigen::VectorXd& w = s.inverse_mass();
   SUNMatZero(J);
-  for (int i = 0; i < r.n; ++i) SM_ELEMENT_B(J, 2 * i, 2 * i + 1) = 1;
+  for (Eigen::Index i = 0; i < d; ++i) SM_ELEMENT_B(J, 2 * i, 2 * i + 1) = 1;
   for (int c = 0; c < j.dx.outerSize(); ++c)
-    for (SparseMat::InnerIterator e(j.dx, c); e; ++e) SM_ELEMENT_B(J, 2 * e.row() + 1, 2 * e.col()) = r.inv_m * e.value();
+    for (SparseMat::InnerIterator e(j.dx, c); e; ++e) SM_ELEMENT_B(J, 2 * e.row() + 1, 2 * e.col()) = w[e.row()] * e.value();
   for (int c = 0; c < j.dv.outerSize(); ++c)
-    for (SparseMat::InnerIterator e(j.dv, c); e; ++e) SM_ELEMENT_B(J, 2 * e.row() + 1, 2 * e.col() + 1) = r.inv_m * e.value();
+    for (SparseMat::InnerIterator e(j.dv, c); e; ++e) SM_ELEMENT_B(J, 2 * e.row() + 1, 2 * e.col() + 1) = w[e.row()] * e.value();
   return 0;
 }
 
 // z' = (v, M^-1 F(x, v)), z = (x, v) in blocks.
-template <class S> int blocked_rhs(sunrealtype, N_Vector z, N_Vector dz, void* data) {
-  const S& s = *static_cast<const S*>(data);
+int blocked_rhs(sunrealtype, N_Vector z, N_Vector dz, void* data) {
+  const MadeScene& s = *static_cast<const MadeScene*>(data);
   const Eigen::Index d = N_VGetLength(z) / 2;
   const Eigen::Map<const Eigen::VectorXd> a(N_VGetArrayPointer(z), 2 * d);
   Eigen::Map<Eigen::VectorXd> da(N_VGetArrayPointer(dz), 2 * d);
@@ -55,8 +71,8 @@ template <class S> int blocked_rhs(sunrealtype, N_Vector z, N_Vector dz, void* d
 
 // J = [[0, I], [M^-1 dF/dx, M^-1 dF/dv]] in CSR, every stored entry of the scene's Jacobians kept
 // (their pattern does not change: KLU analyses it once).
-template <class S> int csr_jacobian(sunrealtype, N_Vector z, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector, N_Vector) {
-  const S& s = *static_cast<const S*>(data);
+int csr_jacobian(sunrealtype, N_Vector z, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector, N_Vector) {
+  const MadeScene& s = *static_cast<const MadeScene*>(data);
   const Eigen::Index d = N_VGetLength(z) / 2;
   const Eigen::Map<const Eigen::VectorXd> a(N_VGetArrayPointer(z), 2 * d);
   const Jacobians<Eigen::Dynamic> j = s.jacobians(Eigen::VectorXd(a.head(d)), Eigen::VectorXd(a.tail(d)));
@@ -76,7 +92,7 @@ template <class S> int csr_jacobian(sunrealtype, N_Vector z, N_Vector, SUNMatrix
   return k <= SUNSparseMatrix_NNZ(J) ? 0 : -1;
 }
 
-template <class S> State<Eigen::Dynamic> odeint_dopri5(const S& s, double tol, double t_end, PeerCounts& n) {
+State<Eigen::Dynamic> odeint_dopri5(const MadeScene& s, double tol, double t_end, PeerCounts& n) {
   namespace odeint = boost::numeric::odeint;
   using Z = Eigen::VectorXd;
   n = {};
@@ -95,22 +111,23 @@ template <class S> State<Eigen::Dynamic> odeint_dopri5(const S& s, double tol, d
   return {z.head(d), z.tail(d)};
 }
 
-State<Eigen::Dynamic> cvode_band_rope(const Rope& r, const CvodeSettings& settings, double tol, double t_end, PeerCounts& n) {
-  const sunindextype size = 2 * r.n;
-  CvodeRun c(size);
-  const State<Eigen::Dynamic> y0 = r.initial();
+State<Eigen::Dynamic> cvode_band(const MadeScene& s, int bandwidth, const CvodeSettings& settings, double tol, double t_end,
+                                 PeerCounts& n) {
+  const State<Eigen::Dynamic> y0 = s.initial();
+  const Eigen::Index d = y0.x.size();
+  CvodeRun c(2 * d);
   double* a = c.data();
-  for (int i = 0; i < r.n; ++i) a[2 * i] = y0.x[i], a[2 * i + 1] = y0.v[i];
-  c.J = SUNBandMatrix(size, 2, 3, c.ctx);
+  for (Eigen::Index i = 0; i < d; ++i) a[2 * i] = y0.x[i], a[2 * i + 1] = y0.v[i];
+  c.J = SUNBandMatrix(2 * d, 2 * bandwidth, 2 * bandwidth + 1, c.ctx);
   c.ls = SUNLinSol_Band(c.z, c.J, c.ctx);
-  cvode_solve(c, rope_rhs, rope_jacobian, &r, settings, tol, t_end, n, [](double) {});
-  State<Eigen::Dynamic> end{Eigen::VectorXd(r.n), Eigen::VectorXd(r.n)};
-  for (int i = 0; i < r.n; ++i) end.x[i] = a[2 * i], end.v[i] = a[2 * i + 1];
+  cvode_solve(c, interleaved_rhs, band_jacobian, &s, settings, tol, t_end, n, [](double) {});
+  State<Eigen::Dynamic> end{Eigen::VectorXd(d), Eigen::VectorXd(d)};
+  for (Eigen::Index i = 0; i < d; ++i) end.x[i] = a[2 * i], end.v[i] = a[2 * i + 1];
   return end;
 }
 
 #if STEPLAB_HAVE_KLU
-State<Eigen::Dynamic> cvode_klu_softbody(const SoftBody& s, const CvodeSettings& settings, double tol, double t_end, PeerCounts& n) {
+State<Eigen::Dynamic> cvode_klu(const MadeScene& s, const CvodeSettings& settings, double tol, double t_end, PeerCounts& n) {
   const State<Eigen::Dynamic> y0 = s.initial();
   const sunindextype d = y0.x.size();
   CvodeRun c(2 * d);
@@ -118,30 +135,33 @@ State<Eigen::Dynamic> cvode_klu_softbody(const SoftBody& s, const CvodeSettings&
   const Jacobians<Eigen::Dynamic> j0 = s.jacobians(y0.x, y0.v);
   c.J = SUNSparseMatrix(2 * d, 2 * d, d + j0.dx.nonZeros() + j0.dv.nonZeros(), CSR_MAT, c.ctx);
   c.ls = SUNLinSol_KLU(c.z, c.J, c.ctx);
-  cvode_solve(c, blocked_rhs<SoftBody>, csr_jacobian<SoftBody>, &s, settings, tol, t_end, n, [](double) {});
+  cvode_solve(c, blocked_rhs, csr_jacobian, &s, settings, tol, t_end, n, [](double) {});
   const Eigen::Map<const Eigen::VectorXd> a(c.data(), 2 * d);
   return {a.head(d), a.tail(d)};
 }
 #endif
 
-[[noreturn]] void not_here(const PeerInfo& peer, std::string_view scene) {
-  throw std::logic_error("run_sized_peer: " + std::string(peer.name) + " does not run on the " + std::string(scene));
-}
-
 }  // namespace
 
-State<Eigen::Dynamic> run_sized_peer(const PeerInfo& peer, const Rope& r, double tol, double t_end, PeerCounts& n) {
-  if (peer.name == "odeint_dopri5") return odeint_dopri5(r, tol, t_end, n);
-  if (peer.linear_solver == "band") return cvode_band_rope(r, peer.cvode, tol, t_end, n);
-  not_here(peer, "rope");
+State<Eigen::Dynamic> run_sized_peer(const PeerInfo& peer, const SceneKernel& scene, const void* made, double tol, double t_end,
+                                     PeerCounts& n) {
+  if (!scene.made || !peer_runs_on(peer, peer_scenes(scene)))
+    throw std::logic_error("run_sized_peer: " + std::string(peer.name) + " does not run on the " + std::string(scene.name));
+  const MadeScene s{*scene.made, made};
+  if (peer.name == "odeint_dopri5") return odeint_dopri5(s, tol, t_end, n);
+  if (peer.linear_solver == "band") return cvode_band(s, scene.jacobian_bandwidth, peer.cvode, tol, t_end, n);
+#if STEPLAB_HAVE_KLU
+  if (peer.linear_solver == "KLU" && peer.built) return cvode_klu(s, peer.cvode, tol, t_end, n);
+#endif
+  throw std::logic_error("run_sized_peer: " + std::string(peer.name) + " does not run on the " + std::string(scene.name));
 }
 
-State<Eigen::Dynamic> run_sized_peer(const PeerInfo& peer, const SoftBody& s, double tol, double t_end, PeerCounts& n) {
-  if (peer.name == "odeint_dopri5") return odeint_dopri5(s, tol, t_end, n);
-#if STEPLAB_HAVE_KLU
-  if (peer.linear_solver == "KLU" && peer.built) return cvode_klu_softbody(s, peer.cvode, tol, t_end, n);
-#endif
-  not_here(peer, "soft body");
+State<Eigen::Dynamic> run_sized_peer(const PeerInfo& peer, std::size_t scene, std::span<const double> params, double tol,
+                                     double t_end, PeerCounts& n) {
+  const SceneKernel& s = scene_kernel(scene);
+  if (!s.make) throw std::logic_error("run_sized_peer: the " + std::string(s.name) + " is not of run-time size");
+  const std::shared_ptr<const void> made = s.make(params);
+  return run_sized_peer(peer, s, made.get(), tol, t_end, n);
 }
 
 }  // namespace steplab

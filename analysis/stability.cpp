@@ -44,9 +44,9 @@ const PairKernel& spring_kernel(std::size_t method) { return pair_kernel(method,
 
 Spring linear_spring(const std::vector<double>& params, double gamma) {
   std::vector<double> p = params;
-  p[2] = gamma;  // Spring::params: mass, stiffness, damping, rest-length, gravity
+  p[damping_param_index<Spring>()] = gamma;
   const Spring user(p);
-  p[3] = user.L + kAnchorShift * std::max(user.m * user.g / user.k, 1.0);
+  p[param_index(Spring::params, "rest-length")] = user.L + kAnchorShift * std::max(user.m * user.g / user.k, 1.0);
   return Spring(p);
 }
 
@@ -197,7 +197,7 @@ std::vector<ThresholdRow> threshold_study(const StabilityConfig& c) {
 
 std::vector<SweepRow> damping_sweep(const StabilityConfig& c) {
   const std::vector<double> gammas =
-      c.sweep_dampings.empty() ? default_dampings(linear_spring(c.params, c.params[2])) : c.sweep_dampings;
+      c.sweep_dampings.empty() ? default_dampings(linear_spring(c.params, c.params[damping_param_index<Spring>()])) : c.sweep_dampings;
   const std::size_t nm = c.methods.size(), nd = c.sweep_dts.size(), ng = gammas.size();
   std::vector<Spring> springs;
   for (double gamma : gammas) springs.push_back(linear_spring(c.params, gamma));
@@ -218,7 +218,7 @@ std::vector<SweepRow> damping_sweep(const StabilityConfig& c) {
 StabilityMap stability_map(const StabilityConfig& c) {
   StabilityMap map;
   map.methods = c.methods;
-  const Spring base = linear_spring(c.params, c.params[2]);
+  const Spring base = linear_spring(c.params, c.params[damping_param_index<Spring>()]);
   const double gmax = c.map_damping_max > 0 ? c.map_damping_max : 2 * base.critical_damping();
   for (int i = 0; i < c.map_dt_points; ++i)
     map.dt.push_back(c.map_dt_min * std::pow(c.map_dt_max / c.map_dt_min, i / double(std::max(1, c.map_dt_points - 1))));

@@ -15,6 +15,23 @@
 // Integrators see scenes only through this interface, so a new scene never touches them.
 // Parameters come from a table of ParamSpec (name, default, bound, help), which the CLI, the
 // JSON writers and the validation all read; a scene is built from the values in that order.
+//
+// What else a scene offers the studies it declares in its own file, and the studies ask for
+// that, never for a scene's name (the kernel table hands it on: analysis/kernel.hpp SceneKernel):
+//   flow(y, h)                    an exact solution (HasExact): convergence against it, the
+//                                 scaling study's target
+//   affine_flow = true            that flow is affine in the state (HasAffineFlow)
+//   penetration(x)                ground contact (HasContact): the collision study
+//   size_param = "<name>"         run-time size (dim = Eigen::Dynamic), refined by that count
+//                                 parameter (ParamSpec::is_count): the scaling study
+//   coords_per_mass = c           coordinates of one mass (default 1): N masses = dim / c
+//   modes()                       the oscillators of its linearisation (HasModes), slowest first:
+//                                 the predicted largest stable step dt* of every method
+//                                 (study stability, study scaling)
+//   jacobian_bandwidth = b        dF/dx and dF/dv vanish farther than b from the diagonal (the
+//                                 peers then use a banded solver, analysis/sized_peers.cpp)
+//   stiffness_param, damping_param = "<name>"   which parameters are its stiffness and damping
+//   title = "<words>"             the scene in a few words, for a table's heading
 #pragma once
 
 #include <algorithm>
@@ -58,7 +75,11 @@ concept Scene = requires(const S& s, const Vec<S::dim>& x, const Vec<S::dim>& v,
 // Code that takes long to compile and need not be inlined (the chain's long-double
 // eigen-decomposition) goes at the end of the file inside #ifdef STEPLAB_SCENE_SOURCE: the scene's
 // generated translation unit defines it, so that code is compiled once, not in every method's file.
-#define STEPLAB_SCENE(...) static_assert(::steplab::Scene<__VA_ARGS__>, "STEPLAB_SCENE: the type is not a Scene (core/scene.hpp)")
+#define STEPLAB_SCENE(...)                                                                          \
+  static_assert(::steplab::Scene<__VA_ARGS__>, "STEPLAB_SCENE: the type is not a Scene (core/scene.hpp)"); \
+  static_assert(::steplab::declarations_hold<__VA_ARGS__>(),                                          \
+                "STEPLAB_SCENE: a declared size_param, stiffness_param or damping_param names no parameter of the scene, "  \
+                "or size_param is not a count of a scene of run-time size (core/scene.hpp)")
 
 // A scene with ground contact says how deep its deepest point is below the ground (negative
 // when all are above): it touches the ground where that is > 0. The collision study records it.
@@ -180,6 +201,63 @@ template <class S, class X, class V>
 template <class S>
 concept Packable = Scene<S> && requires { typename S::template as<Pack<8>>; };
 template <class S, class T> using PackScene = typename S::template as<T>;
+
+// One oscillator u'' + 2 zeta omega u' + omega^2 u = 0 of a scene's linearisation (a mode): a
+// method's step on it depends on omega h and zeta alone.
+struct Mode {
+  double omega;     // angular frequency
+  double two_zeta;  // twice the damping ratio
+};
+
+template <class S>
+concept HasModes = Scene<S> && requires(const S& s) {
+  { s.modes() } -> std::convertible_to<std::vector<Mode>>;
+};
+
+// The index of the parameter called `name` in a table; -1 if there is none (or `name` is empty).
+constexpr int param_index(std::span<const ParamSpec> params, std::string_view name) {
+  for (std::size_t i = 0; i < params.size(); ++i)
+    if (!name.empty() && params[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+// The indices of what the scene declares (above); -1 where it declares nothing.
+template <Scene S> constexpr int size_param_index() {
+  if constexpr (requires { S::size_param; }) return param_index(S::params, S::size_param);
+  else return -1;
+}
+template <Scene S> constexpr int stiffness_param_index() {
+  if constexpr (requires { S::stiffness_param; }) return param_index(S::params, S::stiffness_param);
+  else return -1;
+}
+template <Scene S> constexpr int damping_param_index() {
+  if constexpr (requires { S::damping_param; }) return param_index(S::params, S::damping_param);
+  else return -1;
+}
+template <Scene S> constexpr std::string_view scene_title() {
+  if constexpr (requires { S::title; }) return S::title;
+  else return S::name;
+}
+template <Scene S> constexpr int coords_per_mass() {
+  if constexpr (requires { S::coords_per_mass; }) return S::coords_per_mass;
+  else return 1;
+}
+template <Scene S> constexpr int jacobian_bandwidth() {
+  if constexpr (requires { S::jacobian_bandwidth; }) return S::jacobian_bandwidth;
+  else return -1;
+}
+
+// What STEPLAB_SCENE checks of the declarations: every declared name is a parameter, and a size
+// parameter is a count of a scene of run-time size.
+template <Scene S> constexpr bool declarations_hold() {
+  if constexpr (requires { S::size_param; })
+    if (size_param_index<S>() < 0 || !S::params[size_param_index<S>()].is_count || S::dim != Eigen::Dynamic) return false;
+  if constexpr (requires { S::stiffness_param; })
+    if (stiffness_param_index<S>() < 0) return false;
+  if constexpr (requires { S::damping_param; })
+    if (damping_param_index<S>() < 0) return false;
+  return coords_per_mass<S>() >= 1;
+}
 
 // Whether a parameter table (a scene's `params`) has a parameter of that name.
 inline bool has_param(std::span<const ParamSpec> params, std::string_view name) {

@@ -11,6 +11,8 @@
 #   mysteplab study stability --methods heun,rk4 --lanes 1 and --lanes 2
 #                                            the same JSON (Heun is written over the scalar,
 #                                            so the spring's runs step two at a time)
+# and a scene of run-time size (beads on a string, exact modes) that run and the studies of
+# convergence, stability and scaling take by what it declares.
 # Usage: plugin_test.sh BUILD_DIR [extra cmake arguments for the project]
 set -euo pipefail
 build=$1
@@ -100,11 +102,110 @@ struct Pendulum {
 STEPLAB_SCENE(Pendulum);
 EOF
 
+cat > beads.hpp <<'EOF'
+#pragma once
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include <steplab/core/scene.hpp>
+#include <steplab/core/scenes/oscillator.hpp>
+
+// N beads on a taut string between two fixed walls, transverse displacements u_i (u_0 = u_{N+1}
+// = 0), a refinement of one string: total mass M (m = M/N each), k = K (N + 1) between
+// neighbours, damping gamma (c = gamma/N on each bead, mass-proportional):
+//   m u_i'' = k (u_{i-1} - 2 u_i + u_{i+1}) - c u_i'
+// Its modes: phi_j(i) = sin(i j pi / (N+1)), lambda_j = 4 sin^2(j pi / (2 (N+1))),
+// omega_j^2 = k lambda_j / m, each a damped oscillator; the exact flow projects on them
+// (sum_i phi_j(i) phi_l(i) = (N+1)/2 delta_jl), O(N^2).
+struct Beads {
+  static constexpr int dim = Eigen::Dynamic;
+  static constexpr std::string_view name = "beads";
+  static constexpr std::string_view title = "String of N beads";
+  static constexpr std::string_view size_param = "beads";
+  static constexpr std::string_view stiffness_param = "stiffness";
+  static constexpr std::string_view damping_param = "damping";
+  static constexpr int jacobian_bandwidth = 1;
+  static constexpr std::array<steplab::ParamSpec, 4> params{{
+      {"beads", 8, steplab::Bound::Positive, "number of beads N (a whole number, 1 to 10000)", true, 1e4},
+      {"mass", 1.0, steplab::Bound::Positive, "total mass M"},
+      {"stiffness", 1.0, steplab::Bound::Positive, "string stiffness K (K (N+1) between neighbours)"},
+      {"damping", 0.05, steplab::Bound::NonNegative, "damping gamma shared by the beads"},
+  }};
+  int n;
+  double m, k, c;
+  Eigen::VectorXd m_all, inv_all;
+  steplab::Jacobians<Eigen::Dynamic> jac;
+  explicit Beads(std::span<const double> p)
+      : n(static_cast<int>(p[0])), m(p[1] / n), k(p[2] * (n + 1)), c(p[3] / n), m_all(Eigen::VectorXd::Constant(n, m)),
+        inv_all(Eigen::VectorXd::Constant(n, 1 / m)), jac{steplab::SparseMat(n, n), steplab::SparseMat(n, n)} {
+    std::vector<Eigen::Triplet<double>> tx, tv;
+    for (int i = 0; i < n; ++i) {
+      tx.emplace_back(i, i, -2 * k), tv.emplace_back(i, i, -c);
+      if (i + 1 < n) tx.emplace_back(i, i + 1, k), tx.emplace_back(i + 1, i, k);
+    }
+    jac.dx.setFromTriplets(tx.begin(), tx.end());
+    jac.dv.setFromTriplets(tv.begin(), tv.end());
+  }
+  double phi(int j, int i) const { return std::sin(i * j * std::numbers::pi / (n + 1)); }  // bead i = 1 .. N
+  double lambda(int j) const {
+    const double s = std::sin(j * std::numbers::pi / (2 * (n + 1)));
+    return 4 * s * s;
+  }
+  double omega(int j) const { return std::sqrt(k * lambda(j) / m); }
+  std::vector<steplab::Mode> modes() const {
+    std::vector<steplab::Mode> out;
+    for (int j = 1; j <= n; ++j) out.push_back({omega(j), c / (m * omega(j))});
+    return out;
+  }
+  const Eigen::VectorXd& mass() const { return m_all; }
+  const Eigen::VectorXd& inverse_mass() const { return inv_all; }
+  Eigen::VectorXd force(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const {
+    Eigen::VectorXd f(n);
+    for (int i = 0; i < n; ++i) f[i] = k * ((i > 0 ? x[i - 1] : 0.0) - 2 * x[i] + (i + 1 < n ? x[i + 1] : 0.0)) - c * v[i];
+    return f;
+  }
+  const steplab::Jacobians<Eigen::Dynamic>& jacobians(const Eigen::VectorXd&, const Eigen::VectorXd&) const { return jac; }
+  bool velocity_dependent() const { return c != 0; }
+  double energy(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const {
+    double e = 0.5 * m * v.squaredNorm();
+    for (int i = 0; i <= n; ++i) {
+      const double d = (i < n ? x[i] : 0.0) - (i > 0 ? x[i - 1] : 0.0);
+      e += 0.5 * k * d * d;
+    }
+    return e;
+  }
+  // Plucked in its first two modes, at rest.
+  steplab::State<Eigen::Dynamic> initial() const {
+    Eigen::VectorXd x(n);
+    for (int i = 1; i <= n; ++i) x[i - 1] = 0.1 * phi(1, i) + 0.05 * phi(2, i);
+    return {x, Eigen::VectorXd::Zero(n)};
+  }
+  steplab::State<Eigen::Dynamic> flow(const steplab::State<Eigen::Dynamic>& y, double t) const {
+    const double alpha = -c / (2 * m);
+    steplab::State<Eigen::Dynamic> out{Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)};
+    for (int j = 1; j <= n; ++j) {
+      double q = 0, p = 0;
+      for (int i = 1; i <= n; ++i) q += y.x[i - 1] * phi(j, i), p += y.v[i - 1] * phi(j, i);
+      const double w = omega(j);
+      const auto [u, du] = steplab::damped_oscillation(2 * q / (n + 1), 2 * p / (n + 1), alpha, w * w - alpha * alpha, t);
+      for (int i = 1; i <= n; ++i) out.x[i - 1] += u * phi(j, i), out.v[i - 1] += du * phi(j, i);
+    }
+    return out;
+  }
+};
+
+STEPLAB_SCENE(Beads);
+EOF
+
 cat > CMakeLists.txt <<'EOF'
 cmake_minimum_required(VERSION 3.22)
 project(mine LANGUAGES CXX)
 find_package(steplab 0.2 REQUIRED)
-steplab_add_executable(mysteplab METHODS heun.hpp heun_claims_3.hpp SCENES pendulum.hpp)
+steplab_add_executable(mysteplab METHODS heun.hpp heun_claims_3.hpp SCENES pendulum.hpp beads.hpp)
 EOF
 
 cmake -S . -B build -DCMAKE_PREFIX_PATH="$tmp/prefix" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
@@ -134,4 +235,45 @@ cmp stability_1.json stability_2.json
 # the new method on a built-in scene, the built-in ones on the new scene
 "$tool" run --scene chain --method heun --dt 0.001 --t-end 1 >/dev/null
 "$tool" run --scene pendulum --method radau_iia5 --dt 0.01 --t-end 1 >/dev/null
+# A scene of run-time size none of the studies has seen (beads.hpp: its file and its name in
+# steplab_add_executable) joins run, study convergence, study stability and study scaling by
+# what it declares: its exact flow, its size parameter, its modes, its banded Jacobians.
+"$tool" run --scene beads --beads 12 --method rk4 --dt 0.001 --t-end 1 --json run_beads.json >/dev/null
+"$tool" study convergence --scene beads --methods rk4,implicit_midpoint --dt-max 0.02 --dt-min 0.001 --points 6 \
+  --json conv_beads.json >/dev/null
+"$tool" study stability --scene beads --beads 16 --methods rk4,symplectic_euler --json stab_beads.json >/dev/null
+"$tool" study scaling --scene beads --sizes 8,16,32 --methods rk4,implicit_midpoint,cvode_adams_band --no-timing \
+  --json scal_beads.json >/dev/null
+python3 - run_beads.json conv_beads.json stab_beads.json scal_beads.json <<'EOF'
+import json, math, sys
+run, conv, stab, scal = (json.load(open(f)) for f in sys.argv[1:])
+# rk4 at h = 0.001 with omega_max ~ 2 sqrt(k/m) = 2 sqrt(13 * 12) = 25: error ~ (omega h)^4 of the
+# amplitude 0.1, 4e-8 at the fastest mode; 1e-6 leaves room for the constants
+assert run["status"] == "ok" and run["error"]["final"] < 1e-6, run["error"]
+# against the exact flow: rk4 and implicit midpoint at their orders 4 and 2 (within 0.15: a few
+# steps per period of the fastest mode, at the edge of the asymptotic range)
+want = {"rk4": 4, "implicit_midpoint": 2}
+for f in conv["fits"]:
+    print(f"beads: {f['method']} fitted order {f['order']:.3f} (declared {want[f['method']]})")
+    assert abs(f["order"] - want[f["method"]]) <= 0.15, f
+# dt* from its modes against runs of the whole string: within 1 %; omega_max against the closed
+# form 2 sqrt(k/m) sin(N pi / (2 (N + 1))) with N = 16, k = 17, m = 1/16
+n = 16
+w = 2 * math.sqrt(17 * 16) * math.sin(n * math.pi / (2 * (n + 1)))
+for t in stab["thresholds"]:
+    assert abs(t["omega_max"] - w) < 1e-9 * w, (t["omega_max"], w)
+    assert abs(t["dt_measured"] / t["dt_theory"] - 1) < 0.01, t
+    print(f"beads: {t['method']} dt* predicted {t['dt_theory']:.6g}, measured {t['dt_measured']:.6g}")
+# scaling: every size reached, each row at or below the target error; rk4's dt* times omega_max is
+# RK4's 2 sqrt 2 on the imaginary axis (the fastest mode's damping ratio is below 1e-3 here: the
+# constant moves by less than 0.3 %)
+assert [r["beads"] for r in scal["rows"] if r["solver"] == "rk4"] == [8, 16, 32]
+for r in scal["rows"]:
+    assert r["error"] is not None and r["error"] <= 1e-4, r
+    if r["solver"] == "rk4":
+        n = r["beads"]
+        wn = 2 * math.sqrt((n + 1) * n) * math.sin(n * math.pi / (2 * (n + 1)))
+        assert abs(r["dt_stable"] * wn / (2 * math.sqrt(2)) - 1) < 0.003, r
+print("beads: run, convergence, stability and scaling ok")
+EOF
 echo "plugin ok"

@@ -51,6 +51,13 @@ struct Rope {
   static constexpr int dim = Eigen::Dynamic;
   static constexpr std::string_view name = "rope";
   static constexpr bool symmetric_jacobians = true;  // dF/dx = -k T, dF/dv = -c I - d T (below)
+  // What it offers the studies (core/scene.hpp): refined by its number of masses; its modes in
+  // closed form (modes() below); tridiagonal Jacobians.
+  static constexpr std::string_view title = "Rope of N masses";
+  static constexpr std::string_view size_param = "masses";
+  static constexpr std::string_view stiffness_param = "stiffness";
+  static constexpr std::string_view damping_param = "damping";
+  static constexpr int jacobian_bandwidth = 1;
   // Defaults: the sheet's spring cut into 8 (M, K, L, gamma, g as the spring's).
   static constexpr std::array<ParamSpec, 7> params{{
       {"masses", 8, Bound::Positive, "number of masses N (a whole number, 1 to 100000)", true, 1e5},
@@ -106,6 +113,16 @@ struct Rope {
   // Mode j's oscillator (core/scenes/oscillator.hpp): alpha_j and beta_j^2.
   double alpha(int j) const { return -(c + d * lambda[j - 1]) / (2 * m); }
   double beta2(int j) const { return k * lambda[j - 1] / m - alpha(j) * alpha(j); }
+  // Mode j (j = 1 .. N, slowest first) as a unit oscillator: omega_j and
+  // 2 zeta_j = (c + d lambda_j) / (m omega_j).
+  std::vector<Mode> modes() const {
+    std::vector<Mode> out(n);
+    for (int j = 1; j <= n; ++j) {
+      const double w = omega(j);
+      out[j - 1] = {w, (c + d * lambda[j - 1]) / (m * w)};
+    }
+    return out;
+  }
 
   const Eigen::VectorXd& mass() const { return m_all; }
   const Eigen::VectorXd& inverse_mass() const { return inv_m_all; }

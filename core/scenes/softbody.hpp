@@ -38,6 +38,13 @@ namespace steplab {
 struct SoftBody {
   static constexpr int dim = Eigen::Dynamic;
   static constexpr std::string_view name = "softbody";
+  // What it offers the studies (core/scene.hpp): refined by its grid side n, two coordinates per
+  // mass, its fastest mode (modes() below), contact (penetration).
+  static constexpr std::string_view title = "Soft body of N = n x n masses";
+  static constexpr std::string_view size_param = "grid";
+  static constexpr int coords_per_mass = 2;
+  static constexpr std::string_view stiffness_param = "stiffness";
+  static constexpr std::string_view damping_param = "damping";
   // Defaults: the falling triangle's (mass 0.1 each of three: M 0.3; k 10, gamma 0.01, ground
   // 100, 0), a square of side 1.5 from the triangle's bottom (-0.5) to its top (1), 4 x 4 masses.
   static constexpr std::array<ParamSpec, 8> params{{
@@ -139,6 +146,24 @@ struct SoftBody {
     return e;
   }
 
+  // The body is not linear (springs turn, the ground switches on), so its modes are those of its
+  // linearisation at the start shape lowered onto the ground (the bottom row just in contact, its
+  // penalty springs on), where the fastest mode is fastest: at rest every spring is at its rest
+  // length, so dF/dx = -K and dF/dv = -(gamma/k) K_springs - C_ground, both symmetric. With equal
+  // masses M = m I the modes are K's eigenvectors; only the fastest is given,
+  //   omega_max^2 = lambda_max(K) / m,
+  // by power iteration on K started from the checkerboard (neighbours moving apart, the shape of
+  // a lattice's fastest mode), its Rayleigh quotient converged to 1e-12 relative (at most
+  // kPowerIterations products); its damping ratio from the same vector u:
+  //   2 zeta omega_max = u^T C u / (m u^T u).
+  // On the rope the fastest mode binds every method at small damping ratios (`study stability
+  // --scene rope` reports the binding mode), so the slower ones are not examined here.
+  static constexpr int kPowerIterations = 20'000;
+  std::vector<Mode> modes() const;
+  // The start shape lowered until its bottom row is 1e-9 below the ground (Ground::level): every
+  // spring at rest, the bottom row's penalty springs on.
+  State<Eigen::Dynamic> lowered_onto_ground() const;
+
   State<Eigen::Dynamic> initial() const {
     const double h = spacing();
     Eigen::VectorXd x(2 * masses);
@@ -170,6 +195,37 @@ struct SoftBody {
     for (const auto& [r, c] : entries) spring_slots.push_back(slot(r, c));
   }
 };
+
+// Compiled once, in the scene's generated translation unit (core/scene.hpp).
+#ifdef STEPLAB_SCENE_SOURCE
+State<Eigen::Dynamic> SoftBody::lowered_onto_ground() const {
+  State<Eigen::Dynamic> y = initial();
+  const double drop = (y.x[1] - Ground::level) + 1e-9;  // mass 0 is in the bottom row
+  for (int i = 1; i < y.x.size(); i += 2) y.x[i] -= drop;
+  return y;
+}
+
+std::vector<Mode> SoftBody::modes() const {
+  const State<Eigen::Dynamic> y = lowered_onto_ground();
+  const Jacobians<Eigen::Dynamic> j = jacobians(y.x, y.v);
+  const SparseMat K = -j.dx, C = -j.dv;
+  Eigen::VectorXd u(y.x.size());
+  for (int i = 0; i < u.size(); ++i) {
+    const int mass = i / 2, r = mass / n, c = mass % n;
+    u[i] = ((r + c) % 2 == 0 ? 1.0 : -1.0) * (1 + 0.1 * std::sin(1.3 * i));  // not orthogonal to it by symmetry
+  }
+  u.normalize();
+  double rq = 0;
+  for (int it = 0; it < kPowerIterations; ++it) {
+    const Eigen::VectorXd w = K * u;
+    const double last = std::exchange(rq, u.dot(w));
+    u = w.normalized();
+    if (std::abs(rq - last) <= 1e-12 * std::abs(rq)) break;
+  }
+  const double omega = std::sqrt(rq / m);
+  return {{omega, u.dot(C * u) / (m * omega)}};
+}
+#endif
 
 }  // namespace steplab
 

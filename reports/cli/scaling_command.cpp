@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "analysis/defaults.hpp"
 #include "analysis/kernel.hpp"
 #include "analysis/scaling.hpp"
 #include "reports/cli/commands.hpp"
@@ -20,7 +21,7 @@ namespace steplab {
 CLI::App* add_scaling_command(CLI::App* study, ScalingArgs& a) {
   CLI::App* cmd = study->add_subcommand("scaling", "rope of N masses or soft body of n x n: cost of a step and of a run at a "
                                                    "given error, largest stable step, against N; fitted exponents, crossover");
-  a.scene.scene = "rope";  // the default; softbody the other scene it accepts
+  a.scene.scene = std::string(kDefaultSizedScene);  // any scene that scales() (analysis/scaling.hpp)
   a.scene.add_to(cmd);
   cmd->add_option("--methods", a.methods, "comma-separated methods and adaptive solvers (dopri5, odeint_dopri5, cvode_adams_band, "
                                           "cvode_bdf_band, cvode_bdf_max2_band on the rope, cvode_adams_klu, cvode_bdf_klu, "
@@ -45,7 +46,7 @@ Json scaling_json(const ScalingResult& r) {
   Json j;
   j["schema"] = "steplab.scaling/1";
   const std::size_t scene = scene_index(c.scene);
-  const std::string size_key = param_key(scene_kernel(scene).params[0]);  // masses (rope), grid (soft body)
+  const std::string size_key = param_key(scene_kernel(scene).params[scene_kernel(scene).size_param]);  // masses (rope), grid (soft body)
   j["scene"] = c.scene;
   Json p = scene_params_json(scene, c.params);
   p.erase(size_key);
@@ -84,7 +85,7 @@ std::string scaling_table(const ScalingResult& r) {
   const char* unit = c.timing ? "run [s]" : "evals x N";
   std::string out = fmt::format("{}, error {:g} (largest over the coordinates at t = {:g}, against the {}); cost by {}\n\n"
                                 "{:<20} {:>7} {:>11} {:>12} {:>10} {:>9} {:>6} {:>9} {:>7} {:>7} {:>8} {:>12} {:>12}\n",
-                                c.scene == "rope" ? "Rope of N masses" : "Soft body of N = n x n masses", c.target_error, c.t_end,
+                                scene_kernel(scene_index(c.scene)).title, c.target_error, c.t_end,
                                 scene_kernel(scene_index(c.scene)).has_exact ? "exact solution" : "reference solution", c.timing ? "run time" : "force + Jacobian evaluations x N", "solver",
                                 "N", "dt*", "dt / tol", "error", "steps", "rej", "forces", "jacs", "LUs", "Newton", unit, "per step");
   bool capped = false;
@@ -112,16 +113,22 @@ std::string scaling_table(const ScalingResult& r) {
 }
 
 int scaling_command(ScalingArgs& a, Context& ctx) {
-  if (a.scene.scene != "rope" && a.scene.scene != "softbody")
-    throw UsageError(fmt::format("--scene '{}' is not accepted by study scaling; accepted: rope, softbody", a.scene.scene));
+  const SceneKernel& scene = scene_kernel(a.scene.scene_index());
+  if (!scales(scene)) {
+    std::string accepted;
+    for (std::size_t s = 0; s < scene_count(); ++s)
+      if (scales(scene_kernel(s))) accepted += (accepted.empty() ? "" : ", ") + std::string(scene_name(s));
+    throw UsageError(fmt::format("--scene '{}' is not accepted by study scaling; accepted: {} (a scene of run-time size "
+                                 "that declares its modes)", a.scene.scene, accepted));
+  }
   ScalingConfig c = scaling_config(a.scene.scene);  // the scene's default sizes, step cap and solvers
   c.params = a.scene.values(a.scene.scene_index());
-  Solvers solvers = resolve_solvers(a.methods, c.adaptive, a.scene.scene == "rope" ? "rope" : "soft body", a.no_peers);
+  Solvers solvers = resolve_solvers(a.methods, c.adaptive, scene.name, a.no_peers);
   c.methods = std::move(solvers.methods);
   c.adaptive = std::move(solvers.adaptive);
   if (!a.sizes.empty()) {
     c.sizes.clear();
-    const ParamSpec& size = scene_kernel(a.scene.scene_index()).params[0];  // --masses, --grid: its range
+    const ParamSpec& size = scene.params[scene.size_param];  // --masses, --grid: its range
     for (const std::string& s : split_list(a.sizes)) c.sizes.push_back(static_cast<int>(parse_count("--sizes", s, 1, static_cast<long long>(size.max_count))));
   }
   c.target_error = parse_number("--error", a.error, Bound::Positive);

@@ -10,10 +10,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include "analysis/defaults.hpp"
+
 namespace steplab {
 
 struct SceneArgs {
-  std::string scene = "spring";
+  std::string scene = std::string(kDefaultScene);
   std::map<std::string, std::string, std::less<>> text;   // parameter -> value as typed
   std::map<std::string, double, std::less<>> old_defaults;  // the old framework's defaults, in place of the scene's
   CLI::App* app = nullptr;

@@ -182,31 +182,44 @@ int damping_command(StabilityArgs& a, Context& ctx) {
 
 namespace {
 
-// The rope's thresholds: predicted from its modes, measured on the whole rope (analysis/rope_stability.hpp).
-int rope_stability_command(StabilityArgs& a, Context& ctx) {
+// The spring's study (thresholds over dampings, the map) runs on a 1-D scene with a damping
+// parameter; the modes' study on a scene that declares its modes (core/scene.hpp).
+bool oscillator_study(const SceneKernel& s) { return s.dim == 1 && s.damping_param >= 0; }
+bool modes_study(const SceneKernel& s) { return s.modes != nullptr; }
+
+// A scene's thresholds: predicted from its modes, measured on the whole scene (analysis/mode_stability.hpp).
+int mode_stability_command(StabilityArgs& a, Context& ctx) {
   for (const char* spring_only : {"--threshold-dampings", "--map-dt-points", "--map-damping-points", "--map-dt-min", "--map-dt-max"})
     if (a.scene.app->count(spring_only) > 0)
-      throw UsageError(fmt::format("{} applies to --scene spring; the rope's damping is its own (--damping, --spring-damping)", spring_only));
-  RopeStabilityConfig c;
-  c.params = a.scene.values(a.scene.scene_index());
+      throw UsageError(fmt::format("{} applies to a scene of one coordinate with a damping parameter; the {}'s damping is "
+                                   "among its own parameters",
+                                   spring_only, a.scene.scene));
+  ModeStabilityConfig c;
+  c.scene = a.scene.scene_index();
+  c.params = a.scene.values(c.scene);
   c.methods = resolve_methods(a.methods, false);
   c.workers = ctx.workers(resolve_thread_count(a.threads));
-  resolve_lanes(a.lanes);  // checked; the rope's runs go one at a time
+  resolve_lanes(a.lanes);  // checked; the runs of a scene of run-time size go one at a time
   begin_shard(ctx, a.shard, a.json, false);
   if (ctx.stop_after_validation(a.json)) return 0;
-  const std::vector<RopeThresholdRow> rows = rope_threshold_study(c);
+  const std::vector<ModeThresholdRow> rows = mode_threshold_study(c);
   if (finish_shard(ctx, a.json)) return 0;
-  std::fputs(rope_thresholds_table(rows).c_str(), stdout);
-  if (!a.json.empty()) write_atomic(a.json, rope_stability_json(c, rows).dump(1) + "\n");
+  std::fputs(mode_thresholds_table(scene_name(c.scene), rows).c_str(), stdout);
+  if (!a.json.empty()) write_atomic(a.json, mode_stability_json(c, rows).dump(1) + "\n");
   return 0;
 }
 
 }  // namespace
 
 int stability_command(StabilityArgs& a, Context& ctx) {
-  if (a.scene.scene != "spring") {
-    if (a.scene.scene == "rope") return rope_stability_command(a, ctx);
-    throw UsageError(fmt::format("--scene '{}' is not accepted by study stability; accepted: spring, rope", a.scene.scene));
+  const SceneKernel& scene = scene_kernel(a.scene.scene_index());
+  if (!oscillator_study(scene)) {
+    if (modes_study(scene)) return mode_stability_command(a, ctx);
+    std::string accepted;
+    for (std::size_t s = 0; s < scene_count(); ++s)
+      if (oscillator_study(scene_kernel(s)) || modes_study(scene_kernel(s))) accepted += (accepted.empty() ? "" : ", ") + std::string(scene_name(s));
+    throw UsageError(fmt::format("--scene '{}' is not accepted by study stability; accepted: {} (a scene of one coordinate "
+                                 "with a damping parameter, or one that declares its modes)", a.scene.scene, accepted));
   }
   StabilityConfig c = stability_config(a, ctx);
   c.threshold_dampings = number_list("--threshold-dampings", a.threshold_dampings, Bound::NonNegative);

@@ -43,12 +43,13 @@ Json threshold_json(double x);
 std::string threshold_text(double x);
 }  // namespace steplab
 
-#include "analysis/rope_stability.hpp"
+#include "analysis/mode_stability.hpp"
 
 namespace steplab {
-// `study stability --scene rope` (reports/data/rope_output.cpp): schema steplab.rope_stability/1.
-Json rope_stability_json(const RopeStabilityConfig& c, const std::vector<RopeThresholdRow>& rows);
-std::string rope_thresholds_table(const std::vector<RopeThresholdRow>& rows);
+// `study stability` on a scene with modes (reports/data/mode_output.cpp): schema
+// steplab.rope_stability/1 (named after the first scene it served; the same for every scene).
+Json mode_stability_json(const ModeStabilityConfig& c, const std::vector<ModeThresholdRow>& rows);
+std::string mode_thresholds_table(std::string_view scene, const std::vector<ModeThresholdRow>& rows);
 }  // namespace steplab
 
 #include "analysis/scaling.hpp"

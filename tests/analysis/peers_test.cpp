@@ -38,7 +38,7 @@ TEST(Peers, TableSaysWhatEachIs) {
   EXPECT_EQ(bdf2->cvode.max_order, 2);
   EXPECT_FALSE(bdf2->cvode.adams);
   EXPECT_EQ(find_peer("cvode_band"), nullptr);  // the old name
-  for (const PeerInfo* p : peers_on(PeerScenes::Rope)) EXPECT_NE(p->linear_solver, "KLU") << p->name;
+  for (const PeerInfo* p : peers_on(PeerScenes::Banded)) EXPECT_NE(p->linear_solver, "KLU") << p->name;
   for (const PeerInfo* p : peers_on(PeerScenes::FixedSize)) EXPECT_TRUE(p->linear_solver.empty() || p->linear_solver == "dense") << p->name;
 }
 
@@ -48,13 +48,13 @@ TEST(Peers, TableSaysWhatEachIs) {
 // rope's length, 5).
 TEST(Peers, CvodeOnTheRopeIsCvodeAsPlainCCallsIt) {
   constexpr int n = 64;
-  std::vector<double> p = default_param_values(*find_scene("rope"));
-  p[0] = n;  // Rope::params: the number of masses first
-  const Rope rope(p);
+  const std::size_t rope = *find_scene("rope");
+  std::vector<double> p = default_param_values(rope);
+  p[scene_kernel(rope).size_param] = n;
   for (const bool adams : {true, false}) {
     const PeerInfo& peer = *find_peer(adams ? "cvode_adams_band" : "cvode_bdf_max2_band");
     PeerCounts ours;
-    const State<Eigen::Dynamic> end = run_sized_peer(peer, rope, 1e-6, 1.0, ours);
+    const State<Eigen::Dynamic> end = run_sized_peer(peer, rope, p, 1e-6, 1.0, ours);
     cvode_rope_counts c{};
     std::vector<double> y(n);
     ASSERT_EQ(cvode_rope_run(n, 1e-6, 1.0, {adams, adams ? 0 : 2, 0, 0}, &c, y.data()), 0);
@@ -72,13 +72,13 @@ TEST(Peers, CvodeOnTheRopeIsCvodeAsPlainCCallsIt) {
 // least one Newton iteration per step tried, a Jacobian only at a setup (it is reused between),
 // and a setup at least every 20 steps (its default setup frequency, kept).
 TEST(Peers, CvodeCountsHangTogether) {
-  std::vector<double> p = default_param_values(*find_scene("rope"));
-  p[0] = 32;
-  const Rope rope(p);
-  for (const PeerInfo* peer : peers_on(PeerScenes::Rope)) {
+  const std::size_t rope = *find_scene("rope");
+  std::vector<double> p = default_param_values(rope);
+  p[scene_kernel(rope).size_param] = 32;
+  for (const PeerInfo* peer : peers_on(PeerScenes::Banded)) {
     if (peer->library != "SUNDIALS CVODE") continue;
     PeerCounts n;
-    run_sized_peer(*peer, rope, 1e-5, 2.0, n);
+    run_sized_peer(*peer, rope, p, 1e-5, 2.0, n);
     EXPECT_FALSE(n.failed);
     EXPECT_EQ(n.solves, n.newton) << peer->name;
     EXPECT_GE(n.newton, n.steps + n.rejected) << peer->name;

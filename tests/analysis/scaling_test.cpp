@@ -82,16 +82,17 @@ TEST(Scaling, PeersOnTheRopeConvergeToTheExactSolution) {
   std::vector<double> p = default_param_values(*find_scene("rope"));
   p[0] = 20;
   const Rope r(p);
+  const std::size_t rope = *find_scene("rope");
   const Eigen::VectorXd exact = r.exact_at(1.0).x;
   for (const char* cvode : {"cvode_adams_band", "cvode_bdf_band", "cvode_bdf_max2_band"}) {
     PeerCounts n;
-    const double e = (run_sized_peer(*find_peer(cvode), r, 1e-9, 1.0, n).x - exact).cwiseAbs().maxCoeff();
+    const double e = (run_sized_peer(*find_peer(cvode), rope, p, 1e-9, 1.0, n).x - exact).cwiseAbs().maxCoeff();
     EXPECT_FALSE(n.failed) << cvode;
     EXPECT_GT(n.jacobians, 0) << cvode;
     EXPECT_LT(e, 1e-6) << cvode;  // a thousand times the tolerance: its global error may exceed it
   }
   PeerCounts n;
-  const double e_odeint = (run_sized_peer(*find_peer("odeint_dopri5"), r, 1e-9, 1.0, n).x - exact).cwiseAbs().maxCoeff();
+  const double e_odeint = (run_sized_peer(*find_peer("odeint_dopri5"), rope, p, 1e-9, 1.0, n).x - exact).cwiseAbs().maxCoeff();
   EXPECT_LT(e_odeint, 1e-7);
 }
 

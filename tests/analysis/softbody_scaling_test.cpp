@@ -1,4 +1,4 @@
-// The scaling study on the soft body (analysis/scaling.hpp, analysis/softbody_stability.hpp,
+// The scaling study on the soft body (analysis/scaling.hpp, its modes in core/scenes/softbody.hpp,
 // analysis/sized_peers.hpp): its fastest mode against a dense symmetric eigensolver, omega_max
 // growing as n, the predicted dt* against runs, the peers against the reference solution, and
 // rows that meet the target against a run of their own.
@@ -12,7 +12,7 @@
 #include "analysis/kernel.hpp"
 #include "analysis/scaling.hpp"
 #include "analysis/sized_peers.hpp"
-#include "analysis/softbody_stability.hpp"
+#include "analysis/mode_stability.hpp"
 #include "core/scenes/softbody.hpp"
 
 namespace steplab {
@@ -30,13 +30,13 @@ std::vector<double> grid(int n) {
 TEST(SoftBodyScaling, FastestModeMatchesADenseEigensolver) {
   for (int n : {2, 3, 4, 6}) {
     const SoftBody s(grid(n));
-    const State<Eigen::Dynamic> y = lowered_onto_ground(s);
+    const State<Eigen::Dynamic> y = s.lowered_onto_ground();
     const Jacobians<Eigen::Dynamic> j = s.jacobians(y.x, y.v);
     const Eigen::MatrixXd K = -Eigen::MatrixXd(j.dx), C = -Eigen::MatrixXd(j.dv);
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(K);
     const Eigen::VectorXd u = eig.eigenvectors().col(K.rows() - 1);
     const double omega = std::sqrt(eig.eigenvalues()[K.rows() - 1] / s.m);
-    const FastestMode f = softbody_fastest_mode(s);
+    const Mode f = s.modes().front();
     EXPECT_NEAR(f.omega, omega, 1e-6 * omega) << n;
     EXPECT_NEAR(f.two_zeta, u.dot(C * u) / (s.m * omega), 1e-4 * f.two_zeta) << n;
   }
@@ -45,7 +45,7 @@ TEST(SoftBodyScaling, FastestModeMatchesADenseEigensolver) {
 // The lattice's modulus is kept under refinement, each mass is M / n^2: omega_max ~ n, so doubling
 // n doubles it (to 10 %: the boundary rows and the ground's k_g / n per mass shift it).
 TEST(SoftBodyScaling, FastestModeGrowsAsTheGridSide) {
-  const double w8 = softbody_fastest_mode(SoftBody(grid(8))).omega, w16 = softbody_fastest_mode(SoftBody(grid(16))).omega;
+  const double w8 = SoftBody(grid(8)).modes().front().omega, w16 = SoftBody(grid(16)).modes().front().omega;
   EXPECT_NEAR(w16 / w8, 2.0, 0.2);
 }
 
@@ -54,7 +54,7 @@ TEST(SoftBodyScaling, FastestModeGrowsAsTheGridSide) {
 TEST(SoftBodyScaling, PredictedStableStepSeparatesRuns) {
   const std::vector<double> p = grid(6);
   const std::size_t rk4 = *find_method("rk4");
-  const double dt = softbody_predicted_threshold(rk4, SoftBody(p));
+  const double dt = modes_predicted_threshold(rk4, SoftBody(p).modes());
   const auto blows_up = [&](double h) {
     RunSpec spec;
     spec.dt = h;
@@ -73,15 +73,15 @@ TEST(SoftBodyScaling, PeersConvergeToTheReferenceSolution) {
   const std::vector<double> p = grid(4);
   const std::vector<double> ref = reference_solution(scene_kernel(*find_scene("softbody")), p, 1.0).x;
   const Eigen::Map<const Eigen::VectorXd> x(ref.data(), std::ssize(ref));
-  const SoftBody s(p);
+  const std::size_t s = *find_scene("softbody");
   for (const char* cvode : {"cvode_adams_klu", "cvode_bdf_klu", "cvode_bdf_max2_klu"}) {
     PeerCounts n;
-    EXPECT_LT((run_sized_peer(*find_peer(cvode), s, 1e-9, 1.0, n).x - x).cwiseAbs().maxCoeff(), 1e-6) << cvode;
+    EXPECT_LT((run_sized_peer(*find_peer(cvode), s, p, 1e-9, 1.0, n).x - x).cwiseAbs().maxCoeff(), 1e-6) << cvode;
     EXPECT_FALSE(n.failed) << cvode;
     EXPECT_GT(n.jacobians, 0) << cvode;
   }
   PeerCounts n;
-  EXPECT_LT((run_sized_peer(*find_peer("odeint_dopri5"), s, 1e-9, 1.0, n).x - x).cwiseAbs().maxCoeff(), 1e-6);
+  EXPECT_LT((run_sized_peer(*find_peer("odeint_dopri5"), s, p, 1e-9, 1.0, n).x - x).cwiseAbs().maxCoeff(), 1e-6);
 }
 
 // Rows of the study at grids 3 and 5: each reached row's error at or below the target, and a

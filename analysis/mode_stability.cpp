@@ -1,4 +1,4 @@
-#include "analysis/rope_stability.hpp"
+#include "analysis/mode_stability.hpp"
 
 #include <array>
 #include <cmath>
@@ -8,7 +8,6 @@
 #include "analysis/kernel.hpp"
 #include "analysis/shard.hpp"
 #include "analysis/stability.hpp"
-#include "core/scenes/rope.hpp"
 #include "core/scenes/spring.hpp"
 
 namespace steplab {
@@ -20,16 +19,17 @@ namespace steplab {
 // threshold needs once omega passes ~100: forces of 1e6 against perturbations of 1e-1.)
 // Modes of equal zeta (all of them undamped) share one computation.
 double unit_oscillator_threshold(std::size_t method, double two_zeta) {
-  const std::vector<double> unit{1.0, 1.0, 0.0, 5.0, 9.81};  // Spring::params: mass, stiffness, damping, rest-length, gravity
+  std::vector<double> unit = default_param_values<Spring>();
+  unit[param_index(Spring::params, "mass")] = 1, unit[stiffness_param_index<Spring>()] = 1, unit[damping_param_index<Spring>()] = 0;
   return predicted_stable_set(method, linear_spring(unit, two_zeta), false).dt_star;
 }
 
-double rope_predicted_threshold(std::size_t method, const Rope& r, int* binding_mode) {
+double modes_predicted_threshold(std::size_t method, const std::vector<Mode>& modes, int* binding_mode) {
   std::map<double, double> unit_dt;  // 2 zeta -> the unit spring's dt*
   double best = std::numeric_limits<double>::infinity();
   int binding = 0;
-  for (int j = r.n; j >= 1; --j) {  // the fastest first: ties go to it
-    const double w = r.omega(j), two_zeta = (r.c + r.d * r.lambda[j - 1]) / (r.m * w);
+  for (int j = static_cast<int>(modes.size()); j >= 1; --j) {  // the fastest first: ties go to it
+    const auto [w, two_zeta] = modes[j - 1];
     auto it = unit_dt.find(two_zeta);
     if (it == unit_dt.end()) it = unit_dt.emplace(two_zeta, unit_oscillator_threshold(method, two_zeta)).first;
     const double dt = it->second / w;
@@ -39,10 +39,9 @@ double rope_predicted_threshold(std::size_t method, const Rope& r, int* binding_
   return best;
 }
 
-double rope_measured_threshold(std::size_t method, const std::vector<double>& params, long long steps) {
-  const std::size_t scene = scene_index(Rope::name);
-  const Rope r(params);
-  const double w = r.omega(r.n);
+double measured_threshold(std::size_t method, std::size_t scene, const std::vector<double>& params, double omega_max,
+                          long long steps) {
+  const double w = omega_max;
   const PairKernel& k = pair_kernel(method, scene);
   RunSpec spec;
   spec.steps = steps;
@@ -57,13 +56,15 @@ double rope_measured_threshold(std::size_t method, const std::vector<double>& pa
       .dt_star;
 }
 
-std::vector<RopeThresholdRow> rope_threshold_study(const RopeStabilityConfig& c) {
-  const Rope r(c.params);
-  return study_map<RopeThresholdRow>(c.methods.size(), c.workers, [&](std::size_t i) {
+std::vector<ModeThresholdRow> mode_threshold_study(const ModeStabilityConfig& c) {
+  const std::vector<Mode> modes = scene_kernel(c.scene).modes(c.params);
+  double omega_max = 0;
+  for (const Mode& mode : modes) omega_max = std::max(omega_max, mode.omega);
+  return study_map<ModeThresholdRow>(c.methods.size(), c.workers, [&](std::size_t i) {
     const std::size_t m = c.methods[i];
-    RopeThresholdRow row{m, r.omega(r.n), 0, 0, 0};
-    row.dt_theory = rope_predicted_threshold(m, r, &row.binding_mode);
-    row.dt_measured = rope_measured_threshold(m, c.params, c.steps);
+    ModeThresholdRow row{m, omega_max, 0, 0, 0};
+    row.dt_theory = modes_predicted_threshold(m, modes, &row.binding_mode);
+    row.dt_measured = measured_threshold(m, c.scene, c.params, omega_max, c.steps);
     return row;
   }, implicit_first(c.methods));
 }

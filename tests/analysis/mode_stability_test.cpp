@@ -1,4 +1,4 @@
-// The rope's stability thresholds (analysis/rope_stability.hpp) against the published stability
+// The rope's stability thresholds from its modes (analysis/mode_stability.hpp) against the published stability
 // limits on the imaginary axis: undamped, dt* = C / omega_max with C = 2 (symplectic Euler,
 // velocity Verlet: Stoermer-Verlet's |omega h| < 2), 2 sqrt 2 (RK4), sqrt 3 (RK3), 1.5735
 // (Yoshida's fourth-order composition: 2 / |1 - 2^{1/3}|^{...}, Hairer-Lubich-Wanner II.4),
@@ -10,7 +10,7 @@
 #include <string>
 
 #include "analysis/kernel.hpp"
-#include "analysis/rope_stability.hpp"
+#include "analysis/mode_stability.hpp"
 #include "core/scenes/rope.hpp"
 
 namespace steplab {
@@ -32,17 +32,17 @@ TEST(RopeStability, UndampedThresholdsAreThePublishedConstantsOverOmegaMax) {
     for (const auto& e : expected) {
       const std::size_t m = *find_method(e.method);
       int mode = 0;
-      const double dt = rope_predicted_threshold(m, r, &mode);
+      const double dt = modes_predicted_threshold(m, r.modes(), &mode);
       EXPECT_NEAR(dt * w, e.c, e.digits * e.c) << e.method << " N " << n;
       EXPECT_EQ(mode, n) << e.method;  // the fastest mode binds
       // measured on the whole rope: the issue asks 1 %; bisected to 1e-3 and detected ~0.5 %
-      // past dt* (rope_stability.hpp), measured within 0.5 % at N = 4 and 64
-      EXPECT_NEAR(rope_measured_threshold(m, undamped(n), 5000), dt, 0.01 * dt) << e.method << " N " << n;
+      // past dt* (mode_stability.hpp), measured within 0.5 % at N = 4 and 64
+      EXPECT_NEAR(measured_threshold(m, *find_scene("rope"), undamped(n), w, 5000), dt, 0.01 * dt) << e.method << " N " << n;
     }
     for (const char* a_stable : {"implicit_euler", "implicit_midpoint", "gauss_legendre4", "bdf2", "radau_iia5"})
-      EXPECT_TRUE(std::isinf(rope_predicted_threshold(*find_method(a_stable), r))) << a_stable;
+      EXPECT_TRUE(std::isinf(modes_predicted_threshold(*find_method(a_stable), r.modes()))) << a_stable;
     for (const char* none : {"explicit_euler", "explicit_midpoint", "adams_bashforth2"})
-      EXPECT_EQ(rope_predicted_threshold(*find_method(none), r), 0) << none;
+      EXPECT_EQ(modes_predicted_threshold(*find_method(none), r.modes()), 0) << none;
   }
 }
 
@@ -56,9 +56,9 @@ TEST(RopeStability, DampedRopeMeasuredAsPredicted) {
   const Rope r(p);
   for (const char* name : {"rk4", "symplectic_euler", "rk3", "yoshida4"}) {
     const std::size_t m = *find_method(name);
-    const double dt = rope_predicted_threshold(m, r);
+    const double dt = modes_predicted_threshold(m, r.modes());
     ASSERT_TRUE(std::isfinite(dt) && dt > 0) << name;
-    EXPECT_NEAR(rope_measured_threshold(m, p, 5000), dt, 0.01 * dt) << name;  // measured 0.002 % .. 0.14 %
+    EXPECT_NEAR(measured_threshold(m, *find_scene("rope"), p, r.omega(r.n), 5000), dt, 0.01 * dt) << name;  // measured 0.002 % .. 0.14 %
   }
 }
 

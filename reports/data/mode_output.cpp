@@ -7,15 +7,15 @@
 
 namespace steplab {
 
-Json rope_stability_json(const RopeStabilityConfig& c, const std::vector<RopeThresholdRow>& rows) {
+Json mode_stability_json(const ModeStabilityConfig& c, const std::vector<ModeThresholdRow>& rows) {
   Json j;
   j["schema"] = "steplab.rope_stability/1";
-  j["scene"] = "rope";
-  Json p = scene_params_json(*find_scene("rope"), c.params);
+  j["scene"] = scene_name(c.scene);
+  Json p = scene_params_json(c.scene, c.params);
   p["run_steps"] = c.steps;
   j["params"] = std::move(p);
   Json t = Json::array();
-  for (const RopeThresholdRow& r : rows)
+  for (const ModeThresholdRow& r : rows)
     t.push_back({{"method", method_info(r.method).name},
                  {"omega_max", r.omega_max},
                  {"dt_theory", threshold_json(r.dt_theory)},
@@ -25,13 +25,13 @@ Json rope_stability_json(const RopeStabilityConfig& c, const std::vector<RopeThr
   return j;
 }
 
-std::string rope_thresholds_table(const std::vector<RopeThresholdRow>& rows) {
+std::string mode_thresholds_table(std::string_view scene, const std::vector<ModeThresholdRow>& rows) {
   std::string out = fmt::format(
-      "Stability thresholds dt* of the rope (largest stable step; inf: stable at every step, 0: at none)\n"
-      "predicted: the smallest dt* over its modes (each a damped spring); measured: runs of the whole rope\n\n"
+      "Stability thresholds dt* of the {} (largest stable step; inf: stable at every step, 0: at none)\n"
+      "predicted: the smallest dt* over its modes (each a damped spring); measured: runs of the whole {}\n\n"
       "{:<18} {:>12} {:>6} {:>12} {:>10} {:>14}\n",
-      "method", "predicted", "mode", "measured", "rel. diff", "dt* omega_max");
-  for (const RopeThresholdRow& r : rows) {
+      scene, scene, "method", "predicted", "mode", "measured", "rel. diff", "dt* omega_max");
+  for (const ModeThresholdRow& r : rows) {
     const bool finite = std::isfinite(r.dt_theory) && r.dt_theory > 0;
     out += fmt::format("{:<18} {:>12} {:>6} {:>12} {:>10} {:>14}\n", method_info(r.method).name, threshold_text(r.dt_theory),
                        r.binding_mode == 0 ? std::string("-") : std::to_string(r.binding_mode), threshold_text(r.dt_measured),
