@@ -6,7 +6,7 @@ ifdef CI
 CMAKE_FLAGS += -DSTEPLAB_WERROR=ON
 endif
 
-.PHONY: all build test report bench test-sanitize fuzz clean deps
+.PHONY: all build test report bench performance test-sanitize fuzz clean deps
 
 all: build
 
@@ -38,6 +38,15 @@ bench: build
 	  echo "CVODE Adams, rope of 1024 masses, tol 1e-5: steplab's build: $$o"; echo "  Debian's build: $$d"; \
 	  echo "$$o $$d" | awk '{ printf "  per step: %.1f us against %.1f us, Debian/optimised %.2f\n", 1e6*$$16/$$2, 1e6*$$34/$$20, ($$34/$$20)/($$16/$$2) }'; fi
 
+# docs/performance.md, regenerated from measurements on this machine: `make bench`, then the
+# studies whose figures it gives (about 4 minutes), then tools/performance-md, which writes every
+# figure from their JSON with its command and the machine.
+performance: bench
+	@mkdir -p $(BUILD)/performance
+	@$(BUILD)/steplab study scaling --sizes 1024 --json $(BUILD)/performance/scaling-rope.json >/dev/null
+	@$(BUILD)/steplab study scaling --scene softbody --json $(BUILD)/performance/scaling-softbody.json >/dev/null
+	@$(BUILD)/steplab study work-precision --json $(BUILD)/performance/work-precision.json >/dev/null
+	@tools/performance-md --bench $(BUILD)/bench.json --studies $(BUILD)/performance --out docs/performance.md
 
 # The suite under AddressSanitizer and UndefinedBehaviorSanitizer, in its own build folder.
 # Without -Werror: under the sanitizers GCC 12 reports -Wmaybe-uninitialized inside libstdc++

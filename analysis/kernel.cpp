@@ -38,9 +38,8 @@ std::optional<std::size_t> find_method(std::string_view name) {
 }
 
 std::optional<std::size_t> find_scene(std::string_view name) {
-  if (name == "spring1d") name = "spring";  // the old framework's test case name
   for (std::size_t i = 0; i < scene_count(); ++i)
-    if (scene_name(i) == name) return i;
+    if (scene_name(i) == name || (!scene_kernel(i).old_name.empty() && scene_kernel(i).old_name == name)) return i;
   return std::nullopt;
 }
 
@@ -71,8 +70,13 @@ std::vector<AnyResult> run_all(const PairKernel& k, std::span<const BatchRun> ru
 }
 
 std::string scene_list() {
+  return scene_list([](const SceneKernel&) { return true; });
+}
+
+std::string scene_list(bool (*offers)(const SceneKernel&)) {
   std::string out;
-  for (std::size_t i = 0; i < scene_count(); ++i) out += (out.empty() ? "" : ", ") + std::string(scene_name(i));
+  for (std::size_t i = 0; i < scene_count(); ++i)
+    if (offers(scene_kernel(i))) out += (out.empty() ? "" : ", ") + std::string(scene_name(i));
   return out;
 }
 

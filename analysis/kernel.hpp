@@ -117,6 +117,7 @@ struct MadeSceneCode {
 struct SceneKernel {
   std::string_view name;
   std::string_view title;  // the scene in a few words, for a table's heading (its name if it gives none)
+  std::string_view old_name;  // the name it had in the old framework, also accepted (empty: none)
   std::span<const ParamSpec> params;
   int dim;
   bool has_exact;
@@ -175,7 +176,7 @@ std::vector<AnyResult> run_all(const PairKernel& k, std::span<const BatchRun> ru
 const PairKernel& pair_kernel(std::size_t m, std::size_t s);
 bool applies(std::size_t m, std::size_t s);
 
-// Index of a method by its name or an old alias; of a scene by its name ("spring1d": spring).
+// Index of a method by its name or an old alias; of a scene by its name or its old name.
 std::optional<std::size_t> find_method(std::string_view name);
 std::optional<std::size_t> find_scene(std::string_view name);
 // The scene's index; throws std::logic_error if the table has none of that name.
@@ -183,6 +184,8 @@ std::size_t scene_index(std::string_view name);
 // "explicit_euler, symplectic_euler, ... (old names: euler, ...)" for error messages and --help.
 std::string method_names();
 std::string scene_list();
+// "rope, softbody": the scenes for which `offers` holds, for a message naming what is accepted.
+std::string scene_list(bool (*offers)(const SceneKernel&));
 
 // Whether the scene has a parameter of that name; its default values in table order.
 inline bool has_param(std::size_t scene, std::string_view name) { return has_param(scene_kernel(scene).params, name); }

@@ -290,6 +290,7 @@ template <Scene S> constexpr SceneKernel make_scene() {
   using C = SceneCode<S>;
   SceneKernel k{.name = S::name,
                 .title = scene_title<S>(),
+                .old_name = scene_old_name<S>(),
                 .params = std::span<const ParamSpec>(S::params),
                 .dim = S::dim,
                 .has_exact = HasExact<S>,

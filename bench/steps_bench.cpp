@@ -356,6 +356,11 @@ int main(int argc, char** argv) {
   }
   const std::string color = flag_value(argc, argv, "--benchmark_color", "auto");
   const bool colored = color == "auto" ? isatty(STDOUT_FILENO) != 0 : color == "true" || color == "yes" || color == "1";
+  // The build beside the machine in the JSON's context: docs/performance.md is generated from it
+  // (tools/performance-md).
+  benchmark::AddCustomContext("compiler", "GCC " __VERSION__);
+  benchmark::AddCustomContext("cxx_flags", STEPLAB_BENCH_CXX_FLAGS);
+  benchmark::AddCustomContext("steplab_version", STEPLAB_BENCH_VERSION);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
 #pragma GCC diagnostic push

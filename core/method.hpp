@@ -62,7 +62,7 @@ struct MethodInfo {
 // scene's coordinates unknowns in one dense system (Gauss-Legendre 4: 2, Radau IIA 5: 3; 1 for
 // the one-stage solves). A pack solves up to kPackLuSize of them lane-wise in SIMD (core/
 // small_lu.hpp); a larger one would be solved lane by lane, scalar, which makes packs slower than
-// one run at a time (docs/performance.md, SIMD packs), so such a pair is stepped one run at a
+// one run at a time (docs/design.md, Why a step is fast), so such a pair is stepped one run at a
 // time (core/batch.hpp). A method that solves and does not say so is still packed: the same
 // bits, only slower.
 template <class M> constexpr int solve_stages() {

@@ -9,7 +9,7 @@
 // AVX2, 8 on AVX-512. A vector wider than the target's registers is lowered through memory
 // (3-4x slower). One pack is stepped at a time, not two interleaved: the loop is bound by its
 // instruction count, not by its latency, so a second chain of a step in flight gained nothing
-// (docs/performance.md, SIMD packs). Comparisons give a Mask; a branch on the state becomes a
+// (docs/design.md, Why a step is fast). Comparisons give a Mask; a branch on the state becomes a
 // select.
 #pragma once
 
@@ -99,7 +99,7 @@ template <int W> struct Mask {
 template <class T> using MaskOf = decltype(std::declval<const T&>() < std::declval<const T&>());
 
 inline double select(bool c, double a, double b) { return c ? a : b; }
-// Per width, as GCC 12 compiles it best (docs/performance.md, SIMD packs). A mask's lanes are all
+// Per width, as GCC 12 compiles it best (docs/design.md, Why a step is fast). A mask's lanes are all
 // ones or all zeros, so on AVX2 its sign bit is the lane: c < 0 is one vblendvpd, where c != 0
 // compares the mask with zero twice first. SSE2 has no blend and GCC makes either form a branch
 // per lane: the bits are and-ed and or-ed. On AVX-512, c < 0 is a comparison typed for plain
@@ -114,7 +114,7 @@ template <int W> Pack<W> select(const Mask<W>& c, const Pack<W>& a, const Pack<W
 inline bool any(bool c) { return c; }
 inline bool all(bool c) { return c; }
 // Any lane on: the two halves OR-ed together until two lanes are left, in log2(W) operations
-// rather than a test per lane (fewer instructions per step: docs/performance.md, SIMD packs).
+// rather than a test per lane (fewer instructions per step: docs/design.md, Why a step is fast).
 template <int W> bool any(const Mask<W>& c) {
   const typename Mask<W>::Bits& b = c.b;
   if constexpr (W == 8) return any(Mask<4>::of(__builtin_shufflevector(b, b, 0, 1, 2, 3) | __builtin_shufflevector(b, b, 4, 5, 6, 7)));

@@ -32,6 +32,7 @@
 //                                 peers then use a banded solver, analysis/sized_peers.cpp)
 //   stiffness_param, damping_param = "<name>"   which parameters are its stiffness and damping
 //   title = "<words>"             the scene in a few words, for a table's heading
+//   old_name = "<name>"           a name the old framework gave it, also accepted
 #pragma once
 
 #include <algorithm>
@@ -237,6 +238,10 @@ template <Scene S> constexpr int damping_param_index() {
 template <Scene S> constexpr std::string_view scene_title() {
   if constexpr (requires { S::title; }) return S::title;
   else return S::name;
+}
+template <Scene S> constexpr std::string_view scene_old_name() {
+  if constexpr (requires { S::old_name; }) return S::old_name;
+  else return {};
 }
 template <Scene S> constexpr int coords_per_mass() {
   if constexpr (requires { S::coords_per_mass; }) return S::coords_per_mass;

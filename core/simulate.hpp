@@ -114,7 +114,7 @@ struct NoObserver {
 // end. T a pack for runs stepped together (core/batch.hpp): each lane adds where `take` holds.
 // Shared by this run loop, dopri5's (core/dopri5.hpp) and the batch's. add is forced inline:
 // left to itself GCC 12 calls the scalar version out of line, a call in every step of the
-// cheapest methods (docs/performance.md).
+// cheapest methods.
 template <class T> struct ErrorSums {
   T error_max = 0, err_sq_sum = 0, error_final = 0, error_v_final = 0;
   static constexpr auto fields() {

@@ -23,6 +23,7 @@ template <class T> struct SpringT {
   static constexpr int dim = 1;
   static constexpr std::string_view name = "spring";
   static constexpr bool affine_flow = true;  // flow(y, h) below is linear in y - y_eq (core/scene.hpp)
+  static constexpr std::string_view old_name = "spring1d";  // the old framework's test case
   static constexpr std::string_view stiffness_param = "stiffness";
   static constexpr std::string_view damping_param = "damping";
   // Defaults from the 2018 sheet: m = 1, k = 5, L = 5, gamma = 0.1, g = 9.81.

@@ -115,11 +115,8 @@ std::string scaling_table(const ScalingResult& r) {
 int scaling_command(ScalingArgs& a, Context& ctx) {
   const SceneKernel& scene = scene_kernel(a.scene.scene_index());
   if (!scales(scene)) {
-    std::string accepted;
-    for (std::size_t s = 0; s < scene_count(); ++s)
-      if (scales(scene_kernel(s))) accepted += (accepted.empty() ? "" : ", ") + std::string(scene_name(s));
     throw UsageError(fmt::format("--scene '{}' is not accepted by study scaling; accepted: {} (a scene of run-time size "
-                                 "that declares its modes)", a.scene.scene, accepted));
+                                 "that declares its modes)", a.scene.scene, scene_list(scales)));
   }
   ScalingConfig c = scaling_config(a.scene.scene);  // the scene's default sizes, step cap and solvers
   c.params = a.scene.values(a.scene.scene_index());

@@ -29,8 +29,13 @@ std::string scene_parameters_help() {
 
 void SceneArgs::add_to(CLI::App* a, bool with_scene_option) {
   app = a;
-  if (with_scene_option)
-    a->add_option("--scene", scene, "scene: " + scene_list() + " (spring1d is the old name of spring)")->capture_default_str();
+  if (with_scene_option) {
+    std::string old_names;  // " (spring1d is the old name of spring)"
+    for (std::size_t i = 0; i < scene_count(); ++i)
+      if (const SceneKernel& k = scene_kernel(i); !k.old_name.empty())
+        old_names += fmt::format(" ({} is the old name of {})", k.old_name, k.name);
+    a->add_option("--scene", scene, "scene: " + scene_list() + old_names)->capture_default_str();
+  }
   // Listed once, by scene, in the footer; an empty group keeps them out of the merged option list.
   for (const std::string& name : all_scene_parameters()) a->add_option("--" + name, text[name])->group("");
   a->footer(scene_parameters_help());

@@ -215,9 +215,7 @@ int stability_command(StabilityArgs& a, Context& ctx) {
   const SceneKernel& scene = scene_kernel(a.scene.scene_index());
   if (!oscillator_study(scene)) {
     if (modes_study(scene)) return mode_stability_command(a, ctx);
-    std::string accepted;
-    for (std::size_t s = 0; s < scene_count(); ++s)
-      if (oscillator_study(scene_kernel(s)) || modes_study(scene_kernel(s))) accepted += (accepted.empty() ? "" : ", ") + std::string(scene_name(s));
+    const std::string accepted = scene_list([](const SceneKernel& s) { return oscillator_study(s) || modes_study(s); });
     throw UsageError(fmt::format("--scene '{}' is not accepted by study stability; accepted: {} (a scene of one coordinate "
                                  "with a damping parameter, or one that declares its modes)", a.scene.scene, accepted));
   }

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# tools/performance-md writes docs/performance.md from the JSON of `make bench` and of the studies:
+# here from a few benchmarks and a small scaling study, into a temporary file. Each table it
+# writes holds the figure of its JSON (the median of the repetitions), and a study whose JSON is
+# missing gets a line saying so.
+# Usage: performance_test.sh STEPLAB_BENCH STEPLAB SOURCE_DIR
+set -euo pipefail
+bench=$1 steplab=$2 src=$3
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+"$bench" --benchmark_filter='^((step|odeint|baseline)/spring/rk4|rope_size/rk4/64|throughput_w1/spring/explicit_euler)$' \
+  --benchmark_min_time=0.001 --benchmark_repetitions=3 --benchmark_out="$tmp/bench.json" --benchmark_out_format=json >/dev/null
+mkdir "$tmp/studies"
+"$steplab" study scaling --sizes 8,16 --methods rk4,cvode_adams_band --no-timing --json "$tmp/studies/scaling-rope.json" >/dev/null
+"$src/tools/performance-md" --bench "$tmp/bench.json" --studies "$tmp/studies" --out "$tmp/performance.md" >/dev/null
+python3 - "$tmp/bench.json" "$tmp/studies/scaling-rope.json" "$tmp/performance.md" <<'PY'
+import json, sys
+bench, scal, md = json.load(open(sys.argv[1])), json.load(open(sys.argv[2])), open(sys.argv[3]).read()
+med = {b["run_name"]: b["real_time"] for b in bench["benchmarks"] if b.get("aggregate_name") == "median"}
+step, odeint = med["step/spring/rk4"], med["odeint/spring/rk4"]
+row = next(l for l in md.splitlines() if l.startswith("| `spring/rk4`"))
+cells = [c.strip() for c in row.strip("|").split("|")]
+assert abs(float(cells[1]) - step) <= 0.0015 * step + 0.05, (cells, step)  # three significant digits
+assert abs(float(cells[4]) - step / odeint) <= 0.006, (cells, step / odeint)  # two decimals
+assert "| `rk4` |" in md and "N = 64" in md, "the rope_size table"
+assert "`throughput_w1/spring/explicit_euler`" in md, "the packs table"
+assert bench["context"]["compiler"].startswith("GCC") and bench["context"]["compiler"] in md, "the machine line"
+for r in scal["rows"]:
+    assert any(l.startswith(f"| `{r['solver']}` | {r['masses']} |") and f"| {r['steps']} |" in l for l in md.splitlines()), r
+assert "scaling-softbody.json` is missing" in md and "work-precision.json` is missing" in md
+print("performance.md ok")
+PY
