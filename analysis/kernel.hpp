@@ -123,18 +123,13 @@ struct SceneKernel {
   bool has_exact;
   // What the scene offers the studies (core/scene.hpp), asked for instead of its name; a
   // parameter by its index in `params`, -1 where the scene declares none.
-  bool affine_flow = false;
-  bool contact = false;
   int size_param = -1;       // the count that refines a scene of run-time size; -1: fixed size
-  int stiffness_param = -1;
-  int damping_param = -1;
   int coords_per_mass = 1;   // N masses = dim / coords_per_mass
   int jacobian_bandwidth = -1;  // -1: not declared banded
   std::vector<Mode> (*modes)(Params) = nullptr;  // its linearisation's oscillators, slowest first
-  // Scenes of run-time size: the scene made once, its number of masses, and its code for solvers
-  // outside the table (null on fixed-size scenes).
+  // Scenes of run-time size: the scene made once and its code for solvers outside the table
+  // (null on fixed-size scenes).
   std::shared_ptr<const void> (*make)(Params) = nullptr;
-  int (*masses)(Params) = nullptr;
   const MadeSceneCode* made = nullptr;
   AnyState (*initial)(Params);
   AnyState (*exact)(Params, double t);  // null without an exact solution

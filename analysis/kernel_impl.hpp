@@ -276,7 +276,6 @@ template <Scene S> struct SceneCode {
 template <Scene S> struct MadeCode {
   static const S& of(const void* s) { return *static_cast<const S*>(s); }
   static std::shared_ptr<const void> make(Params p) { return std::make_shared<const S>(p); }
-  static int masses(Params p) { return static_cast<int>(S(p).initial().x.size()) / coords_per_mass<S>(); }
   static Eigen::VectorXd force(const void* s, const Eigen::VectorXd& x, const Eigen::VectorXd& v) { return of(s).force(x, v); }
   static Jacobians<Eigen::Dynamic> jacobians(const void* s, const Eigen::VectorXd& x, const Eigen::VectorXd& v) {
     return of(s).jacobians(x, v);
@@ -294,11 +293,7 @@ template <Scene S> constexpr SceneKernel make_scene() {
                 .params = std::span<const ParamSpec>(S::params),
                 .dim = S::dim,
                 .has_exact = HasExact<S>,
-                .affine_flow = HasAffineFlow<S>,
-                .contact = HasContact<S>,
                 .size_param = size_param_index<S>(),
-                .stiffness_param = stiffness_param_index<S>(),
-                .damping_param = damping_param_index<S>(),
                 .coords_per_mass = coords_per_mass<S>(),
                 .jacobian_bandwidth = jacobian_bandwidth<S>(),
                 .initial = &C::initial,
@@ -308,7 +303,7 @@ template <Scene S> constexpr SceneKernel make_scene() {
                 .dopri5_timings = &C::dopri5_timings};
   if constexpr (HasExact<S>) k.exact = &C::exact_at;
   if constexpr (HasModes<S>) k.modes = [](Params p) { return S(p).modes(); };
-  if constexpr (S::dim == Eigen::Dynamic) k.make = &MadeCode<S>::make, k.masses = &MadeCode<S>::masses, k.made = &MadeCode<S>::code;
+  if constexpr (S::dim == Eigen::Dynamic) k.make = &MadeCode<S>::make, k.made = &MadeCode<S>::code;
   return k;
 }
 

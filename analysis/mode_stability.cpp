@@ -41,13 +41,12 @@ double modes_predicted_threshold(std::size_t method, const std::vector<Mode>& mo
 
 double measured_threshold(std::size_t method, std::size_t scene, const std::vector<double>& params, double omega_max,
                           long long steps) {
-  const double w = omega_max;
   const PairKernel& k = pair_kernel(method, scene);
   RunSpec spec;
   spec.steps = steps;
   spec.errors = false;
   spec.stop_above = 1e4;
-  return stable_set(kMeasureMinWh / w, kMaxWh / w, 2, 1e-3,
+  return stable_set(kMeasureMinWh / omega_max, kMaxWh / omega_max, 2, 1e-3,
                     [&](double h) {
                       spec.dt = h;
                       return k.run(params, spec).status != RunStatus::Ok;

@@ -56,9 +56,8 @@ std::string fmt_reference_error(double estimated, double target, int n) {
 // an exact solution (the rope), else the reference solution (the soft body: dopri5 at rtol
 // 1e-13, analysis/convergence.hpp), whose own estimated error must stay a hundredth of the
 // target's.
-Eigen::VectorXd target_positions(const ScalingConfig& c, int n) {
-  const SceneKernel& s = scene_kernel(scene_index(c.scene));
-  const std::vector<double> p = sized(c, n);
+Eigen::VectorXd target_positions(const ScalingConfig& c, const std::vector<double>& p, int n) {
+  const SceneKernel& s = scene_of(c);
   if (s.has_exact) return s.exact(p, c.t_end).x;
   const ReferenceSolution ref = reference_solution(s, p, c.t_end);
   if (!(ref.estimated_error <= 0.01 * c.target_error))
@@ -66,9 +65,22 @@ Eigen::VectorXd target_positions(const ScalingConfig& c, int n) {
   return Eigen::Map<const Eigen::VectorXd>(ref.x.data(), std::ssize(ref.x));
 }
 
-// A method's largest stable step: from the scene's modes (analysis/mode_stability.hpp).
-double predicted_threshold(std::size_t m, const SceneKernel& s, const std::vector<double>& p) {
-  return modes_predicted_threshold(m, s.modes(p));
+// What every row at one size shares, made once before the rows: the parameters, the positions
+// the runs are measured against, the scene's modes (each method's dt*) and its masses.
+struct Size {
+  int n;
+  std::vector<double> params;
+  Eigen::VectorXd target;
+  std::vector<Mode> modes;
+  int masses;
+};
+
+Size size_of(const ScalingConfig& c, int n) {
+  std::vector<double> p = sized(c, n);
+  Eigen::VectorXd target = target_positions(c, p, n);
+  std::vector<Mode> modes = scene_of(c).modes(p);
+  const int masses = scaling_masses(c, n);
+  return {n, std::move(p), std::move(target), std::move(modes), masses};
 }
 
 // The largest |x_i - x_i(t_end)| over the masses; inf for a run that did not finish.
@@ -117,12 +129,13 @@ template <class Run> void search(ScalingRow& row, double start, double most, dou
   ++row.runs;
 }
 
-ScalingRow method_row(const ScalingConfig& c, const Eigen::VectorXd& exact, std::size_t m, int n) {
-  const std::vector<double> p = sized(c, n);
+ScalingRow method_row(const ScalingConfig& c, const Size& size, std::size_t m) {
+  const std::vector<double>& p = size.params;
+  const Eigen::VectorXd& exact = size.target;
   const std::size_t scene = scene_index(c.scene);
   const MethodInfo& info = method_info(m);
-  ScalingRow row{std::string(info.name), info.implicit, false, n, scaling_masses(c, n)};
-  row.dt_stable = predicted_threshold(m, scene_kernel(scene), p);
+  ScalingRow row{std::string(info.name), info.implicit, false, size.n, size.masses};
+  row.dt_stable = modes_predicted_threshold(m, size.modes);  // analysis/mode_stability.hpp
   const double most = std::min(0.95 * row.dt_stable, c.t_end / 2);
   if (!(most * c.max_steps >= c.t_end)) {  // no stable step covers t_end in max_steps
     row.dt = kNaN;
@@ -156,11 +169,12 @@ AdaptiveSpec adaptive_spec(double tol, double t_end) {
 }
 
 // dopri5 (steplab's) or a peer (analysis/peers.hpp) at a tolerance.
-ScalingRow peer_row(const ScalingConfig& c, const Eigen::VectorXd& exact, const std::string& solver, int n) {
-  const std::vector<double> p = sized(c, n);
+ScalingRow peer_row(const ScalingConfig& c, const Size& size, const std::string& solver) {
+  const std::vector<double>& p = size.params;
+  const Eigen::VectorXd& exact = size.target;
   const std::size_t scene = scene_index(c.scene);
   const PeerInfo& peer = *find_peer(solver);
-  ScalingRow row{solver, peer.implicit, true, n, scaling_masses(c, n), kNaN};
+  ScalingRow row{solver, peer.implicit, true, size.n, size.masses, kNaN};
   if (solver == "dopri5") {
     search(row, 1e-4, 1e-2, 1, c.target_error, [&](double tol) {
       const AnyAdaptiveResult res = scene_kernel(scene).dopri5(p, adaptive_spec(tol, c.t_end));
@@ -219,7 +233,10 @@ ScalingFit fit_of(const ScalingConfig& c, std::span<const ScalingRow> rows) {
 
 double scaling_cost(const ScalingConfig& c, const ScalingRow& r) { return c.timing ? r.seconds : double(r.forces + r.jacobians) * r.masses; }
 
-int scaling_masses(const ScalingConfig& c, int n) { return scene_of(c).masses(sized(c, n)); }
+int scaling_masses(const ScalingConfig& c, int n) {
+  const SceneKernel& s = scene_of(c);
+  return static_cast<int>(s.initial(sized(c, n)).x.size()) / s.coords_per_mass;
+}
 
 std::vector<std::string> scaling_adaptive_solvers(std::string_view scene) {
   return peer_names(peer_scenes(scene_kernel(scene_index(scene))));
@@ -245,12 +262,11 @@ ScalingResult scaling_study(const ScalingConfig& c) {
   ScalingResult out;
   out.config = c;
   const std::size_t nm = c.methods.size(), ns = c.sizes.size(), np = c.adaptive.size();
-  std::vector<Eigen::VectorXd> targets;
-  for (int n : c.sizes) targets.push_back(target_positions(c, n));
+  std::vector<Size> sizes;
+  for (int n : c.sizes) sizes.push_back(size_of(c, n));
   out.rows = study_map<ScalingRow>((nm + np) * ns, c.workers, [&](std::size_t task) {
     const std::size_t solver = task / ns, k = task % ns;
-    const int n = c.sizes[k];
-    return solver < nm ? method_row(c, targets[k], c.methods[solver], n) : peer_row(c, targets[k], c.adaptive[solver - nm], n);
+    return solver < nm ? method_row(c, sizes[k], c.methods[solver]) : peer_row(c, sizes[k], c.adaptive[solver - nm]);
   });
   if (c.timing)
     for (ScalingRow& r : out.rows)

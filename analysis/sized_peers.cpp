@@ -141,19 +141,22 @@ State<Eigen::Dynamic> cvode_klu(const MadeScene& s, const CvodeSettings& setting
 }
 #endif
 
+[[noreturn]] void not_here(const PeerInfo& peer, const SceneKernel& scene) {
+  throw std::logic_error("run_sized_peer: " + std::string(peer.name) + " does not run on the " + std::string(scene.name));
+}
+
 }  // namespace
 
 State<Eigen::Dynamic> run_sized_peer(const PeerInfo& peer, const SceneKernel& scene, const void* made, double tol, double t_end,
                                      PeerCounts& n) {
-  if (!scene.made || !peer_runs_on(peer, peer_scenes(scene)))
-    throw std::logic_error("run_sized_peer: " + std::string(peer.name) + " does not run on the " + std::string(scene.name));
+  if (!scene.made || !peer_runs_on(peer, peer_scenes(scene))) not_here(peer, scene);
   const MadeScene s{*scene.made, made};
   if (peer.name == "odeint_dopri5") return odeint_dopri5(s, tol, t_end, n);
   if (peer.linear_solver == "band") return cvode_band(s, scene.jacobian_bandwidth, peer.cvode, tol, t_end, n);
 #if STEPLAB_HAVE_KLU
   if (peer.linear_solver == "KLU" && peer.built) return cvode_klu(s, peer.cvode, tol, t_end, n);
 #endif
-  throw std::logic_error("run_sized_peer: " + std::string(peer.name) + " does not run on the " + std::string(scene.name));
+  not_here(peer, scene);
 }
 
 State<Eigen::Dynamic> run_sized_peer(const PeerInfo& peer, std::size_t scene, std::span<const double> params, double tol,

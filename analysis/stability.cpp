@@ -42,6 +42,8 @@ template <class F> void encode_fields(MapRow& r, F&& f) {
 
 const PairKernel& spring_kernel(std::size_t method) { return pair_kernel(method, scene_index(Spring::name)); }
 
+bool runs_spring_study(const SceneKernel& scene) { return scene.name == Spring::name; }
+
 Spring linear_spring(const std::vector<double>& params, double gamma) {
   std::vector<double> p = params;
   p[damping_param_index<Spring>()] = gamma;

@@ -204,6 +204,12 @@ struct StabilityMap {
 // The cells of method i's map whose measured verdict differs from the prediction at that cell.
 std::size_t disagreeing_cells(const StabilityMap& map, std::size_t i);
 
+// Whether a scene of the table is the one this study runs on: its thresholds, sweep and map are
+// made on the spring itself (linear_spring), so they take the spring's parameters and no other
+// scene's; a scene's stability otherwise comes from its modes (analysis/mode_stability.hpp).
+struct SceneKernel;
+bool runs_spring_study(const SceneKernel& scene);
+
 struct StabilityConfig {
   std::vector<double> params;                  // Spring parameters, table order (damping replaced per row)
   std::vector<std::size_t> methods;

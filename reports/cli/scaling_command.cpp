@@ -46,7 +46,8 @@ Json scaling_json(const ScalingResult& r) {
   Json j;
   j["schema"] = "steplab.scaling/1";
   const std::size_t scene = scene_index(c.scene);
-  const std::string size_key = param_key(scene_kernel(scene).params[scene_kernel(scene).size_param]);  // masses (rope), grid (soft body)
+  const SceneKernel& s = scene_kernel(scene);
+  const std::string size_key = param_key(s.params[s.size_param]);  // masses (rope), grid (soft body)
   j["scene"] = c.scene;
   Json p = scene_params_json(scene, c.params);
   p.erase(size_key);

@@ -182,17 +182,15 @@ int damping_command(StabilityArgs& a, Context& ctx) {
 
 namespace {
 
-// The spring's study (thresholds over dampings, the map) runs on a 1-D scene with a damping
-// parameter; the modes' study on a scene that declares its modes (core/scene.hpp).
-bool oscillator_study(const SceneKernel& s) { return s.dim == 1 && s.damping_param >= 0; }
+// The spring's study (thresholds over dampings, the map: analysis/stability.hpp) on the spring;
+// the modes' study on any other scene that declares its modes (core/scene.hpp).
 bool modes_study(const SceneKernel& s) { return s.modes != nullptr; }
 
 // A scene's thresholds: predicted from its modes, measured on the whole scene (analysis/mode_stability.hpp).
 int mode_stability_command(StabilityArgs& a, Context& ctx) {
   for (const char* spring_only : {"--threshold-dampings", "--map-dt-points", "--map-damping-points", "--map-dt-min", "--map-dt-max"})
     if (a.scene.app->count(spring_only) > 0)
-      throw UsageError(fmt::format("{} applies to a scene of one coordinate with a damping parameter; the {}'s damping is "
-                                   "among its own parameters",
+      throw UsageError(fmt::format("{} applies to the spring's study; the {}'s damping is among its own parameters",
                                    spring_only, a.scene.scene));
   ModeStabilityConfig c;
   c.scene = a.scene.scene_index();
@@ -213,11 +211,11 @@ int mode_stability_command(StabilityArgs& a, Context& ctx) {
 
 int stability_command(StabilityArgs& a, Context& ctx) {
   const SceneKernel& scene = scene_kernel(a.scene.scene_index());
-  if (!oscillator_study(scene)) {
+  if (!runs_spring_study(scene)) {
     if (modes_study(scene)) return mode_stability_command(a, ctx);
-    const std::string accepted = scene_list([](const SceneKernel& s) { return oscillator_study(s) || modes_study(s); });
-    throw UsageError(fmt::format("--scene '{}' is not accepted by study stability; accepted: {} (a scene of one coordinate "
-                                 "with a damping parameter, or one that declares its modes)", a.scene.scene, accepted));
+    const std::string accepted = scene_list([](const SceneKernel& s) { return runs_spring_study(s) || modes_study(s); });
+    throw UsageError(fmt::format("--scene '{}' is not accepted by study stability; accepted: {} (the spring, or a scene "
+                                 "that declares its modes)", a.scene.scene, accepted));
   }
   StabilityConfig c = stability_config(a, ctx);
   c.threshold_dampings = number_list("--threshold-dampings", a.threshold_dampings, Bound::NonNegative);

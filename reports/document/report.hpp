@@ -24,6 +24,7 @@ struct ReportData {
   ReportConfig config;
   Workers workers;  // the config's threads, the command's progress
   std::vector<std::size_t> methods;  // every method in the table, the exact flow included
+  std::vector<std::size_t> numerical_methods() const;  // `methods` but the exact flow
   ConvergenceResult conv_spring, conv_cannonball, conv_bounce;
   std::vector<ThresholdRow> thresholds;
   std::vector<SweepRow> sweep;

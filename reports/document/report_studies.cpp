@@ -46,6 +46,13 @@ template <int D> RunResult<D> figure_run(std::size_t method, std::string_view sc
 
 }  // namespace
 
+std::vector<std::size_t> ReportData::numerical_methods() const {
+  std::vector<std::size_t> out;
+  for (std::size_t m : methods)
+    if (!method_info(m).exact_flow) out.push_back(m);
+  return out;
+}
+
 ReportData run_report_studies(const ReportConfig& c, ProgressHook progress) {
   ReportData d;
   d.config = c;
@@ -75,8 +82,7 @@ ReportData run_report_studies(const ReportConfig& c, ProgressHook progress) {
   CollisionConfig cc;
   cc.bounce_params = c.bounce;
   cc.falling_params = c.falling;
-  for (std::size_t m : d.methods)
-    if (!method_info(m).exact_flow) cc.methods.push_back(m);
+  cc.methods = d.numerical_methods();
   cc.dts = c.collision_dts;
   cc.t_end = c.collision_t_end;
   cc.triangle_dt = c.triangle_dt;
@@ -84,8 +90,7 @@ ReportData run_report_studies(const ReportConfig& c, ProgressHook progress) {
   d.collision = collision_study(cc);
 
   WorkPrecisionConfig wc;
-  for (std::size_t m : d.methods)
-    if (!method_info(m).exact_flow) wc.methods.push_back(m);
+  wc.methods = d.numerical_methods();
   wc.points = c.wp_points;
   wc.stiffnesses = c.wp_stiffnesses;
   wc.timing = c.timing;

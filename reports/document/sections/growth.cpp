@@ -74,8 +74,7 @@ ScalingConfig config_for(const ReportData& d, std::string_view scene, const std:
   c.sizes = sizes;
   c.target_error = d.config.scaling_error;
   c.t_end = d.config.scaling_t_end;
-  for (std::size_t m : d.methods)
-    if (!method_info(m).exact_flow) c.methods.push_back(m);
+  c.methods = d.numerical_methods();
   c.timing = d.config.timing;
   c.workers = d.workers;
   return c;
