@@ -21,24 +21,25 @@ RunSpec collision_spec(double dt, double t_end) {
   return spec;
 }
 
-// The bounce: each time the mass leaves the ground, E/E0 and the apex of the flight that
+// The rebound scene: each time the mass leaves the ground, E/E0 and the apex of the flight that
 // follows (the observer of analysis/kernel_impl.hpp), and the deepest penetration.
-CollisionRun bounce_run(std::size_t method, const std::vector<double>& params, double dt, double t_end) {
+CollisionRun bounce_run(std::size_t method, std::size_t scene, const std::vector<double>& params, double dt, double t_end) {
   Observed o;
   o.max_bounces = kMaxRecordedBounces;
-  const AnyResult r = pair_kernel(method, scene_index("bounce")).run_observed(params, collision_spec(dt, t_end), o);
+  const AnyResult r = pair_kernel(method, scene).run_observed(params, collision_spec(dt, t_end), o);
   CollisionRun out = summary(method, dt, r);
   out.max_penetration = o.max_penetration;
   out.bounces = std::move(o.bounces);
   return out;
 }
 
-// The falling triangle: the deepest penetration of its three particles, and its path.
-CollisionRun triangle_run(std::size_t method, const std::vector<double>& params, double dt, double t_end, long long samples) {
+// The contact body: the deepest penetration of its particles, and its path.
+CollisionRun body_run(std::size_t method, std::size_t scene, const std::vector<double>& params, double dt, double t_end,
+                      long long samples) {
   RunSpec spec = collision_spec(dt, t_end);
   spec.max_samples = samples;
   Observed o;
-  AnyResult r = pair_kernel(method, scene_index("falling")).run_observed(params, spec, o);
+  AnyResult r = pair_kernel(method, scene).run_observed(params, spec, o);
   CollisionRun out = summary(method, dt, r);
   out.max_penetration = o.max_penetration;
   out.path = to_fixed<6>(std::move(r)).samples;
@@ -50,12 +51,12 @@ CollisionRun triangle_run(std::size_t method, const std::vector<double>& params,
 CollisionResult collision_study(const CollisionConfig& c) {
   CollisionResult out;
   out.config = c;
-  const std::size_t nm = c.methods.size(), nd = c.dts.size(), falling = scene_index("falling");
+  const std::size_t nm = c.methods.size(), nd = c.dts.size();
   std::vector<CollisionRun> runs = study_map<CollisionRun>(nm * nd + nm, c.workers, [&](std::size_t task) {
-    if (task < nm * nd) return bounce_run(c.methods[task / nd], c.bounce_params, c.dts[task % nd], c.t_end);
+    if (task < nm * nd) return bounce_run(c.methods[task / nd], c.rebound_scene, c.rebound_params, c.dts[task % nd], c.t_end);
     const std::size_t m = c.methods[task - nm * nd];
-    if (!applies(m, falling)) return CollisionRun{};
-    return triangle_run(m, c.falling_params, c.triangle_dt, c.t_end, c.path_samples);
+    if (!applies(m, c.body_scene)) return CollisionRun{};
+    return body_run(m, c.body_scene, c.body_params, c.triangle_dt, c.t_end, c.path_samples);
   });
   out.triangle.assign(std::make_move_iterator(runs.begin() + static_cast<std::ptrdiff_t>(nm * nd)), std::make_move_iterator(runs.end()));
   runs.resize(nm * nd);

@@ -1,14 +1,17 @@
-// Collision study: how each method handles the penalty ground.
-//  - the undamped bounce (exact motion known): per method and dt, the energy ratio E/E0 after
-//    each bounce (when the mass leaves the ground), the rebound height of the flight that
-//    follows, the deepest penetration, and blow-up;
-//  - the falling triangle: per method at one dt, energy ratio, deepest penetration, blow-up,
-//    and a decimated path of the three particles for the report's figure.
+// Collision study: how each method handles the penalty ground, on two scenes (by default the
+// bounce and the falling triangle, analysis/defaults.hpp):
+//  - the rebound scene (its motion known exactly; the undamped bounce): per method and dt, the
+//    energy ratio E/E0 after each bounce (when the mass leaves the ground), the rebound height of
+//    the flight that follows, the deepest penetration, and blow-up;
+//  - the contact body (several particles; the falling triangle): per method at one dt, energy
+//    ratio, deepest penetration, blow-up, and a decimated path of its particles (three in the
+//    plane: six coordinates) for the report's figure.
 #pragma once
 
 #include <vector>
 
 #include "analysis/parallel.hpp"
+#include "analysis/defaults.hpp"
 #include "analysis/kernel.hpp"
 
 namespace steplab {
@@ -21,8 +24,8 @@ struct CollisionRun {
   double failed_t;
   double energy_ratio_final, energy_ratio_max;
   double max_penetration;
-  std::vector<BounceEvent> bounces;   // bounce scene only
-  std::vector<Sample<6>> path;        // falling scene only
+  std::vector<BounceEvent> bounces;   // rebound scene only
+  std::vector<Sample<6>> path;        // contact body only
 };
 
 template <class F> void encode_fields(CollisionRun& r, F&& f) {  // analysis/shard.hpp
@@ -31,7 +34,8 @@ template <class F> void encode_fields(CollisionRun& r, F&& f) {  // analysis/sha
 }
 
 struct CollisionConfig {
-  std::vector<double> bounce_params, falling_params;  // table order
+  std::size_t rebound_scene = scene_index(kReboundScene), body_scene = scene_index(kContactBodyScene);
+  std::vector<double> rebound_params, body_params;  // table order
   std::vector<std::size_t> methods;
   std::vector<double> dts{0.001, 0.002, 0.004};
   double t_end = 10;
@@ -42,8 +46,8 @@ struct CollisionConfig {
 
 struct CollisionResult {
   CollisionConfig config;
-  std::vector<CollisionRun> bounce;    // method-major, dt-minor
-  std::vector<CollisionRun> triangle;  // one per method
+  std::vector<CollisionRun> bounce;    // the rebound scene: method-major, dt-minor
+  std::vector<CollisionRun> triangle;  // the contact body: one per method
 };
 
 inline constexpr std::size_t kMaxRecordedBounces = 4096;

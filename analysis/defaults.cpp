@@ -8,4 +8,9 @@ ScalingDefaults scaling_defaults(std::string_view scene) {
   return {};
 }
 
+std::vector<int> report_sizes(std::string_view scene) {
+  if (scene == "softbody") return {3, 6};  // n = 3, 6: 9 and 36 masses
+  return {8, 32, 128};
+}
+
 }  // namespace steplab

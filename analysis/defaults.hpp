@@ -3,6 +3,7 @@
 // every study that applies without a line here; a line here only changes where a command starts.
 #pragma once
 
+#include <array>
 #include <string_view>
 #include <vector>
 
@@ -13,11 +14,37 @@ inline constexpr std::string_view kDefaultScene = "spring";
 // The scene `study scaling` starts from: one of run-time size.
 inline constexpr std::string_view kDefaultSizedScene = "rope";
 
+// Work-precision's scenes and the dt range of their sweeps: a one-frequency oscillator, and a
+// scene with a stiff part (the first that declares a stiff limit also gets the stiffness sweep).
+struct SweepScene {
+  std::string_view scene;
+  double dt_max, dt_min;
+};
+inline constexpr std::array<SweepScene, 2> kWorkPrecisionScenes{{{"spring", 0.1, 1e-4}, {"chain", 0.5, 1e-5}}};
+
+// The collision study's two scenes on the penalty ground: a body whose flight between contacts
+// is known exactly (each rebound measured against it), and a body of several particles (its path
+// drawn).
+inline constexpr std::string_view kReboundScene = "bounce";
+inline constexpr std::string_view kContactBodyScene = "falling";
+
+// The report's scenes, the exercise's: the sheet's damped spring (its stability questions) and
+// cannon ball, and the slides' two contact scenes (the collision study's).
+inline constexpr std::string_view kSheetOscillator = "spring";
+inline constexpr std::string_view kSheetProjectile = "cannonball";
+
+// The old framework's -testcase values that name a scene (its others name a measurement on the
+// first), and the one it starts from.
+inline constexpr std::array<std::string_view, 2> kLegacyScenes{"spring1d", "falling"};
+
 // The sizes `study scaling` refines a scene to, and the most steps a search may try.
 struct ScalingDefaults {
   std::vector<int> sizes{16, 64, 256, 1024};
   long long max_steps = 2'000'000;
 };
 ScalingDefaults scaling_defaults(std::string_view scene);
+// The sizes the report's "As the system grows" refines each scene of run-time size to (small: the
+// report runs every study).
+std::vector<int> report_sizes(std::string_view scene);
 
 }  // namespace steplab

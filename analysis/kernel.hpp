@@ -126,7 +126,11 @@ struct SceneKernel {
   int size_param = -1;       // the count that refines a scene of run-time size; -1: fixed size
   int coords_per_mass = 1;   // N masses = dim / coords_per_mass
   int jacobian_bandwidth = -1;  // -1: not declared banded
+  int stiffness_param = -1, damping_param = -1;
   std::vector<Mode> (*modes)(Params) = nullptr;  // its linearisation's oscillators, slowest first
+  // What it tends to as its stiffness grows: that scene's name and parameter values (null: none).
+  std::string_view stiff_limit_scene{};
+  std::vector<double> (*stiff_limit)(Params) = nullptr;
   // Scenes of run-time size: the scene made once and its code for solvers outside the table
   // (null on fixed-size scenes).
   std::shared_ptr<const void> (*make)(Params) = nullptr;

@@ -296,6 +296,8 @@ template <Scene S> constexpr SceneKernel make_scene() {
                 .size_param = size_param_index<S>(),
                 .coords_per_mass = coords_per_mass<S>(),
                 .jacobian_bandwidth = jacobian_bandwidth<S>(),
+                .stiffness_param = stiffness_param_index<S>(),
+                .damping_param = damping_param_index<S>(),
                 .initial = &C::initial,
                 .exact = nullptr,
                 .norm = &C::norm,
@@ -303,6 +305,7 @@ template <Scene S> constexpr SceneKernel make_scene() {
                 .dopri5_timings = &C::dopri5_timings};
   if constexpr (HasExact<S>) k.exact = &C::exact_at;
   if constexpr (HasModes<S>) k.modes = [](Params p) { return S(p).modes(); };
+  if constexpr (HasStiffLimit<S>) k.stiff_limit_scene = S::stiff_limit_scene, k.stiff_limit = [](Params p) { return S::stiff_limit(p); };
   if constexpr (S::dim == Eigen::Dynamic) k.make = &MadeCode<S>::make, k.made = &MadeCode<S>::code;
   return k;
 }

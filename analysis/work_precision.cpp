@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include "analysis/convergence.hpp"
@@ -11,8 +12,6 @@
 #include "analysis/shard.hpp"
 #include "analysis/peers.hpp"
 #include "analysis/timing.hpp"
-#include "core/scenes/chain.hpp"
-#include "core/scenes/spring.hpp"
 
 namespace steplab {
 namespace {
@@ -24,11 +23,6 @@ struct Where {
   std::size_t scene;
   std::vector<double> params;
 };
-
-Where spring_where(const Spring& s) {
-  const std::array<double, 5> p = s.values();
-  return {scene_index(Spring::name), {p.begin(), p.end()}};
-}
 
 // The minimum of repeated timings (analysis/timing.hpp): of `run` (kMinRepeats, and kMinSeconds
 // in all), or as a kernel took them.
@@ -171,18 +165,6 @@ bool is_implicit(const std::string& method) {
   return m && method_info(*m).implicit;
 }
 
-// The chain's slow mode alone: its limit k2 -> inf, where the two masses move as one,
-// (m1 + m2) u'' = -k1 u - c1 u', as the spring scene (which starts at rest, m g / k above its
-// equilibrium: g is chosen for the amplitude of the chain's mass-weighted mean displacement,
-// times sqrt 2, the norm of (u, u), so that errors compare with the chain's two-coordinate ones).
-Spring slow_mode_spring(const std::vector<double>& chain) {
-  // Chain::params: mass1, mass2, stiffness1, stiffness2, damping1, damping2, u1, u2
-  const double m = chain[0] + chain[1], u = (chain[0] * chain[6] + chain[1] * chain[7]) / m;
-  std::vector<double> p = default_param_values<Spring>();  // mass, stiffness, damping, rest length, g
-  p[0] = m, p[1] = chain[2], p[2] = chain[4], p[4] = chain[2] * std::sqrt(2.0) * std::abs(u) / m;
-  return Spring(p);
-}
-
 // Where the error of a dt sweep (points sorted by falling dt) first reaches `level`: the dt
 // interpolated linearly in (ln dt, ln error) between the last run above it and the first at or
 // below it; the largest dt if every run reaches it; -1 if none does.
@@ -197,15 +179,16 @@ double dt_reaching(const std::vector<WorkPoint>& points, double level) {
   return -1;
 }
 
-// The chain's explicit methods: the largest stable dt of the chain's sweep, against the dt at
-// which the same method reaches kLimitErrorLevel on the slow mode alone (what accuracy would
-// allow if the stiff mode did not have to be kept stable).
-std::vector<StableStep> stable_steps(const WorkPrecisionConfig& c, const std::vector<double>& chain,
-                                     const std::vector<double>& dts, const std::vector<WorkPoint>& points) {
+// The stiff scene's explicit methods: the largest stable dt of its sweep, against the dt at which
+// the same method reaches kLimitErrorLevel on its stiff limit (core/scene.hpp: the chain's slow
+// mode alone), what accuracy would allow if the stiff part did not have to be kept stable.
+std::vector<StableStep> stable_steps(const WorkPrecisionConfig& c, const Where& stiff, const std::vector<double>& dts,
+                                     const std::vector<WorkPoint>& points) {
   std::vector<StableStep> out;
   for (const std::size_t m : c.methods)
     if (!method_info(m).implicit) out.push_back({std::string(method_info(m).name), 0, -1});
-  const Where slow = spring_where(slow_mode_spring(chain));
+  const SceneKernel& k = scene_kernel(stiff.scene);
+  const Where slow{scene_index(k.stiff_limit_scene), k.stiff_limit(stiff.params)};
   const std::vector<double> accuracy = study_map<double>(out.size(), c.workers, [&](std::size_t task) {
     return dt_reaching(fixed_points(slow, *find_method(out[task].method), dts, c.t_end), kLimitErrorLevel);
   });
@@ -218,13 +201,14 @@ std::vector<StableStep> stable_steps(const WorkPrecisionConfig& c, const std::ve
   return out;
 }
 
-// The stiffness sweep's chains: the default chain with k2 = each of c.stiffnesses.
-std::vector<Where> stiffness_chains(const WorkPrecisionConfig& c) {
+// The stiffness sweep's scenes: the stiff scene's defaults with its stiffness parameter (the
+// chain's k2) at each of c.stiffnesses.
+std::vector<Where> stiffness_chains(const WorkPrecisionConfig& c, std::size_t stiff) {
   std::vector<Where> chains;
   for (const double k2 : c.stiffnesses) {
-    std::vector<double> p = default_param_values<Chain>();
-    p[3] = k2;  // Chain::params: mass1, mass2, stiffness1, stiffness2, ...
-    chains.push_back({scene_index(Chain::name), p});
+    std::vector<double> p = default_param_values(stiff);
+    p[static_cast<std::size_t>(scene_kernel(stiff).stiffness_param)] = k2;
+    chains.push_back({stiff, p});
   }
   return chains;
 }
@@ -253,9 +237,9 @@ std::vector<WorkPoint> first_reaching(const WorkPrecisionConfig& c, const std::v
 // The stiffness sweep: at each stiffness, for each method (and dopri5 over the tolerances), the
 // first run of a falling dt (or tolerance) sweep whose error is at most crossover_error; then the
 // cheapest explicit and implicit ones.
-std::vector<StiffnessRow> stiffness_rows(const WorkPrecisionConfig& c) {
+std::vector<StiffnessRow> stiffness_rows(const WorkPrecisionConfig& c, std::size_t stiff) {
   const std::vector<double> dts = sweep_steps(c.sweep_t_end, 0.5, 1e-7, 57);  // 8 per decade
-  const std::vector<Where> chains = stiffness_chains(c);
+  const std::vector<Where> chains = stiffness_chains(c, stiff);
   const std::size_t nm = c.methods.size(), ns = chains.size();
   // tasks: a method's searches on every chain (the implicit methods' first), then dopri5's on each
   std::vector<std::size_t> order = implicit_first(c.methods);
@@ -266,7 +250,10 @@ std::vector<StiffnessRow> stiffness_rows(const WorkPrecisionConfig& c) {
       if (WorkPoint w = dopri5_point(chains[task - nm], tol, c.sweep_t_end); reaches_crossover(c, w)) return std::vector{w};
     return std::vector{WorkPoint{}};
   }, order);
-  const double k1 = default_param_values<Chain>()[2];  // Chain::params: ..., stiffness1, ...
+  // The ratio to the stiffness that remains in the limit (the chain's k2 / k1).
+  const SceneKernel& kernel = scene_kernel(stiff);
+  const std::size_t limit = scene_index(kernel.stiff_limit_scene);
+  const double k1 = kernel.stiff_limit(default_param_values(stiff))[static_cast<std::size_t>(scene_kernel(limit).stiffness_param)];
   std::vector<StiffnessRow> rows;
   for (std::size_t i = 0; i < ns; ++i) {
     StiffnessRow row{c.stiffnesses[i], c.stiffnesses[i] / k1, "", ""};
@@ -297,18 +284,22 @@ std::vector<std::string> adaptive_solvers() { return peer_names(PeerScenes::Fixe
 WorkPrecisionResult work_precision_study(const WorkPrecisionConfig& config) {
   WorkPrecisionResult out;
   out.config = config;
-  for (const std::string_view name : {"spring", "chain"}) {
-    const std::size_t scene = *find_scene(name);
+  std::optional<std::size_t> stiff;  // the first scene with a stiff limit: the stiffness sweep's
+  for (const SweepScene& where : config.scenes) {
+    const std::size_t scene = *find_scene(where.scene);
     SceneWork w{scene, {}, {}, {}};
     w.params = default_param_values(scene);
-    const bool chain = name == "chain";
-    const auto dts = sweep_steps(config.t_end, chain ? 0.5 : 0.1, chain ? 1e-5 : 1e-4, config.points);
+    const auto dts = sweep_steps(config.t_end, where.dt_max, where.dt_min, config.points);
     w.points = scene_points({scene, w.params}, config, dts, config.t_end, config.methods);
-    if (chain) out.limits = stable_steps(config, w.params, dts, w.points);
+    if (scene_kernel(scene).stiff_limit && !stiff) {
+      stiff = scene;
+      out.stiff = static_cast<std::ptrdiff_t>(out.scenes.size());
+      out.limits = stable_steps(config, {scene, w.params}, dts, w.points);
+    }
     for (const double level : config.error_levels) w.cheapest.push_back(cheapest_at(w.points, level));
     out.scenes.push_back(std::move(w));
   }
-  out.stiffness = stiffness_rows(config);
+  if (stiff) out.stiffness = stiffness_rows(config, *stiff);
   // The crossover: the smallest ratio from which on, at every larger one, the best implicit run is
   // cheaper than the best explicit one.
   for (std::size_t i = out.stiffness.size(); i-- > 0;) {

@@ -1,5 +1,6 @@
-// Work-precision: what each method pays for an error, on the one-frequency spring and on the stiff
-// chain (core/scenes/chain.hpp), and where on the stiffness axis implicit methods start to pay.
+// Work-precision: what each method pays for an error on each of its scenes (by default the
+// one-frequency spring and the stiff chain, analysis/defaults.hpp), and, on the first scene that
+// declares a stiff limit (core/scene.hpp), where on the stiffness axis implicit methods start to pay.
 //
 // A point is one run to t_end: its largest position error against the exact solution at its steps
 // (not the final one alone, which a lucky phase can make small), and its cost
@@ -24,6 +25,7 @@
 
 #include "analysis/parallel.hpp"
 #include "analysis/counts.hpp"
+#include "analysis/defaults.hpp"
 #include "core/simulate.hpp"
 
 namespace steplab {
@@ -58,13 +60,13 @@ struct Cheapest {
   std::ptrdiff_t time_point = -1, evaluations_point = -1;  // those runs in SceneWork::points (their counts)
 };
 
-// On the chain: where each explicit method's steps stop being stable, against the step its
+// On the stiff scene: where each explicit method's steps stop being stable, against the step its
 // accuracy alone would allow for kLimitErrorLevel: the dt at which its error reaches that level
-// on the chain's slow mode alone (the limit k2 -> inf: the masses move as one on spring k1).
+// on the scene's stiff limit (the chain's slow mode alone: the masses move as one on spring k1).
 struct StableStep {
   std::string method;
-  double largest_stable_dt;   // the largest dt of the chain's sweep that did not diverge
-  double accuracy_dt;         // on the slow mode, interpolated in the same dt sweep; -1: not reached
+  double largest_stable_dt;   // the largest dt of the scene's sweep that did not diverge
+  double accuracy_dt;         // on the stiff limit, interpolated in the same dt sweep; -1: not reached
 };
 
 struct SceneWork {
@@ -82,13 +84,14 @@ struct StiffnessRow {
 };
 
 struct WorkPrecisionConfig {
+  std::vector<SweepScene> scenes{kWorkPrecisionScenes.begin(), kWorkPrecisionScenes.end()};
   std::vector<std::size_t> methods;  // fixed-step methods (indices into the table)
   std::vector<std::string> adaptive = adaptive_solvers();  // dopri5 and the peers run
   std::vector<double> tolerances{1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11};
   std::vector<double> error_levels{1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8};
-  std::vector<double> stiffnesses{5, 5e1, 5e2, 5e3, 5e4, 5e5, 5e6};  // k2 of the stiffness sweep
+  std::vector<double> stiffnesses{5, 5e1, 5e2, 5e3, 5e4, 5e5, 5e6};  // the stiff scene's stiffness (the chain's k2)
   double crossover_error = 1e-4;
-  double t_end = 10, sweep_t_end = 2;  // the two scenes; the stiffness sweep
+  double t_end = 10, sweep_t_end = 2;  // the scenes; the stiffness sweep
   int points = 14;                     // dt sweep points per decade range below
   bool timing = true;
   Workers workers;  // threads (0: all cores), progress, shard log
@@ -100,9 +103,10 @@ inline constexpr double kLimitErrorLevel = 1e-4;
 
 struct WorkPrecisionResult {
   WorkPrecisionConfig config;
-  std::vector<SceneWork> scenes;       // spring, chain
-  std::vector<StableStep> limits;      // chain, explicit methods
-  std::vector<StiffnessRow> stiffness;
+  std::vector<SceneWork> scenes;       // config.scenes, in order
+  std::ptrdiff_t stiff = -1;           // the scene (in `scenes`) with the stiff limit; -1: none
+  std::vector<StableStep> limits;      // the stiff scene's explicit methods
+  std::vector<StiffnessRow> stiffness; // empty: no scene with a stiff limit
   double crossover_ratio = -1;         // smallest k2/k1 from which on implicit is cheaper; -1: never
 };
 

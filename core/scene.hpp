@@ -31,6 +31,11 @@
 //   jacobian_bandwidth = b        dF/dx and dF/dv vanish farther than b from the diagonal (the
 //                                 peers then use a banded solver, analysis/sized_peers.cpp)
 //   stiffness_param, damping_param = "<name>"   which parameters are its stiffness and damping
+//   stiff_limit_scene = "<scene>", stiff_limit(params)   what it tends to as its stiffness
+//                                 parameter grows without bound: that scene and its parameter
+//                                 values (the stiff chain's two masses moving as one spring).
+//                                 Work-precision measures the step accuracy alone would allow
+//                                 on it (HasStiffLimit)
 //   title = "<words>"             the scene in a few words, for a table's heading
 //   old_name = "<name>"           a name the old framework gave it, also accepted
 #pragma once
@@ -235,6 +240,12 @@ template <Scene S> constexpr int damping_param_index() {
   if constexpr (requires { S::damping_param; }) return param_index(S::params, S::damping_param);
   else return -1;
 }
+template <class S>
+concept HasStiffLimit = Scene<S> && requires(std::span<const double> p) {
+  { S::stiff_limit_scene } -> std::convertible_to<std::string_view>;
+  { S::stiff_limit(p) } -> std::convertible_to<std::vector<double>>;
+};
+
 template <Scene S> constexpr std::string_view scene_title() {
   if constexpr (requires { S::title; }) return S::title;
   else return S::name;
@@ -261,6 +272,8 @@ template <Scene S> constexpr bool declarations_hold() {
     if (stiffness_param_index<S>() < 0) return false;
   if constexpr (requires { S::damping_param; })
     if (damping_param_index<S>() < 0) return false;
+  if constexpr (requires { S::stiff_limit_scene; })
+    if (!HasStiffLimit<S> || stiffness_param_index<S>() < 0) return false;
   return coords_per_mass<S>() >= 1;
 }
 

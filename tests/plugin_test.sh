@@ -276,4 +276,26 @@ for r in scal["rows"]:
         assert abs(r["dt_stable"] * wn / (2 * math.sqrt(2)) - 1) < 0.003, r
 print("beads: run, convergence, stability and scaling ok")
 EOF
+# ... and the report's "As the system grows", which refines every scene of run-time size with
+# modes: its paragraph, its exponents from its own study (data/scaling_beads.json).
+cat > small.json <<'EOF'
+{"convergence": {"points": 4, "dt_min": 0.01}, "work_precision": {"points": 3, "stiffnesses": [5], "timing": false},
+ "stability": {"map_dt_points": 4, "map_damping_points": 4}, "collision": {"t_end": 1, "dts": [0.004]},
+ "figures": {"energy_t_end": 2, "cannonball_t_end": 2},
+ "scaling": {"rope": [4, 8], "softbody": [2], "beads": [4, 8], "t_end": 0.5}}
+EOF
+"$tool" report --print-config | python3 -c 'import json, sys; assert "beads" in json.load(sys.stdin)["scaling"]'
+"$tool" report --config small.json --out rep >/dev/null
+python3 - rep/report.md rep/data/scaling_beads.json <<'EOF'
+import sys, json
+md, scal = open(sys.argv[1]).read(), json.load(open(sys.argv[2]))
+growth = md[md.index("## As the system grows"):]
+beads = growth[growth.index("String of N beads ("):]
+assert [r["beads"] for r in scal["rows"] if r["solver"] == "rk4"] == [4, 8]
+for f in scal["exponents"]:
+    row = next(l for l in beads.splitlines() if l.startswith(f"| `{f['solver']}` |"))
+    if f["run_exponent"] is not None:
+        assert f"| {f['run_exponent']:.2f} |" in row, (row, f)
+print("beads: in the report, its exponents from its own study")
+EOF
 echo "plugin ok"

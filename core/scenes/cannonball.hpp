@@ -19,6 +19,7 @@ template <class T> struct CannonballT {
   template <class U> using as = CannonballT<U>;
   static constexpr int dim = 2;
   static constexpr std::string_view name = "cannonball";
+  static constexpr std::string_view title = "Cannon ball";
   // Defaults from the 2018 sheet: mass 1, from the origin at 100 * (cos 1.047, sin 1.047).
   static constexpr std::array<ParamSpec, 4> params{{
       {"mass", 1.0, Bound::Positive, "mass m"},

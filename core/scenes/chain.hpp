@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "core/scene.hpp"
+#include "core/scenes/spring.hpp"
 
 namespace steplab {
 
@@ -64,6 +65,38 @@ template <class T> struct ChainT {
 
 struct Chain : ChainT<double> {
   static constexpr bool affine_flow = true;  // flow(y, h) = e^{A h} y (core/scene.hpp)
+  static constexpr std::string_view stiffness_param = "stiffness2";  // the stiff spring
+  static constexpr std::string_view title = "Stiff two-mass chain";
+
+  // Its stiff limit k2 -> inf: the two masses move as one, (m1 + m2) u'' = -k1 u - c1 u', the
+  // spring scene (which starts at rest, m g / k above its equilibrium: g is chosen for the
+  // amplitude of the chain's mass-weighted mean displacement, times sqrt 2, the norm of (u, u), so
+  // that errors compare with the chain's two-coordinate ones).
+  static constexpr std::string_view stiff_limit_scene = SpringT<double>::name;
+  static std::vector<double> stiff_limit(std::span<const double> p) {
+    const double m = p[0] + p[1], u = (p[0] * p[6] + p[1] * p[7]) / m;
+    std::vector<double> s = default_values(SpringT<double>::params);  // mass, stiffness, damping, rest length, g
+    s[0] = m, s[1] = p[2], s[2] = p[4], s[4] = p[2] * std::sqrt(2.0) * std::abs(u) / m;
+    return s;
+  }
+
+  // Its two undamped modes, slowest first: omega^2 the eigenvalues of M^-1 K,
+  //   omega^2 = a/2 -+ sqrt(a^2/4 - b),   a = (k1 + k2)/m1 + k2/m2,   b = k1 k2 / (m1 m2),
+  // each with its modal damping 2 zeta omega = phi^T C phi / phi^T M phi, phi the mode's shape
+  // (K - omega^2 M) phi = 0. The damping is a projection: exact when C is a combination of M and
+  // K, here it leaves out C's coupling of the two modes (c2 is small against the fast mode's
+  // 2 sqrt(k2 m)).
+  std::vector<Mode> modes() const {
+    const double a = K(0, 0) / m[0] + K(1, 1) / m[1], b = (K(0, 0) * K(1, 1) - K(0, 1) * K(1, 0)) / (m[0] * m[1]);
+    const double disc = std::sqrt(a * a / 4 - b);
+    std::vector<Mode> out;
+    for (const double w2 : {a / 2 - disc, a / 2 + disc}) {
+      const Vec<2, double> phi(K(0, 1), w2 * m[0] - K(0, 0));
+      const double omega = std::sqrt(w2);
+      out.push_back({omega, phi.dot(C * phi) / phi.dot(m.cwiseProduct(phi)) / omega});
+    }
+    return out;
+  }
 
   using Vec4 = Eigen::Vector4d;
   using CMat4 = Eigen::Matrix4cd;

@@ -22,6 +22,7 @@ template <class T> struct SpringT {
   template <class U> using as = SpringT<U>;
   static constexpr int dim = 1;
   static constexpr std::string_view name = "spring";
+  static constexpr std::string_view title = "Spring";
   static constexpr bool affine_flow = true;  // flow(y, h) below is linear in y - y_eq (core/scene.hpp)
   static constexpr std::string_view old_name = "spring1d";  // the old framework's test case
   static constexpr std::string_view stiffness_param = "stiffness";

@@ -1,6 +1,8 @@
 #include "reports/cli/cli.hpp"
 
+#include <algorithm>
 #include <array>
+#include <span>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -18,6 +20,7 @@
 #include "reports/data/study_output.hpp"
 #include "analysis/parallel.hpp"
 #include "analysis/local_error.hpp"
+#include "analysis/defaults.hpp"
 
 namespace steplab {
 namespace {
@@ -26,9 +29,19 @@ namespace {
 //   steplab -testcase spring1d -method euler -step 0.01 -damp 0.1 -mass 1 -stiff 10 [-length 1]
 constexpr std::array<std::string_view, 7> legacy_flags{"-testcase", "-method", "-step", "-damp",
                                                        "-mass",     "-stiff",  "-length"};
+// Its test cases: its scenes (analysis/defaults.hpp; the first is where it starts and where the
+// two measurements run) and two measurements.
+constexpr std::array<std::string_view, 2> legacy_measurements{"error_measurement", "stability_measurement"};
+std::string legacy_testcases() {
+  std::string out;
+  for (const auto& list : {std::span<const std::string_view>(kLegacyScenes), std::span<const std::string_view>(legacy_measurements)})
+    for (const std::string_view name : list) out += (out.empty() ? "" : ", ") + std::string(name);
+  return out;
+}
+
 // Its defaults: step 0.003, mass 0.1, stiffness 10, damping 0.01, rest length 1.
 struct LegacyArgs {
-  std::string testcase = "spring1d";
+  std::string testcase{kLegacyScenes[0]};
   std::string method = "euler";
   std::string step = "0.003";
   std::string damp, mass, stiff, length;
@@ -36,7 +49,7 @@ struct LegacyArgs {
 
 void add_legacy_options(CLI::App& app, LegacyArgs& l) {
   const char* group = "The old framework's flags (single or double dash; its defaults apply)";
-  app.add_option("--testcase", l.testcase, "spring1d, falling, error_measurement, stability_measurement")
+  app.add_option("--testcase", l.testcase, legacy_testcases())
       ->capture_default_str()->group(group);
   app.add_option("--method", l.method, "integrator (old or new name)")->capture_default_str()->group(group);
   app.add_option("--step", l.step, "time step")->capture_default_str()->group(group);
@@ -47,23 +60,24 @@ void add_legacy_options(CLI::App& app, LegacyArgs& l) {
 }
 
 int legacy_command(const LegacyArgs& l, Context& ctx) {
-  if (l.testcase != "spring1d" && l.testcase != "falling" && l.testcase != "error_measurement" &&
-      l.testcase != "stability_measurement")
-    throw UsageError(fmt::format("-testcase '{}' is unknown; accepted: spring1d, falling, error_measurement, "
-                                 "stability_measurement", l.testcase));
+  const auto is = [&](std::span<const std::string_view> list) { return std::find(list.begin(), list.end(), l.testcase) != list.end(); };
+  const bool measurement = is(legacy_measurements);
+  if (!measurement && !is(kLegacyScenes))
+    throw UsageError(fmt::format("-testcase '{}' is unknown; accepted: {}", l.testcase, legacy_testcases()));
   // Checked here first so that a message names the flag as typed.
   parse_number("-step", l.step, Bound::Positive);
   for (const auto& [flag, value] : {std::pair{"-mass", &l.mass}, {"-stiff", &l.stiff}, {"-damp", &l.damp}, {"-length", &l.length}})
     if (!value->empty()) parse_number(flag, *value, std::string_view(flag) == "-mass" ? Bound::Positive : Bound::NonNegative);
   RunArgs run;
-  run.scene.scene = l.testcase == "falling" ? "falling" : "spring";
+  const std::size_t scene = *find_scene(measurement ? kLegacyScenes[0] : std::string_view(l.testcase));
+  run.scene.scene = scene_name(scene);
   run.scene.old_defaults = {{"mass", 0.1}, {"stiffness", 10.0}, {"damping", 0.01}, {"rest-length", 1.0}};
-  if (l.testcase == "falling") run.scene.old_defaults.erase("rest-length");
+  std::erase_if(run.scene.old_defaults, [&](const auto& d) { return !has_param(scene, d.first); });
   if (!l.mass.empty()) run.scene.set("mass", l.mass);
   if (!l.stiff.empty()) run.scene.set("stiffness", l.stiff);
   if (!l.damp.empty()) run.scene.set("damping", l.damp);
   if (!l.length.empty()) run.scene.set("rest-length", l.length);
-  if (l.testcase == "error_measurement") {
+  if (l.testcase == legacy_measurements[0]) {
     LocalErrorConfig c;
     c.params = run.scene.values(run.scene.scene_index());
     c.step = parse_number("-step", l.step, Bound::Positive);
@@ -72,7 +86,7 @@ int legacy_command(const LegacyArgs& l, Context& ctx) {
     std::fputs(local_error_tables(local_error_study(c)).c_str(), stdout);
     return 0;
   }
-  if (l.testcase == "stability_measurement")
+  if (l.testcase == legacy_measurements[1])
     return amplitude_command(run.scene.values(run.scene.scene_index()), parse_number("-step", l.step, Bound::Positive), ctx);
   run.method = l.method;
   run.dt = l.step;

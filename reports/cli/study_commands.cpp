@@ -264,15 +264,15 @@ int collision_command(CollisionArgs& a, Context& ctx) {
     only.app = nullptr;
     return only.values(index);
   };
-  const std::size_t bounce = scene_index("bounce"), falling = scene_index("falling");
+  const std::size_t bounce = c.rebound_scene, body = c.body_scene;
   std::string accepted;  // the parameters of either collision scene
   for (const auto& [name, text] : a.scene.text)
-    if (has_param(bounce, name) || has_param(falling, name)) accepted += (accepted.empty() ? "--" : ", --") + name;
+    if (has_param(bounce, name) || has_param(body, name)) accepted += (accepted.empty() ? "--" : ", --") + name;
   for (const auto& [name, text] : a.scene.text)
-    if (a.scene.given(name) && !has_param(bounce, name) && !has_param(falling, name))
+    if (a.scene.given(name) && !has_param(bounce, name) && !has_param(body, name))
       throw UsageError(fmt::format("--{} does not apply to the collision scenes; accepted: {}", name, accepted));
-  c.bounce_params = values_for("bounce");
-  c.falling_params = values_for("falling");
+  c.rebound_params = values_for(scene_name(bounce));
+  c.body_params = values_for(scene_name(body));
   c.methods = resolve_methods(a.methods, false);
   c.dts = number_list("--dts", a.dts, Bound::Positive);
   c.t_end = parse_number("--t-end", a.t_end, Bound::Positive);

@@ -6,6 +6,7 @@
 
 #include "analysis/kernel.hpp"
 #include "analysis/peers.hpp"
+#include "core/scenes/spring.hpp"
 #include "reports/data/run_json.hpp"
 
 namespace steplab {
@@ -202,8 +203,8 @@ Json stability_json(const std::vector<double>& params, const std::vector<Thresho
                     const std::vector<SweepRow>& sweep, const StabilityMap* map) {
   Json j;
   j["schema"] = "steplab.stability/1";
-  j["scene"] = "spring";
-  Json p = scene_params_json(*find_scene("spring"), params);
+  j["scene"] = Spring::name;  // the study of the damped spring's linear regime (analysis/stability.hpp)
+  Json p = scene_params_json(scene_index(Spring::name), params);
   p["stable_rate_tolerance"] = kStableRate;
   p["rate_steps"] = kRateSteps;
   j["params"] = std::move(p);
@@ -340,8 +341,8 @@ Json collision_json(const CollisionResult& r) {
   const CollisionConfig& c = r.config;
   Json j;
   j["schema"] = "steplab.collision/1";
-  j["params"] = {{"bounce", scene_params_json(*find_scene("bounce"), c.bounce_params)},
-                 {"falling", scene_params_json(*find_scene("falling"), c.falling_params)},
+  j["params"] = {{scene_name(c.rebound_scene), scene_params_json(c.rebound_scene, c.rebound_params)},
+                 {scene_name(c.body_scene), scene_params_json(c.body_scene, c.body_params)},
                  {"t_end", c.t_end},
                  {"triangle_dt", c.triangle_dt}};
   Json b = Json::array(), t = Json::array();

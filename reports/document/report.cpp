@@ -63,7 +63,7 @@ std::string report_markdown(const Report& r, const std::string& ext, const std::
   std::string md = "# steplab report: how time integrators behave, family by family, on the course's scenes\n\n";
   md += fmt::format("The hanging spring: {}. Every number below was measured by the commands at the end of this report; "
                     "every sentence that states a finding was generated from those numbers.\n\n",
-                    params_text(*find_scene("spring"), r.data.config.spring));
+                    params_text(r.data.config.oscillator.scene, r.data.config.oscillator.params));
   Page page(r.data, r.findings, ext);
   for (const auto& s : r.sections) md += s->markdown(page);
   return md + "---\n\n" + footer + "\n";

@@ -25,14 +25,15 @@ struct ReportData {
   Workers workers;  // the config's threads, the command's progress
   std::vector<std::size_t> methods;  // every method in the table, the exact flow included
   std::vector<std::size_t> numerical_methods() const;  // `methods` but the exact flow
-  ConvergenceResult conv_spring, conv_cannonball, conv_bounce;
+  std::vector<ConvergenceResult> convergence;  // each of the config's scenes with an exact solution, in order
+  const ConvergenceResult& convergence_on(std::size_t scene) const;  // std::out_of_range if not studied
   std::vector<ThresholdRow> thresholds;
   std::vector<SweepRow> sweep;
   StabilityMap map;
   CollisionResult collision;
   WorkPrecisionResult work;  // spring and chain, with the peers; the stiffness sweep
   // figure data
-  std::vector<RunResult<2>> cannon;               // [method]
+  std::vector<RunResult<2>> cannon;               // [method]: the projectile's path
   std::vector<std::vector<RunResult<1>>> spring;  // [figure dt][method]
   std::vector<RunResult<1>> energy;               // [method]: gamma = 0 at the large step
   std::vector<double> curve_damping;              // predicted rate against damping, at the large step
@@ -43,7 +44,7 @@ ReportData run_report_studies(const ReportConfig& config, ProgressHook progress 
 
 struct MethodFinding {
   std::size_t method;
-  const ConvergenceFit* fit;  // on the spring
+  const ConvergenceFit* fit;  // on the oscillator (the spring)
   bool stable_large_dt;       // at config.large_dt with the spring's damping
   bool stable_undamped;       // at config.small_dt with damping 0
   double dt_theory, dt_measured;  // at the spring's damping

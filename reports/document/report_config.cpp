@@ -6,7 +6,9 @@
 
 #include <fmt/format.h>
 
+#include "analysis/defaults.hpp"
 #include "analysis/kernel.hpp"
+#include "analysis/scaling.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/data/run_json.hpp"
 #include "reports/data/study_output.hpp"
@@ -65,29 +67,34 @@ int count(const Json& j, const std::string& path, int lo, int hi) {
   return static_cast<int>(x);
 }
 
-std::vector<double> scene_values(const Json& j, const std::string& section) {
+std::vector<double> scene_values(const Json& j, std::size_t scene) {
+  const std::string section(scene_name(scene));
   std::vector<double> out;
-  for (const ParamSpec& p : scene_kernel(scene_index(section)).params) out.push_back(num(j[param_key(p)], section + "." + param_key(p), p.bound));
+  for (const ParamSpec& p : scene_kernel(scene).params) out.push_back(num(j[param_key(p)], section + "." + param_key(p), p.bound));
   return out;
 }
 
 }  // namespace
 
+double ReportConfig::damping() const {
+  return oscillator.params[static_cast<std::size_t>(scene_kernel(oscillator.scene).damping_param)];
+}
+
 ReportConfig default_report_config() {
   ReportConfig c;
-  c.spring = default_param_values(scene_index("spring"));
-  c.cannonball = default_param_values(scene_index("cannonball"));
-  c.bounce = default_param_values(scene_index("bounce"));
-  c.falling = default_param_values(scene_index("falling"));
+  for (const auto& [role, name] : {std::pair{&c.oscillator, kSheetOscillator}, {&c.projectile, kSheetProjectile},
+                                   {&c.rebound, kReboundScene}, {&c.body, kContactBodyScene}}) {
+    role->scene = scene_index(name);
+    role->params = default_param_values(role->scene);
+  }
+  for (std::size_t s = 0; s < scene_count(); ++s)
+    if (scales(scene_kernel(s))) c.scaling.push_back({s, report_sizes(scene_name(s))});
   return c;
 }
 
 Json report_config_json(const ReportConfig& c) {
   Json j;
-  j["spring"] = scene_params_json(scene_index("spring"), c.spring);
-  j["cannonball"] = scene_params_json(scene_index("cannonball"), c.cannonball);
-  j["bounce"] = scene_params_json(scene_index("bounce"), c.bounce);
-  j["falling"] = scene_params_json(scene_index("falling"), c.falling);
+  for (const ReportScene* s : c.scenes()) j[std::string(scene_name(s->scene))] = scene_params_json(s->scene, s->params);
   j["convergence"] = {{"dt_max", c.conv_dt_max}, {"dt_min", c.conv_dt_min}, {"points", c.conv_points},
                       {"t_end", c.conv_t_end}};
   j["work_precision"] = {{"points", c.wp_points}, {"stiffnesses", c.wp_stiffnesses}, {"timing", c.timing}};
@@ -96,7 +103,11 @@ Json report_config_json(const ReportConfig& c) {
                     {"map_dt_min", c.map_dt_min},                 {"map_dt_max", c.map_dt_max},
                     {"large_dt", c.large_dt},                     {"small_dt", c.small_dt}};
   j["collision"] = {{"dts", c.collision_dts}, {"t_end", c.collision_t_end}, {"triangle_dt", c.triangle_dt}};
-  j["scaling"] = {{"sizes", c.scaling_sizes}, {"grids", c.scaling_grids}, {"error", c.scaling_error}, {"t_end", c.scaling_t_end}};
+  Json scaling;  // the sizes of each scene by its name, then the measure
+  for (const ReportSizes& s : c.scaling) scaling[std::string(scene_name(s.scene))] = s.sizes;
+  scaling["error"] = c.scaling_error;
+  scaling["t_end"] = c.scaling_t_end;
+  j["scaling"] = std::move(scaling);
   j["figures"] = {{"cannonball_dt", c.cannonball_dt},
                   {"cannonball_t_end", c.cannonball_t_end},
                   {"spring_dts", c.spring_figure_dts},
@@ -109,11 +120,8 @@ Json report_config_json(const ReportConfig& c) {
 ReportConfig report_config_from_json(const Json& user) {
   Json j = report_config_json(default_report_config());
   merge(j, user, "");
-  ReportConfig c;
-  c.spring = scene_values(j["spring"], "spring");
-  c.cannonball = scene_values(j["cannonball"], "cannonball");
-  c.bounce = scene_values(j["bounce"], "bounce");
-  c.falling = scene_values(j["falling"], "falling");
+  ReportConfig c = default_report_config();
+  for (ReportScene* s : c.scenes()) s->params = scene_values(j[std::string(scene_name(s->scene))], s->scene);
   const Json& cv = j["convergence"];
   c.conv_dt_max = num(cv["dt_max"], "convergence.dt_max", Bound::Positive);
   c.conv_dt_min = num(cv["dt_min"], "convergence.dt_min", Bound::Positive);
@@ -146,12 +154,13 @@ ReportConfig report_config_from_json(const Json& user) {
   for (double dt : c.collision_dts) step_count(c.collision_t_end, dt);
   step_count(c.collision_t_end, c.triangle_dt);
   const Json& sc = j["scaling"];
-  c.scaling_sizes.clear();
-  const ParamSpec& masses = scene_kernel(scene_index("rope")).params[0];  // the rope's --masses: its range
-  for (const Json& n : sc["sizes"]) c.scaling_sizes.push_back(count(n, "scaling.sizes", 1, static_cast<int>(masses.max_count)));
-  c.scaling_grids.clear();
-  const ParamSpec& grid = scene_kernel(scene_index("softbody")).params[0];  // the soft body's --grid: its range
-  for (const Json& n : sc["grids"]) c.scaling_grids.push_back(count(n, "scaling.grids", 1, static_cast<int>(grid.max_count)));
+  for (ReportSizes& s : c.scaling) {  // each within its size parameter's range
+    const SceneKernel& k = scene_kernel(s.scene);
+    const ParamSpec& size = k.params[static_cast<std::size_t>(k.size_param)];
+    const std::string key(k.name);
+    s.sizes.clear();
+    for (const Json& n : sc[key]) s.sizes.push_back(count(n, "scaling." + key, 1, static_cast<int>(size.max_count)));
+  }
   c.scaling_error = num(sc["error"], "scaling.error", Bound::Positive);
   c.scaling_t_end = num(sc["t_end"], "scaling.t_end", Bound::Positive);
   const Json& fg = j["figures"];

@@ -4,6 +4,8 @@
 // refused with a UsageError naming the key.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -11,8 +13,26 @@
 
 namespace steplab {
 
+// A scene of the report and its parameter values, in its table's order.
+struct ReportScene {
+  std::size_t scene;
+  std::vector<double> params;
+};
+
+// The sizes the report refines a scene of run-time size to (its size parameter's values).
+struct ReportSizes {
+  std::size_t scene;
+  std::vector<int> sizes;
+};
+
 struct ReportConfig {
-  std::vector<double> spring, cannonball, bounce, falling;  // scene parameters, table order
+  // The report's scenes (analysis/defaults.hpp): the sheet's damped spring (the stability study's
+  // oscillator) and cannon ball, and the collision study's rebound scene and contact body. The
+  // config file keys each by its scene's name.
+  ReportScene oscillator, projectile, rebound, body;
+  std::array<const ReportScene*, 4> scenes() const { return {&oscillator, &projectile, &rebound, &body}; }
+  std::array<ReportScene*, 4> scenes() { return {&oscillator, &projectile, &rebound, &body}; }
+  double damping() const;  // the oscillator's damping parameter
   // convergence (every scene with an exact solution)
   double conv_dt_max = 0.1, conv_dt_min = 1e-4, conv_t_end = 10;
   int conv_points = 16;
@@ -31,9 +51,8 @@ struct ReportConfig {
   // collision
   std::vector<double> collision_dts{0.001, 0.002, 0.004};
   double collision_t_end = 10, triangle_dt = 0.001;
-  // as the system grows: the rope (its default parameters) at these numbers of masses
-  std::vector<int> scaling_sizes{8, 32, 128};
-  std::vector<int> scaling_grids{3, 6};  // and the soft body (its defaults) at these grid sides n
+  // as the system grows: every scene of run-time size with modes, its defaults at these sizes
+  std::vector<ReportSizes> scaling;
   double scaling_error = 1e-4, scaling_t_end = 2;
   // figures
   double cannonball_dt = 0.25, cannonball_t_end = 17.5;

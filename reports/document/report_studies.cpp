@@ -2,6 +2,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <stdexcept>
+
+#include <fmt/format.h>
 
 #include "analysis/parallel.hpp"
 #include "analysis/kernel.hpp"
@@ -18,11 +21,10 @@ std::vector<double> with_values(std::vector<double> v, std::initializer_list<dou
   return v;
 }
 
-ConvergenceConfig convergence_config(const ReportData& d, std::string_view scene, const std::vector<double>& params,
-                                     const std::vector<std::size_t>& methods) {
+ConvergenceConfig convergence_config(const ReportData& d, const ReportScene& scene, const std::vector<std::size_t>& methods) {
   ConvergenceConfig cc;
-  cc.scene = *find_scene(scene);
-  cc.params = params;
+  cc.scene = scene.scene;
+  cc.params = scene.params;
   cc.methods = methods;
   const ReportConfig& c = d.config;
   cc.t_end = c.conv_t_end;
@@ -34,17 +36,23 @@ ConvergenceConfig convergence_config(const ReportData& d, std::string_view scene
 }
 
 // A run of `method` on the scene `scene` with its parameter values, as a result of the scene's size D.
-template <int D> RunResult<D> figure_run(std::size_t method, std::string_view scene, const std::vector<double>& params,
+template <int D> RunResult<D> figure_run(std::size_t method, std::size_t scene, const std::vector<double>& params,
                                          double dt, double t_end, long long samples) {
   RunSpec spec;
   spec.dt = dt;
   spec.steps = steps_for(t_end, dt);
   spec.max_samples = samples;
   spec.errors = false;
-  return to_fixed<D>(pair_kernel(method, scene_index(scene)).run(params, spec));
+  return to_fixed<D>(pair_kernel(method, scene).run(params, spec));
 }
 
 }  // namespace
+
+const ConvergenceResult& ReportData::convergence_on(std::size_t scene) const {
+  for (const ConvergenceResult& r : convergence)
+    if (r.config.scene == scene) return r;
+  throw std::out_of_range(fmt::format("the report ran no convergence study on {}", scene_name(scene)));
+}
 
 std::vector<std::size_t> ReportData::numerical_methods() const {
   std::vector<std::size_t> out;
@@ -58,18 +66,20 @@ ReportData run_report_studies(const ReportConfig& c, ProgressHook progress) {
   d.config = c;
   d.workers = {c.threads, progress, nullptr};
   for (std::size_t m = 0; m < method_count(); ++m) d.methods.push_back(m);
-  const double gamma = c.spring[2];
+  const double gamma = c.damping();
+  const std::size_t damping = static_cast<std::size_t>(scene_kernel(c.oscillator.scene).damping_param);
 
-  d.conv_spring = convergence_study(convergence_config(d, "spring", c.spring, d.methods));
-  d.conv_cannonball = convergence_study(convergence_config(d, "cannonball", c.cannonball, d.methods));
-  d.conv_bounce = convergence_study(convergence_config(d, "bounce", c.bounce, d.methods));
+  for (const ReportScene* s : c.scenes())
+    if (scene_kernel(s->scene).has_exact) d.convergence.push_back(convergence_study(convergence_config(d, *s, d.methods)));
 
+  // The stability study is the damped spring's (analysis/stability.hpp): the oscillator is one.
+  const Spring spring(c.oscillator.params);
   StabilityConfig sc;
-  sc.params = c.spring;
+  sc.params = c.oscillator.params;
   sc.methods = d.methods;
   sc.threshold_dampings = with_values(c.threshold_dampings, {0.0, gamma});
   sc.sweep_dts = with_values(c.sweep_dts, {c.large_dt, c.small_dt});
-  sc.sweep_dampings = with_values(default_dampings(Spring(c.spring)), {0.0, gamma});
+  sc.sweep_dampings = with_values(default_dampings(spring), {0.0, gamma});
   sc.map_dt_points = c.map_dt_points;
   sc.map_damping_points = c.map_damping_points;
   sc.map_dt_min = c.map_dt_min;
@@ -80,8 +90,10 @@ ReportData run_report_studies(const ReportConfig& c, ProgressHook progress) {
   d.map = stability_map(sc);
 
   CollisionConfig cc;
-  cc.bounce_params = c.bounce;
-  cc.falling_params = c.falling;
+  cc.rebound_scene = c.rebound.scene;
+  cc.rebound_params = c.rebound.params;
+  cc.body_scene = c.body.scene;
+  cc.body_params = c.body.params;
   cc.methods = d.numerical_methods();
   cc.dts = c.collision_dts;
   cc.t_end = c.collision_t_end;
@@ -99,25 +111,25 @@ ReportData run_report_studies(const ReportConfig& c, ProgressHook progress) {
 
   // Figures: the cannon ball's path, the spring's y(t), the undamped energy at the large step,
   // and the predicted growth rate against damping on a fine grid.
-  std::vector<double> undamped = c.spring;
-  undamped[2] = 0;
+  std::vector<double> undamped = c.oscillator.params;
+  undamped[damping] = 0;
   const std::size_t nm = d.methods.size(), nf = c.spring_figure_dts.size();
   d.cannon.resize(nm);
   d.spring.assign(nf, std::vector<RunResult<1>>(nm));
   d.energy.resize(nm);
-  const Spring crit(c.spring);
-  for (int i = 0; i <= 200; ++i) d.curve_damping.push_back(2 * crit.critical_damping() * i / 200.0);
+  for (int i = 0; i <= 200; ++i) d.curve_damping.push_back(2 * spring.critical_damping() * i / 200.0);
   d.curve_rate.assign(nm, std::vector<double>(d.curve_damping.size()));
   parallel_for(nm * (2 + nf + 1), d.workers, [&](std::size_t task) {
     const std::size_t m = task % nm, kind = task / nm;
-    if (kind == 0) d.cannon[m] = figure_run<2>(m, "cannonball", c.cannonball, c.cannonball_dt, c.cannonball_t_end, 2001);
-    else if (kind == 1) d.energy[m] = figure_run<1>(m, "spring", undamped, c.large_dt, c.energy_t_end, 2001);
+    const std::size_t osc = c.oscillator.scene;
+    if (kind == 0) d.cannon[m] = figure_run<2>(m, c.projectile.scene, c.projectile.params, c.cannonball_dt, c.cannonball_t_end, 2001);
+    else if (kind == 1) d.energy[m] = figure_run<1>(m, osc, undamped, c.large_dt, c.energy_t_end, 2001);
     else if (kind < 2 + nf)
-      d.spring[kind - 2][m] = figure_run<1>(m, "spring", c.spring, c.spring_figure_dts[kind - 2], c.spring_figure_t_end, 2001);
+      d.spring[kind - 2][m] = figure_run<1>(m, osc, c.oscillator.params, c.spring_figure_dts[kind - 2], c.spring_figure_t_end, 2001);
     else {
       for (std::size_t g = 0; g < d.curve_damping.size(); ++g) {
-        std::vector<double> p = c.spring;
-        p[2] = d.curve_damping[g];
+        std::vector<double> p = c.oscillator.params;
+        p[damping] = d.curve_damping[g];
         d.curve_rate[m][g] = predicted_rate(d.methods[m], Spring(p), c.large_dt);
       }
     }
@@ -160,7 +172,8 @@ const ThresholdRow* find_threshold(const ReportData& d, std::size_t method, doub
 
 Findings compute_findings(const ReportData& d) {
   const ReportConfig& c = d.config;
-  const double gamma = c.spring[2];
+  const double gamma = c.damping();
+  const ConvergenceResult& conv = d.convergence_on(c.oscillator.scene);
   Findings f;
   const auto sweep_row = [&](std::size_t m, double dt, double damping) -> const SweepRow* {
     for (const SweepRow& r : d.sweep)
@@ -169,7 +182,7 @@ Findings compute_findings(const ReportData& d) {
   };
   for (std::size_t i = 0; i < d.methods.size(); ++i) {
     const std::size_t m = d.methods[i];
-    MethodFinding row{m, &d.conv_spring.fits[i], false, false, 0, 0, 0, 0, 0, 0};
+    MethodFinding row{m, &conv.fits[i], false, false, 0, 0, 0, 0, 0, 0};
     const SweepRow* large = sweep_row(m, c.large_dt, gamma);
     const SweepRow* undamped = sweep_row(m, c.small_dt, 0.0);
     const ThresholdRow* th = find_threshold(d, m, gamma);

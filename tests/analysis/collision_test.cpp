@@ -23,8 +23,8 @@ class CollisionStudy : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     CollisionConfig c;
-    c.bounce_params = default_param_values<Bounce>();
-    c.falling_params = default_param_values<Falling>();
+    c.rebound_params = default_param_values<Bounce>();
+    c.body_params = default_param_values<Falling>();
     c.methods = numerical_methods();
     c.dts = {0.001, 0.004};
     result = new CollisionResult(collision_study(c));

@@ -131,8 +131,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"report --config {dir}/config.json --out {dir}/r", "steps", R"({"collision": {"triangle_dt": 1e-12}})"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "spring.mass", R"({"spring": {"mass": -1}})"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "JSON object", "[]"},
-        BadInput{"report --config {dir}/config.json --out {dir}/r", "scaling.grids", R"({"scaling": {"grids": [2.5]}})"},
-        BadInput{"report --config {dir}/config.json --out {dir}/r", "scaling.grids", R"({"scaling": {"grids": [301]}})"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "scaling.softbody", R"({"scaling": {"softbody": [2.5]}})"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "scaling.softbody", R"({"scaling": {"softbody": [301]}})"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "sweep_dts", R"({"stability": {"sweep_dts": [0.01, "x"]}})"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "not valid JSON", R"({"spring": {"mass": NaN}})"},  // JSON has no NaN
         BadInput{"report --out {dir}/no/such/report", "no/such"}));

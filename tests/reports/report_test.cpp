@@ -18,6 +18,18 @@
 namespace steplab {
 namespace {
 
+// A parameter of one of the report's scenes, by name.
+double& param(ReportScene& s, std::string_view name) {
+  return s.params[static_cast<std::size_t>(param_index(scene_kernel(s.scene).params, name))];
+}
+
+// The report's sizes for a scene of run-time size.
+std::vector<int>& sizes_of(ReportConfig& c, std::string_view scene) {
+  for (ReportSizes& s : c.scaling)
+    if (scene_name(s.scene) == scene) return s.sizes;
+  throw std::logic_error("no sizes for that scene");
+}
+
 // Small studies, so the whole pipeline runs in about a second.
 ReportConfig small_config() {
   ReportConfig c = default_report_config();
@@ -32,8 +44,8 @@ ReportConfig small_config() {
   c.collision_t_end = 2;
   c.energy_t_end = 10;
   c.cannonball_t_end = 5;
-  c.scaling_sizes = {4, 8};
-  c.scaling_grids = {2, 3};
+  sizes_of(c, "rope") = {4, 8};
+  sizes_of(c, "softbody") = {2, 3};
   return c;
 }
 
@@ -61,7 +73,7 @@ void expect_sentences_follow_data(const ReportConfig& c) {
   const Report report = build_report(c);
   const ReportData& d = report.data;
   const std::string md = report_markdown(report, "png", "footer");
-  const double gamma = c.spring[2];
+  const double gamma = c.damping();
 
   std::set<std::string> stable_large, unstable_large, stable_undamped, unstable_undamped;
   for (const SweepRow& r : d.sweep) {
@@ -191,13 +203,13 @@ TEST(ReportFindings, FollowTheDataWithDefaults) { expect_sentences_follow_data(s
 
 TEST(ReportFindings, FollowTheDataWithoutDamping) {
   ReportConfig c = small_config();
-  c.spring[2] = 0;  // damping 0: explicit Euler and midpoint are unstable at every step
+  param(c.oscillator, "damping") = 0;  // damping 0: explicit Euler and midpoint are unstable at every step
   expect_sentences_follow_data(c);
 }
 
 TEST(ReportFindings, FollowTheDataWithAStiffSpringAndALargeStep) {
   ReportConfig c = small_config();
-  c.spring[1] = 50;    // stiffness: omega = 7.1
+  param(c.oscillator, "stiffness") = 50;  // omega = 7.1
   c.large_dt = 0.3;    // beyond symplectic Euler's 2/omega = 0.28
   expect_sentences_follow_data(c);
 }
@@ -208,7 +220,7 @@ TEST(ReportFindings, ChangedParametersChangeTheSentences) {
   };
   ReportConfig c = small_config();
   const std::string a = markdown(c);
-  c.spring[1] = 50;
+  param(c.oscillator, "stiffness") = 50;
   c.large_dt = 0.3;
   const std::string b = markdown(c);
   EXPECT_NE(line_starting(a, "- At the sheet's large step"), line_starting(b, "- At the sheet's large step"));
@@ -228,9 +240,9 @@ TEST(ReportConfigJson, DefaultsRoundTripAndOverrides) {
   const auto defaults = report_config_json(default_report_config());
   EXPECT_EQ(report_config_json(report_config_from_json(defaults)).dump(), defaults.dump());
   const ReportConfig c = report_config_from_json(nlohmann::ordered_json::parse(R"({"spring": {"damping": 0.3}, "threads": 1})"));
-  EXPECT_DOUBLE_EQ(c.spring[2], 0.3);
+  EXPECT_DOUBLE_EQ(c.damping(), 0.3);
   EXPECT_EQ(c.threads, 1u);
-  EXPECT_DOUBLE_EQ(c.spring[1], 5.0);  // the rest stays default
+  EXPECT_DOUBLE_EQ(c.oscillator.params[1], 5.0);  // the stiffness, as the rest, stays default
 }
 
 TEST(ReportConfigJson, RefusesBadConfigs) {
@@ -257,12 +269,12 @@ std::string growth_section(const ReportConfig& c) {
 }
 
 // Returns the section's text.
-std::string expect_growth_follows_data(const ReportConfig& c) {
+std::string expect_growth_follows_data(ReportConfig& c) {
   const std::string md = growth_section(c);
   EXPECT_FALSE(md.empty());
   ScalingConfig s;
   s.params = default_param_values(*find_scene("rope"));
-  s.sizes = c.scaling_sizes;
+  s.sizes = sizes_of(c, "rope");
   s.target_error = c.scaling_error;
   s.t_end = c.scaling_t_end;
   for (std::size_t m = 0; m < method_count(); ++m)
@@ -281,14 +293,14 @@ std::string expect_growth_follows_data(const ReportConfig& c) {
   } else {
     EXPECT_NE(md.find(fmt::format("- From N = {} on (of these sizes), `{}`", r.crossover, r.crossover_method)), std::string::npos);
   }
-  EXPECT_NE(md.find(fmt::format("at N = {}", c.scaling_sizes.front())), std::string::npos);
+  EXPECT_NE(md.find(fmt::format("to N = {}", sizes_of(c, "rope").front())), std::string::npos);
   // the soft body's paragraph: its sentences from its own study
   s.scene = "softbody";
   s.params = default_param_values(*find_scene("softbody"));
-  s.sizes = c.scaling_grids;
+  s.sizes = sizes_of(c, "softbody");
   s.max_steps = 200'000;
   const ScalingResult soft = scaling_study(s);
-  const std::string tail = md.substr(md.find("The soft body"));
+  const std::string tail = md.substr(md.find("Soft body of N"));
   for (const ScalingFit& f : soft.fits) {
     const std::string row = line_starting(tail, "| `" + f.solver + "` |");
     EXPECT_FALSE(row.empty()) << f.solver;
@@ -296,7 +308,7 @@ std::string expect_growth_follows_data(const ReportConfig& c) {
       EXPECT_NE(row.find(fmt::format("| {:.2f} |", f.run_exponent)), std::string::npos) << row;
     }
   }
-  const int largest = c.scaling_grids.back() * c.scaling_grids.back();
+  const int largest = sizes_of(c, "softbody").back() * sizes_of(c, "softbody").back();
   EXPECT_NE(tail.find(soft.crossover == 0 ? std::string("- At none of these sizes")
                                           : fmt::format("- From N = {} on (of these sizes), `{}`", soft.crossover * soft.crossover,
                                                         soft.crossover_method)),
@@ -311,8 +323,8 @@ std::string expect_growth_follows_data(const ReportConfig& c) {
 TEST(ReportGrowth, FollowsTheDataUnderChangedParameters) {
   ReportConfig c = small_config();
   const std::string a = expect_growth_follows_data(c);
-  c.scaling_sizes = {6, 12, 24};
-  c.scaling_grids = {3, 4};
+  sizes_of(c, "rope") = {6, 12, 24};
+  sizes_of(c, "softbody") = {3, 4};
   c.scaling_error = 1e-3;
   const std::string b = expect_growth_follows_data(c);
   EXPECT_NE(line_starting(a, "| `rk4` |"), line_starting(b, "| `rk4` |"));

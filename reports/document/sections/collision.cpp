@@ -13,7 +13,6 @@ namespace {
 class Collision : public Section {
  public:
   void write_data(const ReportData& d, const DataDir& dat) const override {
-    dat.write("convergence_bounce.json", convergence_json(d.conv_bounce).dump(1) + "\n");
     dat.write("collision.json", collision_json(d.collision).dump(1) + "\n");
     for (const CollisionRun& r : d.collision.triangle) {
       std::string s = "# t centre_y\n";
@@ -35,14 +34,14 @@ class Collision : public Section {
     const ReportConfig& c = d.config;
     std::string md = "## Collision\n\n";
     md += fmt::format("The undamped bounce (dropped from y = 0 onto the penalty ground y = -1; {}) and the falling triangle ({}), "
-                      "over {} s.\n\n", params_text(*find_scene("bounce"), c.bounce), params_text(*find_scene("falling"), c.falling),
+                      "over {} s.\n\n", params_text(c.rebound.scene, c.rebound.params), params_text(c.body.scene, c.body.params),
                       c.collision_t_end);
     md += "| method | dt | bounces | E/E0 after the first | E/E0 after the last | deepest penetration |\n|---|---:|---:|---:|---:|---:|\n";
     for (const CollisionRun& r : d.collision.bounce)
       md += fmt::format("| `{}` | {} | {} | {} | {} | {:.4f} |\n", name(r.method), r.dt, r.bounces.size(),
                         r.bounces.empty() ? "-" : fmt::format("{:.4f}", r.bounces.front().energy_ratio),
                         r.bounces.empty() ? "-" : fmt::format("{:.4f}", r.bounces.back().energy_ratio), r.max_penetration);
-    md += "\nOrders against the exact bounce (the contact's kink costs order):\n\n" + fits_table(d.conv_bounce) + "\n";
+    md += "\nOrders against the exact bounce (the contact's kink costs order):\n\n" + fits_table(d.convergence_on(c.rebound.scene)) + "\n";
     md += page.figure("fig8_triangle", fmt::format("falling triangle: height of its centre against time, dt {}, a panel per family", c.triangle_dt));
     md += page.figure("fig9_bounce_energy", "bounce: energy ratio after the last bounce against dt, a panel per family");
     return md;

@@ -1,8 +1,10 @@
-// Convergence: errors against dt on the spring, fitted orders on the spring and the cannon ball.
+// Convergence: errors against dt on the oscillator (the spring), fitted orders on each of the
+// report's scenes with an exact solution (the rebound scene's in the collision section).
 #include <cmath>
 
 #include <fmt/format.h>
 
+#include "analysis/kernel.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
 #include "reports/data/study_output.hpp"
@@ -13,18 +15,19 @@ namespace {
 class Convergence : public Section {
  public:
   void write_data(const ReportData& d, const DataDir& dat) const override {
-    dat.write("convergence_spring.json", convergence_json(d.conv_spring).dump(1) + "\n");
-    dat.write("convergence_cannonball.json", convergence_json(d.conv_cannonball).dump(1) + "\n");
-    const std::size_t nd = d.conv_spring.dts.size();
+    for (const ConvergenceResult& r : d.convergence)
+      dat.write(fmt::format("convergence_{}.json", scene_name(r.config.scene)), convergence_json(r).dump(1) + "\n");
+    const ConvergenceResult& conv = d.convergence_on(d.config.oscillator.scene);
+    const std::size_t nd = conv.dts.size();
     for (std::size_t i = 0; i < d.methods.size(); ++i) {
       const std::string m = name(d.methods[i]);
       std::string s = "# dt error seconds\n";
       for (std::size_t k = 0; k < nd; ++k) {
-        const ConvergenceRecord& r = d.conv_spring.records[i * nd + k];
+        const ConvergenceRecord& r = conv.records[i * nd + k];
         if (r.status == RunStatus::Ok && r.error_final > 0) s += num(r.dt) + " " + num(r.error_final) + " " + num(r.seconds) + "\n";
       }
       dat.write("conv_" + m + ".dat", s);
-      const OrderFit& fit = d.conv_spring.fits[i].fit;
+      const OrderFit& fit = conv.fits[i].fit;
       s = "# dt error (the window's least-squares line over its range)\n";
       if (fit.fitted)
         for (double x : {fit.dt_lo, fit.dt_hi}) s += num(x) + " " + num(std::exp(fit.line.intercept + fit.line.slope * std::log(x))) + "\n";
@@ -32,8 +35,8 @@ class Convergence : public Section {
     }
     // reference slopes 1, 2, 4 over the sweep's largest decade, under the lowest fitted curve there
     double anchor = INFINITY;
-    const double top = d.conv_spring.dts.front();
-    for (const ConvergenceFit& f : d.conv_spring.fits)
+    const double top = conv.dts.front();
+    for (const ConvergenceFit& f : conv.fits)
       if (f.fit.fitted) anchor = std::min(anchor, std::exp(f.fit.line.intercept + f.fit.line.slope * std::log(top)));
     if (!std::isfinite(anchor)) anchor = 1;
     std::string ref;
@@ -58,17 +61,22 @@ class Convergence : public Section {
         "round-off noise (95 %) plus the truncation left over (the same fit without the two smallest steps, and the other "
         "q): a bound, not a confidence interval. The window's plain least-squares slope is shown beside it; its Student-t "
         "interval is not a statement about the order, because truncation error is smooth, not random.\n\n",
-        d.conv_spring.dts.size(), c.conv_dt_max, c.conv_dt_min, c.conv_t_end);
+        d.convergence_on(c.oscillator.scene).dts.size(), c.conv_dt_max, c.conv_dt_min, c.conv_t_end);
     md += page.figure("fig3_convergence", "error against dt on the spring, a panel per family: least-squares lines (solid) and reference slopes 1, 2, 4 (grey, dashed)");
     int diverged = 0, runs = 0;
-    for (const ConvergenceResult* r : {&d.conv_spring, &d.conv_cannonball, &d.conv_bounce})
-      for (const ConvergenceRecord& rec : r->records) diverged += rec.status != RunStatus::Ok, ++runs;
+    for (const ConvergenceResult& r : d.convergence)
+      for (const ConvergenceRecord& rec : r.records) diverged += rec.status != RunStatus::Ok, ++runs;
     md += diverged == 0 ? fmt::format("All {} runs of the convergence studies stayed finite.\n\n", runs)
                         : fmt::format("{} of the {} runs of the convergence studies diverged (a non-finite state, recorded "
                                       "with its step in `data/`); they are left out of the fits and of figure {}.\n\n",
                                       diverged, runs, page.next_figure() - 1);
-    md += "Spring:\n\n" + fits_table(d.conv_spring) + "\nCannon ball (constant acceleration: every method of order 2 or more, "
-          "and every Adams-Bashforth and BDF method, is exact on it):\n\n" + fits_table(d.conv_cannonball) + "\n";
+    for (const ConvergenceResult& r : d.convergence) {
+      if (r.config.scene == c.rebound.scene) continue;  // in the collision section
+      md += std::string(scene_kernel(r.config.scene).title);
+      if (r.config.scene == c.projectile.scene)
+        md += " (constant acceleration: every method of order 2 or more, and every Adams-Bashforth and BDF method, is exact on it)";
+      md += ":\n\n" + fits_table(r) + "\n";
+    }
     return md;
   }
 };

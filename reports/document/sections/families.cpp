@@ -50,7 +50,7 @@ class Families : public Section {
   }
 
   void write_data(const ReportData& d, const DataDir& dat) const override {
-    const std::complex<double> lambda = Spring(d.config.spring).eigenvalue();
+    const std::complex<double> lambda = Spring(d.config.oscillator.params).eigenvalue();
     const std::size_t ni = regions_.im.size();
     for (const StabilityRegion& r : regions_.regions) {
       std::string s = "# re im stable (rho <= 1)\n";
@@ -63,7 +63,7 @@ class Families : public Section {
       }
       dat.write("region_" + name(r.method) + ".dat", s);
       s = "# re im of dt* lambda, where the ray leaves the region\n";
-      if (const ThresholdRow* t = find_threshold(d, r.method, d.config.spring[2]); t && t->dt_theory > 0 && std::isfinite(t->dt_theory)) {
+      if (const ThresholdRow* t = find_threshold(d, r.method, d.config.damping()); t && t->dt_theory > 0 && std::isfinite(t->dt_theory)) {
         const std::complex<double> z = t->dt_theory * lambda;
         s += num(z.real()) + " " + num(z.imag()) + "\n" + num(z.real()) + " " + num(-z.imag()) + "\n";
       }
@@ -86,7 +86,7 @@ class Families : public Section {
   std::string markdown(Page& page) const override {
     const ReportData& d = page.data;
     const ReportConfig& c = d.config;
-    const double gamma = c.spring[2];
+    const double gamma = c.damping();
     std::vector<double> dampings;
     for (const ThresholdRow& r : d.thresholds)
       if (std::find(dampings.begin(), dampings.end(), r.damping) == dampings.end()) dampings.push_back(r.damping);

@@ -1,6 +1,7 @@
-// As the system grows: the rope of N masses and the soft body of n x n masses refined
-// (analysis/scaling.hpp), every method and the peers; cost against N, the stable step against its
-// 1/N prediction (the rope), the exponents, the crossover, steplab's cheapest against CVODE.
+// As the system grows: every scene of run-time size with modes (by default the rope of N masses
+// and the soft body of n x n masses) refined (analysis/scaling.hpp), every method and the peers;
+// cost against N, the stable step against its 1/N prediction (the first scene's figure), the
+// exponents, the crossover, steplab's cheapest against CVODE.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -17,9 +18,12 @@ namespace steplab {
 namespace {
 
 // A scene's parameters but its size (the sizes replace it).
-std::string params_but_size(std::string_view scene, const std::vector<double>& params) {
-  const std::string all = params_text(*find_scene(scene), params);
-  return all.substr(all.find(", ") + 2);
+std::string params_but_size(std::size_t scene, const std::vector<double>& params) {
+  const SceneKernel& k = scene_kernel(scene);
+  std::string out;
+  for (std::size_t i = 0; i < k.params.size(); ++i)
+    if (static_cast<int>(i) != k.size_param) out += fmt::format("{}{} {:g}", out.empty() ? "" : ", ", k.params[i].name, params[i]);
+  return out;
 }
 
 // The exponents, and where a fixed-step method's step was held at its cap 0.95 dt* (told by the modes).
@@ -69,9 +73,9 @@ std::string findings(const ScalingResult& r) {
   return md + "\n";
 }
 
-ScalingConfig config_for(const ReportData& d, std::string_view scene, const std::vector<int>& sizes) {
-  ScalingConfig c = scaling_config(scene);  // the scene's defaults, as `study scaling --scene ...`
-  c.sizes = sizes;
+ScalingConfig config_for(const ReportData& d, const ReportSizes& s) {
+  ScalingConfig c = scaling_config(scene_name(s.scene));  // the scene's defaults, as `study scaling --scene ...`
+  c.sizes = s.sizes;
   c.target_error = d.config.scaling_error;
   c.t_end = d.config.scaling_t_end;
   c.methods = d.numerical_methods();
@@ -80,35 +84,64 @@ ScalingConfig config_for(const ReportData& d, std::string_view scene, const std:
   return c;
 }
 
+// The measure in words, and the peers' linear solver for the scene.
+std::string scene_paragraph(const ScalingResult& r, bool first) {
+  const ScalingConfig& c = r.config;
+  const std::size_t scene = scene_index(c.scene);
+  const SceneKernel& k = scene_kernel(scene);
+  std::vector<int> masses;
+  for (int n : c.sizes) masses.push_back(scaling_masses(c, n));
+  const std::string size_name(k.params[static_cast<std::size_t>(k.size_param)].name);
+  const std::string at = masses == c.sizes ? fmt::format("N = {}", join(masses))
+                                           : fmt::format("N = {} masses ({} = {})", join(masses), size_name, join(c.sizes));
+  const std::string against = k.has_exact ? "its exact solution" : "its reference solution (dopri5 at rtol 1e-13)";
+  const std::string solver = k.jacobian_bandwidth >= 0 ? "its banded LU" : "SuiteSparse's KLU";
+  if (!first)
+    return fmt::format("{} ({}), at {}: the same measure against {}, dt* from its modes, CVODE with {} as its linear "
+                       "solver.\n\n", k.title, params_but_size(scene, c.params), at, against, solver);
+  return fmt::format(
+      "{} ({}), refined by its {} to {}: each method's step (each adaptive solver's tolerance) searched until the position "
+      "error at t = {:g} against {}, the largest over the masses, is at most {:g}, and that run's cost by {}. Its stable "
+      "step dt* comes from its modes (`steplab study stability --scene {}` measures it too). A fixed-step method's search is "
+      "capped at 0.95 dt*: it is told where its steps stop being stable, which no adaptive solver is told. The peers: "
+      "Boost.Odeint's dopri5 and SUNDIALS CVODE ({}) with Adams-Moulton, with BDF and with BDF capped at order 2 (A-stable), "
+      "each with Newton on the analytic Jacobian and {}. Every solver is timed alike: the scene made outside, the solver's "
+      "set-up, run and clean-up inside, the minimum of repeats.\n\n",
+      k.title, params_but_size(scene, c.params), size_name, at, c.t_end, against, c.target_error,
+      c.timing ? "run time" : "force and Jacobian evaluations times N", k.name, cvode_build_text(), solver);
+}
+
 class Growth : public Section {
  public:
   void study(const ReportData& d) override {
-    r_ = scaling_study(config_for(d, "rope", d.config.scaling_sizes));
-    soft_ = scaling_study(config_for(d, "softbody", d.config.scaling_grids));
+    for (const ReportSizes& s : d.config.scaling) r_.push_back(scaling_study(config_for(d, s)));
   }
 
   void write_data(const ReportData&, const DataDir& dat) const override {
-    dat.write("scaling.json", scaling_json(r_).dump(1) + "\n");
-    dat.write("scaling_softbody.json", scaling_json(soft_).dump(1) + "\n");
-    for (std::size_t s = 0; s < r_.solvers(); ++s) {
-      const std::span<const ScalingRow> rows = r_.rows_of(s);
-      const ScalingRow& first = rows.front();
+    for (const ScalingResult& r : r_) dat.write(fmt::format("scaling_{}.json", r.config.scene), scaling_json(r).dump(1) + "\n");
+    if (r_.empty()) return;
+    const ScalingResult& first = r_.front();  // the figure's
+    for (std::size_t s = 0; s < first.solvers(); ++s) {
+      const std::span<const ScalingRow> rows = first.rows_of(s);
+      const ScalingRow& smallest = rows.front();
       std::string t = "# masses run_cost step_cost dt_stable dt_stable_one_over_n\n";
       for (const ScalingRow& w : rows) {
-        const double cost = scaling_cost(r_.config, w);
+        const double cost = scaling_cost(first.config, w);
         // 1/N prediction from the smallest size: dt*(N) = dt*(N0) N0 / N
         t += fmt::format("{} {} {} {} {}\n", w.n, w.reached() ? num(cost) : "NaN", w.reached() && w.steps > 0 ? num(cost / w.steps) : "NaN",
-                         num(w.dt_stable), num(first.dt_stable * first.n / w.n));
+                         num(w.dt_stable), num(smallest.dt_stable * smallest.n / w.n));
       }
-      dat.write("scaling_" + first.solver + ".dat", t);
+      dat.write("scaling_" + smallest.solver + ".dat", t);
     }
   }
 
   // The explicit methods with a finite stable step at every size: the last panel's.
   std::vector<FigureSpec> figures(const ReportData&) const override {
+    if (r_.empty()) return {};
+    const ScalingResult& first = r_.front();
     std::string limited;
-    for (std::size_t s = 0; s < r_.solvers(); ++s) {
-      const std::span<const ScalingRow> rows = r_.rows_of(s);
+    for (std::size_t s = 0; s < first.solvers(); ++s) {
+      const std::span<const ScalingRow> rows = first.rows_of(s);
       const bool limited_everywhere = !rows.front().implicit && !rows.front().adaptive &&
                                       std::all_of(rows.begin(), rows.end(), [](const ScalingRow& w) {
                                         return std::isfinite(w.dt_stable) && w.dt_stable > 0;
@@ -118,43 +151,27 @@ class Growth : public Section {
       limited += rows.front().solver;
     }
     std::string scaled;
-    for (const std::string& a : r_.config.adaptive) scaled += (scaled.empty() ? "" : " ") + a;
-    return {{"fig11_scaling", fmt::format("costname='{}'; limited='{}'; scaled='{}'", r_.config.timing ? "run time (s)" : "evaluations x N",
+    for (const std::string& a : first.config.adaptive) scaled += (scaled.empty() ? "" : " ") + a;
+    return {{"fig11_scaling", fmt::format("costname='{}'; limited='{}'; scaled='{}'", first.config.timing ? "run time (s)" : "evaluations x N",
                                           limited, scaled)}};
   }
 
   std::string markdown(Page& page) const override {
-    const ScalingConfig& c = r_.config;
     std::string md = "## As the system grows\n\n";
-    md += fmt::format("The hanging rope of N masses, a refinement of one rope (total mass, stiffness, rest length and damping "
-                      "kept: {}), at N = {}: each method's step (each adaptive solver's tolerance) searched until the position "
-                      "error at t = {:g}, the largest over the masses, is at most {:g}, and that run's cost by {}. Its stable "
-                      "step dt* comes from its modes (`steplab study stability --scene rope` measures it too). A fixed-step "
-                      "method's search is capped at 0.95 dt*: it is told where its steps stop being stable, which no adaptive "
-                      "solver is told. The peers: Boost.Odeint's dopri5 and SUNDIALS CVODE ({}) with Adams-Moulton, with BDF and with BDF "
-                      "capped at order 2 (A-stable), "
-                      "each with Newton on the analytic Jacobian and its banded LU. Every solver is timed alike: the scene made "
-                      "outside, the solver's set-up, run and clean-up inside, the minimum of repeats.\n\n",
-                      params_but_size("rope", c.params), join(c.sizes), c.t_end,
-                      c.target_error, c.timing ? "run time" : "force and Jacobian evaluations times N", cvode_build_text());
-    md += exponents_table(r_) + findings(r_);
-    md += page.figure("fig11_scaling", "rope of N masses: whole-run cost at the target error against N, a panel per family and "
-                                              "one for the adaptive solvers; last panel: explicit methods' dt* against N, "
-                                              "dashed its 1/N prediction from the smallest N");
-    const ScalingConfig& s = soft_.config;
-    std::vector<int> masses;
-    for (int n : s.sizes) masses.push_back(scaling_masses(s, n));
-    md += fmt::format("The soft body, the falling triangle refined to n x n masses joined by structural and shear springs ({}), "
-                      "at N = {} masses (n = {}): the same measure against its reference solution (dopri5 at rtol 1e-13), dt* "
-                      "from its fastest mode linearised on the ground (its frequency grows as n: dt* ~ N^-1/2^), CVODE with "
-                      "SuiteSparse's KLU as its linear solver.\n\n",
-                      params_but_size("softbody", s.params), join(masses), join(s.sizes));
-    md += exponents_table(soft_) + findings(soft_);
+    for (std::size_t i = 0; i < r_.size(); ++i) {
+      const ScalingResult& r = r_[i];
+      md += scene_paragraph(r, i == 0) + exponents_table(r) + findings(r);
+      if (i == 0)
+        md += page.figure("fig11_scaling", fmt::format("{}: whole-run cost at the target error against N, a panel "
+                                                       "per family and one for the adaptive solvers; last panel: explicit "
+                                                       "methods' dt* against N, dashed its 1/N prediction from the smallest N",
+                                                       scene_kernel(scene_index(r.config.scene)).title));
+    }
     return md;
   }
 
  private:
-  ScalingResult r_, soft_;
+  std::vector<ScalingResult> r_;  // one per scene of config.scaling
 };
 
 }  // namespace

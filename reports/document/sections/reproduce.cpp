@@ -15,8 +15,9 @@ class Reproduce : public Section {
     const ReportConfig& c = page.data.config;
     std::string md = "## Reproduce\n\n```sh\n";
     md += "build/steplab report --config data/config.json   # this whole report\n";
-    md += wrapped(fmt::format("build/steplab study convergence --scene spring --dt-max {} --dt-min {} --points {} --t-end {}",
-                              c.conv_dt_max, c.conv_dt_min, c.conv_points, c.conv_t_end));
+    for (const ConvergenceResult& r : page.data.convergence)
+      md += wrapped(fmt::format("build/steplab study convergence --scene {} --dt-max {} --dt-min {} --points {} --t-end {}",
+                                scene_name(r.config.scene), c.conv_dt_max, c.conv_dt_min, c.conv_points, c.conv_t_end));
     md += wrapped(fmt::format("build/steplab study stability --threshold-dampings {} --map-dt-points {} --map-damping-points {} "
                               "--map-dt-min {} --map-dt-max {}", join(c.threshold_dampings), c.map_dt_points,
                               c.map_damping_points, c.map_dt_min, c.map_dt_max));
@@ -25,9 +26,9 @@ class Reproduce : public Section {
                               c.collision_t_end, c.triangle_dt));
     md += wrapped(fmt::format("build/steplab study work-precision --points {} --stiffnesses {}{}", c.wp_points,
                               join(c.wp_stiffnesses), c.timing ? "" : " --no-timing"));
-    for (const auto& [scene, sizes] : {std::pair{"", &c.scaling_sizes}, std::pair{" --scene softbody", &c.scaling_grids}})
-      md += wrapped(fmt::format("build/steplab study scaling{} --sizes {} --error {} --t-end {}{}", scene, join(*sizes),
-                                c.scaling_error, c.scaling_t_end, c.timing ? "" : " --no-timing"));
+    for (const ReportSizes& s : c.scaling)
+      md += wrapped(fmt::format("build/steplab study scaling --scene {} --sizes {} --error {} --t-end {}{}", scene_name(s.scene),
+                                join(s.sizes), c.scaling_error, c.scaling_t_end, c.timing ? "" : " --no-timing"));
     md += "```\n\n";
     md += "(with the scene parameters above as `--mass`, `--stiffness`, ... where they differ from the defaults). The data of "
           "every study is in `data/`.\n\n";

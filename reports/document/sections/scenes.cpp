@@ -23,17 +23,17 @@ class SceneFigures : public Section {
       }
     }
     std::string curve = "# x y\n";
-    const SceneKernel& cannon = scene_kernel(scene_index("cannonball"));
+    const ReportScene& projectile = d.config.projectile;
     for (int k = 0; k <= 400; ++k) {
-      const AnyState y = cannon.exact(d.config.cannonball, d.config.cannonball_t_end * k / 400.0);
+      const AnyState y = scene_kernel(projectile.scene).exact(projectile.params, d.config.cannonball_t_end * k / 400.0);
       curve += num(y.x[0]) + " " + num(y.x[1]) + "\n";
     }
     dat.write("cannon_exact.dat", curve);
     curve = "# t y\n";
-    const SceneKernel& spring = scene_kernel(scene_index("spring"));
+    const ReportScene& spring = d.config.oscillator;
     for (int k = 0; k <= 2000; ++k) {
       const double t = d.config.spring_figure_t_end * k / 2000.0;
-      curve += num(t) + " " + num(spring.exact(d.config.spring, t).x[0]) + "\n";
+      curve += num(t) + " " + num(scene_kernel(spring.scene).exact(spring.params, t).x[0]) + "\n";
     }
     dat.write("spring_exact.dat", curve);
   }

@@ -15,7 +15,7 @@ namespace {
 class Stability : public Section {
  public:
   void write_data(const ReportData& d, const DataDir& dat) const override {
-    dat.write("stability.json", stability_json(d.config.spring, d.thresholds, d.sweep, &d.map).dump(1) + "\n");
+    dat.write("stability.json", stability_json(d.config.oscillator.params, d.thresholds, d.sweep, &d.map).dump(1) + "\n");
     for (std::size_t i = 0; i < d.methods.size(); ++i) {
       const std::string m = name(d.methods[i]);
       std::string s = "# t energy_ratio\n";

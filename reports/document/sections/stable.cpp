@@ -18,7 +18,7 @@ class Stable : public Section {
       return method_list(m);
     };
     std::string md = "## Which methods are stable, and which are not?\n\n";
-    md += fmt::format("- At the sheet's large step dt = {} (damping {}): stable: {}; unstable: {}.\n", c.large_dt, c.spring[2],
+    md += fmt::format("- At the sheet's large step dt = {} (damping {}): stable: {}; unstable: {}.\n", c.large_dt, c.damping(),
                       methods(f.stable_large), methods(f.unstable_large));
     md += fmt::format("- Without damping (dt = {}): stable: {}; unstable: {}.\n", c.small_dt, methods(f.stable_undamped),
                       methods(f.unstable_undamped));
@@ -26,7 +26,7 @@ class Stable : public Section {
       md += fmt::format("- Without damping no step at all is stable for {} (predicted dt* = 0: the step map's spectral radius "
                         "exceeds 1 for every h > 0 tried).\n", methods(f.never_stable_undamped));
     if (!f.always_stable.empty())
-      md += fmt::format("- Stable at every step (dt* = inf at damping {}): {}.\n", c.spring[2], methods(f.always_stable));
+      md += fmt::format("- Stable at every step (dt* = inf at damping {}): {}.\n", c.damping(), methods(f.always_stable));
     return md + "\n";
   }
 };

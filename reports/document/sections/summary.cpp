@@ -14,7 +14,7 @@ class Summary : public Section {
  public:
   std::string markdown(Page& page) const override {
     const ReportConfig& c = page.data.config;
-    const double gamma = c.spring[2];
+    const double gamma = c.damping();
     std::string md = "## Summary\n\n";
     // Widths for pandoc: the dashes of the rule set the columns' relative widths in the PDF.
     md += fmt::format("| family | method | order | fitted order [bound] | stable: dt {} / undamped dt {} | dt* undamped | "
