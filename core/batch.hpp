@@ -5,8 +5,9 @@
 //
 //   live   = active lanes whose step left a finite state       (a diverged lane ends here)
 //   y      = next  (a diverged lane's result takes its last finite state: run() below)
-//   E/E0, its largest, the ln E fit (Welford) and the errors against the stepped exact state,
-//          each updated where live
+//   E/E0, its largest and the ln E fit (Welford), updated where live by RunTally::account, the
+//          definition one run's loop uses (core/simulate.hpp); the errors against the stepped
+//          exact state, added where live by ErrorSums::add, also one run's
 //   a lane ends when its steps are done or E/E0 leaves [stop_below, stop_above]; its result
 //   is written and the lane refilled with the next run of the batch (DiffEqGPU.jl masks a
 //   finished lane off; refilling it is what makes packs pay when runs end at different times:
@@ -111,8 +112,8 @@ template <class M, Packable S, class T> class BatchRunner {
       const bool some_rate = some_rate_, some_errors = some_errors_;
       const T h = h_, steps = steps_, above = above_, below = below_, e0 = e0_;
       State<D, T> y = y_, last = y_;
-      T i = i_, ratio = ratio_, ratio_max = ratio_max_, t = 0;
-      EnergyFit<T> fit = fit_;
+      T i = i_, t = 0;
+      RunTally<T> tally = tally_;
       Exact ex = exact_;
       LaneMask failed, diverged, ended;
       do {
@@ -124,22 +125,16 @@ template <class M, Packable S, class T> class BatchRunner {
         diverged = active && !live;  // or failed
         last = y;
         y = next;
-        const T e = scene.energy(y.x, y.v);
-        const LaneMask has_e0 = live && e0_nonzero;
-        const T r = e / e0;
-        ratio_max = select(has_e0, max(ratio_max, r), ratio_max);
-        ratio = select(has_e0, r, ratio);
-        if (some_rate) fit.add(t, e, live && rate && e > 0.0 && finite(e));
+        tally.account(t, scene.energy(y.x, y.v), e0, live, e0_nonzero, rate, some_rate);
         if constexpr (HasExact<S>)
           if (some_errors) track_errors(ex, y, live && errors, t);  // a lane not `on` keeps its values
         i = select(live, i + 1.0, i);
-        const LaneMask out = ratio > above || ratio < below;
-        ended = diverged || (live && (out || i > steps));
+        ended = diverged || (live && (tally.left(above, below) || i > steps));
       } while (!any(ended));
       stepper_ = stepper;
       y_.x = select(diverged, last.x, y.x);
       y_.v = select(diverged, last.v, y.v);
-      i_ = i, ratio_ = ratio, ratio_max_ = ratio_max, fit_ = fit, exact_ = ex;
+      i_ = i, tally_ = tally, exact_ = ex;
       end_lanes(ended, diverged, failed, t);
       if (!any(active_)) return;
     }
@@ -194,6 +189,11 @@ template <class M, Packable S, class T> class BatchRunner {
   template <template <class> class A> static void set_lane(A<T>& a, int l, const A<double>& one) {
     for (std::size_t f = 0; f < A<T>::fields().size(); ++f) (a.*A<T>::fields()[f]).set(l, one.*A<double>::fields()[f]);
   }
+  static RunTally<double> lane(const RunTally<T>& a, int l) { return {a.ratio[l], a.ratio_max[l], lane(a.fit, l)}; }
+  static void set_lane(RunTally<T>& a, int l, const RunTally<double>& one) {
+    a.ratio.set(l, one.ratio), a.ratio_max.set(l, one.ratio_max);
+    set_lane(a.fit, l, one.fit);
+  }
   template <class B> static void set_block(Mat<D, T>& to, int l, const B& from) {
     for (int r = 0; r < D; ++r)
       for (int c = 0; c < D; ++c) to(r, c).set(l, from(r, c));
@@ -220,7 +220,7 @@ template <class M, Packable S, class T> class BatchRunner {
       if (diverged[l]) {
         r.status = failed[l] ? RunStatus::NoConvergence : RunStatus::Diverged;
         r.failed_step = static_cast<long long>(i_[l]), r.failed_t = t[l];
-      } else if (ratio_[l] > above_[l]) {
+      } else if (tally_.ratio[l] > above_[l]) {
         r.status = RunStatus::Diverged, r.failed_step = static_cast<long long>(i_[l]) - 1, r.failed_t = t[l];
       }
       finish(l);
@@ -229,7 +229,7 @@ template <class M, Packable S, class T> class BatchRunner {
     refilled();
   }
 
-  // Run::finish for lane l.
+  // Lane l's run completed (as Run::finish completes one).
   void finish(int l) {
     AnyResult& r = out_[job_[l]];
     const RunSpec& spec = runs_[job_[l]].spec;
@@ -238,12 +238,11 @@ template <class M, Packable S, class T> class BatchRunner {
     r.final.x.resize(D), r.final.v.resize(D);
     for (int j = 0; j < D; ++j) r.final.x[j] = y_.x[j][l], r.final.v[j] = y_.v[j][l];
     r.energy0 = e0_[l];
-    finish_run(r, HasExact<S> && spec.errors, lane(exact_.sums, l), ratio_[l], ratio_max_[l]);
-    if (spec.energy_rate) r.energy_rate = lane(fit_, l).slope();
+    finish_run(r, HasExact<S> && spec.errors, lane(exact_.sums, l), lane(tally_, l), spec.energy_rate);
   }
 
-  // Loads the next run of the batch into lane l (the Run constructor), finishing at once a run
-  // of no steps; none left: the lane goes idle.
+  // Loads the next run of the batch into lane l (as a Run starts one), finishing at once a run of
+  // no steps; none left: the lane goes idle.
   void refill(int l) {
     for (;;) {
       if (next_ >= runs_.size()) {  // idle: a finite state that a step of 0 leaves as it is
@@ -261,14 +260,12 @@ template <class M, Packable S, class T> class BatchRunner {
       const State<D> y0 = s.initial();
       set_lane(y_, l, y0);
       const double e0 = s.energy(y0.x, y0.v);
-      e0_.set(l, e0), ratio_.set(l, 1), ratio_max_.set(l, 1);
+      e0_.set(l, e0);
       h_.set(l, run.spec.dt), i_.set(l, 1), steps_.set(l, static_cast<double>(run.spec.steps));
       above_.set(l, run.spec.stop_above), below_.set(l, run.spec.stop_below);
       rate_.set(l, run.spec.energy_rate);
       errors_.set(l, HasExact<S> && run.spec.errors);
-      EnergyFit<double> fit;  // as Run's constructor starts it
-      if (run.spec.energy_rate) fit.add(0.0, e0, e0 > 0 && std::isfinite(e0));
-      set_lane(fit_, l, fit);
+      set_lane(tally_, l, RunTally<double>::start(e0, run.spec.energy_rate));
       set_lane(exact_.sums, l, ErrorSums<double>{});
       if constexpr (HasExact<S>) {
         if (errors_[l]) load_tracker(l, s, run.spec.dt);
@@ -316,8 +313,8 @@ template <class M, Packable S, class T> class BatchRunner {
   bool some_rate_ = false, some_errors_ = false;
   State<D, T> y_ = zero_state<D, T>();
   T h_ = 0, i_ = 1, steps_ = 0, above_ = 0, below_ = 0;
-  T e0_ = 0, ratio_ = 1, ratio_max_ = 1;
-  EnergyFit<T> fit_;
+  T e0_ = 0;
+  RunTally<T> tally_;
   Exact exact_;
 };
 

@@ -103,7 +103,7 @@ AdaptiveResult<S::dim> simulate_dopri5(const S& s, const AdaptiveSpec& spec, Obs
   State<D> y = s.initial();
   const double e0 = s.energy(y.x, y.v);
   r.energy0 = e0;
-  double ratio = 1, ratio_max = 1;
+  RunTally<double> tally;  // no fit of ln E, no stop on E/E0
   ErrorSums<double> errors;
   const long long n_samples = spec.max_samples > 0 ? std::max(2LL, spec.max_samples) : 0;
   r.samples.reserve(static_cast<std::size_t>(n_samples));
@@ -181,11 +181,7 @@ AdaptiveResult<S::dim> simulate_dopri5(const S& s, const AdaptiveSpec& spec, Obs
     t = t1;
     y = y1;
     k1 = k7;  // first same as last
-    const double e = s.energy(y.x, y.v);
-    if (e0 != 0) {
-      ratio = e / e0;
-      ratio_max = std::max(ratio_max, ratio);
-    }
+    tally.account(t, s.energy(y.x, y.v), e0, true, e0 != 0, false, false);
     if constexpr (HasExact<S>) {
       if (spec.errors) errors.add(y, tracker.at(t), true);
     }
@@ -197,7 +193,7 @@ AdaptiveResult<S::dim> simulate_dopri5(const S& s, const AdaptiveSpec& spec, Obs
   r.steps = st.accepted;
   r.t_final = t;
   r.final = y;
-  finish_run(r, HasExact<S> && spec.errors, errors, ratio, ratio_max);
+  finish_run(r, HasExact<S> && spec.errors, errors, tally, false);
   return out;
 }
 

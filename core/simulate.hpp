@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cmath>
+#include <concepts>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -152,16 +153,58 @@ template <class T> struct EnergyFit {
   double slope() const { return m2_t > 0 ? c_tl / m2_t : std::numeric_limits<double>::quiet_NaN(); }
 };
 
+// What a run carries from one step to the next besides its state, its step count and its
+// errors: E/E0 and its largest, and the ln E fit. T = double for one run (Run below, dopri5's
+// loop), a pack for runs stepped together (BatchRunner, core/batch.hpp), with a lane's mask where
+// one run has a bool: how a step is accounted for is this one definition for every run loop.
+template <class T> struct RunTally {
+  using Mask = MaskOf<T>;
+  T ratio = 1, ratio_max = 1;
+  EnergyFit<T> fit;
+
+  // A run's tally at its start, from its energy E0: the fit's first point (t = 0) if it fits ln E.
+  static RunTally start(double e0, bool energy_rate) {
+    RunTally tally;
+    if (energy_rate) tally.fit.add(0.0, e0, e0 > 0 && std::isfinite(e0));
+    return tally;
+  }
+
+  // The step to t left a finite state of energy e in the lanes `live`: E/E0 and its largest
+  // where E0 != 0, the fit's point where `rate` asks for it (some_rate: in some lane). One run's
+  // select is a branch (it takes the same values; the branch is what GCC compiles best there).
+  [[gnu::always_inline]] inline void account(const T& t, const T& e, const T& e0, const Mask& live, const Mask& e0_nonzero,
+                                             const Mask& rate, bool some_rate) {
+    using std::max;
+    if constexpr (std::same_as<Mask, bool>) {
+      if (live && e0_nonzero) {
+        ratio = e / e0;
+        ratio_max = max(ratio_max, ratio);
+      }
+    } else {
+      const Mask has_e0 = live && e0_nonzero;
+      const T r = e / e0;
+      ratio_max = select(has_e0, max(ratio_max, r), ratio_max);
+      ratio = select(has_e0, r, ratio);
+    }
+    if (some_rate) fit.add(t, e, live && rate && e > 0.0 && finite(e));
+  }
+
+  // Where E/E0 has left [below, above]: there the run ends (above: the energy blew up).
+  [[gnu::always_inline]] inline Mask left(const T& above, const T& below) const { return ratio > above || ratio < below; }
+};
+
 // The run's summary once r.steps and r.energy0 are set: the errors, has_exact, the RMS error,
-// the energy ratios (NaN where E0 = 0: a ratio to nothing).
+// the energy ratios (NaN where E0 = 0: a ratio to nothing) and, if fitted, the growth rate.
 template <int D>
-void finish_run(RunResult<D>& r, bool has_exact, const ErrorSums<double>& e, double ratio, double ratio_max) {
+void finish_run(RunResult<D>& r, bool has_exact, const ErrorSums<double>& e, const RunTally<double>& tally, bool energy_rate) {
   r.has_exact = has_exact;
   r.error_max = e.error_max, r.error_final = e.error_final, r.error_v_final = e.error_v_final;
   if (r.steps > 0) r.error_rms = std::sqrt(e.err_sq_sum / static_cast<double>(r.steps));
+  double ratio = tally.ratio, ratio_max = tally.ratio_max;
   if (r.energy0 == 0) ratio = ratio_max = std::numeric_limits<double>::quiet_NaN();
   r.energy_ratio_final = ratio;
   r.energy_ratio_max = ratio_max;
+  if (energy_rate) r.energy_rate = tally.fit.slope();
 }
 
 // One run, step by step: the state of a run between steps (the accumulators above) and the
@@ -182,7 +225,7 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
     e0_ = scene.energy(y_.x, y_.v);
     r_.energy0 = e0_;
     keep(0, 0.0, y_, e0_);
-    if (spec.energy_rate) fit_.add(0.0, e0_, e0_ > 0 && std::isfinite(e0_));
+    tally_ = RunTally<double>::start(e0_, spec.energy_rate);
   }
   Run(const Run&) = delete;
   Run& operator=(const Run&) = delete;
@@ -203,19 +246,15 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
     }
     y_ = next;
     const double e = scene_.energy(y_.x, y_.v);
-    if (e0_ != 0) {
-      ratio_ = e / e0_;
-      ratio_max_ = std::max(ratio_max_, ratio_);
-    }
-    if (spec_.energy_rate) fit_.add(t, e, e > 0 && std::isfinite(e));
+    tally_.account(t, e, e0_, true, e0_ != 0, true, spec_.energy_rate);
     if constexpr (HasExact<S>) {
       if (spec_.errors) errors_.add(y_, tracker_.at(t), true);
     }
     keep(i_, t, y_, e);
     observe_(i_, t, y_);
     ++i_;
-    if (ratio_ > spec_.stop_above || ratio_ < spec_.stop_below) {
-      if (ratio_ > spec_.stop_above) {
+    if (tally_.left(spec_.stop_above, spec_.stop_below)) {
+      if (tally_.ratio > spec_.stop_above) {
         r_.status = RunStatus::Diverged;
         r_.failed_step = i_ - 1;
         r_.failed_t = t;
@@ -230,8 +269,7 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
     r_.steps = i_ - 1;
     r_.t_final = r_.steps * spec_.dt;
     r_.final = y_;
-    finish_run(r_, HasExact<S> && spec_.errors, errors_, ratio_, ratio_max_);
-    if (spec_.energy_rate) r_.energy_rate = fit_.slope();
+    finish_run(r_, HasExact<S> && spec_.errors, errors_, tally_, spec_.energy_rate);
     // The last finite state is always kept, also when the run ended early.
     if (plan_.size() > 0 && (r_.samples.empty() || r_.samples.back().t != r_.t_final))
       r_.samples.push_back({r_.t_final, y_.x, y_.v, scene_.energy(y_.x, y_.v)});
@@ -255,8 +293,8 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
   const SamplePlan plan_;
   State<D> y_;
   RunResult<D>& r_;
-  double e0_ = 0, ratio_max_ = 1, ratio_ = 1;
-  EnergyFit<double> fit_;
+  double e0_ = 0;
+  RunTally<double> tally_;
   ErrorSums<double> errors_;
   long long i_ = 1, next_sample_ = 0, sample_k_ = 0;
   [[no_unique_address]] decltype(make_tracker(std::declval<const S&>(), RunSpec{})) tracker_;
