@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <complex>
 
 #include <boost/numeric/odeint.hpp>
 
@@ -124,6 +125,27 @@ TEST(Chain, BdfAndImplicitEulerFitTheirOrders) {
   const ConvergenceResult r = convergence_study(convergence_on_chain({"bdf2", "implicit_euler"}));
   EXPECT_NEAR(r.fits[0].fit.order, 2, 0.02);
   EXPECT_NEAR(r.fits[1].fit.order, 1, 0.02);
+}
+
+// Its modes (the stability studies' prediction) against the eigenvalues of its first-order
+// system A, computed apart from them (Eigen, long double): each mode's omega^2 and its modal
+// damping zeta omega against |lambda|^2 and -Re lambda of its eigenvalue pair. The modes' damping
+// is a projection that leaves out C's coupling of the two modes; on the default chain that is
+// about 1e-10 of the damping (the pair's -Re lambda: 0.0249988 and 10.0250012), so 1e-6 checks
+// the formulas, not the approximation's limit.
+TEST(Chain, ModesAreTheEigenvaluesOfItsSystem) {
+  const Chain c = chain();
+  const std::vector<Mode> modes = c.modes();
+  ASSERT_EQ(modes.size(), 2u);
+  EXPECT_LT(modes[0].omega, modes[1].omega);
+  std::array<std::complex<double>, 2> pair{};  // the eigenvalue with Im > 0 of each pair, slowest first
+  for (int k = 0; k < 4; ++k)
+    if (c.lambda[k].imag() > 0) pair[std::abs(c.lambda[k]) > 100 ? 1 : 0] = c.lambda[k];
+  for (int k = 0; k < 2; ++k) {
+    const double omega = modes[k].omega, zeta_omega = modes[k].two_zeta * omega / 2;
+    EXPECT_NEAR(omega * omega, std::norm(pair[k]), 1e-6 * std::norm(pair[k])) << k;
+    EXPECT_NEAR(zeta_omega, -pair[k].real(), 1e-6 * -pair[k].real()) << k;
+  }
 }
 
 }  // namespace
