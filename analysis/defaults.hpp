@@ -37,14 +37,13 @@ inline constexpr std::string_view kSheetProjectile = "cannonball";
 // first), and the one it starts from.
 inline constexpr std::array<std::string_view, 2> kLegacyScenes{"spring1d", "falling"};
 
-// The sizes `study scaling` refines a scene to, and the most steps a search may try.
+// The sizes `study scaling` refines a scene to, the most steps a search may try, and the sizes
+// of the report's "As the system grows" (small: the report runs every study).
 struct ScalingDefaults {
   std::vector<int> sizes{16, 64, 256, 1024};
   long long max_steps = 2'000'000;
+  std::vector<int> report_sizes{8, 32, 128};
 };
 ScalingDefaults scaling_defaults(std::string_view scene);
-// The sizes the report's "As the system grows" refines each scene of run-time size to (small: the
-// report runs every study).
-std::vector<int> report_sizes(std::string_view scene);
 
 }  // namespace steplab

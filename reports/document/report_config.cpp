@@ -88,7 +88,7 @@ ReportConfig default_report_config() {
     role->params = default_param_values(role->scene);
   }
   for (std::size_t s = 0; s < scene_count(); ++s)
-    if (scales(scene_kernel(s))) c.scaling.push_back({s, report_sizes(scene_name(s))});
+    if (scales(scene_kernel(s))) c.scaling.push_back({s, scaling_defaults(scene_name(s)).report_sizes});
   return c;
 }
 

@@ -60,10 +60,11 @@ std::string fits_table(const ConvergenceResult& r) {
   return out;
 }
 
-std::string params_text(std::size_t scene, const std::vector<double>& v) {
+std::string params_text(std::size_t scene, const std::vector<double>& v, int skip) {
   const std::span<const ParamSpec> params = scene_kernel(scene).params;
   std::string out;
-  for (std::size_t i = 0; i < params.size(); ++i) out += fmt::format("{}{} {}", i ? ", " : "", params[i].name, v[i]);
+  for (std::size_t i = 0; i < params.size(); ++i)
+    if (static_cast<int>(i) != skip) out += fmt::format("{}{} {}", out.empty() ? "" : ", ", params[i].name, v[i]);
   return out;
 }
 

@@ -21,7 +21,8 @@ std::string fitted_text(const ConvergenceFit& fit);       // headline order and 
 std::string and_list(const std::vector<std::string>& items);       // a, b and c
 std::string method_list(const std::vector<std::size_t>& methods);  // `a`, `b` and `c`; "none"
 std::string fits_table(const ConvergenceResult& r);       // the Markdown table of fitted orders
-std::string params_text(std::size_t scene, const std::vector<double>& values);
+// "mass 1, stiffness 5, ..." in table order; `skip`: a parameter's index to leave out (-1: none).
+std::string params_text(std::size_t scene, const std::vector<double>& values, int skip = -1);
 std::string wrapped(const std::string& cmd);              // a shell command broken for the page
 std::string words(const std::vector<double>& v);          // gnuplot word list: "a b c"
 std::string join(const std::vector<double>& v);           // CLI list: "a,b,c"

@@ -19,11 +19,7 @@ namespace {
 
 // A scene's parameters but its size (the sizes replace it).
 std::string params_but_size(std::size_t scene, const std::vector<double>& params) {
-  const SceneKernel& k = scene_kernel(scene);
-  std::string out;
-  for (std::size_t i = 0; i < k.params.size(); ++i)
-    if (static_cast<int>(i) != k.size_param) out += fmt::format("{}{} {:g}", out.empty() ? "" : ", ", k.params[i].name, params[i]);
-  return out;
+  return params_text(scene, params, scene_kernel(scene).size_param);
 }
 
 // The exponents, and where a fixed-step method's step was held at its cap 0.95 dt* (told by the modes).
