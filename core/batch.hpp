@@ -1,7 +1,8 @@
 // Runs stepped W at a time: the run loop of core/simulate.hpp on packs (core/pack.hpp), one run
-// per lane, structure of arrays. Each lane's numbers are the bits its run gives alone (Run):
-// the same operations in the same order, lane by lane; what depends on the lane becomes a
-// select on a mask.
+// per lane, structure of arrays. A step is take_step (core/simulate.hpp), the one definition a
+// single run (Run) takes its steps by too: each lane's numbers are the bits its run gives alone,
+// the same operations in the same order, lane by lane; what depends on the lane is a select on a
+// mask. What is this driver's own: the lanes' masks, their end, and refilling them.
 //
 //   live   = active lanes whose step left a finite state       (a diverged lane ends here)
 //   y      = next  (a diverged lane's result takes its last finite state: run() below)
@@ -117,19 +118,14 @@ template <class M, Packable S, class T> class BatchRunner {
       Exact ex = exact_;
       LaneMask failed, diverged, ended;
       do {
-        const T t_prev = (i - 1.0) * h;
-        t = i * h;
-        State<D, T> next = y;
-        failed = active && LaneMask(steplab::failed(stepper.step(scene, next, t_prev, h)));  // Newton gave up
-        const LaneMask live = all_finite(next) && active && !failed;
-        diverged = active && !live;  // or failed
-        last = y;
-        y = next;
-        tally.account(t, scene.energy(y.x, y.v), e0, live, e0_nonzero, rate, some_rate);
-        if constexpr (HasExact<S>)
-          if (some_errors) track_errors(ex, y, live && errors, t);  // a lane not `on` keeps its values
-        i = select(live, i + 1.0, i);
-        ended = diverged || (live && (tally.left(above, below) || i > steps));
+        const Stepped<T> s = take_step(stepper, scene, y, last, i, h, active, tally, e0, e0_nonzero, rate, some_rate,
+                                       [&](const State<D, T>& now, const LaneMask& live, const T& at, const T&) __attribute__((always_inline)) {
+                                         if constexpr (HasExact<S>)  // a lane not `on` keeps its values
+                                           if (some_errors) track_errors(ex, now, live && errors, at);
+                                       });
+        t = s.t, failed = s.failed;
+        diverged = active && !s.live;  // or failed
+        ended = diverged || (s.live && (tally.left(above, below) || i > steps));
       } while (!any(ended));
       stepper_ = stepper;
       y_.x = select(diverged, last.x, y.x);

@@ -157,7 +157,9 @@ template <HasExact S> class ExactTracker {
   const Block& vx() const { return vx_; }
   const Block& vv() const { return vv_; }
 
-  const State<D>& at(double t) {
+  // Inline where it steps the affine map (a run's hot path); the closed form or the flow, called
+  // once every kResync steps there, out of line.
+  [[gnu::always_inline]] inline const State<D>& at(double t) {
     if constexpr (kCanStep) {
       if (until_closed_form_ > 1) {
         --until_closed_form_;
@@ -168,13 +170,17 @@ template <HasExact S> class ExactTracker {
       }
       if (until_closed_form_ == 1) until_closed_form_ = kResync;  // the closed form now, then kResync - 1 steps again
     }
+    return from_scene(t);
+  }
+
+ private:
+  [[gnu::noinline]] const State<D>& from_scene(double t) {
     if constexpr (requires { s_.exact_at(t); }) y_ = s_.exact_at(t);
     else y_ = s_.flow(y_, t - t_);
     t_ = t;
     return y_;
   }
 
- private:
   const S& s_;
   State<D> y_;
   double t_ = 0;

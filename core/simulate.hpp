@@ -193,6 +193,45 @@ template <class T> struct RunTally {
   [[gnu::always_inline]] inline Mask left(const T& above, const T& below) const { return ratio > above || ratio < below; }
 };
 
+// One step of a run loop, for one run (T = double, masks bool: Run below) or a pack of runs
+// (BatchRunner, core/batch.hpp; i then counts each lane's steps in a T): the step from
+// t_prev = (i - 1) h to t = i h, i 1-based, where `active`, the
+// test of the new state, and where it passed (`live`) the step's accounting: E/E0 and the fit
+// (RunTally::account), `after(y, live, t, e)` (the errors; one run's samples and observer) and
+// the step counted (i + 1). Not live: the method's Newton iteration gave up (`failed`) or the
+// state is not finite. One run then keeps its last finite state in y and returns at once; a pack
+// steps y on in every lane and keeps the state before in `last` for those lanes.
+template <class T> struct Stepped {
+  MaskOf<T> live, failed;
+  T t;
+};
+
+template <class Stp, class Sc, int D, class T, class I, class After>
+[[gnu::always_inline]] inline Stepped<T> take_step(Stp& stepper, const Sc& scene, State<D, T>& y, State<D, T>& last, I& i,
+                                                   const T& h, const MaskOf<T>& active, RunTally<T>& tally, const T& e0,
+                                                   const MaskOf<T>& e0_nonzero, const MaskOf<T>& rate, bool some_rate,
+                                                   After&& after) {
+  using Mask = MaskOf<T>;
+  const T t_prev = (i - 1.0) * h, t = i * h;
+  State<D, T> next = y;
+  const Mask failed = active && Mask(steplab::failed(stepper.step(scene, next, t_prev, h)));
+  const Mask live = all_finite(next) && active && !failed;
+  if constexpr (std::same_as<Mask, bool>) {
+    if (!live) return {live, failed, t};
+  } else {
+    last = y;
+  }
+  y = next;
+  const T e = scene.energy(y.x, y.v);
+  tally.account(t, e, e0, live, e0_nonzero, rate, some_rate);
+  after(y, live, t, e);
+  if constexpr (std::same_as<Mask, bool>)
+    ++i;
+  else
+    i = select(live, i + 1.0, i);
+  return {live, failed, t};
+}
+
 // The run's summary once r.steps and r.energy0 are set: the errors, has_exact, the RMS error,
 // the energy ratios (NaN where E0 = 0: a ratio to nothing) and, if fitted, the growth rate.
 template <int D>
@@ -234,30 +273,25 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
   // failed, or stopped early). After false, call finish(), not advance().
   [[gnu::always_inline]] inline bool advance() {
     if (i_ > spec_.steps) return false;
-    const double h = spec_.dt;
-    const double t_prev = (i_ - 1) * h, t = i_ * h;
-    State<D> next = y_;
-    const StepStatus st = stepper_.step(scene_, next, t_prev, h);
-    if (!all_finite(next) || st != StepStatus::Ok) {
-      r_.status = st != StepStatus::Ok ? RunStatus::NoConvergence : RunStatus::Diverged;
+    const Stepped<double> s = take_step(stepper_, scene_, y_, y_, i_, spec_.dt, true, tally_, e0_, e0_ != 0, true, spec_.energy_rate,
+                                        [&](const State<D>& y, bool, double t, double e) __attribute__((always_inline)) {
+                                          if constexpr (HasExact<S>) {
+                                            if (spec_.errors) errors_.add(y, tracker_.at(t), true);
+                                          }
+                                          keep(i_, t, y, e);
+                                          observe_(i_, t, y);
+                                        });
+    if (!s.live) {
+      r_.status = s.failed ? RunStatus::NoConvergence : RunStatus::Diverged;
       r_.failed_step = i_;
-      r_.failed_t = t;
+      r_.failed_t = s.t;
       return false;
     }
-    y_ = next;
-    const double e = scene_.energy(y_.x, y_.v);
-    tally_.account(t, e, e0_, true, e0_ != 0, true, spec_.energy_rate);
-    if constexpr (HasExact<S>) {
-      if (spec_.errors) errors_.add(y_, tracker_.at(t), true);
-    }
-    keep(i_, t, y_, e);
-    observe_(i_, t, y_);
-    ++i_;
     if (tally_.left(spec_.stop_above, spec_.stop_below)) {
       if (tally_.ratio > spec_.stop_above) {
         r_.status = RunStatus::Diverged;
         r_.failed_step = i_ - 1;
-        r_.failed_t = t;
+        r_.failed_t = s.t;
       }
       return false;
     }
@@ -296,7 +330,7 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
   double e0_ = 0;
   RunTally<double> tally_;
   ErrorSums<double> errors_;
-  long long i_ = 1, next_sample_ = 0, sample_k_ = 0;
+  long long i_ = 1, next_sample_ = 0, sample_k_ = 0;  // i_: the next step, 1-based
   [[no_unique_address]] decltype(make_tracker(std::declval<const S&>(), RunSpec{})) tracker_;
   [[no_unique_address]] Stepper<M, S> stepper_;  // a multistep method's memory; nothing for a one-step method
 };
