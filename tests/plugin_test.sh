@@ -11,6 +11,8 @@
 #   mysteplab study stability --methods heun,rk4 --lanes 1 and --lanes 2
 #                                            the same JSON (Heun is written over the scalar,
 #                                            so the spring's runs step two at a time)
+#   mysteplab report --methods heun,explicit_euler,explicit_midpoint,rk4 --sections ...
+#                                            its own report: those methods, the full report's numbers
 # and a scene of run-time size (beads on a string, exact modes) that run and the studies of
 # convergence, stability and scaling take by what it declares.
 # Usage: plugin_test.sh BUILD_DIR [extra cmake arguments for the project]
@@ -297,5 +299,21 @@ for f in scal["exponents"]:
     if f["run_exponent"] is not None:
         assert f"| {f['run_exponent']:.2f} |" in row, (row, f)
 print("beads: in the report, its exponents from its own study")
+EOF
+# ... and a report of the user's method beside the methods it should be compared with: those
+# methods only, its numbers the full report's (the same studies, whatever runs beside them).
+"$tool" report --config small.json --methods heun,explicit_euler,explicit_midpoint,rk4 --sections summary,families,convergence \
+  --out mine >/dev/null
+python3 - mine/report.md rep/report.md <<'EOF'
+import sys
+mine, full = open(sys.argv[1]).read(), open(sys.argv[2]).read()
+heads = [l for l in mine.splitlines() if l.startswith("## ")]
+assert heads == ["## Summary", "## Is stability correlated with the order? Family by family", "## Convergence"], heads
+row = lambda md, m: next(l for l in md.splitlines() if f"| `{m}` |" in l)
+for m in ["heun", "explicit_euler", "explicit_midpoint", "rk4"]:
+    assert row(mine, m).split("|")[2:] == row(full, m).split("|")[2:], (row(mine, m), row(full, m))
+for m in ["rk3", "symplectic_euler", "bdf2", "heun_claims_3"]:
+    assert f"`{m}`" not in mine, m
+print("heun: a report of its own, beside the methods chosen")
 EOF
 echo "plugin ok"

@@ -21,6 +21,7 @@
 #include "analysis/parallel.hpp"
 #include "analysis/local_error.hpp"
 #include "analysis/defaults.hpp"
+#include "reports/document/section.hpp"
 
 namespace steplab {
 namespace {
@@ -227,6 +228,8 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   CLI::App* rep_cmd = app.add_subcommand("report", "run every study and write report.md, report.pdf, figures/ and data/ into one folder");
   rep_cmd->add_option("--out", rep.out, "output folder")->capture_default_str();
   rep_cmd->add_option("--config", rep.config, "JSON file overriding any study parameter (see --print-config)");
+  CLI::Option* rep_methods = rep_cmd->add_option("--methods", rep.methods, "comma-separated methods the report covers (default: every one, analytic included)");
+  CLI::Option* rep_sections = rep_cmd->add_option("--sections", rep.sections, "comma-separated sections, in any order (default: all): " + fmt::format("{}", fmt::join(section_names(), ", ")));
   rep_cmd->add_flag("--force", rep.force, "redo the report even if it is up to date");
   rep_cmd->add_flag("--print-config", rep.print_config, "print the configuration (defaults, or --config applied) and exit");
 
@@ -253,7 +256,10 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
     if (coll_cmd->parsed()) return collision_command(coll, ctx);
     if (wp_cmd->parsed()) return work_precision_command(wp, ctx);
     if (scaling_cmd->parsed()) return scaling_command(scaling, ctx);
-    if (rep_cmd->parsed()) return report_command(rep, ctx);
+    if (rep_cmd->parsed()) {
+      rep.methods_given = rep_methods->count() > 0, rep.sections_given = rep_sections->count() > 0;
+      return report_command(rep, ctx);
+    }
     if (check_cmd->parsed()) return check_command(check, ctx);
     if (app.got_subcommand("merge")) return merge_command(merge, ctx);
     if (legacy) return legacy_command(legacy_args, ctx);

@@ -161,6 +161,8 @@ namespace steplab {
 struct ReportArgs {
   std::string out = "report";
   std::string config;
+  std::string methods, sections;  // comma-separated; over the config's (default: all)
+  bool methods_given = false, sections_given = false;  // even as "" (refused: an empty list)
   bool force = false;
   bool print_config = false;
 };

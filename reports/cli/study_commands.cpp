@@ -296,7 +296,9 @@ int collision_command(CollisionArgs& a, Context& ctx) {
 namespace steplab {
 
 int report_command(ReportArgs& a, Context& ctx) {
-  const ReportConfig c = a.config.empty() ? default_report_config() : read_report_config(a.config);
+  ReportConfig c = a.config.empty() ? default_report_config() : read_report_config(a.config);
+  if (a.methods_given) choose_methods(c, a.methods.empty() ? std::vector<std::string>{} : split_list(a.methods), "--methods");
+  if (a.sections_given) choose_sections(c, a.sections.empty() ? std::vector<std::string>{} : split_list(a.sections), "--sections");
   if (a.print_config) {
     std::fputs((report_config_json(c).dump(1) + "\n").c_str(), stdout);
     return 0;

@@ -52,9 +52,11 @@ Report::~Report() = default;
 
 Report build_report(const ReportConfig& config, ProgressHook progress) {
   Report r;
-  r.data = run_report_studies(config, progress);
-  r.findings = compute_findings(r.data);
-  r.sections = report_sections();
+  r.sections = report_sections(config.sections);
+  unsigned studies = 0;
+  for (const auto& s : r.sections) studies |= s->needs();
+  r.data = run_report_studies(config, studies, progress);
+  if ((studies & kFindings) == kFindings) r.findings = compute_findings(r.data);
   for (const auto& s : r.sections) s->study(r.data);
   return r;
 }

@@ -20,10 +20,22 @@
 
 namespace steplab {
 
+// The shared studies (ReportData's fields), as bits: what a section needs (Section::needs) and
+// what ran. kFindings: the convergence and stability studies Findings are computed from.
+enum ReportStudy : unsigned {
+  kConvergenceStudy = 1,  // convergence: every report scene with an exact solution
+  kStabilityStudy = 2,    // thresholds, sweep, map, and the stability figures' runs
+  kCollisionStudy = 4,
+  kWorkPrecisionStudy = 8,
+  kSceneFigures = 16,  // cannon, spring
+  kFindings = kConvergenceStudy | kStabilityStudy,
+};
+
 struct ReportData {
   ReportConfig config;
   Workers workers;  // the config's threads, the command's progress
-  std::vector<std::size_t> methods;  // every method in the table, the exact flow included
+  unsigned studies = 0;  // ReportStudy bits: which shared studies ran (the fields of the others stay empty)
+  std::vector<std::size_t> methods;  // the config's methods, in the table's order (the exact flow if chosen)
   std::vector<std::size_t> numerical_methods() const;  // `methods` but the exact flow
   std::vector<ConvergenceResult> convergence;  // each of the config's scenes with an exact solution, in order
   const ConvergenceResult& convergence_on(std::size_t scene) const;  // std::out_of_range if not studied
@@ -40,7 +52,8 @@ struct ReportData {
   std::vector<std::vector<double>> curve_rate;    // [method][damping]
 };
 
-ReportData run_report_studies(const ReportConfig& config, ProgressHook progress = nullptr);
+// The shared studies in `studies` (ReportStudy bits), on the config's methods.
+ReportData run_report_studies(const ReportConfig& config, unsigned studies, ProgressHook progress = nullptr);
 
 struct MethodFinding {
   std::size_t method;
@@ -72,8 +85,8 @@ double spearman(const std::vector<double>& a, const std::vector<double>& b);
 
 class Section;
 
-// The report: the shared studies, their findings, and the sections (reports/document/section.hpp) with
-// their own studies run.
+// The report: the config's sections (reports/document/section.hpp), the shared studies they need,
+// their findings (if those studies ran), and the sections' own studies run.
 struct Report {
   ReportData data;
   Findings findings;

@@ -1,6 +1,8 @@
 #include "reports/document/report_config.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <fstream>
 #include <sstream>
 
@@ -12,6 +14,7 @@
 #include "reports/data/inputs.hpp"
 #include "reports/data/run_json.hpp"
 #include "reports/data/study_output.hpp"
+#include "reports/document/section.hpp"
 
 namespace steplab {
 namespace {
@@ -36,6 +39,10 @@ void merge(Json& defaults, const Json& user, const std::string& path) {
     Json& target = defaults[key];
     if (target.is_object()) {
       merge(target, value, where);
+    } else if (target.is_array() && !target.empty() && target.front().is_string()) {  // a list of names
+      if (!value.is_array() || value.empty() || !std::all_of(value.begin(), value.end(), [](const Json& x) { return x.is_string(); }))
+        throw UsageError(fmt::format("config: '{}' must be a non-empty array of names", where));
+      target = value;
     } else if (target.is_array()) {
       if (!value.is_array() || value.empty() || !std::all_of(value.begin(), value.end(), [](const Json& x) { return x.is_number(); }))
         throw UsageError(fmt::format("config: '{}' must be a non-empty array of numbers", where));
@@ -74,7 +81,48 @@ std::vector<double> scene_values(const Json& j, std::size_t scene) {
   return out;
 }
 
+std::string joined(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+// Indices of `names` in a table of `count` entries found by `find`, sorted into the table's order;
+// UsageError for an empty list, an unknown or a repeated name.
+template <class Find>
+std::vector<std::size_t> chosen(const std::vector<std::string>& names, const std::string& what, Find find,
+                                const std::string& accepted) {
+  if (names.empty() || std::find(names.begin(), names.end(), "") != names.end())
+    throw UsageError(fmt::format("{} is empty or has an empty name; accepted: a comma-separated list of {}", what, accepted));
+  std::vector<std::size_t> out;
+  for (const std::string& n : names) {
+    const std::optional<std::size_t> i = find(n);
+    if (!i) throw UsageError(fmt::format("{}: '{}' is not known; accepted: {}", what, n, accepted));
+    if (std::find(out.begin(), out.end(), *i) != out.end())
+      throw UsageError(fmt::format("{}: '{}' is named twice; accepted: each once", what, n));
+    out.push_back(*i);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 }  // namespace
+
+void choose_methods(ReportConfig& c, const std::vector<std::string>& names, const std::string& what) {
+  c.methods = chosen(names, what, find_method, method_names());
+  if (std::all_of(c.methods.begin(), c.methods.end(), [](std::size_t m) { return method_info(m).exact_flow; }))
+    throw UsageError(fmt::format("{} has no numerical method; accepted: at least one of {}", what, method_names()));
+}
+
+void choose_sections(ReportConfig& c, const std::vector<std::string>& names, const std::string& what) {
+  const std::vector<std::string> all = section_names();
+  const auto find = [&](const std::string& n) -> std::optional<std::size_t> {
+    const auto it = std::find(all.begin(), all.end(), n);
+    return it == all.end() ? std::nullopt : std::optional<std::size_t>(static_cast<std::size_t>(it - all.begin()));
+  };
+  c.sections.clear();
+  for (std::size_t i : chosen(names, what, find, joined(all))) c.sections.push_back(all[i]);
+}
 
 double ReportConfig::damping() const {
   return oscillator.params[static_cast<std::size_t>(scene_kernel(oscillator.scene).damping_param)];
@@ -82,6 +130,8 @@ double ReportConfig::damping() const {
 
 ReportConfig default_report_config() {
   ReportConfig c;
+  for (std::size_t m = 0; m < method_count(); ++m) c.methods.push_back(m);
+  c.sections = section_names();
   for (const auto& [role, name] : {std::pair{&c.oscillator, kSheetOscillator}, {&c.projectile, kSheetProjectile},
                                    {&c.rebound, kReboundScene}, {&c.body, kContactBodyScene}}) {
     role->scene = scene_index(name);
@@ -94,6 +144,9 @@ ReportConfig default_report_config() {
 
 Json report_config_json(const ReportConfig& c) {
   Json j;
+  j["methods"] = Json::array();
+  for (std::size_t m : c.methods) j["methods"].push_back(std::string(method_info(m).name));
+  j["sections"] = c.sections;
   for (const ReportScene* s : c.scenes()) j[std::string(scene_name(s->scene))] = scene_params_json(s->scene, s->params);
   j["convergence"] = {{"dt_max", c.conv_dt_max}, {"dt_min", c.conv_dt_min}, {"points", c.conv_points},
                       {"t_end", c.conv_t_end}};
@@ -121,6 +174,8 @@ ReportConfig report_config_from_json(const Json& user) {
   Json j = report_config_json(default_report_config());
   merge(j, user, "");
   ReportConfig c = default_report_config();
+  choose_methods(c, j["methods"].get<std::vector<std::string>>(), "config: methods");
+  choose_sections(c, j["sections"].get<std::vector<std::string>>(), "config: sections");
   for (ReportScene* s : c.scenes()) s->params = scene_values(j[std::string(scene_name(s->scene))], s->scene);
   const Json& cv = j["convergence"];
   c.conv_dt_max = num(cv["dt_max"], "convergence.dt_max", Bound::Positive);

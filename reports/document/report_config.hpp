@@ -26,6 +26,10 @@ struct ReportSizes {
 };
 
 struct ReportConfig {
+  // What the report covers: methods (table indices, in the table's order; the exact flow may be
+  // one) and sections (names, in the report's order). Default: all of each.
+  std::vector<std::size_t> methods;
+  std::vector<std::string> sections;
   // The report's scenes (analysis/defaults.hpp): the sheet's damped spring (the stability study's
   // oscillator) and cannon ball, and the collision study's rebound scene and contact body. The
   // config file keys each by its scene's name.
@@ -66,5 +70,9 @@ nlohmann::ordered_json report_config_json(const ReportConfig& c);
 // Defaults overridden by the keys of `user`; UsageError("config: ...") for anything wrong.
 ReportConfig report_config_from_json(const nlohmann::ordered_json& user);
 ReportConfig read_report_config(const std::string& path);  // UsageError if unreadable or malformed
+// `c` with its methods or sections chosen by name (`what` names the option in messages); UsageError
+// for an unknown or repeated name, an empty list, or methods without a numerical one.
+void choose_methods(ReportConfig& c, const std::vector<std::string>& names, const std::string& what);
+void choose_sections(ReportConfig& c, const std::vector<std::string>& names, const std::string& what);
 
 }  // namespace steplab

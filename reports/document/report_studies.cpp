@@ -61,16 +61,18 @@ std::vector<std::size_t> ReportData::numerical_methods() const {
   return out;
 }
 
-ReportData run_report_studies(const ReportConfig& c, ProgressHook progress) {
+ReportData run_report_studies(const ReportConfig& c, unsigned studies, ProgressHook progress) {
   ReportData d;
   d.config = c;
   d.workers = {c.threads, progress, nullptr};
-  for (std::size_t m = 0; m < method_count(); ++m) d.methods.push_back(m);
+  d.studies = studies;
+  d.methods = c.methods;
   const double gamma = c.damping();
   const std::size_t damping = static_cast<std::size_t>(scene_kernel(c.oscillator.scene).damping_param);
 
-  for (const ReportScene* s : c.scenes())
-    if (scene_kernel(s->scene).has_exact) d.convergence.push_back(convergence_study(convergence_config(d, *s, d.methods)));
+  if (studies & kConvergenceStudy)
+    for (const ReportScene* s : c.scenes())
+      if (scene_kernel(s->scene).has_exact) d.convergence.push_back(convergence_study(convergence_config(d, *s, d.methods)));
 
   // The stability study is the damped spring's (analysis/stability.hpp): the oscillator is one.
   const Spring spring(c.oscillator.params);
@@ -85,9 +87,11 @@ ReportData run_report_studies(const ReportConfig& c, ProgressHook progress) {
   sc.map_dt_min = c.map_dt_min;
   sc.map_dt_max = c.map_dt_max;
   sc.workers = d.workers;
-  d.thresholds = threshold_study(sc);
-  d.sweep = damping_sweep(sc);
-  d.map = stability_map(sc);
+  if (studies & kStabilityStudy) {
+    d.thresholds = threshold_study(sc);
+    d.sweep = damping_sweep(sc);
+    d.map = stability_map(sc);
+  }
 
   CollisionConfig cc;
   cc.rebound_scene = c.rebound.scene;
@@ -99,7 +103,7 @@ ReportData run_report_studies(const ReportConfig& c, ProgressHook progress) {
   cc.t_end = c.collision_t_end;
   cc.triangle_dt = c.triangle_dt;
   cc.workers = d.workers;
-  d.collision = collision_study(cc);
+  if (studies & kCollisionStudy) d.collision = collision_study(cc);
 
   WorkPrecisionConfig wc;
   wc.methods = d.numerical_methods();
@@ -107,10 +111,11 @@ ReportData run_report_studies(const ReportConfig& c, ProgressHook progress) {
   wc.stiffnesses = c.wp_stiffnesses;
   wc.timing = c.timing;
   wc.workers = d.workers;
-  d.work = work_precision_study(wc);
+  if (studies & kWorkPrecisionStudy) d.work = work_precision_study(wc);
 
-  // Figures: the cannon ball's path, the spring's y(t), the undamped energy at the large step,
-  // and the predicted growth rate against damping on a fine grid.
+  // Figures: the cannon ball's path and the spring's y(t) (kSceneFigures); the undamped energy at
+  // the large step and the predicted growth rate against damping on a fine grid (kStabilityStudy).
+  if (!(studies & (kSceneFigures | kStabilityStudy))) return d;
   std::vector<double> undamped = c.oscillator.params;
   undamped[damping] = 0;
   const std::size_t nm = d.methods.size(), nf = c.spring_figure_dts.size();
@@ -122,15 +127,21 @@ ReportData run_report_studies(const ReportConfig& c, ProgressHook progress) {
   parallel_for(nm * (2 + nf + 1), d.workers, [&](std::size_t task) {
     const std::size_t m = task % nm, kind = task / nm;
     const std::size_t osc = c.oscillator.scene;
-    if (kind == 0) d.cannon[m] = figure_run<2>(m, c.projectile.scene, c.projectile.params, c.cannonball_dt, c.cannonball_t_end, 2001);
-    else if (kind == 1) d.energy[m] = figure_run<1>(m, osc, undamped, c.large_dt, c.energy_t_end, 2001);
-    else if (kind < 2 + nf)
-      d.spring[kind - 2][m] = figure_run<1>(m, osc, c.oscillator.params, c.spring_figure_dts[kind - 2], c.spring_figure_t_end, 2001);
-    else {
+    const std::size_t method = d.methods[m];
+    const bool figures = studies & kSceneFigures, stability = studies & kStabilityStudy;
+    if (kind == 0) {
+      if (figures) d.cannon[m] = figure_run<2>(method, c.projectile.scene, c.projectile.params, c.cannonball_dt, c.cannonball_t_end, 2001);
+    } else if (kind == 1) {
+      if (stability) d.energy[m] = figure_run<1>(method, osc, undamped, c.large_dt, c.energy_t_end, 2001);
+    } else if (kind < 2 + nf) {
+      if (figures)
+        d.spring[kind - 2][m] =
+            figure_run<1>(method, osc, c.oscillator.params, c.spring_figure_dts[kind - 2], c.spring_figure_t_end, 2001);
+    } else if (stability) {
       for (std::size_t g = 0; g < d.curve_damping.size(); ++g) {
         std::vector<double> p = c.oscillator.params;
         p[damping] = d.curve_damping[g];
-        d.curve_rate[m][g] = predicted_rate(d.methods[m], Spring(p), c.large_dt);
+        d.curve_rate[m][g] = predicted_rate(method, Spring(p), c.large_dt);
       }
     }
   });

@@ -49,12 +49,17 @@ class Page {
 class Section {
  public:
   virtual ~Section() = default;
+  // The shared studies it reads (ReportStudy bits): the report runs those of its chosen sections.
+  virtual unsigned needs() const { return 0; }
   virtual void study(const ReportData&) {}                                    // its own studies
   virtual void write_data(const ReportData&, const DataDir&) const {}         // its data files
   virtual std::vector<FigureSpec> figures(const ReportData&) const { return {}; }
   virtual std::string markdown(Page& page) const = 0;
 };
 
-std::vector<std::unique_ptr<Section>> report_sections();  // reports/document/sections/sections.cpp
+// The sections by name, in the report's order (reports/document/sections/sections.cpp): every one,
+// or those named in `chosen` (names from section_names()).
+std::vector<std::unique_ptr<Section>> report_sections(const std::vector<std::string>& chosen);
+std::vector<std::string> section_names();
 
 }  // namespace steplab

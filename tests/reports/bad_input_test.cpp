@@ -135,7 +135,14 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"report --config {dir}/config.json --out {dir}/r", "scaling.softbody", R"({"scaling": {"softbody": [301]}})"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "sweep_dts", R"({"stability": {"sweep_dts": [0.01, "x"]}})"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "not valid JSON", R"({"spring": {"mass": NaN}})"},  // JSON has no NaN
-        BadInput{"report --out {dir}/no/such/report", "no/such"}));
+        BadInput{"report --out {dir}/no/such/report", "no/such"},
+        // what the report covers: known names, each once, not an empty list, a numerical method
+        BadInput{"report --methods heun,rk4 --out {dir}/r", "heun"}, BadInput{"report --methods rk4,rk4 --out {dir}/r", "twice"},
+        BadInput{"report --methods ,rk4 --out {dir}/r", "--methods is empty"}, BadInput{"report --methods analytic --out {dir}/r", "numerical"},
+        BadInput{"report --sections summary,appendix --out {dir}/r", "appendix"}, BadInput{"report --sections summary, --out {dir}/r", "--sections is empty"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "'methods' must be a non-empty array", R"({"methods": []})"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "'sections' must be a non-empty array", R"({"sections": ["summary", 3]})"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "pendulum", R"({"methods": ["rk4", "pendulum"]})"}));
 
 }  // namespace
 }  // namespace steplab

@@ -14,6 +14,7 @@
 #include "analysis/scaling.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/document/report.hpp"
+#include "small_report.hpp"
 
 namespace steplab {
 namespace {
@@ -23,31 +24,6 @@ double& param(ReportScene& s, std::string_view name) {
   return s.params[static_cast<std::size_t>(param_index(scene_kernel(s.scene).params, name))];
 }
 
-// The report's sizes for a scene of run-time size.
-std::vector<int>& sizes_of(ReportConfig& c, std::string_view scene) {
-  for (ReportSizes& s : c.scaling)
-    if (scene_name(s.scene) == scene) return s.sizes;
-  throw std::logic_error("no sizes for that scene");
-}
-
-// Small studies, so the whole pipeline runs in about a second.
-ReportConfig small_config() {
-  ReportConfig c = default_report_config();
-  c.conv_points = 8;
-  c.conv_dt_min = 1e-3;
-  c.timing = false;
-  c.wp_points = 4;
-  c.wp_stiffnesses = {5, 5e4};
-  c.map_dt_points = 6;
-  c.map_damping_points = 4;
-  c.collision_dts = {0.002};
-  c.collision_t_end = 2;
-  c.energy_t_end = 10;
-  c.cannonball_t_end = 5;
-  sizes_of(c, "rope") = {4, 8};
-  sizes_of(c, "softbody") = {2, 3};
-  return c;
-}
 
 // The backticked names in `line` between `from` and `to` (to the end if `to` is empty).
 std::set<std::string> names_between(const std::string& line, const std::string& from, const std::string& to) {

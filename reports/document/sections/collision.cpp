@@ -12,6 +12,7 @@ namespace {
 
 class Collision : public Section {
  public:
+  unsigned needs() const override { return kCollisionStudy | kConvergenceStudy; }
   void write_data(const ReportData& d, const DataDir& dat) const override {
     dat.write("collision.json", collision_json(d.collision).dump(1) + "\n");
     for (const CollisionRun& r : d.collision.triangle) {

@@ -14,6 +14,7 @@ namespace {
 
 class Convergence : public Section {
  public:
+  unsigned needs() const override { return kConvergenceStudy; }
   void write_data(const ReportData& d, const DataDir& dat) const override {
     for (const ConvergenceResult& r : d.convergence)
       dat.write(fmt::format("convergence_{}.json", scene_name(r.config.scene)), convergence_json(r).dump(1) + "\n");

@@ -55,6 +55,7 @@ const WorkPoint* cheapest_point(const SceneWork& w, const std::string& method, d
 
 class Cost : public Section {
  public:
+  unsigned needs() const override { return kWorkPrecisionStudy; }
   void write_data(const ReportData& d, const DataDir& dat) const override {
     dat.write("work_precision.json", work_precision_json(d.work).dump(1) + "\n");
     for (const SceneWork& w : d.work.scenes)

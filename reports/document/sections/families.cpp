@@ -4,6 +4,7 @@
 // multistep methods; the pooled correlation as one line; and the stability regions in z = h lambda
 // with the spring's eigenvalue ray. Every sentence is computed from the thresholds and regions.
 #include <algorithm>
+#include <numeric>
 #include <cmath>
 #include <complex>
 #include <map>
@@ -40,8 +41,15 @@ Trend trend(const std::vector<double>& dt) {
   return up && down ? Trend::Mixed : up ? Trend::Rises : down ? Trend::Falls : Trend::StaysTheSame;
 }
 
+std::vector<std::size_t> every_method() {
+  std::vector<std::size_t> all(method_count());
+  std::iota(all.begin(), all.end(), 0);
+  return all;
+}
+
 class Families : public Section {
  public:
+  unsigned needs() const override { return kFindings; }
   void study(const ReportData& d) override {
     RegionConfig c;
     c.methods = d.methods;
@@ -101,6 +109,9 @@ class Families : public Section {
     bool turns = false;
     for (Family f : kReportFamilies) {
       const std::vector<std::size_t> fam = family_members(d.methods, f);
+      if (fam.size() == 1 && family_members(every_method(), f).size() > 1)  // the others not chosen
+        md += fmt::format("- **{}**: only {} of it is in this report, so no trend with the order can be read.\n", to_string(f),
+                          method_list(fam));
       if (fam.size() < 2) continue;
       std::string line = fmt::format("- **{}** ({}):", to_string(f), method_list(fam));
       Trend first = Trend::Mixed;
@@ -136,9 +147,13 @@ class Families : public Section {
     for (std::size_t m : d.methods)
       if (method_info(m).family == Family::Splitting) partitioned.push_back(m);
     if (!partitioned.empty())
-      md += fmt::format("{} have no stability region in this sense: they update x and v by different rules, so their step "
-                        "matrix is not a function R(h A) of one scalar z. Their stability is in the (dt, damping) maps "
-                        "(Stability section).\n\n", method_list(partitioned));
+      md += partitioned.size() == 1
+                ? fmt::format("{} has no stability region in this sense: it updates x and v by different rules, so its step "
+                              "matrix is not a function R(h A) of one scalar z. Its stability is in the (dt, damping) maps "
+                              "(Stability section).\n\n", method_list(partitioned))
+                : fmt::format("{} have no stability region in this sense: they update x and v by different rules, so their step "
+                              "matrix is not a function R(h A) of one scalar z. Their stability is in the (dt, damping) maps "
+                              "(Stability section).\n\n", method_list(partitioned));
     return md;
   }
 

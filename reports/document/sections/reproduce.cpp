@@ -1,5 +1,8 @@
 // The commands that reproduce every number of the report.
+#include <algorithm>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -9,26 +12,43 @@
 namespace steplab {
 namespace {
 
+// "a,b,c": the methods' names, as --methods takes them; without the exact flow if `numerical`.
+std::string comma_names(const std::vector<std::size_t>& methods, bool numerical) {
+  std::string out;
+  for (std::size_t m : methods)
+    if (!(numerical && method_info(m).exact_flow)) out += (out.empty() ? "" : ",") + std::string(method_info(m).name);
+  return out;
+}
+
 class Reproduce : public Section {
  public:
   std::string markdown(Page& page) const override {
     const ReportConfig& c = page.data.config;
+    const ReportData& d = page.data;
     std::string md = "## Reproduce\n\n```sh\n";
     md += "build/steplab report --config data/config.json   # this whole report\n";
-    for (const ConvergenceResult& r : page.data.convergence)
-      md += wrapped(fmt::format("build/steplab study convergence --scene {} --dt-max {} --dt-min {} --points {} --t-end {}",
-                                scene_name(r.config.scene), c.conv_dt_max, c.conv_dt_min, c.conv_points, c.conv_t_end));
-    md += wrapped(fmt::format("build/steplab study stability --threshold-dampings {} --map-dt-points {} --map-damping-points {} "
-                              "--map-dt-min {} --map-dt-max {}", join(c.threshold_dampings), c.map_dt_points,
-                              c.map_damping_points, c.map_dt_min, c.map_dt_max));
-    md += wrapped(fmt::format("build/steplab study damping --dts {}", join(c.sweep_dts)));
-    md += wrapped(fmt::format("build/steplab study collision --dts {} --t-end {} --triangle-dt {}", join(c.collision_dts),
-                              c.collision_t_end, c.triangle_dt));
-    md += wrapped(fmt::format("build/steplab study work-precision --points {} --stiffnesses {}{}", c.wp_points,
-                              join(c.wp_stiffnesses), c.timing ? "" : " --no-timing"));
-    for (const ReportSizes& s : c.scaling)
-      md += wrapped(fmt::format("build/steplab study scaling --scene {} --sizes {} --error {} --t-end {}{}", scene_name(s.scene),
-                                join(s.sizes), c.scaling_error, c.scaling_t_end, c.timing ? "" : " --no-timing"));
+    // Each study the report ran, on the report's methods (named where not all of them).
+    const std::string methods = d.methods.size() == method_count() ? "" : " --methods " + comma_names(d.methods, false);
+    const std::string numerical = d.methods.size() == method_count() ? "" : " --methods " + comma_names(d.methods, true);
+    for (const ConvergenceResult& r : d.convergence)
+      md += wrapped(fmt::format("build/steplab study convergence --scene {} --dt-max {} --dt-min {} --points {} --t-end {}{}",
+                                scene_name(r.config.scene), c.conv_dt_max, c.conv_dt_min, c.conv_points, c.conv_t_end, methods));
+    if (d.studies & kStabilityStudy) {
+      md += wrapped(fmt::format("build/steplab study stability --threshold-dampings {} --map-dt-points {} --map-damping-points {} "
+                                "--map-dt-min {} --map-dt-max {}{}", join(c.threshold_dampings), c.map_dt_points,
+                                c.map_damping_points, c.map_dt_min, c.map_dt_max, methods));
+      md += wrapped(fmt::format("build/steplab study damping --dts {}{}", join(c.sweep_dts), methods));
+    }
+    if (d.studies & kCollisionStudy)
+      md += wrapped(fmt::format("build/steplab study collision --dts {} --t-end {} --triangle-dt {}{}", join(c.collision_dts),
+                                c.collision_t_end, c.triangle_dt, numerical));
+    if (d.studies & kWorkPrecisionStudy)
+      md += wrapped(fmt::format("build/steplab study work-precision --points {} --stiffnesses {}{}{}", c.wp_points,
+                                join(c.wp_stiffnesses), c.timing ? "" : " --no-timing", numerical));
+    if (std::find(c.sections.begin(), c.sections.end(), "growth") != c.sections.end())
+      for (const ReportSizes& s : c.scaling)
+        md += wrapped(fmt::format("build/steplab study scaling --scene {} --sizes {} --error {} --t-end {}{}{}", scene_name(s.scene),
+                                  join(s.sizes), c.scaling_error, c.scaling_t_end, c.timing ? "" : " --no-timing", numerical));
     md += "```\n\n";
     md += "(with the scene parameters above as `--mass`, `--stiffness`, ... where they differ from the defaults). The data of "
           "every study is in `data/`.\n\n";

@@ -10,6 +10,7 @@ namespace {
 
 class SceneFigures : public Section {
  public:
+  unsigned needs() const override { return kSceneFigures; }
   void write_data(const ReportData& d, const DataDir& dat) const override {
     for (std::size_t i = 0; i < d.methods.size(); ++i) {
       const std::string m = name(d.methods[i]);

@@ -1,5 +1,7 @@
 #include "reports/document/sections/sections.hpp"
 
+#include <algorithm>
+
 #include "reports/document/section.hpp"
 
 namespace steplab {
@@ -8,9 +10,17 @@ namespace steplab {
 STEPLAB_REPORT_SECTIONS(STEPLAB_DECLARE_SECTION)
 #undef STEPLAB_DECLARE_SECTION
 
-std::vector<std::unique_ptr<Section>> report_sections() {
+std::vector<std::string> section_names() {
+#define STEPLAB_SECTION_NAME(n) #n,
+  return {STEPLAB_REPORT_SECTIONS(STEPLAB_SECTION_NAME)};
+#undef STEPLAB_SECTION_NAME
+}
+
+std::vector<std::unique_ptr<Section>> report_sections(const std::vector<std::string>& chosen) {
+  const auto wanted = [&](const char* n) { return std::find(chosen.begin(), chosen.end(), n) != chosen.end(); };
   std::vector<std::unique_ptr<Section>> out;
-#define STEPLAB_MAKE_SECTION(n) out.push_back(make_##n##_section());
+#define STEPLAB_MAKE_SECTION(n) \
+  if (wanted(#n)) out.push_back(make_##n##_section());
   STEPLAB_REPORT_SECTIONS(STEPLAB_MAKE_SECTION)
 #undef STEPLAB_MAKE_SECTION
   return out;

@@ -14,6 +14,7 @@ namespace {
 
 class Stability : public Section {
  public:
+  unsigned needs() const override { return kStabilityStudy; }
   void write_data(const ReportData& d, const DataDir& dat) const override {
     dat.write("stability.json", stability_json(d.config.oscillator.params, d.thresholds, d.sweep, &d.map).dump(1) + "\n");
     for (std::size_t i = 0; i < d.methods.size(); ++i) {

@@ -9,6 +9,7 @@ namespace {
 
 class Stable : public Section {
  public:
+  unsigned needs() const override { return kFindings; }
   std::string markdown(Page& page) const override {
     const Findings& f = page.findings;
     const ReportConfig& c = page.data.config;

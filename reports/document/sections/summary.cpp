@@ -12,6 +12,7 @@ namespace {
 
 class Summary : public Section {
  public:
+  unsigned needs() const override { return kFindings; }
   std::string markdown(Page& page) const override {
     const ReportConfig& c = page.data.config;
     const double gamma = c.damping();

@@ -1,0 +1,39 @@
+// The report's configuration with small studies, for the tests of reports/document/.
+#pragma once
+
+#include <stdexcept>
+#include <string_view>
+#include <vector>
+
+#include "analysis/kernel.hpp"
+#include "reports/document/report_config.hpp"
+
+namespace steplab {
+
+// The report's sizes for a scene of run-time size.
+inline std::vector<int>& sizes_of(ReportConfig& c, std::string_view scene) {
+  for (ReportSizes& s : c.scaling)
+    if (scene_name(s.scene) == scene) return s.sizes;
+  throw std::logic_error("no sizes for that scene");
+}
+
+// Small studies, so the whole pipeline runs in about a second.
+inline ReportConfig small_config() {
+  ReportConfig c = default_report_config();
+  c.conv_points = 8;
+  c.conv_dt_min = 1e-3;
+  c.timing = false;
+  c.wp_points = 4;
+  c.wp_stiffnesses = {5, 5e4};
+  c.map_dt_points = 6;
+  c.map_damping_points = 4;
+  c.collision_dts = {0.002};
+  c.collision_t_end = 2;
+  c.energy_t_end = 10;
+  c.cannonball_t_end = 5;
+  sizes_of(c, "rope") = {4, 8};
+  sizes_of(c, "softbody") = {2, 3};
+  return c;
+}
+
+}  // namespace steplab
