@@ -98,6 +98,16 @@ TEST(ReportChoice, AFamilyWithOneChosenMethodClaimsNoTrend) {
   EXPECT_NE(md.find("- **symplectic splitting** (`symplectic_euler` and `velocity_verlet`):"), std::string::npos) << md;
 }
 
+TEST(ReportChoice, ACrossoverNeedsBothKinds) {  // no explicit method chosen: no claim that implicit pays
+  ReportConfig c = chosen({"implicit_euler", "bdf2"}, {"growth"});
+  c.scaling_t_end = 0.5;
+  const std::string md = report_markdown(build_report(c), "png", "");
+  EXPECT_NE(md.find("- This report has no explicit fixed-step method, so where implicit pays is not read here."), std::string::npos)
+      << md;
+  EXPECT_EQ(md.find("cheaper than every explicit"), std::string::npos);
+  EXPECT_EQ(md.find("At none of these sizes"), std::string::npos);
+}
+
 TEST(ReportChoice, NamesInTheReportsOrderAndRefused) {
   ReportConfig c = small_config();
   choose_sections(c, {"reproduce", "summary"}, "sections");

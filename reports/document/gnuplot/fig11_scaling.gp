@@ -24,6 +24,14 @@ do for [f=1:nfam+1] {
 set title "explicit methods: dt* against N"
 set key bottom left
 set ylabel "dt* (s)"
-plot for [m in limited] datadir."/scaling_".m.".dat" using 1:($4 > 0 && $4 < 1e300 ? $4 : 1/0) with points lt mlt(m) title m, \
-     for [m in limited] datadir."/scaling_".m.".dat" using 1:($5 > 0 && $5 < 1e300 ? $5 : 1/0) with lines lt mlt(m) dt 2 notitle
+if (words(limited) > 0) {
+  plot for [m in limited] datadir."/scaling_".m.".dat" using 1:($4 > 0 && $4 < 1e300 ? $4 : 1/0) with points lt mlt(m) title m, \
+       for [m in limited] datadir."/scaling_".m.".dat" using 1:($5 > 0 && $5 < 1e300 ? $5 : 1/0) with lines lt mlt(m) dt 2 notitle
+} else {  # none among the report's methods: an empty panel that says so
+  unset logscale
+  set xrange [0:1]; set yrange [0:1]; unset xtics; unset ytics
+  set label 1 "no explicit method of this report" at graph 0.5, 0.5 center
+  plot -1 notitle
+  unset label 1
+}
 unset multiplot

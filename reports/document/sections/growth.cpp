@@ -41,7 +41,14 @@ std::string exponents_table(const ScalingResult& r) {
 // size, in cost and in force evaluations, with their counts.
 std::string findings(const ScalingResult& r) {
   const ScalingConfig& c = r.config;
-  std::string md = r.crossover == 0
+  const auto any_row = [&](bool implicit) {
+    return std::any_of(r.rows.begin(), r.rows.end(), [&](const ScalingRow& w) { return !w.adaptive && w.implicit == implicit; });
+  };
+  const bool explicit_ones = any_row(false), implicit_ones = any_row(true);
+  std::string md = !explicit_ones || !implicit_ones  // a crossover needs both among the report's methods
+                       ? fmt::format("- This report has no {} fixed-step method, so where implicit pays is not read here.\n",
+                                     explicit_ones ? "implicit" : "explicit")
+                   : r.crossover == 0
                        ? fmt::format("- At none of these sizes is an implicit method's whole run cheaper than every explicit one's.\n")
                        : fmt::format("- From N = {} on (of these sizes), `{}` is cheaper than every explicit method.\n",
                                      scaling_masses(c, r.crossover), r.crossover_method);

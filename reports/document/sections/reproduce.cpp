@@ -16,7 +16,10 @@ namespace {
 std::string comma_names(const std::vector<std::size_t>& methods, bool numerical) {
   std::string out;
   for (std::size_t m : methods)
-    if (!(numerical && method_info(m).exact_flow)) out += (out.empty() ? "" : ",") + std::string(method_info(m).name);
+    if (!(numerical && method_info(m).exact_flow)) {
+      if (!out.empty()) out += ',';
+      out += method_info(m).name;
+    }
   return out;
 }
 
