@@ -59,7 +59,7 @@ performance: bench
 # whole report, for the up-to-date test) and package.plugin (a project that instantiates the same
 # templates on a new method and scene; package.consumer still builds and links one against the
 # sanitized package). Both run in `make test`.
-SANITIZE_SKIP ?= ReportGrowth|ReportInterrupted|ReportUpToDate|package\.plugin|ReportFindings\.(FollowTheDataWithoutDamping|FollowTheDataWithAStiffSpring|ChangedParameters)|WorkPrecision\.(Rk4Accuracy|BdfSteps|AdaptiveErrors|ImplicitPays)
+SANITIZE_SKIP ?= ReportGrowth|ReportChoice\.(AChosenMethodHasTheFullReportsNumbers|ACrossoverNeedsBothKinds)|ReportInterrupted|ReportUpToDate|package\.plugin|ReportFindings\.(FollowTheDataWithoutDamping|FollowTheDataWithAStiffSpring|ChangedParameters)|WorkPrecision\.(Rk4Accuracy|BdfSteps|AdaptiveErrors|ImplicitPays)
 test-sanitize: deps
 	@tools/install-deps test
 	@cmake -S . -B $(BUILD)-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSTEPLAB_SANITIZE=ON -DSTEPLAB_BUILD_BENCH=OFF -DSTEPLAB_WERROR=OFF >/dev/null
