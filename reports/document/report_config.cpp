@@ -81,14 +81,8 @@ std::vector<double> scene_values(const Json& j, std::size_t scene) {
   return out;
 }
 
-std::string joined(const std::vector<std::string>& names) {
-  std::string out;
-  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
-  return out;
-}
-
-// Indices of `names` in a table of `count` entries found by `find`, sorted into the table's order;
-// UsageError for an empty list, an unknown or a repeated name.
+// Indices of `names` in a table, each found by `find`, sorted into the table's order; UsageError
+// for an empty list or name, an unknown or a repeated name (`accepted` lists the table).
 template <class Find>
 std::vector<std::size_t> chosen(const std::vector<std::string>& names, const std::string& what, Find find,
                                 const std::string& accepted) {
@@ -121,7 +115,7 @@ void choose_sections(ReportConfig& c, const std::vector<std::string>& names, con
     return it == all.end() ? std::nullopt : std::optional<std::size_t>(static_cast<std::size_t>(it - all.begin()));
   };
   c.sections.clear();
-  for (std::size_t i : chosen(names, what, find, joined(all))) c.sections.push_back(all[i]);
+  for (std::size_t i : chosen(names, what, find, fmt::format("{}", fmt::join(all, ", ")))) c.sections.push_back(all[i]);
 }
 
 double ReportConfig::damping() const {
