@@ -51,15 +51,20 @@ performance: bench
 # The suite under AddressSanitizer and UndefinedBehaviorSanitizer, in its own build folder.
 # Without -Werror: under the sanitizers GCC 12 reports -Wmaybe-uninitialized inside libstdc++
 # (<regex>, std::function) that the normal build, which CI holds to -Werror, does not.
-# A study runs 10-20x slower there, so the tests that run the same code again on whole reports
-# or work-precision studies with other parameters run in `make test` only (SANITIZE_SKIP: they
-# were more than half the sanitized suite's time); every other test runs here, with a whole
-# report (ReportFindings.FollowTheDataWithDefaults) and a work-precision study
-# (WorkPrecision.CountsWhatTheFormulasSay) among them. Also skipped here: ReportUpToDate (a second
-# whole report, for the up-to-date test) and package.plugin (a project that instantiates the same
-# templates on a new method and scene; package.consumer still builds and links one against the
-# sanitized package). Both run in `make test`.
-SANITIZE_SKIP ?= ReportGrowth|ReportChoice\.(AChosenMethodHasTheFullReportsNumbers|ACrossoverNeedsBothKinds)|ReportInterrupted|ReportUpToDate|package\.plugin|ReportFindings\.(FollowTheDataWithoutDamping|FollowTheDataWithAStiffSpring|ChangedParameters)|WorkPrecision\.(Rk4Accuracy|BdfSteps|AdaptiveErrors|ImplicitPays)
+# A study runs 10-20x slower there, so a test that runs code again which another sanitized test
+# already runs, to check a property of the numbers rather than of memory, runs in `make test` only
+# (SANITIZE_SKIP; they were more than half the sanitized suite's time):
+# - whole reports and studies with other parameters: ReportFindings, ReportGrowth, ReportChoice's
+#   two, ReportInterrupted, ReportUpToDate, WorkPrecision's accuracy tests. Here a whole report is
+#   made by ReportSheet (the hand-in, through the command line, gnuplot and pandoc), every
+#   section by ReportChoice and ReportScenes, a work-precision study by WorkPrecision.CountsWhat...
+# - the same bytes for one and two threads (Determinism, StabilityJson.SameForOneAndTwoThreads):
+#   every study still runs here, split in parts and merged (Shards).
+# - the allocation counts on the rope and the soft body as they grow (Allocation.PerStepCount...):
+#   every method still steps every scene here (Allocation.NoneInAnyStep...).
+# - package.plugin (a project that instantiates the same templates on a new method and scene;
+#   package.consumer still builds and links one against the sanitized package).
+SANITIZE_SKIP ?= ReportGrowth|ReportChoice\.(AChosenMethodHasTheFullReportsNumbers|ACrossoverNeedsBothKinds)|ReportInterrupted|ReportUpToDate|package\.plugin|ReportFindings|WorkPrecision\.(Rk4Accuracy|BdfSteps|AdaptiveErrors|ImplicitPays)|Determinism\.SameBytes|StabilityJson\.SameForOneAndTwoThreads|Allocation\.PerStepCount|ReportSheet\.NumbersAreTheFullReports
 test-sanitize: deps
 	@tools/install-deps test
 	@cmake -S . -B $(BUILD)-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSTEPLAB_SANITIZE=ON -DSTEPLAB_BUILD_BENCH=OFF -DSTEPLAB_WERROR=OFF >/dev/null

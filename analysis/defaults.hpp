@@ -32,6 +32,9 @@ inline constexpr std::string_view kContactBodyScene = "falling";
 // cannon ball, and the slides' two contact scenes (the collision study's).
 inline constexpr std::string_view kSheetOscillator = "spring";
 inline constexpr std::string_view kSheetProjectile = "cannonball";
+// The sheet's four methods and its analytic solution (`steplab report --sheet`).
+inline constexpr std::array<std::string_view, 5> kSheetMethods{"explicit_euler", "symplectic_euler", "explicit_midpoint",
+                                                               "implicit_euler", "analytic"};
 
 // The old framework's -testcase values that name a scene (its others name a measurement on the
 // first), and the one it starts from.

@@ -13,6 +13,8 @@
 #                                            so the spring's runs step two at a time)
 #   mysteplab report --methods heun,explicit_euler,explicit_midpoint,rk4 --sections ...
 #                                            its own report: those methods, the full report's numbers
+#   mysteplab report --scenes pendulum ...   a report on the user's scene: its convergence, the
+#                                            sections it cannot feed left out with one line each
 # and a scene of run-time size (beads on a string, exact modes) that run and the studies of
 # convergence, stability and scaling take by what it declares.
 # Usage: plugin_test.sh BUILD_DIR [extra cmake arguments for the project]
@@ -315,5 +317,20 @@ for m in ["heun", "explicit_euler", "explicit_midpoint", "rk4"]:
 for m in ["rk3", "symplectic_euler", "bdf2", "heun_claims_3"]:
     assert f"`{m}`" not in mine, m
 print("heun: a report of its own, beside the methods chosen")
+EOF
+# ... and a report on the user's scene: the sections that need the spring left out with one line
+# each, its convergence against the reference solution, the same fits as `study convergence`.
+echo '{"convergence": {"t_end": 1}}' > pendulum.json
+"$tool" report --config pendulum.json --scenes pendulum --methods heun,rk4 --sections summary,convergence,cost,reproduce \
+  --out pendulum >/dev/null
+python3 - pendulum/report.md pendulum/data/convergence_pendulum.json conv.json <<'EOF'
+import sys, json
+md, rep, study = open(sys.argv[1]).read(), json.load(open(sys.argv[2])), json.load(open(sys.argv[3]))
+assert "*Left out: Summary (it needs `spring`, not among the chosen scenes).*" in md, md
+assert "*Left out: Cost: work against precision (it needs `spring`" in md, md
+assert "pendulum has no exact solution" in md.replace("Pendulum", "pendulum"), md
+orders = lambda d: {f["method"]: f["order"] for f in d["fits"]}
+assert orders(rep) == orders(study), (orders(rep), orders(study))
+print("pendulum: a report of its own, its orders those of study convergence")
 EOF
 echo "plugin ok"

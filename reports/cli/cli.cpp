@@ -104,7 +104,8 @@ std::string_view value_kind(std::string_view option) {
       {"--methods", "NAME,..."},      {"--dts", "NUMBER,..."},        {"--threshold-dampings", "NUMBER,..."},
       {"--dampings", "NUMBER,..."},   {"--method", "NAME"},           {"--scene", "NAME"},
       {"--error", "NAME"},            {"--testcase", "NAME"},         {"--json", "FILE"},
-      {"--config", "FILE"},           {"--out", "FOLDER"}};
+      {"--config", "FILE"},           {"--out", "FOLDER"},            {"--scenes", "NAME,..."},
+      {"--sections", "NAME,..."}};
   for (const auto& [name, kind] : kinds)
     if (name == option) return kind;
   return "NUMBER";  // steps, times, ranges and every scene parameter
@@ -229,7 +230,9 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   rep_cmd->add_option("--out", rep.out, "output folder")->capture_default_str();
   rep_cmd->add_option("--config", rep.config, "JSON file overriding any study parameter (see --print-config)");
   CLI::Option* rep_methods = rep_cmd->add_option("--methods", rep.methods, "comma-separated methods the report covers (default: every one, analytic included)");
-  CLI::Option* rep_sections = rep_cmd->add_option("--sections", rep.sections, "comma-separated sections, in any order (default: all): " + fmt::format("{}", fmt::join(section_names(), ", ")));
+  CLI::Option* rep_scenes = rep_cmd->add_option("--scenes", rep.scenes, "comma-separated scenes the report covers (default: the report's own; a section that needs another is left out with one line): " + scene_list());
+  CLI::Option* rep_sections = rep_cmd->add_option("--sections", rep.sections, "comma-separated sections, in any order (default: the full report's): " + fmt::format("{}", fmt::join(section_names(), ", ")));
+  rep_cmd->add_flag("--sheet", rep.sheet, "the exercise's hand-in: the sheet's four methods and the analytic solution on the cannon ball and the spring, in a few pages (--config, --methods, --scenes and --sections apply over it)");
   rep_cmd->add_flag("--force", rep.force, "redo the report even if it is up to date");
   rep_cmd->add_flag("--print-config", rep.print_config, "print the configuration (defaults, or --config applied) and exit");
 
@@ -257,7 +260,8 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
     if (wp_cmd->parsed()) return work_precision_command(wp, ctx);
     if (scaling_cmd->parsed()) return scaling_command(scaling, ctx);
     if (rep_cmd->parsed()) {
-      rep.methods_given = rep_methods->count() > 0, rep.sections_given = rep_sections->count() > 0;
+      rep.methods_given = rep_methods->count() > 0, rep.scenes_given = rep_scenes->count() > 0,
+      rep.sections_given = rep_sections->count() > 0;
       return report_command(rep, ctx);
     }
     if (check_cmd->parsed()) return check_command(check, ctx);

@@ -161,8 +161,9 @@ namespace steplab {
 struct ReportArgs {
   std::string out = "report";
   std::string config;
-  std::string methods, sections;  // comma-separated; over the config's (default: all)
-  bool methods_given = false, sections_given = false;  // even as "" (refused: an empty list)
+  std::string methods, scenes, sections;  // comma-separated; over the config's
+  bool methods_given = false, scenes_given = false, sections_given = false;  // even as "" (refused: an empty list)
+  bool sheet = false;  // the exercise's hand-in (sheet_report_config) as the base
   bool force = false;
   bool print_config = false;
 };

@@ -296,9 +296,13 @@ int collision_command(CollisionArgs& a, Context& ctx) {
 namespace steplab {
 
 int report_command(ReportArgs& a, Context& ctx) {
-  ReportConfig c = a.config.empty() ? default_report_config() : read_report_config(a.config);
-  if (a.methods_given) choose_methods(c, a.methods.empty() ? std::vector<std::string>{} : split_list(a.methods), "--methods");
-  if (a.sections_given) choose_sections(c, a.sections.empty() ? std::vector<std::string>{} : split_list(a.sections), "--sections");
+  const ReportConfig base = a.sheet ? sheet_report_config() : default_report_config();
+  ReportConfig c = a.config.empty() ? base : read_report_config(a.config, base);
+  const auto list = [](const std::string& text) { return text.empty() ? std::vector<std::string>{} : split_list(text); };
+  if (a.methods_given) choose_methods(c, list(a.methods), "--methods");
+  if (a.scenes_given) choose_scenes(c, list(a.scenes), "--scenes");
+  if (a.sections_given) choose_sections(c, list(a.sections), "--sections");
+  check_choice(c, "--methods");
   if (a.print_config) {
     std::fputs((report_config_json(c).dump(1) + "\n").c_str(), stdout);
     return 0;

@@ -46,13 +46,39 @@ std::string Page::figure(const std::string& file, const std::string& caption) {
   return fmt::format("![{}](figures/{}.{})\n\n", label, file, ext_);
 }
 
+std::string uncovered(const ReportConfig& c, std::initializer_list<std::size_t> scenes) {
+  std::vector<std::string> missing;
+  for (std::size_t s : scenes)
+    if (!c.covers(s)) missing.push_back(fmt::format("`{}`", scene_name(s)));
+  if (missing.empty()) return {};
+  return fmt::format("it needs {}, not among the chosen scenes", and_list(missing));
+}
+
+namespace {
+
+// A section the config's choice leaves out (Section::missing): one line in its place.
+class LeftOut : public Section {
+ public:
+  LeftOut(std::string title, std::string why) : title_(std::move(title)), why_(std::move(why)) {}
+  std::string title() const override { return title_; }
+  std::string markdown(Page&) const override { return fmt::format("*Left out: {} ({}).*\n\n", title_, why_); }
+
+ private:
+  std::string title_, why_;
+};
+
+}  // namespace
+
 Report::Report() = default;
 Report::Report(Report&&) noexcept = default;
 Report::~Report() = default;
 
 Report build_report(const ReportConfig& config, ProgressHook progress) {
   Report r;
-  r.sections = report_sections(config.sections);
+  for (std::unique_ptr<Section>& s : report_sections(config.sections)) {
+    const std::string why = s->missing(config);
+    r.sections.push_back(why.empty() ? std::move(s) : std::make_unique<LeftOut>(s->title(), why));
+  }
   unsigned studies = 0;
   for (const auto& s : r.sections) studies |= s->needs();
   r.data = run_report_studies(config, studies, progress);
@@ -63,9 +89,10 @@ Report build_report(const ReportConfig& config, ProgressHook progress) {
 
 std::string report_markdown(const Report& r, const std::string& ext, const std::string& footer) {
   std::string md = "# steplab report: how time integrators behave, family by family, on the course's scenes\n\n";
-  md += fmt::format("The hanging spring: {}. Every number below was measured by the commands at the end of this report; "
-                    "every sentence that states a finding was generated from those numbers.\n\n",
-                    params_text(r.data.config.oscillator.scene, r.data.config.oscillator.params));
+  const ReportScene& spring = r.data.config.oscillator;
+  if (r.data.config.covers(spring.scene)) md += fmt::format("The hanging spring: {}. ", params_text(spring.scene, spring.params));
+  md += "Every number below was measured by the commands at the end of this report; every sentence that states a finding was "
+        "generated from those numbers.\n\n";
   Page page(r.data, r.findings, ext);
   for (const auto& s : r.sections) md += s->markdown(page);
   return md + "---\n\n" + footer + "\n";

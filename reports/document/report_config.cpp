@@ -108,6 +108,17 @@ void choose_methods(ReportConfig& c, const std::vector<std::string>& names, cons
     throw UsageError(fmt::format("{} has no numerical method; accepted: at least one of {}", what, method_names()));
 }
 
+void choose_scenes(ReportConfig& c, const std::vector<std::string>& names, const std::string& what) {
+  c.covered = chosen(names, what, find_scene, scene_list());
+}
+
+void check_choice(const ReportConfig& c, const std::string& what) {
+  for (std::size_t m : c.methods)
+    if (std::none_of(c.covered.begin(), c.covered.end(), [&](std::size_t s) { return applies(m, s); }))
+      throw UsageError(fmt::format("{}: '{}' runs on none of the chosen scenes (it needs a scene with an exact solution); "
+                                   "accepted: methods that run on at least one of them", what, method_info(m).name));
+}
+
 void choose_sections(ReportConfig& c, const std::vector<std::string>& names, const std::string& what) {
   const std::vector<std::string> all = section_names();
   const auto find = [&](const std::string& n) -> std::optional<std::size_t> {
@@ -118,6 +129,29 @@ void choose_sections(ReportConfig& c, const std::vector<std::string>& names, con
   for (std::size_t i : chosen(names, what, find, fmt::format("{}", fmt::join(all, ", ")))) c.sections.push_back(all[i]);
 }
 
+bool ReportConfig::covers(std::size_t scene) const {
+  return std::find(covered.begin(), covered.end(), scene) != covered.end();
+}
+
+std::vector<std::size_t> ReportConfig::own_scenes() const {
+  std::vector<std::size_t> out;
+  for (const ReportScene* s : scenes()) out.push_back(s->scene);
+  for (const ReportSizes& s : scaling) out.push_back(s.scene);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+std::vector<std::size_t> ReportConfig::convergence_scenes() const {
+  std::vector<std::size_t> out;
+  for (const ReportScene* s : scenes())
+    if (covers(s->scene) && scene_kernel(s->scene).has_exact) out.push_back(s->scene);
+  const std::vector<std::size_t> own = own_scenes();
+  for (std::size_t s : covered)
+    if (std::find(own.begin(), own.end(), s) == own.end() && scene_kernel(s).size_param < 0) out.push_back(s);
+  return out;
+}
+
 double ReportConfig::damping() const {
   return oscillator.params[static_cast<std::size_t>(scene_kernel(oscillator.scene).damping_param)];
 }
@@ -125,7 +159,7 @@ double ReportConfig::damping() const {
 ReportConfig default_report_config() {
   ReportConfig c;
   for (std::size_t m = 0; m < method_count(); ++m) c.methods.push_back(m);
-  c.sections = section_names();
+  c.sections = full_report_sections();
   for (const auto& [role, name] : {std::pair{&c.oscillator, kSheetOscillator}, {&c.projectile, kSheetProjectile},
                                    {&c.rebound, kReboundScene}, {&c.body, kContactBodyScene}}) {
     role->scene = scene_index(name);
@@ -133,6 +167,19 @@ ReportConfig default_report_config() {
   }
   for (std::size_t s = 0; s < scene_count(); ++s)
     if (scales(scene_kernel(s))) c.scaling.push_back({s, scaling_defaults(scene_name(s)).report_sizes});
+  c.covered = c.own_scenes();
+  return c;
+}
+
+// The hand-in: the sheet's questions on its scenes, the figures and orders, and how to redo it.
+ReportConfig sheet_report_config() {
+  ReportConfig c = default_report_config();
+  c.methods.clear();
+  for (std::string_view m : kSheetMethods) c.methods.push_back(*find_method(m));
+  std::sort(c.methods.begin(), c.methods.end());
+  c.covered = {c.oscillator.scene, c.projectile.scene};
+  std::sort(c.covered.begin(), c.covered.end());
+  c.sections = {"sheet", "summary", "stable", "order", "scenes", "convergence", "reproduce"};
   return c;
 }
 
@@ -140,6 +187,8 @@ Json report_config_json(const ReportConfig& c) {
   Json j;
   j["methods"] = Json::array();
   for (std::size_t m : c.methods) j["methods"].push_back(std::string(method_info(m).name));
+  j["scenes"] = Json::array();
+  for (std::size_t s : c.covered) j["scenes"].push_back(std::string(scene_name(s)));
   j["sections"] = c.sections;
   for (const ReportScene* s : c.scenes()) j[std::string(scene_name(s->scene))] = scene_params_json(s->scene, s->params);
   j["convergence"] = {{"dt_max", c.conv_dt_max}, {"dt_min", c.conv_dt_min}, {"points", c.conv_points},
@@ -164,12 +213,14 @@ Json report_config_json(const ReportConfig& c) {
   return j;
 }
 
-ReportConfig report_config_from_json(const Json& user) {
-  Json j = report_config_json(default_report_config());
+ReportConfig report_config_from_json(const Json& user, const ReportConfig& base) {
+  Json j = report_config_json(base);
   merge(j, user, "");
-  ReportConfig c = default_report_config();
+  ReportConfig c = base;
   choose_methods(c, j["methods"].get<std::vector<std::string>>(), "config: methods");
+  choose_scenes(c, j["scenes"].get<std::vector<std::string>>(), "config: scenes");
   choose_sections(c, j["sections"].get<std::vector<std::string>>(), "config: sections");
+  check_choice(c, "config: methods");
   for (ReportScene* s : c.scenes()) s->params = scene_values(j[std::string(scene_name(s->scene))], s->scene);
   const Json& cv = j["convergence"];
   c.conv_dt_max = num(cv["dt_max"], "convergence.dt_max", Bound::Positive);
@@ -225,7 +276,7 @@ ReportConfig report_config_from_json(const Json& user) {
   return c;
 }
 
-ReportConfig read_report_config(const std::string& path) {
+ReportConfig read_report_config(const std::string& path, const ReportConfig& base) {
   std::ifstream in(path);
   if (!in) throw UsageError(fmt::format("--config '{}' cannot be read; accepted: a readable JSON file", path));
   std::stringstream text;
@@ -236,7 +287,7 @@ ReportConfig read_report_config(const std::string& path) {
   } catch (const nlohmann::json::parse_error& e) {
     throw UsageError(fmt::format("--config '{}' is not valid JSON (at byte {}); accepted: a JSON object", path, e.byte));
   }
-  return report_config_from_json(j);
+  return report_config_from_json(j, base);
 }
 
 }  // namespace steplab

@@ -27,9 +27,20 @@ struct ReportSizes {
 
 struct ReportConfig {
   // What the report covers: methods (table indices, in the table's order; the exact flow may be
-  // one) and sections (names, in the report's order). Default: all of each.
+  // one), scenes (table indices, in the table's order) and sections (names, in the report's
+  // order). Default: every method, the report's own scenes (own_scenes()), the full report's
+  // sections. A section that needs a scene not covered is left out with one line saying so.
   std::vector<std::size_t> methods;
+  std::vector<std::size_t> covered;
   std::vector<std::string> sections;
+  bool covers(std::size_t scene) const;
+  // The report's own scenes: the four below and the scaling ones. (The cost section's stiff chain
+  // is its own contrast to the spring, not a scene of the report.)
+  std::vector<std::size_t> own_scenes() const;
+  // Convergence: the covered scenes below that have an exact solution, in that order, then each
+  // covered scene that is not one of the report's own (a user's: against its exact solution or,
+  // without one, a reference solution) and not of run-time size, in the table's order.
+  std::vector<std::size_t> convergence_scenes() const;
   // The report's scenes (analysis/defaults.hpp): the sheet's damped spring (the stability study's
   // oscillator) and cannon ball, and the collision study's rebound scene and contact body. The
   // config file keys each by its scene's name.
@@ -66,13 +77,20 @@ struct ReportConfig {
 };
 
 ReportConfig default_report_config();
+// The exercise's hand-in (`steplab report --sheet`): the sheet's four methods and the analytic
+// solution (analysis/defaults.hpp) on its two scenes, in the hand-in's sections.
+ReportConfig sheet_report_config();
 nlohmann::ordered_json report_config_json(const ReportConfig& c);
-// Defaults overridden by the keys of `user`; UsageError("config: ...") for anything wrong.
-ReportConfig report_config_from_json(const nlohmann::ordered_json& user);
-ReportConfig read_report_config(const std::string& path);  // UsageError if unreadable or malformed
-// `c` with its methods or sections chosen by name (`what` names the option in messages); UsageError
-// for an unknown or repeated name, an empty list, or methods without a numerical one.
+// `base` overridden by the keys of `user`; UsageError("config: ...") for anything wrong.
+ReportConfig report_config_from_json(const nlohmann::ordered_json& user, const ReportConfig& base = default_report_config());
+ReportConfig read_report_config(const std::string& path, const ReportConfig& base = default_report_config());
+// `c` with its methods, scenes or sections chosen by name (`what` names the option in messages);
+// UsageError for an unknown or repeated name, an empty list, or methods without a numerical one.
 void choose_methods(ReportConfig& c, const std::vector<std::string>& names, const std::string& what);
+void choose_scenes(ReportConfig& c, const std::vector<std::string>& names, const std::string& what);
 void choose_sections(ReportConfig& c, const std::vector<std::string>& names, const std::string& what);
+// UsageError if a chosen method runs on none of the chosen scenes (the exact flow on scenes
+// without an exact solution).
+void check_choice(const ReportConfig& c, const std::string& what);
 
 }  // namespace steplab

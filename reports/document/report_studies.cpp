@@ -21,11 +21,16 @@ std::vector<double> with_values(std::vector<double> v, std::initializer_list<dou
   return v;
 }
 
-ConvergenceConfig convergence_config(const ReportData& d, const ReportScene& scene, const std::vector<std::size_t>& methods) {
+// On a scene the report's own roles do not name (a user's), its default parameters; the methods
+// that run on it (not the exact flow on a scene without an exact solution).
+ConvergenceConfig convergence_config(const ReportData& d, std::size_t scene) {
   ConvergenceConfig cc;
-  cc.scene = scene.scene;
-  cc.params = scene.params;
-  cc.methods = methods;
+  cc.scene = scene;
+  cc.params = default_param_values(scene);
+  for (const ReportScene* s : d.config.scenes())
+    if (s->scene == scene) cc.params = s->params;
+  for (std::size_t m : d.methods)
+    if (applies(m, scene)) cc.methods.push_back(m);
   const ReportConfig& c = d.config;
   cc.t_end = c.conv_t_end;
   cc.dt_max = c.conv_dt_max;
@@ -71,8 +76,7 @@ ReportData run_report_studies(const ReportConfig& c, unsigned studies, ProgressH
   const std::size_t damping = static_cast<std::size_t>(scene_kernel(c.oscillator.scene).damping_param);
 
   if (studies & kConvergenceStudy)
-    for (const ReportScene* s : c.scenes())
-      if (scene_kernel(s->scene).has_exact) d.convergence.push_back(convergence_study(convergence_config(d, *s, d.methods)));
+    for (std::size_t s : c.convergence_scenes()) d.convergence.push_back(convergence_study(convergence_config(d, s)));
 
   // The stability study is the damped spring's (analysis/stability.hpp): the oscillator is one.
   const Spring spring(c.oscillator.params);
@@ -128,13 +132,15 @@ ReportData run_report_studies(const ReportConfig& c, unsigned studies, ProgressH
     const std::size_t m = task % nm, kind = task / nm;
     const std::size_t osc = c.oscillator.scene;
     const std::size_t method = d.methods[m];
-    const bool figures = studies & kSceneFigures, stability = studies & kStabilityStudy;
+    const bool stability = studies & kStabilityStudy;
+    const bool figures = studies & kSceneFigures, cannon = figures && c.covers(c.projectile.scene),
+               springs = figures && c.covers(osc);
     if (kind == 0) {
-      if (figures) d.cannon[m] = figure_run<2>(method, c.projectile.scene, c.projectile.params, c.cannonball_dt, c.cannonball_t_end, 2001);
+      if (cannon) d.cannon[m] = figure_run<2>(method, c.projectile.scene, c.projectile.params, c.cannonball_dt, c.cannonball_t_end, 2001);
     } else if (kind == 1) {
       if (stability) d.energy[m] = figure_run<1>(method, osc, undamped, c.large_dt, c.energy_t_end, 2001);
     } else if (kind < 2 + nf) {
-      if (figures)
+      if (springs)
         d.spring[kind - 2][m] =
             figure_run<1>(method, osc, c.oscillator.params, c.spring_figure_dts[kind - 2], c.spring_figure_t_end, 2001);
     } else if (stability) {

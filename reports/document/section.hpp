@@ -6,6 +6,7 @@
 #pragma once
 
 #include <filesystem>
+#include <initializer_list>
 #include <memory>
 #include <string>
 #include <vector>
@@ -51,15 +52,25 @@ class Section {
   virtual ~Section() = default;
   // The shared studies it reads (ReportStudy bits): the report runs those of its chosen sections.
   virtual unsigned needs() const { return 0; }
+  // Why it cannot be made from the config's choice (a scene it needs is not covered), or "": the
+  // report then shows one line in its place, "*Left out: <title> (<reason>).*", and runs nothing for it.
+  virtual std::string missing(const ReportConfig&) const { return {}; }
+  virtual std::string title() const = 0;
   virtual void study(const ReportData&) {}                                    // its own studies
   virtual void write_data(const ReportData&, const DataDir&) const {}         // its data files
   virtual std::vector<FigureSpec> figures(const ReportData&) const { return {}; }
   virtual std::string markdown(Page& page) const = 0;
 };
 
-// The sections by name, in the report's order (reports/document/sections/sections.cpp): every one,
-// or those named in `chosen` (names from section_names()).
+// The sections by name, in the report's order (reports/document/sections/sections.cpp): those
+// named in `chosen` (names from section_names()); the full report's (its default) and the hand-in's
+// (`--sheet`) are two choices of them.
 std::vector<std::unique_ptr<Section>> report_sections(const std::vector<std::string>& chosen);
 std::vector<std::string> section_names();
+std::vector<std::string> full_report_sections();
+
+// A section's `missing()` for the scenes it needs: "" if the config covers each of them, else
+// "it needs `bounce` and `falling`, not among the chosen scenes".
+std::string uncovered(const ReportConfig& c, std::initializer_list<std::size_t> scenes);
 
 }  // namespace steplab

@@ -142,7 +142,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"report --sections summary,appendix --out {dir}/r", "appendix"}, BadInput{"report --sections summary, --out {dir}/r", "--sections is empty"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "'methods' must be a non-empty array", R"({"methods": []})"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "'sections' must be a non-empty array", R"({"sections": ["summary", 3]})"},
-        BadInput{"report --config {dir}/config.json --out {dir}/r", "pendulum", R"({"methods": ["rk4", "pendulum"]})"}));
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "pendulum", R"({"methods": ["rk4", "pendulum"]})"},
+        // the scenes: known names, each once, not an empty list; each method runs on one of them
+        BadInput{"report --scenes spring,pendulum --out {dir}/r", "pendulum"}, BadInput{"report --scenes spring,spring --out {dir}/r", "twice"},
+        BadInput{"report --scenes , --out {dir}/r", "--scenes is empty"},
+        BadInput{"report --scenes falling --methods rk4,analytic --out {dir}/r", "'analytic' runs on none of the chosen scenes"},
+        BadInput{"report --sheet --scenes falling --out {dir}/r", "'analytic' runs on none"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "'scenes' must be a non-empty array", R"({"scenes": []})"}));
 
 }  // namespace
 }  // namespace steplab

@@ -114,7 +114,8 @@ TEST(ReportChoice, NamesInTheReportsOrderAndRefused) {
   EXPECT_EQ(c.sections, (std::vector<std::string>{"summary", "reproduce"}));
   choose_methods(c, {"rk4", "euler"}, "methods");  // an old name, and the table's order
   EXPECT_EQ(c.methods, (std::vector<std::size_t>{method("explicit_euler"), method("rk4")}));
-  EXPECT_EQ(default_report_config().sections, section_names());
+  EXPECT_EQ(default_report_config().sections, full_report_sections());
+  EXPECT_EQ(default_report_config().covered, default_report_config().own_scenes());
   EXPECT_EQ(default_report_config().methods.size(), method_count());
   for (const std::vector<std::string>& bad : std::vector<std::vector<std::string>>{{}, {"rk4", "rk4"}, {"heun"}, {"analytic"}})
     EXPECT_THROW(choose_methods(c, bad, "methods"), UsageError);

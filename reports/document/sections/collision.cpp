@@ -12,6 +12,10 @@ namespace {
 
 class Collision : public Section {
  public:
+  std::string title() const override { return "Collision"; }
+  std::string missing(const ReportConfig& c) const override {
+    return uncovered(c, {c.rebound.scene, c.body.scene});
+  }
   unsigned needs() const override { return kCollisionStudy | kConvergenceStudy; }
   void write_data(const ReportData& d, const DataDir& dat) const override {
     dat.write("collision.json", collision_json(d.collision).dump(1) + "\n");
@@ -33,7 +37,7 @@ class Collision : public Section {
   std::string markdown(Page& page) const override {
     const ReportData& d = page.data;
     const ReportConfig& c = d.config;
-    std::string md = "## Collision\n\n";
+    std::string md = "## " + title() + "\n\n";
     md += fmt::format("The undamped bounce (dropped from y = 0 onto the penalty ground y = -1; {}) and the falling triangle ({}), "
                       "over {} s.\n\n", params_text(c.rebound.scene, c.rebound.params), params_text(c.body.scene, c.body.params),
                       c.collision_t_end);

@@ -1,5 +1,6 @@
 // Convergence: errors against dt on the oscillator (the spring), fitted orders on each of the
 // report's scenes with an exact solution (the rebound scene's in the collision section).
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -12,27 +13,39 @@
 namespace steplab {
 namespace {
 
+// The study the figure draws: the spring's, or without it the first scene's.
+const ConvergenceResult& drawn(const ReportData& d) {
+  return d.config.covers(d.config.oscillator.scene) ? d.convergence_on(d.config.oscillator.scene) : d.convergence.front();
+}
+
 class Convergence : public Section {
  public:
+  std::string title() const override { return "Convergence"; }
+  std::string missing(const ReportConfig& c) const override {
+    return c.convergence_scenes().empty() ? "none of the chosen scenes is one it converges on (a scene with an exact solution, or one of yours)" : "";
+  }
   unsigned needs() const override { return kConvergenceStudy; }
   void write_data(const ReportData& d, const DataDir& dat) const override {
     for (const ConvergenceResult& r : d.convergence)
       dat.write(fmt::format("convergence_{}.json", scene_name(r.config.scene)), convergence_json(r).dump(1) + "\n");
-    const ConvergenceResult& conv = d.convergence_on(d.config.oscillator.scene);
+    const ConvergenceResult& conv = drawn(d);
     const std::size_t nd = conv.dts.size();
-    for (std::size_t i = 0; i < d.methods.size(); ++i) {
-      const std::string m = name(d.methods[i]);
+    for (std::size_t m : d.methods) {  // the report's methods; a file without rows for one the study could not run
+      const auto it = std::find(conv.config.methods.begin(), conv.config.methods.end(), m);
+      const std::size_t i = static_cast<std::size_t>(it - conv.config.methods.begin());
       std::string s = "# dt error seconds\n";
-      for (std::size_t k = 0; k < nd; ++k) {
-        const ConvergenceRecord& r = conv.records[i * nd + k];
-        if (r.status == RunStatus::Ok && r.error_final > 0) s += num(r.dt) + " " + num(r.error_final) + " " + num(r.seconds) + "\n";
+      std::string line = "# dt error (the window's least-squares line over its range)\n";
+      if (it != conv.config.methods.end()) {
+        for (std::size_t k = 0; k < nd; ++k) {
+          const ConvergenceRecord& r = conv.records[i * nd + k];
+          if (r.status == RunStatus::Ok && r.error_final > 0) s += num(r.dt) + " " + num(r.error_final) + " " + num(r.seconds) + "\n";
+        }
+        const OrderFit& fit = conv.fits[i].fit;
+        if (fit.fitted)
+          for (double x : {fit.dt_lo, fit.dt_hi}) line += num(x) + " " + num(std::exp(fit.line.intercept + fit.line.slope * std::log(x))) + "\n";
       }
-      dat.write("conv_" + m + ".dat", s);
-      const OrderFit& fit = conv.fits[i].fit;
-      s = "# dt error (the window's least-squares line over its range)\n";
-      if (fit.fitted)
-        for (double x : {fit.dt_lo, fit.dt_hi}) s += num(x) + " " + num(std::exp(fit.line.intercept + fit.line.slope * std::log(x))) + "\n";
-      dat.write("fit_" + m + ".dat", s);
+      dat.write("conv_" + name(m) + ".dat", s);
+      dat.write("fit_" + name(m) + ".dat", line);
     }
     // reference slopes 1, 2, 4 over the sweep's largest decade, under the lowest fitted curve there
     double anchor = INFINITY;
@@ -54,7 +67,7 @@ class Convergence : public Section {
   std::string markdown(Page& page) const override {
     const ReportData& d = page.data;
     const ReportConfig& c = d.config;
-    std::string md = "## Convergence\n\n";
+    std::string md = "## " + title() + "\n\n";
     md += fmt::format(
         "Errors against the exact solution over {} steps from {} to {} (t = {}). The order is the asymptotic one: over "
         "the range of steps where the local slopes have settled, ln e = a + p ln dt + b dt^q is fitted, the next error "
@@ -62,8 +75,14 @@ class Convergence : public Section {
         "round-off noise (95 %) plus the truncation left over (the same fit without the two smallest steps, and the other "
         "q): a bound, not a confidence interval. The window's plain least-squares slope is shown beside it; its Student-t "
         "interval is not a statement about the order, because truncation error is smooth, not random.\n\n",
-        d.convergence_on(c.oscillator.scene).dts.size(), c.conv_dt_max, c.conv_dt_min, c.conv_t_end);
-    md += page.figure("fig3_convergence", "error against dt on the spring, a panel per family: least-squares lines (solid) and reference slopes 1, 2, 4 (grey, dashed)");
+        drawn(d).dts.size(), c.conv_dt_max, c.conv_dt_min, c.conv_t_end);
+    for (const ConvergenceResult& r : d.convergence)
+      if (r.uses_reference)
+        md += fmt::format("{} has no exact solution: its errors are final-position errors against a reference solution "
+                          "(dopri5 at rtol = atol = {:g}, its own error estimated at {:.2g}).\n\n",
+                          scene_kernel(r.config.scene).title, r.reference.rtol, r.reference.estimated_error);
+    const std::string on = drawn(d).config.scene == c.oscillator.scene ? "the spring" : std::string(scene_kernel(drawn(d).config.scene).title);
+    md += page.figure("fig3_convergence", fmt::format("error against dt on {}, a panel per family: least-squares lines (solid) and reference slopes 1, 2, 4 (grey, dashed)", on));
     int diverged = 0, runs = 0;
     for (const ConvergenceResult& r : d.convergence)
       for (const ConvergenceRecord& rec : r.records) diverged += rec.status != RunStatus::Ok, ++runs;

@@ -55,6 +55,10 @@ const WorkPoint* cheapest_point(const SceneWork& w, const std::string& method, d
 
 class Cost : public Section {
  public:
+  std::string title() const override { return "Cost: work against precision"; }
+  std::string missing(const ReportConfig& c) const override {
+    return uncovered(c, {c.oscillator.scene});  // the spring, and the chain as its stiff contrast
+  }
   unsigned needs() const override { return kWorkPrecisionStudy; }
   void write_data(const ReportData& d, const DataDir& dat) const override {
     dat.write("work_precision.json", work_precision_json(d.work).dump(1) + "\n");
@@ -91,7 +95,7 @@ class Cost : public Section {
     const WorkPrecisionResult& r = d.work;
     const bool timed = d.config.timing;
     const std::string by = timed ? "run time (the minimum of repeated timings, integration only)" : "force and Jacobian evaluations";
-    std::string md = "## Cost: work against precision\n\n";
+    std::string md = "## " + title() + "\n\n";
     md += fmt::format(
         "Each point is one run to t = {}: its largest position error against the exact solution at its steps, and its cost "
         "in {}. The fixed-step methods run over dt sweeps, the adaptive solvers over tolerances {:.0e} .. {:.0e} "

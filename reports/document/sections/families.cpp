@@ -49,6 +49,10 @@ std::vector<std::size_t> every_method() {
 
 class Families : public Section {
  public:
+  std::string title() const override { return "Is stability correlated with the order? Family by family"; }
+  std::string missing(const ReportConfig& c) const override {
+    return uncovered(c, {c.oscillator.scene});
+  }
   unsigned needs() const override { return kFindings; }
   void study(const ReportData& d) override {
     RegionConfig c;
@@ -100,7 +104,7 @@ class Families : public Section {
       if (std::find(dampings.begin(), dampings.end(), r.damping) == dampings.end()) dampings.push_back(r.damping);
     std::sort(dampings.begin(), dampings.end());
 
-    std::string md = "## Is stability correlated with the order? Family by family\n\n";
+    std::string md = "## " + title() + "\n\n";
     md += "Within a family the methods share their construction and differ in order, so a family's dt* against its orders "
           "is the measured answer; across families the construction dominates. dt* measured at each damping (the largest "
           "step with every smaller one stable; inf: stable at every step tried):\n\n";

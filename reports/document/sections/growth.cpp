@@ -116,8 +116,15 @@ std::string scene_paragraph(const ScalingResult& r, bool first) {
 
 class Growth : public Section {
  public:
+  std::string title() const override { return "As the system grows"; }
+  std::string missing(const ReportConfig& c) const override {
+    for (const ReportSizes& s : c.scaling)
+      if (c.covers(s.scene)) return "";
+    return "none of the chosen scenes is of run-time size";
+  }
   void study(const ReportData& d) override {
-    for (const ReportSizes& s : d.config.scaling) r_.push_back(scaling_study(config_for(d, s)));
+    for (const ReportSizes& s : d.config.scaling)
+      if (d.config.covers(s.scene)) r_.push_back(scaling_study(config_for(d, s)));
   }
 
   void write_data(const ReportData&, const DataDir& dat) const override {
@@ -160,7 +167,7 @@ class Growth : public Section {
   }
 
   std::string markdown(Page& page) const override {
-    std::string md = "## As the system grows\n\n";
+    std::string md = "## " + title() + "\n\n";
     for (std::size_t i = 0; i < r_.size(); ++i) {
       const ScalingResult& r = r_[i];
       md += scene_paragraph(r, i == 0) + exponents_table(r) + findings(r);
@@ -174,7 +181,7 @@ class Growth : public Section {
   }
 
  private:
-  std::vector<ScalingResult> r_;  // one per scene of config.scaling
+  std::vector<ScalingResult> r_;  // one per covered scene of config.scaling
 };
 
 }  // namespace

@@ -25,10 +25,11 @@ std::string comma_names(const std::vector<std::size_t>& methods, bool numerical)
 
 class Reproduce : public Section {
  public:
+  std::string title() const override { return "Reproduce"; }
   std::string markdown(Page& page) const override {
     const ReportConfig& c = page.data.config;
     const ReportData& d = page.data;
-    std::string md = "## Reproduce\n\n```sh\n";
+    std::string md = "## " + title() + "\n\n```sh\n";
     md += "build/steplab report --config data/config.json   # this whole report\n";
     // Each study the report ran, on the report's methods (named where not all of them).
     const std::string methods = d.methods.size() == method_count() ? "" : " --methods " + comma_names(d.methods, false);
@@ -50,8 +51,9 @@ class Reproduce : public Section {
                                 join(c.wp_stiffnesses), c.timing ? "" : " --no-timing", numerical));
     if (std::find(c.sections.begin(), c.sections.end(), "growth") != c.sections.end())
       for (const ReportSizes& s : c.scaling)
-        md += wrapped(fmt::format("build/steplab study scaling --scene {} --sizes {} --error {} --t-end {}{}{}", scene_name(s.scene),
-                                  join(s.sizes), c.scaling_error, c.scaling_t_end, c.timing ? "" : " --no-timing", numerical));
+        if (c.covers(s.scene))
+          md += wrapped(fmt::format("build/steplab study scaling --scene {} --sizes {} --error {} --t-end {}{}{}", scene_name(s.scene),
+                                    join(s.sizes), c.scaling_error, c.scaling_t_end, c.timing ? "" : " --no-timing", numerical));
     md += "```\n\n";
     md += "(with the scene parameters above as `--mass`, `--stiffness`, ... where they differ from the defaults). The data of "
           "every study is in `data/`.\n\n";

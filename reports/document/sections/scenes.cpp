@@ -10,42 +10,61 @@ namespace {
 
 class SceneFigures : public Section {
  public:
+  std::string title() const override { return "The scenes"; }
+  std::string missing(const ReportConfig& c) const override {
+    return c.covers(c.oscillator.scene) || c.covers(c.projectile.scene) ? "" : uncovered(c, {c.projectile.scene, c.oscillator.scene});
+  }
   unsigned needs() const override { return kSceneFigures; }
   void write_data(const ReportData& d, const DataDir& dat) const override {
+    const ReportConfig& c = d.config;
     for (std::size_t i = 0; i < d.methods.size(); ++i) {
       const std::string m = name(d.methods[i]);
       std::string s = "# x y\n";
-      for (const auto& p : d.cannon[i].samples) s += num(p.x[0]) + " " + num(p.x[1]) + "\n";
-      dat.write("cannon_" + m + ".dat", s);
-      for (std::size_t k = 0; k < d.spring.size(); ++k) {
-        s = "# t y\n";
-        for (const auto& p : d.spring[k][i].samples) s += num(p.t) + " " + num(p.x[0]) + "\n";
-        dat.write(fmt::format("spring{}_{}.dat", k, m), s);
+      if (c.covers(c.projectile.scene)) {
+        for (const auto& p : d.cannon[i].samples) s += num(p.x[0]) + " " + num(p.x[1]) + "\n";
+        dat.write("cannon_" + m + ".dat", s);
       }
+      if (c.covers(c.oscillator.scene))
+        for (std::size_t k = 0; k < d.spring.size(); ++k) {
+          s = "# t y\n";
+          for (const auto& p : d.spring[k][i].samples) s += num(p.t) + " " + num(p.x[0]) + "\n";
+          dat.write(fmt::format("spring{}_{}.dat", k, m), s);
+        }
     }
     std::string curve = "# x y\n";
-    const ReportScene& projectile = d.config.projectile;
-    for (int k = 0; k <= 400; ++k) {
-      const AnyState y = scene_kernel(projectile.scene).exact(projectile.params, d.config.cannonball_t_end * k / 400.0);
-      curve += num(y.x[0]) + " " + num(y.x[1]) + "\n";
+    const ReportScene& projectile = c.projectile;
+    if (c.covers(projectile.scene)) {
+      for (int k = 0; k <= 400; ++k) {
+        const AnyState y = scene_kernel(projectile.scene).exact(projectile.params, c.cannonball_t_end * k / 400.0);
+        curve += num(y.x[0]) + " " + num(y.x[1]) + "\n";
+      }
+      dat.write("cannon_exact.dat", curve);
     }
-    dat.write("cannon_exact.dat", curve);
     curve = "# t y\n";
-    const ReportScene& spring = d.config.oscillator;
-    for (int k = 0; k <= 2000; ++k) {
-      const double t = d.config.spring_figure_t_end * k / 2000.0;
-      curve += num(t) + " " + num(scene_kernel(spring.scene).exact(spring.params, t).x[0]) + "\n";
+    const ReportScene& spring = c.oscillator;
+    if (c.covers(spring.scene)) {
+      for (int k = 0; k <= 2000; ++k) {
+        const double t = c.spring_figure_t_end * k / 2000.0;
+        curve += num(t) + " " + num(scene_kernel(spring.scene).exact(spring.params, t).x[0]) + "\n";
+      }
+      dat.write("spring_exact.dat", curve);
     }
-    dat.write("spring_exact.dat", curve);
   }
 
-  std::vector<FigureSpec> figures(const ReportData&) const override { return {{"fig1_cannonball", ""}, {"fig2_spring", ""}}; }
+  std::vector<FigureSpec> figures(const ReportData& d) const override {
+    std::vector<FigureSpec> out;
+    if (d.config.covers(d.config.projectile.scene)) out.push_back({"fig1_cannonball", ""});
+    if (d.config.covers(d.config.oscillator.scene)) out.push_back({"fig2_spring", ""});
+    return out;
+  }
 
   std::string markdown(Page& page) const override {
     const ReportConfig& c = page.data.config;
-    std::string md = "## The scenes\n\n";
-    md += page.figure("fig1_cannonball", fmt::format("cannon ball paths at dt {} beside the exact parabola, a panel per family", c.cannonball_dt));
-    md += page.figure("fig2_spring", fmt::format("spring height y(t) per method against the exact solution (grey), a row per family, a column per dt: {}", words(c.spring_figure_dts)));
+    std::string md = "## " + title() + "\n\n";
+    if (c.covers(c.projectile.scene))
+      md += page.figure("fig1_cannonball", fmt::format("cannon ball paths at dt {} beside the exact parabola, a panel per family", c.cannonball_dt));
+    if (c.covers(c.oscillator.scene))
+      md += page.figure("fig2_spring", fmt::format("spring height y(t) per method against the exact solution (grey), a row per family, a column per dt: {}", words(c.spring_figure_dts)));
     return md;
   }
 };

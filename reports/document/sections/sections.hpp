@@ -1,16 +1,20 @@
 // THE section list of `steplab report`, in the order they appear. Adding a section: write
 // reports/document/sections/<name>.cpp (a Section, see reports/document/section.hpp, and its
-// `std::unique_ptr<Section> make_<name>_section()`) and add X(<name>) below.
+// `std::unique_ptr<Section> make_<name>_section()`) and add X(<name>, <in the full report>) below.
+// The hand-in's own sections (`steplab report --sheet`) are not in the full report, which has
+// the longer versions of what they say.
 #pragma once
 
 #define STEPLAB_REPORT_SECTIONS(X) \
-  X(summary)                       \
-  X(stable)                        \
-  X(families)                      \
-  X(scenes)                        \
-  X(convergence)                   \
-  X(stability)                     \
-  X(cost)                          \
-  X(collision)                     \
-  X(growth)                        \
-  X(reproduce)
+  X(sheet, false)                  \
+  X(summary, true)                 \
+  X(stable, true)                  \
+  X(order, false)                  \
+  X(families, true)                \
+  X(scenes, true)                  \
+  X(convergence, true)             \
+  X(stability, true)               \
+  X(cost, true)                    \
+  X(collision, true)               \
+  X(growth, true)                  \
+  X(reproduce, true)

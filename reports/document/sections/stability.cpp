@@ -14,6 +14,10 @@ namespace {
 
 class Stability : public Section {
  public:
+  std::string title() const override { return "Stability"; }
+  std::string missing(const ReportConfig& c) const override {
+    return uncovered(c, {c.oscillator.scene});
+  }
   unsigned needs() const override { return kStabilityStudy; }
   void write_data(const ReportData& d, const DataDir& dat) const override {
     dat.write("stability.json", stability_json(d.config.oscillator.params, d.thresholds, d.sweep, &d.map).dump(1) + "\n");
@@ -51,7 +55,7 @@ class Stability : public Section {
   std::string markdown(Page& page) const override {
     const ReportData& d = page.data;
     const ReportConfig& c = d.config;
-    std::string md = "## Stability\n\n";
+    std::string md = "## " + title() + "\n\n";
     md += "dt*: the largest step with every smaller step stable. Where a method is stable again beyond dt* (its stable set "
           "is not an interval), the last column says from where.\n\n"
           "| method | damping | dt* predicted | dt* measured | stable again from (predicted / measured) |\n|---|---:|---:|---:|---:|\n";

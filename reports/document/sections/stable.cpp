@@ -9,6 +9,10 @@ namespace {
 
 class Stable : public Section {
  public:
+  std::string title() const override { return "Which methods are stable, and which are not?"; }
+  std::string missing(const ReportConfig& c) const override {
+    return uncovered(c, {c.oscillator.scene});
+  }
   unsigned needs() const override { return kFindings; }
   std::string markdown(Page& page) const override {
     const Findings& f = page.findings;
@@ -18,7 +22,7 @@ class Stable : public Section {
       for (std::size_t i : rows) m.push_back(f.rows[i].method);
       return method_list(m);
     };
-    std::string md = "## Which methods are stable, and which are not?\n\n";
+    std::string md = "## " + title() + "\n\n";
     md += fmt::format("- At the sheet's large step dt = {} (damping {}): stable: {}; unstable: {}.\n", c.large_dt, c.damping(),
                       methods(f.stable_large), methods(f.unstable_large));
     md += fmt::format("- Without damping (dt = {}): stable: {}; unstable: {}.\n", c.small_dt, methods(f.stable_undamped),

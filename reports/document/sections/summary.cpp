@@ -12,11 +12,15 @@ namespace {
 
 class Summary : public Section {
  public:
+  std::string title() const override { return "Summary"; }
+  std::string missing(const ReportConfig& c) const override {
+    return uncovered(c, {c.oscillator.scene});
+  }
   unsigned needs() const override { return kFindings; }
   std::string markdown(Page& page) const override {
     const ReportConfig& c = page.data.config;
     const double gamma = c.damping();
-    std::string md = "## Summary\n\n";
+    std::string md = "## " + title() + "\n\n";
     // Widths for pandoc: the dashes of the rule set the columns' relative widths in the PDF.
     md += fmt::format("| family | method | order | fitted order [bound] | stable: dt {} / undamped dt {} | dt* undamped | "
                       "dt* at damping {} | stable again from | energy growth at dt {} (1/s) |\n"
@@ -36,12 +40,18 @@ class Summary : public Section {
                         dt_text(r.dt_undamped_measured), dt_text(r.dt_measured),
                         std::isinf(r.again_measured) ? "-" : dt_text(r.again_measured), r.growth_large_dt);
     }
+    // Where the details are: the report's section, or the study that has them if it is not chosen.
+    const auto in = [&](const char* section, const char* title, const char* study) {
+      return std::find(c.sections.begin(), c.sections.end(), section) != c.sections.end() ? std::string(title)
+                                                                                           : fmt::format("`steplab study {}`", study);
+    };
     md += fmt::format("\nFitted orders: spring, final position error over t = {}, the asymptotic order and its bound (see "
-                      "Convergence). dt*: the largest step with every smaller step stable, measured (energy growth rate <= {:g} "
-                      "per unit time over {} steps; the Stability section sets it beside the prediction from the spectral "
+                      "{}). dt*: the largest step with every smaller step stable, measured (energy growth rate <= {:g} "
+                      "per unit time over {} steps; {} sets it beside the prediction from the spectral "
                       "radius of the whole step map, a multistep method's memory included). \"Stable again from\": where a "
                       "method whose stable set is not an interval is stable again beyond dt* (at damping {}).\n\n",
-                      c.conv_t_end, kStableRate, kRateSteps, gamma);
+                      c.conv_t_end, in("convergence", "Convergence", "convergence"), kStableRate, kRateSteps,
+                      in("stability", "the Stability section", "stability"), gamma);
     return md;
   }
 };
