@@ -54,6 +54,17 @@ std::string uncovered(const ReportConfig& c, std::initializer_list<std::size_t> 
   return fmt::format("it needs {}, not among the chosen scenes", and_list(missing));
 }
 
+std::string uncovered_for(const ReportConfig& c, unsigned studies) {
+  std::string why;
+  if (studies & (kStabilityStudy | kWorkPrecisionStudy)) why = uncovered(c, {c.oscillator.scene});
+  if (why.empty() && (studies & kCollisionStudy)) why = uncovered(c, {c.rebound.scene, c.body.scene});
+  if (why.empty() && (studies & kSceneFigures) && !c.covers(c.oscillator.scene) && !c.covers(c.projectile.scene))
+    why = uncovered(c, {c.projectile.scene, c.oscillator.scene});
+  if (why.empty() && (studies & kConvergenceStudy) && c.convergence_scenes().empty())
+    why = "none of the chosen scenes is one it converges on (a scene with an exact solution, or one of yours)";
+  return why;
+}
+
 namespace {
 
 // A section the config's choice leaves out (Section::missing): one line in its place.

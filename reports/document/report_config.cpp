@@ -133,6 +133,10 @@ bool ReportConfig::covers(std::size_t scene) const {
   return std::find(covered.begin(), covered.end(), scene) != covered.end();
 }
 
+bool ReportConfig::has_section(std::string_view name) const {
+  return std::find(sections.begin(), sections.end(), name) != sections.end();
+}
+
 std::vector<std::size_t> ReportConfig::own_scenes() const {
   std::vector<std::size_t> out;
   for (const ReportScene* s : scenes()) out.push_back(s->scene);
@@ -174,11 +178,8 @@ ReportConfig default_report_config() {
 // The hand-in: the sheet's questions on its scenes, the figures and orders, and how to redo it.
 ReportConfig sheet_report_config() {
   ReportConfig c = default_report_config();
-  c.methods.clear();
-  for (std::string_view m : kSheetMethods) c.methods.push_back(*find_method(m));
-  std::sort(c.methods.begin(), c.methods.end());
-  c.covered = {c.oscillator.scene, c.projectile.scene};
-  std::sort(c.covered.begin(), c.covered.end());
+  choose_methods(c, {kSheetMethods.begin(), kSheetMethods.end()}, "the sheet's methods");
+  choose_scenes(c, {std::string(kSheetOscillator), std::string(kSheetProjectile)}, "the sheet's scenes");
   c.sections = {"sheet", "summary", "stable", "order", "scenes", "convergence", "reproduce"};
   return c;
 }

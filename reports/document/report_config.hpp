@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -34,6 +35,7 @@ struct ReportConfig {
   std::vector<std::size_t> covered;
   std::vector<std::string> sections;
   bool covers(std::size_t scene) const;
+  bool has_section(std::string_view name) const;
   // The report's own scenes: the four below and the scaling ones. (The cost section's stiff chain
   // is its own contrast to the spring, not a scene of the report.)
   std::vector<std::size_t> own_scenes() const;

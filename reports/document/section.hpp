@@ -47,6 +47,14 @@ class Page {
   int figure_ = 0;
 };
 
+// A section's `missing()` for the scenes it needs: "" if the config covers each of them, else
+// "it needs `bounce` and `falling`, not among the chosen scenes".
+std::string uncovered(const ReportConfig& c, std::initializer_list<std::size_t> scenes);
+// The same for the shared studies in `studies` (ReportStudy bits): stability and work-precision
+// need the spring, the collision study its two scenes, the scenes' figures one of the cannon ball
+// and the spring, convergence one scene it converges on (ReportConfig::convergence_scenes).
+std::string uncovered_for(const ReportConfig& c, unsigned studies);
+
 class Section {
  public:
   virtual ~Section() = default;
@@ -54,7 +62,9 @@ class Section {
   virtual unsigned needs() const { return 0; }
   // Why it cannot be made from the config's choice (a scene it needs is not covered), or "": the
   // report then shows one line in its place, "*Left out: <title> (<reason>).*", and runs nothing for it.
-  virtual std::string missing(const ReportConfig&) const { return {}; }
+  // By default the scenes its shared studies need (uncovered_for); a section with studies of its
+  // own says what they need.
+  virtual std::string missing(const ReportConfig& c) const { return uncovered_for(c, needs()); }
   virtual std::string title() const = 0;
   virtual void study(const ReportData&) {}                                    // its own studies
   virtual void write_data(const ReportData&, const DataDir&) const {}         // its data files
@@ -69,8 +79,5 @@ std::vector<std::unique_ptr<Section>> report_sections(const std::vector<std::str
 std::vector<std::string> section_names();
 std::vector<std::string> full_report_sections();
 
-// A section's `missing()` for the scenes it needs: "" if the config covers each of them, else
-// "it needs `bounce` and `falling`, not among the chosen scenes".
-std::string uncovered(const ReportConfig& c, std::initializer_list<std::size_t> scenes);
 
 }  // namespace steplab

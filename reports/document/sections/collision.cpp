@@ -13,9 +13,6 @@ namespace {
 class Collision : public Section {
  public:
   std::string title() const override { return "Collision"; }
-  std::string missing(const ReportConfig& c) const override {
-    return uncovered(c, {c.rebound.scene, c.body.scene});
-  }
   unsigned needs() const override { return kCollisionStudy | kConvergenceStudy; }
   void write_data(const ReportData& d, const DataDir& dat) const override {
     dat.write("collision.json", collision_json(d.collision).dump(1) + "\n");

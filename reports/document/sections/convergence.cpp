@@ -21,9 +21,6 @@ const ConvergenceResult& drawn(const ReportData& d) {
 class Convergence : public Section {
  public:
   std::string title() const override { return "Convergence"; }
-  std::string missing(const ReportConfig& c) const override {
-    return c.convergence_scenes().empty() ? "none of the chosen scenes is one it converges on (a scene with an exact solution, or one of yours)" : "";
-  }
   unsigned needs() const override { return kConvergenceStudy; }
   void write_data(const ReportData& d, const DataDir& dat) const override {
     for (const ConvergenceResult& r : d.convergence)
@@ -67,6 +64,7 @@ class Convergence : public Section {
   std::string markdown(Page& page) const override {
     const ReportData& d = page.data;
     const ReportConfig& c = d.config;
+    const ConvergenceResult& shown = drawn(d);
     std::string md = "## " + title() + "\n\n";
     md += fmt::format(
         "Errors against the exact solution over {} steps from {} to {} (t = {}). The order is the asymptotic one: over "
@@ -75,13 +73,13 @@ class Convergence : public Section {
         "round-off noise (95 %) plus the truncation left over (the same fit without the two smallest steps, and the other "
         "q): a bound, not a confidence interval. The window's plain least-squares slope is shown beside it; its Student-t "
         "interval is not a statement about the order, because truncation error is smooth, not random.\n\n",
-        drawn(d).dts.size(), c.conv_dt_max, c.conv_dt_min, c.conv_t_end);
+        shown.dts.size(), c.conv_dt_max, c.conv_dt_min, c.conv_t_end);
     for (const ConvergenceResult& r : d.convergence)
       if (r.uses_reference)
         md += fmt::format("{} has no exact solution: its errors are final-position errors against a reference solution "
                           "(dopri5 at rtol = atol = {:g}, its own error estimated at {:.2g}).\n\n",
                           scene_kernel(r.config.scene).title, r.reference.rtol, r.reference.estimated_error);
-    const std::string on = drawn(d).config.scene == c.oscillator.scene ? "the spring" : std::string(scene_kernel(drawn(d).config.scene).title);
+    const std::string on = shown.config.scene == c.oscillator.scene ? "the spring" : std::string(scene_kernel(shown.config.scene).title);
     md += page.figure("fig3_convergence", fmt::format("error against dt on {}, a panel per family: least-squares lines (solid) and reference slopes 1, 2, 4 (grey, dashed)", on));
     int diverged = 0, runs = 0;
     for (const ConvergenceResult& r : d.convergence)

@@ -56,9 +56,6 @@ const WorkPoint* cheapest_point(const SceneWork& w, const std::string& method, d
 class Cost : public Section {
  public:
   std::string title() const override { return "Cost: work against precision"; }
-  std::string missing(const ReportConfig& c) const override {
-    return uncovered(c, {c.oscillator.scene});  // the spring, and the chain as its stiff contrast
-  }
   unsigned needs() const override { return kWorkPrecisionStudy; }
   void write_data(const ReportData& d, const DataDir& dat) const override {
     dat.write("work_precision.json", work_precision_json(d.work).dump(1) + "\n");

@@ -50,9 +50,6 @@ std::vector<std::size_t> every_method() {
 class Families : public Section {
  public:
   std::string title() const override { return "Is stability correlated with the order? Family by family"; }
-  std::string missing(const ReportConfig& c) const override {
-    return uncovered(c, {c.oscillator.scene});
-  }
   unsigned needs() const override { return kFindings; }
   void study(const ReportData& d) override {
     RegionConfig c;

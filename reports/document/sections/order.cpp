@@ -27,7 +27,6 @@ bool differ(double a, double b) {
 class Order : public Section {
  public:
   std::string title() const override { return "Is stability correlated with the order?"; }
-  std::string missing(const ReportConfig& c) const override { return uncovered(c, {c.oscillator.scene}); }
   unsigned needs() const override { return kFindings; }
 
   std::string markdown(Page& page) const override {
@@ -51,18 +50,20 @@ class Order : public Section {
         for (const MethodFinding* b : rows) same_order_differ |= differ(a->dt_measured, b->dt_measured);
     }
     md += "\n";
-    // Each family's methods among these, from its lowest order to its highest.
+    // Each family's methods among these (family_members: by order), from its lowest order to its highest.
+    const auto dt_of = [&](std::size_t m) -> double {
+      for (const MethodFinding& r : page.findings.rows)
+        if (r.method == m) return r.dt_measured;
+      return NAN;
+    };
     std::vector<std::string> trends;
     for (Family f : kReportFamilies) {
-      std::vector<const MethodFinding*> rows;
-      for (const MethodFinding& r : page.findings.rows)
-        if (method_info(r.method).family == f) rows.push_back(&r);
-      std::sort(rows.begin(), rows.end(), [](const MethodFinding* a, const MethodFinding* b) { return method_info(a->method).order < method_info(b->method).order; });
-      if (rows.size() < 2 || method_info(rows.front()->method).order == method_info(rows.back()->method).order) continue;
-      const double lo = rows.front()->dt_measured, hi = rows.back()->dt_measured;
+      const std::vector<std::size_t> fam = family_members(page.data.methods, f);
+      if (fam.size() < 2 || method_info(fam.front()).order == method_info(fam.back()).order) continue;
+      const double lo = dt_of(fam.front()), hi = dt_of(fam.back());
       const char* way = !differ(lo, hi) ? "stays about the same" : (hi > lo ? "grows" : "shrinks");
-      trends.push_back(fmt::format("in the {} family dt* {} with the order (`{}` {}, `{}` {})", to_string(f), way, name(rows.front()->method),
-                                   dt_text(lo), name(rows.back()->method), dt_text(hi)));
+      trends.push_back(fmt::format("in the {} family dt* {} with the order (`{}` {}, `{}` {})", to_string(f), way, name(fam.front()),
+                                   dt_text(lo), name(fam.back()), dt_text(hi)));
     }
     if (same_order_differ)
       md += "**Not as a rule.** Methods of the same order are stable up to very different steps: how a method is built "

@@ -49,7 +49,7 @@ class Reproduce : public Section {
     if (d.studies & kWorkPrecisionStudy)
       md += wrapped(fmt::format("build/steplab study work-precision --points {} --stiffnesses {}{}{}", c.wp_points,
                                 join(c.wp_stiffnesses), c.timing ? "" : " --no-timing", numerical));
-    if (std::find(c.sections.begin(), c.sections.end(), "growth") != c.sections.end())
+    if (c.has_section("growth"))
       for (const ReportSizes& s : c.scaling)
         if (c.covers(s.scene))
           md += wrapped(fmt::format("build/steplab study scaling --scene {} --sizes {} --error {} --t-end {}{}{}", scene_name(s.scene),

@@ -11,9 +11,6 @@ namespace {
 class SceneFigures : public Section {
  public:
   std::string title() const override { return "The scenes"; }
-  std::string missing(const ReportConfig& c) const override {
-    return c.covers(c.oscillator.scene) || c.covers(c.projectile.scene) ? "" : uncovered(c, {c.projectile.scene, c.oscillator.scene});
-  }
   unsigned needs() const override { return kSceneFigures; }
   void write_data(const ReportData& d, const DataDir& dat) const override {
     const ReportConfig& c = d.config;

@@ -15,11 +15,11 @@
 // from any start), so a slip in either shows as a difference far above round-off.
 #include <algorithm>
 #include <cmath>
+#include <complex>
 
 #include <fmt/format.h>
 
 #include "analysis/kernel.hpp"
-#include "core/scenes/cannonball.hpp"
 #include "core/scenes/spring.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
@@ -35,14 +35,14 @@ struct SheetConstants {
 
 SheetConstants sheet_constants(const ReportConfig& c) {
   const Spring s(c.oscillator.params);
-  SheetConstants k{4 * s.k * s.m > s.gamma * s.gamma, -s.gamma / (2 * s.m), 0, s.m * s.g / s.k, 0, 0};
+  const std::complex<double> lambda = s.eigenvalue();  // alpha + i beta when underdamped, else real
+  SheetConstants k{lambda.imag() > 0, lambda.real(), lambda.imag(), s.m * s.g / s.k, 0, 0};
   if (!k.underdamped) return k;
-  k.beta = std::sqrt(4 * s.k * s.m - s.gamma * s.gamma) / (2 * s.m);
   k.c2 = -k.alpha * k.c1 / k.beta;
   const SceneKernel& scene = scene_kernel(c.oscillator.scene);
   for (int i = 0; i <= 2000; ++i) {
     const double t = c.spring_figure_t_end * i / 2000.0;
-    const double y = std::exp(k.alpha * t) * (k.c1 * std::cos(k.beta * t) + k.c2 * std::sin(k.beta * t)) - s.L - s.m * s.g / s.k;
+    const double y = std::exp(k.alpha * t) * (k.c1 * std::cos(k.beta * t) + k.c2 * std::sin(k.beta * t)) + s.equilibrium();
     k.largest_difference = std::max(k.largest_difference, std::abs(y - scene.exact(c.oscillator.params, t).x[0]));
   }
   return k;
@@ -55,7 +55,9 @@ class Sheet : public Section {
 
   std::string markdown(Page& page) const override {
     const ReportConfig& c = page.data.config;
-    const Cannonball ball(c.projectile.params);
+    // The cannon ball's launch velocity and gravity, read off its exact solution: v(0) and v(1) - v(0).
+    const SceneKernel& projectile = scene_kernel(c.projectile.scene);
+    const AnyState start = projectile.exact(c.projectile.params, 0), later = projectile.exact(c.projectile.params, 1);
     const Spring s(c.oscillator.params);
     std::string md = "## " + title() + "\n\n";
     md += fmt::format(
@@ -63,7 +65,7 @@ class Sheet : public Section {
         method_list(page.data.numerical_methods()));
     md += fmt::format("- **Problem 1, the cannon ball** ({}): from the origin with v0 = ({:.4g}, {:.4g}); the analytic solution is "
                       "x(t) = v0 t + g t^2 / 2 with g = (0, -{:g}).\n",
-                      params_text(c.projectile.scene, c.projectile.params), ball.v0[0], ball.v0[1], -ball.g[1]);
+                      params_text(c.projectile.scene, c.projectile.params), start.v[0], start.v[1], start.v[1] - later.v[1]);
     md += fmt::format("- **Problem 2, the cube hanging from the ceiling** ({}): y is its height relative to the anchor "
                       "(negative below it); it starts at rest at rest length, y(0) = -L, y'(0) = 0.\n\n",
                       params_text(c.oscillator.scene, c.oscillator.params));
@@ -82,11 +84,11 @@ class Sheet : public Section {
                         "over 0 <= t <= {:g}.\n\n",
                         4 * s.k * s.m, s.gamma * s.gamma, k.alpha, k.beta, k.c1, k.c2, k.largest_difference, c.spring_figure_t_end);
     } else {
+      const char* regime = 4 * s.k * s.m == s.gamma * s.gamma ? "critically " : "over";
       md += fmt::format("Here $4 k m = {:g} \\le \\gamma^2 = {:g}$: the cube is {}damped, $\\beta$ is not real and the sheet's "
                         "form does not apply; $c_1 = m g / k = {:.6g}$ still fixes the start, and the errors below are measured "
                         "against the exact solution in its {}damped form.\n\n",
-                        4 * s.k * s.m, s.gamma * s.gamma, 4 * s.k * s.m == s.gamma * s.gamma ? "critically " : "over",
-                        k.c1, 4 * s.k * s.m == s.gamma * s.gamma ? "critically " : "over");
+                        4 * s.k * s.m, s.gamma * s.gamma, regime, k.c1, regime);
     }
     return md;
   }

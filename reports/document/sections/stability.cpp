@@ -15,9 +15,6 @@ namespace {
 class Stability : public Section {
  public:
   std::string title() const override { return "Stability"; }
-  std::string missing(const ReportConfig& c) const override {
-    return uncovered(c, {c.oscillator.scene});
-  }
   unsigned needs() const override { return kStabilityStudy; }
   void write_data(const ReportData& d, const DataDir& dat) const override {
     dat.write("stability.json", stability_json(d.config.oscillator.params, d.thresholds, d.sweep, &d.map).dump(1) + "\n");

@@ -10,9 +10,6 @@ namespace {
 class Stable : public Section {
  public:
   std::string title() const override { return "Which methods are stable, and which are not?"; }
-  std::string missing(const ReportConfig& c) const override {
-    return uncovered(c, {c.oscillator.scene});
-  }
   unsigned needs() const override { return kFindings; }
   std::string markdown(Page& page) const override {
     const Findings& f = page.findings;

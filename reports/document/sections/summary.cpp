@@ -13,9 +13,6 @@ namespace {
 class Summary : public Section {
  public:
   std::string title() const override { return "Summary"; }
-  std::string missing(const ReportConfig& c) const override {
-    return uncovered(c, {c.oscillator.scene});
-  }
   unsigned needs() const override { return kFindings; }
   std::string markdown(Page& page) const override {
     const ReportConfig& c = page.data.config;
@@ -42,8 +39,7 @@ class Summary : public Section {
     }
     // Where the details are: the report's section, or the study that has them if it is not chosen.
     const auto in = [&](const char* section, const char* title, const char* study) {
-      return std::find(c.sections.begin(), c.sections.end(), section) != c.sections.end() ? std::string(title)
-                                                                                           : fmt::format("`steplab study {}`", study);
+      return c.has_section(section) ? std::string(title) : fmt::format("`steplab study {}`", study);
     };
     md += fmt::format("\nFitted orders: spring, final position error over t = {}, the asymptotic order and its bound (see "
                       "{}). dt*: the largest step with every smaller step stable, measured (energy growth rate <= {:g} "
