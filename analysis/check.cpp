@@ -7,6 +7,7 @@
 #include "analysis/convergence.hpp"
 #include "analysis/kernel.hpp"
 #include "core/scenes/cannonball.hpp"
+#include "core/scenes/target.hpp"
 #include "core/scenes/spring.hpp"
 
 namespace steplab {
@@ -14,10 +15,12 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-template <class S> OrderCheck order_check(std::size_t method, const MethodInfo& claims, const Workers& workers) {
+template <class S>
+OrderCheck order_check(std::size_t method, const MethodInfo& claims, const Workers& workers, double stiffness = 0) {
   ConvergenceConfig c;
   c.scene = scene_index(S::name);
   c.params = default_param_values(c.scene);
+  if (stiffness > 0) c.params[static_cast<std::size_t>(stiffness_param_index<S>())] = stiffness;
   c.methods = {method};
   c.workers = workers;
   const ConvergenceResult r = convergence_study(c);
@@ -77,7 +80,8 @@ CheckResult check_method(std::size_t method, const MethodInfo& claims, const Wor
   CheckResult r;
   r.method = method;
   r.claims = claims;
-  r.orders = {order_check<Spring>(method, claims, workers), order_check<Cannonball>(method, claims, workers)};
+  r.orders = {order_check<Spring>(method, claims, workers), order_check<Cannonball>(method, claims, workers),
+              order_check<Target>(method, claims, workers, kTargetStiffness)};
   r.energy = energy_check(method, claims);
 
   StabilityConfig c;

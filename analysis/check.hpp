@@ -9,7 +9,10 @@
 //              the spring; a wrong declaration is off by 1 or more. The cannon ball's trajectory is
 //              a quadratic in t, which every method of order >= 2 follows exactly: there an error at
 //              round-off for every dt holds for a declared order >= 2 (and for the exact flow, order
-//              0, on both scenes) and refutes order 1.
+//              0, on both scenes) and refutes order 1. And on the target (core/scenes/target.hpp)
+//              at stiffness kTargetStiffness, a driven scene: a step that evaluates its force at
+//              the wrong times (not each stage's own) is first order there, whatever its order on
+//              the autonomous spring.
 //   converges  The error at the smallest step is at most kConvergedRatio times the one at the
 //              largest (three decades of dt: an order-1 method gains 1e3), or at round-off.
 //   energy     On the undamped spring, kDriftSteps steps at omega h = kDriftOmegaH (stable for every
@@ -46,6 +49,9 @@
 namespace steplab {
 
 inline constexpr double kOrderTolerance = 0.1;
+// The target's stiffness for the order check: non-stiff over the whole sweep (its eigenvalues
+// -0.27 and -3.7: h |lambda| <= 0.37 at dt 0.1), so every method shows its classical order.
+inline constexpr double kTargetStiffness = 1;
 inline constexpr double kConvergedRatio = 1e-2;
 inline constexpr long long kDriftSteps = 100'000;
 inline constexpr double kDriftOmegaH = 0.5;
@@ -86,7 +92,7 @@ struct RestCheck {
 struct CheckResult {
   std::size_t method;
   MethodInfo claims;
-  std::vector<OrderCheck> orders;  // spring, cannonball
+  std::vector<OrderCheck> orders;  // spring, cannonball, target
   EnergyCheck energy;
   std::vector<StabilityCheck> stability;  // one per kCheckDampings
   bool a_stable_holds;  // A-stable as claimed: dt* infinite everywhere; not: finite somewhere

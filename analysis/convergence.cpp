@@ -177,4 +177,14 @@ ConvergenceResult convergence_study(const ConvergenceConfig& config) {
   return out;
 }
 
+ConvergenceSweep convergence_sweep(const ConvergenceConfig& config, std::size_t param, const std::vector<double>& values) {
+  ConvergenceSweep out{param, values, {}};
+  for (double value : values) {
+    ConvergenceConfig c = config;
+    c.params[param] = value;
+    out.studies.push_back(convergence_study(c));
+  }
+  return out;
+}
+
 }  // namespace steplab

@@ -106,4 +106,14 @@ inline bool blown_up(double error, double scale) { return !(error <= kBlownUp * 
 // (max or rms error against a reference).
 ConvergenceResult convergence_study(const ConvergenceConfig& config);
 
+// Order against a parameter (`study convergence --sweep NAME=LIST`): the study again at each value
+// of one of the scene's parameters, everything else the same (the same dt sweep), so that each
+// method's fitted order can be read against, say, the stiffness.
+struct ConvergenceSweep {
+  std::size_t param = 0;         // the parameter swept (its index in the scene's table)
+  std::vector<double> values;    // increasing
+  std::vector<ConvergenceResult> studies;  // one per value, in that order
+};
+ConvergenceSweep convergence_sweep(const ConvergenceConfig& config, std::size_t param, const std::vector<double>& values);
+
 }  // namespace steplab

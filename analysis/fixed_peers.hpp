@@ -46,10 +46,10 @@ template <Scene S> struct OdeintDopri5 {
     Z z{};
     for (int i = 0; i < D; ++i) z[i] = y0.x[i], z[D + i] = y0.v[i];
     n = {};
-    const auto rhs = [&](const Z& a, Z& da, double) {
+    const auto rhs = [&](const Z& a, Z& da, double t) {
       ++n.forces;
       const Vec<D> x = Eigen::Map<const Vec<D>>(a.data()), v = Eigen::Map<const Vec<D>>(a.data() + D);
-      const Vec<D> acc = acceleration(s, x, v);
+      const Vec<D> acc = acceleration(s, t, x, v);
       for (int i = 0; i < D; ++i) da[i] = v[i], da[D + i] = acc[i];
     };
     namespace odeint = boost::numeric::odeint;
@@ -66,22 +66,22 @@ template <Scene S> struct CvodeDense {
   static constexpr int D = S::dim;
 
   // z' = f(z): the velocities, then the accelerations.
-  static int rhs(sunrealtype, N_Vector z, N_Vector dz, void* scene) {
+  static int rhs(sunrealtype t, N_Vector z, N_Vector dz, void* scene) {
     const S& s = *static_cast<const S*>(scene);
     const double* a = N_VGetArrayPointer(z);
     double* da = N_VGetArrayPointer(dz);
     const Vec<D> x = Eigen::Map<const Vec<D>>(a), v = Eigen::Map<const Vec<D>>(a + D);
-    const Vec<D> acc = acceleration(s, x, v);
+    const Vec<D> acc = acceleration(s, t, x, v);
     for (int i = 0; i < D; ++i) da[i] = v[i], da[D + i] = acc[i];
     return 0;
   }
 
   // df/dz = [[0, I], [M^-1 dF/dx, M^-1 dF/dv]] (column-major dense matrix).
-  static int jacobian(sunrealtype, N_Vector z, N_Vector, SUNMatrix J, void* scene, N_Vector, N_Vector, N_Vector) {
+  static int jacobian(sunrealtype t, N_Vector z, N_Vector, SUNMatrix J, void* scene, N_Vector, N_Vector, N_Vector) {
     const S& s = *static_cast<const S*>(scene);
     const double* a = N_VGetArrayPointer(z);
     const Vec<D> x = Eigen::Map<const Vec<D>>(a), v = Eigen::Map<const Vec<D>>(a + D);
-    const Jacobians<D> j = s.jacobians(x, v);
+    const Jacobians<D> j = jacobians_at(s, t, x, v);
     const Vec<D> w = s.inverse_mass();
     Eigen::Map<Eigen::Matrix<double, 2 * D, 2 * D>> m(SUNDenseMatrix_Data(J));
     m.setZero();

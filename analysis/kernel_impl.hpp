@@ -33,13 +33,21 @@ template <Scene S> struct Counted : S {
   explicit Counted(std::span<const double> p) : S(p) {}
   mutable long long forces = 0, jacobian_calls = 0, newton_updates = 0;
   void newton_update() const { ++newton_updates; }
-  Vec<S::dim> force(const Vec<S::dim>& x, const Vec<S::dim>& v) const {
+  Vec<S::dim> force(const Vec<S::dim>& x, const Vec<S::dim>& v) const requires AutonomousForce<S> {
     ++forces;
     return S::force(x, v);
   }
-  Jacobians<S::dim> jacobians(const Vec<S::dim>& x, const Vec<S::dim>& v) const {
+  Jacobians<S::dim> jacobians(const Vec<S::dim>& x, const Vec<S::dim>& v) const requires AutonomousForce<S> {
     ++jacobian_calls;
     return S::jacobians(x, v);
+  }
+  Vec<S::dim> force(double t, const Vec<S::dim>& x, const Vec<S::dim>& v) const requires Driven<S> {
+    ++forces;
+    return S::force(t, x, v);
+  }
+  Jacobians<S::dim> jacobians(double t, const Vec<S::dim>& x, const Vec<S::dim>& v) const requires Driven<S> {
+    ++jacobian_calls;
+    return S::jacobians(t, x, v);
   }
 };
 
@@ -144,7 +152,7 @@ template <class M, Scene S> struct PairCode {
     const S s(p);
     State<1> y = exact(s, t0);
     Stepper<M, S> stepper;  // a multistep method remembers the exact past: y(t0 - k h)
-    if constexpr (Multistep<M>) stepper.memory = M::remember(s, [&](int k) { return exact(s, t0 - k * h); });
+    if constexpr (Multistep<M>) stepper.memory = M::remember(s, [&](int k) { return exact(s, t0 - k * h); }, t0, h);
     const StepStatus st = stepper.step(s, y, t0, h);
     out = {y.x, y.v};
     return st;

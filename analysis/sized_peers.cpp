@@ -31,11 +31,11 @@ struct MadeScene {
 };
 
 // z' = (v, M^-1 F(x, v)), z = (x_1, v_1, x_2, v_2, ...) interleaved.
-int interleaved_rhs(sunrealtype, N_Vector z, N_Vector dz, void* data) {
+int interleaved_rhs(sunrealtype t, N_Vector z, N_Vector dz, void* data) {
   const MadeScene& s = *static_cast<const MadeScene*>(data);
   const Eigen::Index d = N_VGetLength(z) / 2;
   const Eigen::Map<const Eigen::VectorXd, 0, Eigen::InnerStride<2>> x(N_VGetArrayPointer(z), d), v(N_VGetArrayPointer(z) + 1, d);
-  const Eigen::VectorXd a = acceleration(s, Eigen::VectorXd(x), Eigen::VectorXd(v));
+  const Eigen::VectorXd a = acceleration(s, t, Eigen::VectorXd(x), Eigen::VectorXd(v));
   double* out = N_VGetArrayPointer(dz);
   for (Eigen::Index i = 0; i < d; ++i) out[2 * i] = v[i], out[2 * i + 1] = a[i];
   return 0;
@@ -59,13 +59,13 @@ int band_jacobian(sunrealtype, N_Vector z, N_Vector, SUNMatrix J, void* data, N_
 }
 
 // z' = (v, M^-1 F(x, v)), z = (x, v) in blocks.
-int blocked_rhs(sunrealtype, N_Vector z, N_Vector dz, void* data) {
+int blocked_rhs(sunrealtype t, N_Vector z, N_Vector dz, void* data) {
   const MadeScene& s = *static_cast<const MadeScene*>(data);
   const Eigen::Index d = N_VGetLength(z) / 2;
   const Eigen::Map<const Eigen::VectorXd> a(N_VGetArrayPointer(z), 2 * d);
   Eigen::Map<Eigen::VectorXd> da(N_VGetArrayPointer(dz), 2 * d);
   da.head(d) = a.tail(d);
-  da.tail(d) = acceleration(s, Eigen::VectorXd(a.head(d)), Eigen::VectorXd(a.tail(d)));
+  da.tail(d) = acceleration(s, t, Eigen::VectorXd(a.head(d)), Eigen::VectorXd(a.tail(d)));
   return 0;
 }
 
@@ -100,11 +100,11 @@ State<Eigen::Dynamic> odeint_dopri5(const MadeScene& s, double tol, double t_end
   const Eigen::Index d = y0.x.size();
   Z z(2 * d);
   z << y0.x, y0.v;
-  const auto rhs = [&](const Z& a, Z& da, double) {
+  const auto rhs = [&](const Z& a, Z& da, double t) {
     ++n.forces;
     da.resize(a.size());
     da.head(d) = a.tail(d);
-    da.tail(d) = acceleration(s, Eigen::VectorXd(a.head(d)), Eigen::VectorXd(a.tail(d)));
+    da.tail(d) = acceleration(s, t, Eigen::VectorXd(a.head(d)), Eigen::VectorXd(a.tail(d)));
   };
   using Stepper = odeint::runge_kutta_dopri5<Z, double, Z, double, odeint::vector_space_algebra>;
   odeint_adaptive(odeint::make_controlled(tol, tol, Stepper()), rhs, z, t_end, 1e-6 * t_end, n, [](const Z&, double) {});

@@ -52,6 +52,7 @@ template <int D> struct AdaptiveResult {
 };
 
 namespace dp5 {
+inline constexpr double c2 = 1.0 / 5, c3 = 3.0 / 10, c4 = 4.0 / 5, c5 = 8.0 / 9;  // stage times; c6 = c7 = 1
 inline constexpr double a21 = 1.0 / 5;
 inline constexpr double a31 = 3.0 / 40, a32 = 9.0 / 40;
 inline constexpr double a41 = 44.0 / 45, a42 = -56.0 / 15, a43 = 32.0 / 9;
@@ -85,7 +86,7 @@ template <Scene S> double initial_step(const S& s, const State<S::dim>& y0, cons
   const auto norm = [&](const State<D>& a) { return error_norm<D>(a, y0, y0, tol); };
   const double d0 = norm(y0), d1 = norm(f0);
   const double h0 = (d0 < 1e-5 || d1 < 1e-5) ? 1e-6 : 0.01 * d0 / d1;
-  const State<D> f1 = derivative(s, axpy(y0, h0, f0));
+  const State<D> f1 = derivative(s, h0, axpy(y0, h0, f0));  // from t = 0
   ++evaluations;
   const double d2 = norm({f1.x - f0.x, f1.v - f0.v}) / h0;
   const double h1 = (d1 <= 1e-15 && d2 <= 1e-15) ? std::max(1e-6, h0 * 1e-3) : std::pow(0.01 / std::max(d1, d2), 0.2);
@@ -115,7 +116,7 @@ AdaptiveResult<S::dim> simulate_dopri5(const S& s, const AdaptiveSpec& spec, Obs
     else return 0;
   }();
 
-  State<D> k1 = derivative(s, y);
+  State<D> k1 = derivative(s, 0.0, y);
   st.force_evaluations = 1;
   double t = 0;
   double h = spec.t_end > 0 ? initial_step(s, y, k1, spec.tol, spec.t_end, st.force_evaluations) : 0;
@@ -129,20 +130,20 @@ AdaptiveResult<S::dim> simulate_dopri5(const S& s, const AdaptiveSpec& spec, Obs
     }
     const bool last = t + h >= spec.t_end;
     if (last) h = spec.t_end - t;
-    const State<D> k2 = derivative(s, axpy(y, h * a21, k1));
+    const State<D> k2 = derivative(s, t + c2 * h, axpy(y, h * a21, k1));
     const State<D> y3{y.x + h * (a31 * k1.x + a32 * k2.x), y.v + h * (a31 * k1.v + a32 * k2.v)};
-    const State<D> k3 = derivative(s, y3);
+    const State<D> k3 = derivative(s, t + c3 * h, y3);
     const State<D> y4{y.x + h * (a41 * k1.x + a42 * k2.x + a43 * k3.x), y.v + h * (a41 * k1.v + a42 * k2.v + a43 * k3.v)};
-    const State<D> k4 = derivative(s, y4);
+    const State<D> k4 = derivative(s, t + c4 * h, y4);
     const State<D> y5{y.x + h * (a51 * k1.x + a52 * k2.x + a53 * k3.x + a54 * k4.x),
                       y.v + h * (a51 * k1.v + a52 * k2.v + a53 * k3.v + a54 * k4.v)};
-    const State<D> k5 = derivative(s, y5);
+    const State<D> k5 = derivative(s, t + c5 * h, y5);
     const State<D> y6{y.x + h * (a61 * k1.x + a62 * k2.x + a63 * k3.x + a64 * k4.x + a65 * k5.x),
                       y.v + h * (a61 * k1.v + a62 * k2.v + a63 * k3.v + a64 * k4.v + a65 * k5.v)};
-    const State<D> k6 = derivative(s, y6);
+    const State<D> k6 = derivative(s, t + h, y6);
     const State<D> y1{y.x + h * (b1 * k1.x + b3 * k3.x + b4 * k4.x + b5 * k5.x + b6 * k6.x),
                       y.v + h * (b1 * k1.v + b3 * k3.v + b4 * k4.v + b5 * k5.v + b6 * k6.v)};
-    const State<D> k7 = derivative(s, y1);
+    const State<D> k7 = derivative(s, t + h, y1);
     st.force_evaluations += 6;
     const State<D> err{h * (e1 * k1.x + e3 * k3.x + e4 * k4.x + e5 * k5.x + e6 * k6.x + e7 * k7.x),
                        h * (e1 * k1.v + e3 * k3.v + e4 * k4.v + e5 * k5.v + e6 * k6.v + e7 * k7.v)};

@@ -2,7 +2,7 @@
 // M x'' = F(x, v). Written on the first-order system y = (x, v), y' = (v, M^-1 F):
 //
 //   stage velocities V_i (the unknowns, s D of them), stage positions X_i = x0 + h sum_j a_ij V_j,
-//   G_i(V) = M (V_i - v0) - h sum_j a_ij F(X_j, V_j) = 0,
+//   G_i(V) = M (V_i - v0) - h sum_j a_ij F(t0 + c_j h, X_j, V_j) = 0,   c_j = sum_k a_jk,
 //   x1 = x0 + h sum_i b_i V_i,   v1 = v0 + h sum_i b_i M^-1 F(X_i, V_i).
 //
 // The Jacobian of G, block (i, k):  M delta_ik - h a_ik dF/dv(k) - h^2 sum_j a_ij a_jk dF/dx(j).
@@ -21,12 +21,18 @@ namespace steplab {
 template <int Stages> struct ButcherTableau {
   std::array<std::array<double, Stages>, Stages> a;
   std::array<double, Stages> b;
+  // Stage i's time within the step, c_i = sum_j a_ij: where a driven scene's force is evaluated.
+  constexpr double c(int i) const {
+    double sum = 0;
+    for (double x : a[static_cast<std::size_t>(i)]) sum += x;
+    return sum;
+  }
 };
 
 // On a fixed size, also for a pack of runs (T a Pack; S its scene): each lane iterates as its
 // run alone would and stops where that run stops, as in solve_implicit (and always inlined, as it is).
 template <int Stages, class S, class T>
-[[gnu::always_inline]] inline Status<T> implicit_rk_step_dense(const S& s, State<S::dim, T>& y, Time<T> h, const ButcherTableau<Stages>& t) {
+[[gnu::always_inline]] inline Status<T> implicit_rk_step_dense(const S& s, State<S::dim, T>& y, Time<T> t0, Time<T> h, const ButcherTableau<Stages>& t) {
   using std::abs;
   constexpr int D = S::dim, N = Stages * D;
   using Big = Eigen::Matrix<T, N, 1>;
@@ -41,7 +47,7 @@ template <int Stages, class S, class T>
     for (int i = 0; i < Stages; ++i) {
       X[i] = y.x;
       for (int j = 0; j < Stages; ++j) X[i] += (h * t.a[i][j]) * V.template segment<D>(j * D);
-      F[i] = s.force(X[i], V.template segment<D>(i * D));
+      F[i] = force_at(s, t0 + t.c(i) * h, X[i], V.template segment<D>(i * D));
     }
     Big r;
     T f_norm = 0;
@@ -57,7 +63,7 @@ template <int Stages, class S, class T>
       lanes.solved(r.norm() <= NewtonSettings::tolerance * scale);
     }
     if (lanes.give_up(it, r)) break;
-    for (int i = 0; i < Stages; ++i) J[i] = s.jacobians(X[i], V.template segment<D>(i * D));
+    for (int i = 0; i < Stages; ++i) J[i] = jacobians_at(s, t0 + t.c(i) * h, X[i], V.template segment<D>(i * D));
     if (it == 0)
       for (int i = 0; i < Stages; ++i) force_terms += J[i].dx.norm() * X[i].norm() + J[i].dv.norm() * V.template segment<D>(i * D).norm();
     if (lanes.solved(all_zero(r))) break;  // already solved (at rest in equilibrium)
@@ -86,7 +92,7 @@ template <int Stages, class S, class T>
 // pattern: tridiagonal for the rope) and factorised by sparse LU (core/sparse.hpp), its ordering
 // computed once per run (the thread's solver keeps it).
 template <int Stages, Scene S>
-StepStatus implicit_rk_step_sparse(const S& s, State<S::dim>& y, double h, const ButcherTableau<Stages>& t) {
+StepStatus implicit_rk_step_sparse(const S& s, State<S::dim>& y, double t0, double h, const ButcherTableau<Stages>& t) {
   const Eigen::Index n = y.x.size(), N = Stages * n;
   const Eigen::VectorXd& m = s.mass();
   Eigen::VectorXd V(N), r(N), dV;
@@ -106,7 +112,7 @@ StepStatus implicit_rk_step_sparse(const S& s, State<S::dim>& y, double h, const
     for (int i = 0; i < Stages; ++i) {
       X[i] = y.x;
       for (int j = 0; j < Stages; ++j) X[i] += (h * t.a[i][j]) * V.segment(j * n, n);
-      F[i] = s.force(X[i], V.segment(i * n, n));
+      F[i] = force_at(s, t0 + t.c(i) * h, X[i], V.segment(i * n, n));
     }
     double f_norm = 0;
     for (int i = 0; i < Stages; ++i) {
@@ -121,7 +127,7 @@ StepStatus implicit_rk_step_sparse(const S& s, State<S::dim>& y, double h, const
       if (r.norm() <= NewtonSettings::tolerance * scale) break;
     }
     if (it == NewtonSettings::max_iterations || !r.allFinite()) return StepStatus::NoConvergence;
-    for (int i = 0; i < Stages; ++i) J[i] = s.jacobians(X[i], V.segment(i * n, n));
+    for (int i = 0; i < Stages; ++i) J[i] = jacobians_at(s, t0 + t.c(i) * h, X[i], V.segment(i * n, n));
     if (it == 0)
       for (int i = 0; i < Stages; ++i) force_terms += J[i].dx.norm() * X[i].norm() + J[i].dv.norm() * V.segment(i * n, n).norm();
     if (r.isZero(0.0)) break;  // already solved (at rest in equilibrium)
@@ -148,9 +154,10 @@ StepStatus implicit_rk_step_sparse(const S& s, State<S::dim>& y, double h, const
 }
 
 template <int Stages, class S, class T>
-[[gnu::always_inline]] inline Status<T> implicit_rk_step(const S& s, State<S::dim, T>& y, Time<T> h, const ButcherTableau<Stages>& t) {
-  if constexpr (S::dim == Eigen::Dynamic) return implicit_rk_step_sparse(s, y, h, t);
-  else return implicit_rk_step_dense(s, y, h, t);
+[[gnu::always_inline]] inline Status<T> implicit_rk_step(const S& s, State<S::dim, T>& y, Time<T> t0, Time<T> h,
+                                                         const ButcherTableau<Stages>& t) {
+  if constexpr (S::dim == Eigen::Dynamic) return implicit_rk_step_sparse(s, y, t0, h, t);
+  else return implicit_rk_step_dense(s, y, t0, h, t);
 }
 
 }  // namespace steplab

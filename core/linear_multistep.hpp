@@ -34,15 +34,17 @@ template <auto C, int D, int K, class T> State<D, T> combination(const State<D, 
 // B: b_0 .. b_K.
 template <auto B> struct AdamsBashforthMethod {
   static constexpr int history = static_cast<int>(B.size()) - 1;
-  // Memory of a run whose state k steps back was past(k): the derivatives there.
-  template <Scene S, class Past> static History<S::dim, history> remember(const S& s, Past&& past) {
-    return history_of<S::dim, history>([&](int k) { return derivative(s, past(k)); });
+  // Memory of a run whose state k steps back, at t0 - k h, was past(k): the derivatives there
+  // (t0 and h matter to a driven scene only).
+  template <Scene S, class Past>
+  static History<S::dim, history> remember(const S& s, Past&& past, double t0 = 0, double h = 0) {
+    return history_of<S::dim, history>([&](int k) { return derivative(s, t0 - k * h, past(k)); });
   }
   // Also on packs (core/batch.hpp), where lanes start at different steps: RK4 where a lane is
   // still starting, the Adams-Bashforth sum where it is not, each only where some lane needs it.
   template <class S, class T>
   static StepStatus step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h, History<S::dim, history, T>& mem) {
-    const State<S::dim, T> f = derivative(s, y);
+    const State<S::dim, T> f = derivative(s, t, y);
     const auto starting = mem.count < double(history);
     if (all(starting)) {
       mem.push(f);
@@ -68,7 +70,7 @@ template <auto A, double Beta> struct BdfMethod {
   static constexpr int history = static_cast<int>(A.size()) - 1;
   static constexpr int solve_stages = GaussLegendre4::solve_stages;  // its start (core/method.hpp)
   // Memory of a run whose state k steps back was past(k): those states.
-  template <Scene S, class Past> static History<S::dim, history> remember(const S&, Past&& past) {
+  template <Scene S, class Past> static History<S::dim, history> remember(const S&, Past&& past, double = 0, double = 0) {
     return history_of<S::dim, history>(past);
   }
   // Also on packs: Gauss-Legendre where a lane is still starting, the BDF step where it is not.
@@ -83,13 +85,13 @@ template <auto A, double Beta> struct BdfMethod {
     const State<S::dim, T> w = combination<A>(now, mem);
     mem.push(now);
     if (!any(starting)) {
-      const Status<T> st = solve_implicit(s, w.x, Beta * h, w.v, Beta * h, y.v);
+      const Status<T> st = solve_implicit(s, t + h, w.x, Beta * h, w.v, Beta * h, y.v);
       y.x = w.x + (Beta * h) * y.v;
       return st;
     }
     State<S::dim, T> started = y;  // some lanes of a pack (one run is all or none)
     const Status<T> start_st = GaussLegendre4::step(s, started, t, h);
-    const Status<T> st = solve_implicit(s, w.x, Beta * h, w.v, Beta * h, y.v);
+    const Status<T> st = solve_implicit(s, t + h, w.x, Beta * h, w.v, Beta * h, y.v);
     y.x = select(starting, started.x, Vec<S::dim, T>(w.x + (Beta * h) * y.v));
     y.v = select(starting, started.v, y.v);
     return status_of((starting && failed(start_st)) || (!starting && failed(st)));

@@ -3,7 +3,10 @@
 // A method is a struct with
 //   static constexpr MethodInfo info;                       name, order, flags
 //   template <Scene S> static StepStatus step(const S&, State<S::dim>& y, double t, double h);
-// that advances y from time t to t + h in place. It allocates nothing. Written over the scalar,
+// that advances y from time t to t + h in place. It allocates nothing. It evaluates the force at
+// each stage's own time, acceleration(s, t + c_i h, x, v) (core/scene.hpp): a driven scene's
+// force depends on it, and a method that passed another time would lose its order there
+// (`steplab check` measures it on the target). Written over the scalar,
 //   template <class S, class T> static Status<T> step(const S&, State<S::dim, T>& y, Time<T> t, Time<T> h);
 // the same step also advances a pack of runs (T = Pack<W>, core/pack.hpp; core/batch.hpp).
 #pragma once
@@ -90,10 +93,11 @@ template <int W> Mask<W> failed(const Mask<W>& s) { return s; }
 
 // Newton's method for the implicit stages. Solves for the velocity u in
 //
-//     M (u - w) = c F(x0 + cx u, u)
+//     M (u - w) = c F(t, x0 + cx u, u)
 //
-// (backward Euler: w = v0, c = cx = h; a half step of it is the implicit midpoint rule; velocity
-// Verlet's closing kick: w = v0 + h/2 a0, c = h/2, cx = 0 at fixed x1). The Jacobian of the
+// (backward Euler: w = v0, c = cx = h, t = t0 + h; a half step of it is the implicit midpoint
+// rule, t = t0 + h/2; velocity Verlet's closing kick: w = v0 + h/2 a0, c = h/2, cx = 0 at fixed
+// x1, t = t0 + h). t matters to a driven scene only. The Jacobian of the
 // residual G(u) = M (u - w) - c F is  J = M - c dF/dv - c cx dF/dx.
 // Starts from u = w; stops when |G(u)| <= tolerance * scale, the scale being the size of the
 // terms G balances: |M u| + |M w| + c (|F| + |dF/dx| |x| + |dF/dv| |u|), the last two from the
@@ -174,7 +178,7 @@ template <class S, class T = double> StageSolve<S::dim, T> stage_solve() {
 // when every lane has stopped. A stopped lane's u is not touched again. Always inlined: a call
 // left out of line would be compiled for the default instruction set, not the batch's (core/batch.hpp).
 template <class S, class T>
-[[gnu::always_inline]] inline Status<T> solve_implicit(const S& s, const std::type_identity_t<Vec<S::dim, T>>& x0, Time<T> cx,
+[[gnu::always_inline]] inline Status<T> solve_implicit(const S& s, Time<T> t, const std::type_identity_t<Vec<S::dim, T>>& x0, Time<T> cx,
                          const std::type_identity_t<Vec<S::dim, T>>& w, Time<T> c, Vec<S::dim, T>& u) {
   using std::abs;
   constexpr int D = S::dim;
@@ -185,14 +189,14 @@ template <class S, class T>
   StageSolve<D, T> linear = stage_solve<S, T>();
   for (int it = 0;; ++it) {
     const Vec<D, T> x = x0 + cx * u;
-    const Vec<D, T> f = s.force(x, u);
+    const Vec<D, T> f = force_at(s, t, x, u);
     const Vec<D, T> r = m.cwiseProduct(u - w) - c * f;
     if (it > 0) {
       const T scale = m.cwiseProduct(u).norm() + m.cwiseProduct(w).norm() + abs(c) * (f.norm() + force_terms);
       lanes.solved(r.norm() <= NewtonSettings::tolerance * scale);
     }
     if (lanes.give_up(it, r)) return lanes.status();
-    const Jacobians<D, T>& jac = s.jacobians(x, u);  // a reference where the scene keeps its own (the rope)
+    const Jacobians<D, T>& jac = jacobians_at(s, t, x, u);  // a reference where the scene keeps its own (the rope)
     if (it == 0) force_terms = jac.dx.norm() * x.norm() + jac.dv.norm() * u.norm();
     if (lanes.solved(all_zero(r))) return lanes.status();  // already solved (e.g. at rest in equilibrium)
     count_newton_update(s);

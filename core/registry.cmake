@@ -13,4 +13,4 @@ set(STEPLAB_METHODS
     adams_bashforth2 adams_bashforth3 bdf2 bdf3                       # families: multistep
     radau_iia5                                                        # stiff systems
     analytic)
-set(STEPLAB_SCENES cannonball spring falling bounce chain rope softbody)
+set(STEPLAB_SCENES cannonball spring falling bounce chain rope softbody target)

@@ -1,16 +1,20 @@
-// What a scene is: a mechanical system M x'' = F(x, v) with a diagonal mass M.
+// What a scene is: a mechanical system M x'' = F(x, v), or M x'' = F(t, x, v) if it is driven,
+// with a diagonal mass M.
 //
 // A scene gives (all const, all allocation-free):
 //   dim                   number of coordinates (compile time)
 //   mass()                the diagonal of M, one entry per coordinate
 //   inverse_mass()        its reciprocal, stored (a step multiplies by it)
-//   force(x, v)           F(x, v); every scene here is autonomous
-//   jacobians(x, v)       dF/dx and dF/dv (used by the implicit methods only)
+//   force(x, v)           F(x, v), an autonomous scene's; or force(t, x, v), a driven one's
+//                         (Driven): every method evaluates it at each of its stages' own times
+//   jacobians(x, v)       dF/dx and dF/dv (used by the implicit methods only); jacobians(t, x, v)
+//                         for a driven scene
 //   velocity_dependent()  whether F depends on v (damping); F must be affine in v
 //   energy(x, v)          the energy whose ratio to its start value the studies track
 //   initial()             the start state
 // and, where it has one, flow(y, h): the exact state h after state y (HasExact); the exact
-// solution is then exact(s, t) = flow(initial(), t).
+// solution is then exact(s, t) = flow(initial(), t). A driven scene's flow depends on when it
+// starts, so it gives exact_at(t), the exact solution from its initial state, instead.
 //
 // Integrators see scenes only through this interface, so a new scene never touches them.
 // Parameters come from a table of ParamSpec (name, default, bound, help), which the CLI, the
@@ -63,6 +67,18 @@ struct ParamSpec {
   double max_count = 0;
 };
 
+// The force of an autonomous scene, F(x, v), or of a driven one, F(t, x, v).
+template <class S>
+concept AutonomousForce = requires(const S& s, const Vec<S::dim>& x, const Vec<S::dim>& v) {
+  { s.force(x, v) } -> std::convertible_to<Vec<S::dim>>;
+  { s.jacobians(x, v) } -> std::convertible_to<Jacobians<S::dim>>;
+};
+template <class S>
+concept Driven = requires(const S& s, double t, const Vec<S::dim>& x, const Vec<S::dim>& v) {
+  { s.force(t, x, v) } -> std::convertible_to<Vec<S::dim>>;
+  { s.jacobians(t, x, v) } -> std::convertible_to<Jacobians<S::dim>>;
+};
+
 template <class S>
 concept Scene = requires(const S& s, const Vec<S::dim>& x, const Vec<S::dim>& v, std::span<const double> p) {
   { S::name } -> std::convertible_to<std::string_view>;
@@ -70,8 +86,7 @@ concept Scene = requires(const S& s, const Vec<S::dim>& x, const Vec<S::dim>& v,
   { S(p) };
   { s.mass() } -> std::convertible_to<Vec<S::dim>>;
   { s.inverse_mass() } -> std::convertible_to<Vec<S::dim>>;
-  { s.force(x, v) } -> std::convertible_to<Vec<S::dim>>;
-  { s.jacobians(x, v) } -> std::convertible_to<Jacobians<S::dim>>;
+  requires AutonomousForce<S> || Driven<S>;
   { s.velocity_dependent() } -> std::convertible_to<bool>;
   { s.energy(x, v) } -> std::convertible_to<double>;
   { s.initial() } -> std::convertible_to<State<S::dim>>;
@@ -95,9 +110,11 @@ concept HasContact = Scene<S> && requires(const S& s, const Vec<S::dim>& x) {
 };
 
 template <class S>
-concept HasExact = Scene<S> && requires(const S& s, const State<S::dim>& y, double h) {
+concept HasExact = Scene<S> && (requires(const S& s, const State<S::dim>& y, double h) {
   { s.flow(y, h) } -> std::convertible_to<State<S::dim>>;
-};
+} || (Driven<S> && requires(const S& s, double t) {
+  { s.exact_at(t) } -> std::convertible_to<State<S::dim>>;
+}));
 
 template <HasExact S> State<S::dim> exact(const S& s, double t) {
   if constexpr (requires { s.exact_at(t); }) return s.exact_at(t);
@@ -201,9 +218,24 @@ template <HasExact S> class ExactTracker {
 // the scene of a pack of runs (Packable below).
 // Always inlined: left out of line (GCC's stack-frame growth limit, on the falling triangle) it was
 // compiled for the default instruction set, not the batch's (core/batch.hpp).
-template <class S, class X, class V>
-[[gnu::always_inline]] inline Vec<S::dim, typename X::Scalar> acceleration(const S& s, const X& x, const V& v) {
-  return s.force(x, v).cwiseProduct(s.inverse_mass());
+// t: the time of the stage the force is evaluated at; an autonomous scene's force does not read it
+// (nor is it computed, once inlined).
+template <class S, class Tm, class X, class V>
+[[gnu::always_inline]] inline auto force_at(const S& s, Tm t, const X& x, const V& v) {
+  if constexpr (Driven<S>) return s.force(t, x, v);
+  else return s.force(x, v);
+}
+template <class S, class Tm, class X, class V>
+[[gnu::always_inline]] inline decltype(auto) jacobians_at(const S& s, Tm t, const X& x, const V& v) {
+  if constexpr (Driven<S>) return s.jacobians(t, x, v);
+  else return s.jacobians(x, v);
+}
+// Written out, not through force_at: one inlined layer less keeps GCC inlining the Eigen
+// assignments of a step that calls it several times (RK4 on the spring).
+template <class S, class Tm, class X, class V>
+[[gnu::always_inline]] inline Vec<S::dim, typename X::Scalar> acceleration(const S& s, Tm t, const X& x, const V& v) {
+  if constexpr (Driven<S>) return s.force(t, x, v).cwiseProduct(s.inverse_mass());
+  else return s.force(x, v).cwiseProduct(s.inverse_mass());
 }
 
 // A scene whose runs can be stepped W at a time (core/batch.hpp) is a template over its scalar,

@@ -62,9 +62,9 @@ template <Multistep M, class S, class T> struct Stepper<M, S, T> {
   }
 };
 
-// The derivative of the first-order system, f(y) = (v, a(x, v)), stored as a State.
-template <class S, class T> State<S::dim, T> derivative(const S& s, const State<S::dim, T>& y) {
-  return {y.v, acceleration(s, y.x, y.v)};
+// The derivative of the first-order system at time t, f(t, y) = (v, a(t, x, v)), stored as a State.
+template <class S, class T> State<S::dim, T> derivative(const S& s, Time<T> t, const State<S::dim, T>& y) {
+  return {y.v, acceleration(s, t, y.x, y.v)};
 }
 
 }  // namespace steplab

@@ -5,6 +5,7 @@
 # steplab_add_executable(), and ask the tool about them:
 #   mysteplab check --method heun            exit 0 (every claim holds)
 #   mysteplab check --method heun_claims_3   exit 1 (the order claim fails)
+#   mysteplab check --method heun_frozen_time  exit 1 (its order on the driven target fails alone)
 #   mysteplab study convergence --scene pendulum --methods heun,rk4
 #                                            against the reference solution (no exact one):
 #                                            fitted orders 2 and 4 within 0.1
@@ -39,11 +40,11 @@ struct Heun {
                                             .summary = "Heun's method: explicit trapezoidal rule"};
   // Over the scalar T: one run (double), or a pack of runs where the scene has packs (the spring).
   template <class S, class T>
-  static steplab::StepStatus step(const S& s, steplab::State<S::dim, T>& y, steplab::Time<T>, steplab::Time<T> h) {
+  static steplab::StepStatus step(const S& s, steplab::State<S::dim, T>& y, steplab::Time<T> t, steplab::Time<T> h) {
     using V = steplab::Vec<S::dim, T>;
-    const V kx1 = y.v, kv1 = steplab::acceleration(s, y.x, y.v);
+    const V kx1 = y.v, kv1 = steplab::acceleration(s, t, y.x, y.v);
     const V xp = y.x + h * kx1, vp = y.v + h * kv1;
-    const V kx2 = vp, kv2 = steplab::acceleration(s, xp, vp);
+    const V kx2 = vp, kv2 = steplab::acceleration(s, t + h, xp, vp);
     y.x += (h / 2) * (kx1 + kx2);
     y.v += (h / 2) * (kv1 + kv2);
     return steplab::StepStatus::Ok;
@@ -64,6 +65,30 @@ struct HeunClaims3 : Heun {
 };
 
 STEPLAB_METHOD(HeunClaims3);
+EOF
+
+cat > heun_frozen_time.hpp <<'EOF'
+#pragma once
+#include "heun.hpp"
+
+// A classic slip: the corrector's slope taken at the step's start time, not at t + h. Invisible
+// on every autonomous scene; on a driven one (the target) it is first order.
+struct HeunFrozenTime {
+  static constexpr steplab::MethodInfo info{.name = "heun_frozen_time", .order = 2, .family = steplab::Family::ExplicitRungeKutta,
+                                            .summary = "Heun's method with its corrector at the wrong time"};
+  template <class S, class T>
+  static steplab::StepStatus step(const S& s, steplab::State<S::dim, T>& y, steplab::Time<T> t, steplab::Time<T> h) {
+    using V = steplab::Vec<S::dim, T>;
+    const V kv1 = steplab::acceleration(s, t, y.x, y.v);
+    const V xp = y.x + h * y.v, vp = y.v + h * kv1;
+    const V kv2 = steplab::acceleration(s, t, xp, vp);  // should be t + h
+    y.x += (h / 2) * (y.v + vp);
+    y.v += (h / 2) * (kv1 + kv2);
+    return steplab::StepStatus::Ok;
+  }
+};
+
+STEPLAB_METHOD(HeunFrozenTime);
 EOF
 
 cat > pendulum.hpp <<'EOF'
@@ -209,7 +234,7 @@ cat > CMakeLists.txt <<'EOF'
 cmake_minimum_required(VERSION 3.22)
 project(mine LANGUAGES CXX)
 find_package(steplab 0.2 REQUIRED)
-steplab_add_executable(mysteplab METHODS heun.hpp heun_claims_3.hpp SCENES pendulum.hpp beads.hpp)
+steplab_add_executable(mysteplab METHODS heun.hpp heun_claims_3.hpp heun_frozen_time.hpp SCENES pendulum.hpp beads.hpp)
 EOF
 
 cmake -S . -B build -DCMAKE_PREFIX_PATH="$tmp/prefix" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
@@ -220,6 +245,12 @@ tool=build/mysteplab
 status=0
 "$tool" check --method heun_claims_3 || status=$?
 [[ $status -eq 1 ]] || { echo "check --method heun_claims_3 exited $status, not 1"; exit 1; }
+# the corrector at the wrong time: every claim holds but the order on the driven target
+status=0
+"$tool" check --method heun_frozen_time > frozen.txt || status=$?
+[[ $status -eq 1 ]] || { echo "check --method heun_frozen_time exited $status, not 1"; exit 1; }
+grep -q "^FAIL  order 2 on the target: fitted" frozen.txt || { cat frozen.txt; exit 1; }
+[[ $(grep -c "^FAIL" frozen.txt) -eq 1 ]] || { cat frozen.txt; exit 1; }
 
 "$tool" study convergence --scene pendulum --methods heun,rk4 --json conv.json >/dev/null
 python3 - conv.json <<'EOF'

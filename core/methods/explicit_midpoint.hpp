@@ -10,11 +10,11 @@ namespace steplab {
 struct ExplicitMidpoint {
   static constexpr MethodInfo info{.name = "explicit_midpoint", .order = 2, .family = Family::ExplicitRungeKutta,
                                    .summary = "half an Euler step to the midpoint, then the full step with its slope"};
-  template <class S, class T> static StepStatus step(const S& s, State<S::dim, T>& y, Time<T> /*t*/, Time<T> h) {
+  template <class S, class T> static StepStatus step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
     const Vec<S::dim, T> xm = y.x + 0.5 * h * y.v;
-    const Vec<S::dim, T> vm = y.v + 0.5 * h * acceleration(s, y.x, y.v);
+    const Vec<S::dim, T> vm = y.v + 0.5 * h * acceleration(s, t, y.x, y.v);
     y.x += h * vm;
-    y.v += h * acceleration(s, xm, vm);
+    y.v += h * acceleration(s, t + 0.5 * h, xm, vm);
     return StepStatus::Ok;
   }
 };

@@ -16,8 +16,8 @@ struct GaussLegendre4 {
   static constexpr double r3 = 1.7320508075688772935;  // sqrt(3)
   static constexpr int solve_stages = 2;  // core/method.hpp
   static constexpr ButcherTableau<2> tableau{{{{0.25, 0.25 - r3 / 6}, {0.25 + r3 / 6, 0.25}}}, {0.5, 0.5}};
-  template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> /*t*/, Time<T> h) {
-    return implicit_rk_step(s, y, h, tableau);
+  template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
+    return implicit_rk_step(s, y, t, h, tableau);
   }
 };
 

@@ -13,9 +13,9 @@ struct ImplicitEuler {
                                    .implicit = true, .a_stable = true,
                                    .summary = "x += h v', v += h a(x', v') at the new state, by Newton", .first_of = Family::Bdf};
   static constexpr int solve_stages = 1;  // core/method.hpp
-  template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> /*t*/, Time<T> h) {
+  template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
     Vec<S::dim, T> v1;
-    const Status<T> status = solve_implicit(s, y.x, h, y.v, h, v1);
+    const Status<T> status = solve_implicit(s, t + h, y.x, h, y.v, h, v1);
     y.x += h * v1;
     y.v = v1;
     return status;

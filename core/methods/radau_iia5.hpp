@@ -21,8 +21,8 @@ struct RadauIIA5 {
                                                {(296 + 169 * s6) / 1800, (88 + 7 * s6) / 360, (-2 - 3 * s6) / 225},
                                                {(16 - s6) / 36, (16 + s6) / 36, 1.0 / 9}}},
                                              {(16 - s6) / 36, (16 + s6) / 36, 1.0 / 9}};
-  template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> /*t*/, Time<T> h) {
-    return implicit_rk_step(s, y, h, tableau);
+  template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
+    return implicit_rk_step(s, y, t, h, tableau);
   }
 };
 

@@ -11,11 +11,11 @@ namespace steplab {
 struct Rk3 {
   static constexpr MethodInfo info{.name = "rk3", .order = 3, .family = Family::ExplicitRungeKutta,
                                    .summary = "Kutta's three-stage Runge-Kutta"};
-  template <class S, class T> static StepStatus step(const S& s, State<S::dim, T>& y, Time<T> /*t*/, Time<T> h) {
+  template <class S, class T> static StepStatus step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
     using V = Vec<S::dim, T>;
-    const V kx1 = y.v, kv1 = acceleration(s, y.x, y.v);
-    const V kx2 = y.v + 0.5 * h * kv1, kv2 = acceleration(s, V(y.x + 0.5 * h * kx1), kx2);
-    const V kx3 = y.v - h * kv1 + 2 * h * kv2, kv3 = acceleration(s, V(y.x - h * kx1 + 2 * h * kx2), kx3);
+    const V kx1 = y.v, kv1 = acceleration(s, t, y.x, y.v);
+    const V kx2 = y.v + 0.5 * h * kv1, kv2 = acceleration(s, t + 0.5 * h, V(y.x + 0.5 * h * kx1), kx2);
+    const V kx3 = y.v - h * kv1 + 2 * h * kv2, kv3 = acceleration(s, t + h, V(y.x - h * kx1 + 2 * h * kx2), kx3);
     y.x += (h / 6) * (kx1 + 4 * kx2 + kx3);
     y.v += (h / 6) * (kv1 + 4 * kv2 + kv3);
     return StepStatus::Ok;

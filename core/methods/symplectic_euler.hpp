@@ -11,8 +11,8 @@ struct SymplecticEuler {
   static constexpr MethodInfo info{.name = "symplectic_euler", .order = 1, .family = Family::Splitting,
                                    .symplectic = true,
                                    .summary = "v += h a(x, v), then x += h v with the new v"};
-  template <class S, class T> static StepStatus step(const S& s, State<S::dim, T>& y, Time<T> /*t*/, Time<T> h) {
-    y.v += h * acceleration(s, y.x, y.v);
+  template <class S, class T> static StepStatus step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
+    y.v += h * acceleration(s, t, y.x, y.v);
     y.x += h * y.v;
     return StepStatus::Ok;
   }

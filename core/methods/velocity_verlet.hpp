@@ -16,19 +16,19 @@ struct VelocityVerlet {
                                    .symplectic = true,
                                    .summary = "kick h/2, drift h, kick h/2 with the new acceleration"};
   static constexpr int solve_stages = 1;  // the implicit kick (core/method.hpp)
-  template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> /*t*/, Time<T> h) {
+  template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
     using V = Vec<S::dim, T>;
-    const V a0 = acceleration(s, y.x, y.v);
+    const V a0 = acceleration(s, t, y.x, y.v);
     y.x += h * y.v + (0.5 * h * h) * a0;
     const V kicked = y.v + (0.5 * h) * a0;
     const auto implicit = s.velocity_dependent();  // a Mask for a pack of springs, some damped
     if (!any(implicit)) {
-      y.v = kicked + (0.5 * h) * acceleration(s, y.x, y.v);
+      y.v = kicked + (0.5 * h) * acceleration(s, t + h, y.x, y.v);
       return status_of(MaskOf<T>(false));
     }
-    if (all(implicit)) return solve_implicit(s, y.x, 0.0, kicked, 0.5 * h, y.v);
-    const V explicit_kick = kicked + (0.5 * h) * acceleration(s, y.x, y.v);  // a pack: each lane its kick
-    const Status<T> st = solve_implicit(s, y.x, 0.0, kicked, 0.5 * h, y.v);
+    if (all(implicit)) return solve_implicit(s, t + h, y.x, 0.0, kicked, 0.5 * h, y.v);
+    const V explicit_kick = kicked + (0.5 * h) * acceleration(s, t + h, y.x, y.v);  // a pack: each lane its kick
+    const Status<T> st = solve_implicit(s, t + h, y.x, 0.0, kicked, 0.5 * h, y.v);
     y.v = select(implicit, y.v, explicit_kick);
     return status_of(implicit && failed(st));
   }

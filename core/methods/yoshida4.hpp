@@ -19,9 +19,11 @@ struct Yoshida4 {
   // A lane of a pack whose Newton failed in one substep takes the others too; its state is dropped.
   template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
     MaskOf<T> failed_lanes(false);
+    T at = t;  // each substep starts where the last ended: t, t + w1 h, t + (w1 + w0) h
     for (const double w : {w1, w0, w1}) {
-      failed_lanes = failed_lanes || failed(VelocityVerlet::step(s, y, t, w * h));
+      failed_lanes = failed_lanes || failed(VelocityVerlet::step(s, y, at, w * h));
       if (all(failed_lanes)) break;
+      at += w * h;
     }
     return status_of(failed_lanes);
   }

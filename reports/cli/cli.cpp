@@ -105,6 +105,7 @@ std::string_view value_kind(std::string_view option) {
       {"--dampings", "NUMBER,..."},   {"--method", "NAME"},           {"--scene", "NAME"},
       {"--error", "NAME"},            {"--testcase", "NAME"},         {"--json", "FILE"},
       {"--config", "FILE"},           {"--out", "FOLDER"},            {"--scenes", "NAME,..."},
+      {"--sweep", "NAME=NUMBER,..."},
       {"--sections", "NAME,..."}};
   for (const auto& [name, kind] : kinds)
     if (name == option) return kind;
@@ -189,7 +190,9 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   add_lanes_option(conv_cmd, conv.lanes);
   add_shard_option(conv_cmd, conv.shard);
   conv_cmd->add_flag("--timing", conv.timing, "also time every run (work-precision; not reproducible byte for byte)");
-  conv_cmd->add_option("--json", conv.json, "write JSON (schema steplab.convergence/2) to this file");
+  conv_cmd->add_option("--sweep", conv.sweep, "NAME=V1,V2,...: the study at each value of the scene's parameter NAME "
+                      "(increasing), each method's order read against it (e.g. --scene target --sweep stiffness=1,1e2,1e4)");
+  conv_cmd->add_option("--json", conv.json, "write JSON (schema steplab.convergence/2; with --sweep steplab.convergence_sweep/1) to this file");
 
   StabilityArgs damp, stab;
   CLI::App* damp_cmd = study->add_subcommand("damping", "spring: energy growth rate measured and predicted over damping and dt");

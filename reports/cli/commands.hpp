@@ -55,6 +55,7 @@ struct ConvergenceArgs {
   std::string dt_max = "0.1", dt_min = "1e-4", points = "16";
   std::string t_end;  // empty: 10, or 1 against a reference solution (contacts make longer runs chaotic)
   std::string error = "final";
+  std::string sweep;  // NAME=V1,V2,...: the study at each value of one scene parameter
   bool reference = false;
   std::string threads = "0";
   std::string lanes;  // the pack width: auto, 1, 2, 4 or 8 (add_lanes_option)

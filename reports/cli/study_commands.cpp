@@ -89,6 +89,34 @@ void add_lanes_option(CLI::App* app, std::string& lanes) {
       ->capture_default_str();
 }
 
+namespace {
+
+// --sweep NAME=V1,V2,...: a parameter of the scene (not a count: those set its size) and its
+// values, each within the parameter's bound, strictly increasing.
+std::pair<std::size_t, std::vector<double>> parse_sweep(const std::string& text, std::size_t scene) {
+  const std::span<const ParamSpec> params = scene_kernel(scene).params;
+  std::string accepted;
+  for (const ParamSpec& p : params)
+    if (!p.is_count) accepted += fmt::format("{}{}", accepted.empty() ? "" : ", ", p.name);
+  const std::size_t eq = text.find('=');
+  const std::string name = text.substr(0, eq);
+  const auto it = std::find_if(params.begin(), params.end(), [&](const ParamSpec& p) { return p.name == name && !p.is_count; });
+  if (eq == std::string::npos || it == params.end())
+    throw UsageError(fmt::format("--sweep '{}' names no parameter of {} that can be swept; accepted: NAME=V1,V2,... with NAME one of {}",
+                                 text, scene_name(scene), accepted));
+  const std::string list = text.substr(eq + 1);
+  if (list.empty()) throw UsageError(fmt::format("--sweep {}= has no values; accepted: {}=V1,V2,... increasing", name, name));
+  std::vector<double> values;
+  for (const std::string& v : split_list(list)) values.push_back(parse_number("--sweep " + name, v, it->bound));
+  for (std::size_t i = 1; i < values.size(); ++i)
+    if (!(values[i] > values[i - 1]))
+      throw UsageError(fmt::format("--sweep {}: {} does not follow {}; accepted: strictly increasing values", name, values[i],
+                                   values[i - 1]));
+  return {static_cast<std::size_t>(it - params.begin()), values};
+}
+
+}  // namespace
+
 int convergence_command(ConvergenceArgs& a, Context& ctx) {
   ConvergenceConfig c;
   c.scene = a.scene.scene_index();
@@ -118,6 +146,15 @@ int convergence_command(ConvergenceArgs& a, Context& ctx) {
   c.timing = a.timing;
   if (sweep_steps(c.t_end, c.dt_max, c.dt_min, c.points).size() < 3)
     throw UsageError("--dt-max, --dt-min and --t-end leave fewer than 3 distinct steps; accepted: a wider range");
+  if (!a.sweep.empty()) {
+    const auto [param, values] = parse_sweep(a.sweep, c.scene);
+    if (!a.shard.empty()) throw UsageError("--sweep runs in one process; accepted: --sweep or --shard, not both");
+    if (ctx.stop_after_validation(a.json)) return 0;
+    const ConvergenceSweep s = convergence_sweep(c, param, values);
+    std::fputs(convergence_sweep_table(s).c_str(), stdout);
+    if (!a.json.empty()) write_atomic(a.json, convergence_sweep_json(s).dump(1) + "\n");
+    return 0;
+  }
   begin_shard(ctx, a.shard, a.json, c.timing);
   if (ctx.stop_after_validation(a.json)) return 0;
 

@@ -18,6 +18,10 @@ Json peer_builds_json();
 
 Json convergence_json(const ConvergenceResult& r);   // schema steplab.convergence/2
 std::string convergence_table(const ConvergenceResult& r);
+// Order against a parameter: schema steplab.convergence_sweep/1 (the fits by method and value,
+// and each value's whole convergence study), and the table of fitted orders (reports/data/sweep_output.cpp).
+Json convergence_sweep_json(const ConvergenceSweep& s);
+std::string convergence_sweep_table(const ConvergenceSweep& s);
 
 }  // namespace steplab
 

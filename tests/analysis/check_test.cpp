@@ -23,10 +23,14 @@ TEST_P(EveryRow, HoldsEveryClaim) {
   const std::size_t m = GetParam();
   const CheckResult r = check_method(m, method_info(m), Workers{2});
   EXPECT_TRUE(r.all_hold()) << check_text(r);
-  ASSERT_EQ(r.orders.size(), 2u);
+  ASSERT_EQ(r.orders.size(), 3u);
   if (method_info(m).order > 0) {  // the spring's order is fitted, within 0.01 for every row
     EXPECT_TRUE(r.orders[0].fit.fitted);
     EXPECT_NEAR(r.orders[0].fit.order, method_info(m).order, 0.01) << method_info(m).name;
+    // the driven target's too: each stage's force at its own time (within the claim's 0.1)
+    EXPECT_EQ(r.orders[2].scene, "target");
+    EXPECT_TRUE(r.orders[2].fit.fitted);
+    EXPECT_NEAR(r.orders[2].fit.order, method_info(m).order, kOrderTolerance) << method_info(m).name;
   }
   EXPECT_EQ(r.stability.size(), std::size(kCheckDampings));
   const auto lines = check_lines(r);
@@ -72,7 +76,7 @@ TEST(Check, FirstOrderDeclaredSecondOrderFailsItsOrderOnly) {
   EXPECT_TRUE(r.rest.holds);
   const std::string text = check_text(r);
   EXPECT_NE(text.find("FAIL  order 2 on the spring: fitted 1.000"), std::string::npos) << text;
-  EXPECT_NE(text.find("2 of 11 claims fail"), std::string::npos) << text;
+  EXPECT_NE(text.find("3 of 13 claims fail"), std::string::npos) << text;
 }
 
 // RK4 declared third order: the spring refutes it; the cannon ball (exact for any order >= 2) cannot.

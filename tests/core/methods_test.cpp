@@ -236,7 +236,7 @@ TEST(Newton, OneStepIsExactForALinearForce) {
   const std::array<double, 5> p{1.0, 5.0, 0.1, 5.0, 9.81};
   const CountingSpring s(p);
   Vec<1> u;
-  EXPECT_EQ(solve_implicit(s, Vec<1>::Constant(-6.0), 0.05, Vec<1>::Constant(0.5), 0.05, u), StepStatus::Ok);
+  EXPECT_EQ(solve_implicit(s, 0.05, Vec<1>::Constant(-6.0), 0.05, Vec<1>::Constant(0.5), 0.05, u), StepStatus::Ok);
   EXPECT_EQ(s.jacobian_calls, 1);
 }
 

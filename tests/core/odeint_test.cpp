@@ -38,9 +38,9 @@ Spring spring(double gamma) {
 // y' = v, v' = a(y, v) as a first-order system for odeint
 struct SpringOde {
   Spring s;
-  void operator()(const Y& y, Y& dy, double) const {
+  void operator()(const Y& y, Y& dy, double t) const {
     dy[0] = y[1];
-    dy[1] = acceleration(s, Vec<1>::Constant(y[0]), Vec<1>::Constant(y[1]))[0];
+    dy[1] = acceleration(s, t, Vec<1>::Constant(y[0]), Vec<1>::Constant(y[1]))[0];
   }
 };
 
@@ -113,8 +113,8 @@ TEST(Odeint, VelocityVerletEqualsVelocityVerletUndamped) {
   using Q = std::array<double, 1>;
   odeint::velocity_verlet<Q> vv;
   std::pair<Q, Q> qp{Q{s.initial().x[0]}, Q{0.0}};
-  const auto acc = [&](const Q& q, const Q& p, Q& a, double) {
-    a[0] = acceleration(s, Vec<1>::Constant(q[0]), Vec<1>::Constant(p[0]))[0];
+  const auto acc = [&](const Q& q, const Q& p, Q& a, double t) {
+    a[0] = acceleration(s, t, Vec<1>::Constant(q[0]), Vec<1>::Constant(p[0]))[0];
   };
   for (int i = 0; i < kSteps; ++i) vv.do_step(acc, qp, i * kDt, kDt);
   expect_same(ours<VelocityVerlet>(s), Y{qp.first[0], qp.second[0]});

@@ -143,6 +143,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"report --config {dir}/config.json --out {dir}/r", "'methods' must be a non-empty array", R"({"methods": []})"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "'sections' must be a non-empty array", R"({"sections": ["summary", 3]})"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "pendulum", R"({"methods": ["rk4", "pendulum"]})"},
+        // order against a parameter: one of the scene's, values in its bound, strictly increasing
+        BadInput{"study convergence --scene target --sweep hardness=1,10", "names no parameter of target"},
+        BadInput{"study convergence --scene target --sweep stiffness=", "has no values"},
+        BadInput{"study convergence --scene target --sweep stiffness=100,10 --json {dir}/s.json", "strictly increasing"},
+        BadInput{"study convergence --scene target --sweep stiffness=-1,10", "stiffness"},
+        BadInput{"study convergence --scene rope --sweep masses=4,8", "names no parameter"},
+        BadInput{"study convergence --scene target --sweep stiffness=1,10 --shard 1/2 --json {dir}/s.json", "not both"},
         // the scenes: known names, each once, not an empty list; each method runs on one of them
         BadInput{"report --scenes spring,pendulum --out {dir}/r", "pendulum"}, BadInput{"report --scenes spring,spring --out {dir}/r", "twice"},
         BadInput{"report --scenes , --out {dir}/r", "--scenes is empty"},
