@@ -36,6 +36,17 @@ inline constexpr std::string_view kSheetProjectile = "cannonball";
 inline constexpr std::array<std::string_view, 5> kSheetMethods{"explicit_euler", "symplectic_euler", "explicit_midpoint",
                                                                "implicit_euler", "analytic"};
 
+// The report's "Does the order hold when stiff?": a scene whose stiffness is a parameter, with an
+// exact solution and modes, swept over these stiffnesses and steps (analysis/order_reduction.hpp).
+inline constexpr std::string_view kStiffenedScene = "target";
+struct StiffOrderDefaults {
+  // 1e-2: h |lambda| <= 0.075 at the largest step (non-stiff); 1e16: h |lambda| >= 2.7e5 and
+  // h^2 |lambda| >= 2700 at the smallest, which Gauss-Legendre 4's stiff limit needs (>= 12 t)
+  std::vector<double> stiffnesses{1e-2, 1, 1e2, 1e4, 1e6, 1e8, 1e10, 1e12, 1e14, 1e16};
+  double dt_max = 0.2, dt_min = 0.01, t_end = 10;
+  int points = 9;
+};
+
 // The old framework's -testcase values that name a scene (its others name a measurement on the
 // first), and the one it starts from.
 inline constexpr std::array<std::string_view, 2> kLegacyScenes{"spring1d", "falling"};

@@ -101,6 +101,12 @@ struct MethodKernel {
   // The step map of h = 1 on u'' = -k u - c u' (m = 1) applied to the unit vectors: the matrix
   // whose spectral radius is the method's amplification at h lambda = re + i im (regions.cpp).
   Eigen::MatrixXd (*test_matrix)(double k, double c);
+  // Its Butcher tableau where it declares one (core/method.hpp): A row by row (s^2 entries) and
+  // b (s entries); empty otherwise.
+  std::span<const double> butcher_a{}, butcher_b{};
+  // A multistep method's one-step start (its Starter, core/linear_multistep.hpp): that method's
+  // name; empty for a one-step method.
+  std::string_view starter{};
 };
 
 // A scene of run-time size made once and reached through the table (SceneKernel::made): what a
@@ -121,6 +127,7 @@ struct SceneKernel {
   std::span<const ParamSpec> params;
   int dim;
   bool has_exact;
+  bool driven = false;  // its force depends on t (core/scene.hpp, Driven)
   // What the scene offers the studies (core/scene.hpp), asked for instead of its name; a
   // parameter by its index in `params`, -1 where the scene declares none.
   int size_param = -1;       // the count that refines a scene of run-time size; -1: fixed size

@@ -251,8 +251,25 @@ template <class M> struct MethodCode {
   }
 };
 
+// A method's Butcher A, row by row, in one array the table can point to.
+template <class M> struct FlatTableau {
+  static constexpr std::size_t s = M::tableau.b.size();
+  static constexpr std::array<double, s * s> a = [] {
+    std::array<double, s * s> out{};
+    for (std::size_t i = 0; i < s; ++i)
+      for (std::size_t j = 0; j < s; ++j) out[i * s + j] = M::tableau.a[i][j];
+    return out;
+  }();
+};
+
 template <class M> constexpr MethodKernel make_method() {
-  return {.info = M::info, .map_size = map_size<M>(), .test_matrix = &MethodCode<M>::test_matrix};
+  MethodKernel k{.info = M::info, .map_size = map_size<M>(), .test_matrix = &MethodCode<M>::test_matrix};
+  if constexpr (requires { M::tableau.b; }) {
+    k.butcher_a = FlatTableau<M>::a;
+    k.butcher_b = M::tableau.b;
+  }
+  if constexpr (requires { typename M::Starter; }) k.starter = M::Starter::info.name;
+  return k;
 }
 
 template <Scene S> struct SceneCode {
@@ -301,6 +318,7 @@ template <Scene S> constexpr SceneKernel make_scene() {
                 .params = std::span<const ParamSpec>(S::params),
                 .dim = S::dim,
                 .has_exact = HasExact<S>,
+                .driven = Driven<S>,
                 .size_param = size_param_index<S>(),
                 .coords_per_mass = coords_per_mass<S>(),
                 .jacobian_bandwidth = jacobian_bandwidth<S>(),

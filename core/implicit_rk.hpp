@@ -18,17 +18,6 @@
 
 namespace steplab {
 
-template <int Stages> struct ButcherTableau {
-  std::array<std::array<double, Stages>, Stages> a;
-  std::array<double, Stages> b;
-  // Stage i's time within the step, c_i = sum_j a_ij: where a driven scene's force is evaluated.
-  constexpr double c(int i) const {
-    double sum = 0;
-    for (double x : a[static_cast<std::size_t>(i)]) sum += x;
-    return sum;
-  }
-};
-
 // On a fixed size, also for a pack of runs (T a Pack; S its scene): each lane iterates as its
 // run alone would and stops where that run stops, as in solve_implicit (and always inlined, as it is).
 template <int Stages, class S, class T>

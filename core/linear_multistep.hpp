@@ -33,6 +33,7 @@ template <auto C, int D, int K, class T> State<D, T> combination(const State<D, 
 
 // B: b_0 .. b_K.
 template <auto B> struct AdamsBashforthMethod {
+  using Starter = Rk4;  // the one-step method of its first steps
   static constexpr int history = static_cast<int>(B.size()) - 1;
   // Memory of a run whose state k steps back, at t0 - k h, was past(k): the derivatives there
   // (t0 and h matter to a driven scene only).
@@ -48,12 +49,12 @@ template <auto B> struct AdamsBashforthMethod {
     const auto starting = mem.count < double(history);
     if (all(starting)) {
       mem.push(f);
-      return Rk4::step(s, y, t, h);
+      return Starter::step(s, y, t, h);
     }
     const State<S::dim, T> sum = combination<B>(f, mem);
     if (any(starting)) {  // some lanes of a pack (one run is all or none)
       State<S::dim, T> started = y;
-      Rk4::step(s, started, t, h);
+      Starter::step(s, started, t, h);
       y.x = select(starting, started.x, Vec<S::dim, T>(y.x + h * sum.x));
       y.v = select(starting, started.v, Vec<S::dim, T>(y.v + h * sum.v));
     } else {
@@ -67,8 +68,9 @@ template <auto B> struct AdamsBashforthMethod {
 
 // A: a_0 .. a_K; Beta: beta.
 template <auto A, double Beta> struct BdfMethod {
+  using Starter = GaussLegendre4;  // the one-step method of its first steps
   static constexpr int history = static_cast<int>(A.size()) - 1;
-  static constexpr int solve_stages = GaussLegendre4::solve_stages;  // its start (core/method.hpp)
+  static constexpr int solve_stages = Starter::solve_stages;  // its start (core/method.hpp)
   // Memory of a run whose state k steps back was past(k): those states.
   template <Scene S, class Past> static History<S::dim, history> remember(const S&, Past&& past, double = 0, double = 0) {
     return history_of<S::dim, history>(past);
@@ -80,7 +82,7 @@ template <auto A, double Beta> struct BdfMethod {
     const auto starting = mem.count < double(history);
     if (all(starting)) {
       mem.push(now);
-      return GaussLegendre4::step(s, y, t, h);
+      return Starter::step(s, y, t, h);
     }
     const State<S::dim, T> w = combination<A>(now, mem);
     mem.push(now);
@@ -90,7 +92,7 @@ template <auto A, double Beta> struct BdfMethod {
       return st;
     }
     State<S::dim, T> started = y;  // some lanes of a pack (one run is all or none)
-    const Status<T> start_st = GaussLegendre4::step(s, started, t, h);
+    const Status<T> start_st = Starter::step(s, started, t, h);
     const Status<T> st = solve_implicit(s, t + h, w.x, Beta * h, w.v, Beta * h, y.v);
     y.x = select(starting, started.x, Vec<S::dim, T>(w.x + (Beta * h) * y.v));
     y.v = select(starting, started.v, y.v);

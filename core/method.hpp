@@ -12,6 +12,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string_view>
 #include <type_traits>
@@ -58,6 +59,21 @@ struct MethodInfo {
   bool exact_flow = false;    // the analytic solution: needs a scene with an exact flow
   std::string_view summary;
   Family first_of = Family::None;  // a second family whose first member the method is (explicit Euler: AB1)
+};
+
+// An implicit Runge-Kutta method declares its Butcher tableau, `static constexpr
+// ButcherTableau<s> tableau`, whether its step is written from it (core/implicit_rk.hpp) or by
+// hand (implicit Euler, implicit midpoint): the order-reduction study reads its stage order and
+// R(infinity) from it (analysis/order_reduction.hpp).
+template <int Stages> struct ButcherTableau {
+  std::array<std::array<double, Stages>, Stages> a;
+  std::array<double, Stages> b;
+  // Stage i's time within the step, c_i = sum_j a_ij: where a driven scene's force is evaluated.
+  constexpr double c(int i) const {
+    double sum = 0;
+    for (double x : a[static_cast<std::size_t>(i)]) sum += x;
+    return sum;
+  }
 };
 
 // A method whose step solves for its stages by Newton (solve_implicit, core/implicit_rk.hpp)

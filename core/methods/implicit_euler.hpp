@@ -13,6 +13,7 @@ struct ImplicitEuler {
                                    .implicit = true, .a_stable = true,
                                    .summary = "x += h v', v += h a(x', v') at the new state, by Newton", .first_of = Family::Bdf};
   static constexpr int solve_stages = 1;  // core/method.hpp
+  static constexpr ButcherTableau<1> tableau{{{{1.0}}}, {1.0}};  // c = 1: stiffly accurate
   template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
     Vec<S::dim, T> v1;
     const Status<T> status = solve_implicit(s, t + h, y.x, h, y.v, h, v1);

@@ -13,6 +13,7 @@ struct ImplicitMidpoint {
                                    .symplectic = true, .implicit = true, .a_stable = true,
                                    .summary = "backward Euler for h/2 to the midpoint, then extrapolate to h"};
   static constexpr int solve_stages = 1;  // core/method.hpp
+  static constexpr ButcherTableau<1> tableau{{{{0.5}}}, {1.0}};  // c = 1/2
   template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
     Vec<S::dim, T> vm;
     const Status<T> status = solve_implicit(s, t + 0.5 * h, y.x, 0.5 * h, y.v, 0.5 * h, vm);

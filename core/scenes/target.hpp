@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <span>
+#include <vector>
 
 #include "core/scene.hpp"
 
@@ -53,6 +54,8 @@ struct Target {
   }
   Jacobians<1> jacobians(double, const Vec<1>&, const Vec<1>&) const { return {Mat<1>::Constant(-k), Mat<1>::Constant(-c)}; }
   bool velocity_dependent() const { return c != 0; }
+  // Its one mode (core/scene.hpp): the deviation's oscillator, omega = sqrt(k/m), 2 zeta.
+  std::vector<Mode> modes() const { return {{std::sqrt(k / m), c / std::sqrt(k * m)}}; }
 
   // 1/2 m v^2 + 1/2 k x^2: bounded on the exact motion (by 1/2 (m w^2 + k)), growing without
   // bound when a method blows up, which is all the studies ask of it here.

@@ -150,9 +150,9 @@ int convergence_command(ConvergenceArgs& a, Context& ctx) {
     const auto [param, values] = parse_sweep(a.sweep, c.scene);
     if (!a.shard.empty()) throw UsageError("--sweep runs in one process; accepted: --sweep or --shard, not both");
     if (ctx.stop_after_validation(a.json)) return 0;
-    const ConvergenceSweep s = convergence_sweep(c, param, values);
-    std::fputs(convergence_sweep_table(s).c_str(), stdout);
-    if (!a.json.empty()) write_atomic(a.json, convergence_sweep_json(s).dump(1) + "\n");
+    const OrderReduction r = order_reduction(convergence_sweep(c, param, values));
+    std::fputs(order_reduction_table(r).c_str(), stdout);
+    if (!a.json.empty()) write_atomic(a.json, order_reduction_json(r).dump(1) + "\n");
     return 0;
   }
   begin_shard(ctx, a.shard, a.json, c.timing);

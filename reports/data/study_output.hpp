@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/convergence.hpp"
+#include "analysis/order_reduction.hpp"
 
 namespace steplab {
 
@@ -18,10 +19,11 @@ Json peer_builds_json();
 
 Json convergence_json(const ConvergenceResult& r);   // schema steplab.convergence/2
 std::string convergence_table(const ConvergenceResult& r);
-// Order against a parameter: schema steplab.convergence_sweep/1 (the fits by method and value,
-// and each value's whole convergence study), and the table of fitted orders (reports/data/sweep_output.cpp).
-Json convergence_sweep_json(const ConvergenceSweep& s);
-std::string convergence_sweep_table(const ConvergenceSweep& s);
+// Order against stiffness: schema steplab.convergence_sweep/1 (each method's theory and its two
+// limits checked, the fits by method and value, and each value's whole convergence study), and
+// the table of fitted orders with the theory beside them (reports/data/sweep_output.cpp).
+Json order_reduction_json(const OrderReduction& r);
+std::string order_reduction_table(const OrderReduction& r);
 
 }  // namespace steplab
 

@@ -140,6 +140,7 @@ bool ReportConfig::has_section(std::string_view name) const {
 std::vector<std::size_t> ReportConfig::own_scenes() const {
   std::vector<std::size_t> out;
   for (const ReportScene* s : scenes()) out.push_back(s->scene);
+  out.push_back(stiffened.scene);
   for (const ReportSizes& s : scaling) out.push_back(s.scene);
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
@@ -169,6 +170,7 @@ ReportConfig default_report_config() {
     role->scene = scene_index(name);
     role->params = default_param_values(role->scene);
   }
+  c.stiffened = {scene_index(kStiffenedScene), default_param_values(scene_index(kStiffenedScene))};
   for (std::size_t s = 0; s < scene_count(); ++s)
     if (scales(scene_kernel(s))) c.scaling.push_back({s, scaling_defaults(scene_name(s)).report_sizes});
   c.covered = c.own_scenes();
@@ -205,6 +207,10 @@ Json report_config_json(const ReportConfig& c) {
   scaling["error"] = c.scaling_error;
   scaling["t_end"] = c.scaling_t_end;
   j["scaling"] = std::move(scaling);
+  const StiffOrderDefaults& so = c.stiff_order;
+  j[std::string(scene_name(c.stiffened.scene))] = scene_params_json(c.stiffened.scene, c.stiffened.params);
+  j["stiff_order"] = {{"stiffnesses", so.stiffnesses}, {"dt_max", so.dt_max}, {"dt_min", so.dt_min}, {"points", so.points},
+                      {"t_end", so.t_end}};
   j["figures"] = {{"cannonball_dt", c.cannonball_dt},
                   {"cannonball_t_end", c.cannonball_t_end},
                   {"spring_dts", c.spring_figure_dts},
@@ -264,6 +270,21 @@ ReportConfig report_config_from_json(const Json& user, const ReportConfig& base)
   }
   c.scaling_error = num(sc["error"], "scaling.error", Bound::Positive);
   c.scaling_t_end = num(sc["t_end"], "scaling.t_end", Bound::Positive);
+  c.stiffened.params = scene_values(j[std::string(scene_name(c.stiffened.scene))], c.stiffened.scene);
+  const Json& so = j["stiff_order"];
+  StiffOrderDefaults& s = c.stiff_order;
+  s.stiffnesses = nums(so["stiffnesses"], "stiff_order.stiffnesses", Bound::Positive);
+  for (std::size_t i = 1; i < s.stiffnesses.size(); ++i)
+    if (!(s.stiffnesses[i] > s.stiffnesses[i - 1]))
+      throw UsageError("config: stiff_order.stiffnesses are not increasing; accepted: strictly increasing values");
+  if (s.stiffnesses.size() < 2) throw UsageError("config: stiff_order.stiffnesses has fewer than 2 values; accepted: 2 or more");
+  s.dt_max = num(so["dt_max"], "stiff_order.dt_max", Bound::Positive);
+  s.dt_min = num(so["dt_min"], "stiff_order.dt_min", Bound::Positive);
+  s.points = count(so["points"], "stiff_order.points", 3, 1000);
+  s.t_end = num(so["t_end"], "stiff_order.t_end", Bound::Positive);
+  if (s.dt_min >= s.dt_max || s.dt_max > s.t_end)
+    throw UsageError("config: stiff_order's steps are not dt_min < dt_max <= t_end; accepted: such a range");
+  step_count(s.t_end, s.dt_min);
   const Json& fg = j["figures"];
   c.cannonball_dt = num(fg["cannonball_dt"], "figures.cannonball_dt", Bound::Positive);
   c.cannonball_t_end = num(fg["cannonball_t_end"], "figures.cannonball_t_end", Bound::Positive);

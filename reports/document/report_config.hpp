@@ -12,6 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/defaults.hpp"
+
 namespace steplab {
 
 // A scene of the report and its parameter values, in its table's order.
@@ -36,7 +38,7 @@ struct ReportConfig {
   std::vector<std::string> sections;
   bool covers(std::size_t scene) const;
   bool has_section(std::string_view name) const;
-  // The report's own scenes: the four below and the scaling ones. (The cost section's stiff chain
+  // The report's own scenes: the four below, the stiffened one and the scaling ones. (The cost section's stiff chain
   // is its own contrast to the spring, not a scene of the report.)
   std::vector<std::size_t> own_scenes() const;
   // Convergence: the covered scenes below that have an exact solution, in that order, then each
@@ -71,6 +73,9 @@ struct ReportConfig {
   // as the system grows: every scene of run-time size with modes, its defaults at these sizes
   std::vector<ReportSizes> scaling;
   double scaling_error = 1e-4, scaling_t_end = 2;
+  // does the order hold when stiff: the scene swept (its parameters but the stiffness) and the sweep
+  ReportScene stiffened;
+  StiffOrderDefaults stiff_order;
   // figures
   double cannonball_dt = 0.25, cannonball_t_end = 17.5;
   std::vector<double> spring_figure_dts{0.01, 0.05};

@@ -155,7 +155,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"report --scenes , --out {dir}/r", "--scenes is empty"},
         BadInput{"report --scenes falling --methods rk4,analytic --out {dir}/r", "'analytic' runs on none of the chosen scenes"},
         BadInput{"report --sheet --scenes falling --out {dir}/r", "'analytic' runs on none"},
-        BadInput{"report --config {dir}/config.json --out {dir}/r", "'scenes' must be a non-empty array", R"({"scenes": []})"}));
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "'scenes' must be a non-empty array", R"({"scenes": []})"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "stiff_order.stiffnesses are not increasing",
+                 R"({"stiff_order": {"stiffnesses": [1, 1e4, 1e2]}})"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "config: stiff_order.stiffnesses",
+                 R"({"stiff_order": {"stiffnesses": [1, -5]}})"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "config: target.stiffness",
+                 R"({"target": {"stiffness": 0}})"}));
 
 }  // namespace
 }  // namespace steplab

@@ -49,6 +49,12 @@ class Reproduce : public Section {
     if (d.studies & kWorkPrecisionStudy)
       md += wrapped(fmt::format("build/steplab study work-precision --points {} --stiffnesses {}{}{}", c.wp_points,
                                 join(c.wp_stiffnesses), c.timing ? "" : " --no-timing", numerical));
+    if (c.has_section("stiff_order") && c.covers(c.stiffened.scene))
+      md += wrapped(fmt::format("build/steplab study convergence --scene {} --error max --dt-max {} --dt-min {} --points {} --t-end {} "
+                                "--sweep {}={}{}", scene_name(c.stiffened.scene), c.stiff_order.dt_max, c.stiff_order.dt_min,
+                                c.stiff_order.points, c.stiff_order.t_end,
+                                scene_kernel(c.stiffened.scene).params[static_cast<std::size_t>(scene_kernel(c.stiffened.scene).stiffness_param)].name,
+                                join(c.stiff_order.stiffnesses), numerical));
     if (c.has_section("growth"))
       for (const ReportSizes& s : c.scaling)
         if (c.covers(s.scene))

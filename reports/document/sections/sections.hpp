@@ -13,6 +13,7 @@
   X(families, true)                \
   X(scenes, true)                  \
   X(convergence, true)             \
+  X(stiff_order, true)             \
   X(stability, true)               \
   X(cost, true)                    \
   X(collision, true)               \

@@ -1,0 +1,69 @@
+// The report's "Does the order hold when stiff?" (reports/document/sections/stiff_order.cpp): its
+// sentences follow the measured orders and the theory, under changed methods and stiffnesses.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "reports/document/report.hpp"
+#include "tests/reports/small_report.hpp"
+
+namespace steplab {
+namespace {
+
+std::string markdown(const ReportConfig& c) { return report_markdown(build_report(c), "png", ""); }
+
+ReportConfig stiff_only() {
+  ReportConfig c = small_config();
+  c.sections = {"stiff_order"};
+  return c;
+}
+
+bool has(const std::string& md, const std::string& s) { return md.find(s) != std::string::npos; }
+
+// The default sweep (1e-2 .. 1e12): Radau IIA 5 and Gauss-Legendre 4 fall, the BDF gain an order
+// in the largest error, implicit Euler and midpoint keep theirs, the explicit methods have no
+// stiff limit; no method differs from the theory.
+TEST(ReportStiffOrder, SentencesFollowTheData) {
+  const std::string md = markdown(stiff_only());
+  ASSERT_TRUE(has(md, "## Does the order hold when stiff?")) << md;
+  const std::size_t fall = md.find("**Fall**"), keep = md.find("**Keep their order**"), gain = md.find("**Gain**"),
+                    unstable = md.find("Not stable as h |lambda| grows");
+  ASSERT_NE(fall, std::string::npos) << md;
+  ASSERT_NE(keep, std::string::npos) << md;
+  ASSERT_NE(gain, std::string::npos) << md;
+  ASSERT_NE(unstable, std::string::npos) << md;
+  EXPECT_TRUE(has(md.substr(fall, gain - fall), "`radau_iia5` from 5.0")) << md;
+  EXPECT_TRUE(has(md.substr(fall, gain - fall), "`gauss_legendre4` from 4.0")) << md;
+  EXPECT_TRUE(has(md.substr(keep, fall - keep), "`implicit_euler`")) << md;
+  EXPECT_TRUE(has(md.substr(keep, fall - keep), "`implicit_midpoint`")) << md;
+  EXPECT_TRUE(has(md.substr(gain), "`bdf2` from 2.0")) << md;
+  EXPECT_TRUE(has(md.substr(unstable), "`rk4`")) << md;
+  EXPECT_FALSE(has(md, "Differ from the theory")) << md;
+  EXPECT_FALSE(has(md, "not reached")) << md;
+}
+
+// Stopped at stiffness 1e4 the stiff regime is never entered: the limit is said not reached,
+// never claimed; with only explicit methods there is nothing but the unstable sentence.
+TEST(ReportStiffOrder, SentencesUnderChangedStiffnessesAndMethods) {
+  ReportConfig c = stiff_only();
+  c.stiff_order.stiffnesses = {1e-2, 1, 1e2, 1e4};
+  std::string md = markdown(c);
+  EXPECT_TRUE(has(md, "The stiff limit is not reached at these steps for")) << md;
+  EXPECT_FALSE(has(md, "**Fall**")) << md;
+
+  choose_methods(c, {"rk4", "explicit_euler"}, "methods");
+  md = markdown(c);
+  EXPECT_TRUE(has(md, "Not stable as h |lambda| grows: `explicit_euler` and `rk4`")) << md;
+  EXPECT_FALSE(has(md, "**Keep their order**")) << md;
+}
+
+// Without the target among the chosen scenes the section is one line.
+TEST(ReportStiffOrder, LeftOutWithoutItsScene) {
+  ReportConfig c = stiff_only();
+  choose_scenes(c, {"spring"}, "scenes");
+  const std::string md = markdown(c);
+  EXPECT_TRUE(has(md, "*Left out: Does the order hold when stiff? (it needs `target`")) << md;
+}
+
+}  // namespace
+}  // namespace steplab
