@@ -113,14 +113,20 @@ int run_command(RunArgs& a, Context& ctx) {
   const std::string_view name = method_info(method).name;
   if (!applies(method, scene))
     throw UsageError(fmt::format("--method {} needs a scene with an exact solution; scene {} has none", name, s.name));
-  const AnyResult r = pair_kernel(method, scene).run(params, spec);
+  // Counted where the table counts (scenes with an exact solution or of run-time size): the same
+  // run, its force and Jacobian evaluations and Newton solves added up beside it.
+  const PairKernel& k = pair_kernel(method, scene);
+  Counts counts;
+  const AnyResult r = k.run_counted ? k.run_counted(params, spec, counts) : k.run(params, spec);
   if (a.json.empty()) {
     std::fputs(csv(r).c_str(), stdout);
   } else {
     Json p = params_json(s.params, params);
     p["dt"] = spec.dt;
     p["t_end"] = t_end;
-    write_atomic(a.json, run_json(s.name, name, std::move(p), r).dump(1) + "\n");
+    Json j = run_json(s.name, name, std::move(p), r);
+    j["counts"] = k.run_counted ? counts_json(counts) : Json(nullptr);
+    write_atomic(a.json, j.dump(1) + "\n");
   }
   if (r.status != RunStatus::Ok)
     fmt::print(stderr, "steplab: {} {} at step {} (t = {})\n", name, to_string(r.status), r.failed_step, r.failed_t);

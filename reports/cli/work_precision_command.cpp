@@ -12,6 +12,7 @@
 #include "reports/data/output.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/cli/parts.hpp"
+#include "reports/data/run_json.hpp"
 #include "reports/data/study_output.hpp"
 
 namespace steplab {
@@ -20,13 +21,7 @@ namespace {
 Json null_if_negative(double x) { return x >= 0 ? Json(x) : Json(nullptr); }
 Json name_or_null(const std::string& s) { return s.empty() ? Json(nullptr) : Json(s); }
 
-// A run's counts (analysis/counts.hpp) by their JSON names.
-Json counts_json(const WorkPoint& p) {
-  return {{"steps", p.steps}, {"rejected_steps", p.rejected}, {"force_evaluations", p.force_evaluations},
-          {"jacobian_evaluations", p.jacobian_evaluations}, {"factorisations", p.factorisations},
-          {"linear_solves", p.solves}, {"newton_iterations", p.newton}};
-}
-Json point_counts(const SceneWork& w, std::ptrdiff_t i) { return i < 0 ? Json(nullptr) : counts_json(w.points[i]); }
+Json point_counts(const SceneWork& w, std::ptrdiff_t i) { return i < 0 ? Json(nullptr) : counts_json(w.points[i].counts()); }
 
 }  // namespace
 
@@ -50,7 +45,7 @@ Json work_precision_json(const WorkPrecisionResult& r) {
                     {p.adaptive ? "tolerance" : "dt", p.setting},
                     {"status", to_string(p.status)},
                     {"error_max", std::isfinite(p.error) ? Json(p.error) : Json(nullptr)}};
-      point.update(counts_json(p));
+      point.update(counts_json(p.counts()));
       point["seconds"] = null_if_negative(p.seconds);
       pts.push_back(std::move(point));
     }

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/counts.hpp"
 #include "core/simulate.hpp"
 
 namespace steplab {
@@ -31,6 +32,13 @@ inline Json params_json(std::span<const ParamSpec> spec, std::span<const double>
   Json p = Json::object();
   for (std::size_t i = 0; i < spec.size(); ++i) p[param_key(spec[i])] = values[i];
   return p;
+}
+
+// A run's counts (analysis/counts.hpp) by their JSON names, the same in every document.
+inline Json counts_json(const Counts& n) {
+  return {{"steps", n.steps},           {"rejected_steps", n.rejected},  {"force_evaluations", n.forces},
+          {"jacobian_evaluations", n.jacobians}, {"factorisations", n.factorisations}, {"linear_solves", n.solves},
+          {"newton_iterations", n.newton}};
 }
 
 template <int D>

@@ -43,6 +43,34 @@ TEST(Cli, RunWritesTheRunJson) {
   EXPECT_EQ(j["samples"][0]["x"][0], -5.0);
 }
 
+// A run's counts, as the methods define them: RK4 evaluates the force 4 times a step and solves
+// nothing; implicit Euler on the rope (linear: full Newton converges in one update, plus the
+// update that confirms it) factorises once per Newton update and solves once with it. Where the
+// table does not count (the falling triangle: no exact solution, fixed size) counts is null.
+TEST(Cli, RunJsonCarriesTheCounts) {
+  TempDir dir;
+  const std::string out = dir.path("out.json");
+  ASSERT_EQ(run_steplab("run --scene spring --method rk4 --dt 0.05 --t-end 1 --json " + out).status, 0);
+  auto j = nlohmann::json::parse(std::ifstream(out));
+  EXPECT_EQ(j["counts"]["steps"], 20);
+  EXPECT_EQ(j["counts"]["force_evaluations"], 80);
+  EXPECT_EQ(j["counts"]["factorisations"], 0);
+  EXPECT_EQ(j["counts"]["newton_iterations"], 0);
+
+  ASSERT_EQ(run_steplab("run --scene rope --masses 64 --method implicit_euler --dt 0.01 --t-end 0.1 --json " + out).status, 0);
+  j = nlohmann::json::parse(std::ifstream(out));
+  const long long steps = j["counts"]["steps"], newton = j["counts"]["newton_iterations"];
+  EXPECT_EQ(steps, 10);
+  EXPECT_GE(newton, steps);
+  EXPECT_LE(newton, 2 * steps);
+  EXPECT_EQ(j["counts"]["factorisations"], newton);
+  EXPECT_EQ(j["counts"]["linear_solves"], newton);
+
+  ASSERT_EQ(run_steplab("run --scene falling --method rk4 --dt 0.01 --t-end 0.1 --json " + out).status, 0);
+  j = nlohmann::json::parse(std::ifstream(out));
+  EXPECT_TRUE(j["counts"].is_null());
+}
+
 // The adaptive dopri5 takes tolerances; the JSON carries them instead of dt, and its step counts.
 // At rtol 1e-8, atol 1e-10 the chain ends within rtol |u(10)| + atol = 7.9e-9 of the exact solution.
 TEST(Cli, RunDopri5WritesToleranceAndSteps) {
