@@ -7,6 +7,7 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <tuple>
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
@@ -71,15 +72,6 @@ StiffTheory runge_kutta_theory(const MethodKernel& mk, StiffTheory t) {
   return t;
 }
 
-// The window's h |lambda| at the smallest and the largest step.
-struct Window {
-  double lo = kNaN, hi = kNaN;
-};
-Window window(const OrderFit& f, double rate) {
-  if (!f.fitted) return {};
-  return {f.dt_lo * rate, f.dt_hi * rate};
-}
-
 bool within(const OrderFit& f, double theory, double tol) { return f.fitted && std::abs(f.order - theory) <= tol; }
 
 // `drift`: how far the order may still be from its limit (below), added to the fit's bound.
@@ -129,11 +121,17 @@ StiffTheory stiff_theory(std::size_t method) {
   return t;
 }
 
-double stiff_rate(std::size_t scene, const std::vector<double>& params) {
-  const SceneKernel& s = scene_kernel(scene);
-  if (!s.modes) return 0;
-  const std::vector<Mode> modes = s.modes(params);
-  return modes.empty() ? 0 : moduli(modes.back()).first;
+ConvergenceConfig stiff_order_config(std::size_t scene, std::vector<double> params, const StiffOrderDefaults& d,
+                                     std::vector<std::size_t> methods) {
+  ConvergenceConfig c;
+  c.scene = scene;
+  c.params = std::move(params);
+  c.methods = std::move(methods);
+  c.t_end = d.t_end;
+  c.dt_max = d.dt_max, c.dt_min = d.dt_min;
+  c.points = d.points;
+  c.fit_error = ErrorKind::Max;  // over the whole run: the largest error, wherever it builds up
+  return c;
 }
 
 OrderReduction order_reduction(const ConvergenceConfig& config, const std::vector<double>& stiffnesses) {
@@ -145,27 +143,32 @@ OrderReduction order_reduction(const ConvergenceConfig& config, const std::vecto
 OrderReduction order_reduction(ConvergenceSweep sweep) {
   OrderReduction out;
   const ConvergenceConfig& base = sweep.studies.front().config;
-  out.driven = scene_kernel(base.scene).driven;
-  std::vector<double> fastest;  // the largest modulus per value (the non-stiff limit's test)
-  for (const ConvergenceResult& r : sweep.studies) {
-    out.rates.push_back(stiff_rate(base.scene, r.config.params));
-    const std::vector<Mode> modes = scene_kernel(base.scene).modes ? scene_kernel(base.scene).modes(r.config.params) : std::vector<Mode>{};
-    fastest.push_back(modes.empty() ? 0 : moduli(modes.back()).second);
-  }
+  const SceneKernel& scene = scene_kernel(base.scene);
+  out.driven = scene.driven;
   const std::size_t nv = sweep.studies.size();
+  // per value: the stiffest mode's eigenvalue moduli (|lambda| and the largest, the non-stiff
+  // limit's test) and the modes themselves (each method's dt* on them)
+  std::vector<double> fastest(nv, 0);
+  std::vector<std::vector<Mode>> modes(nv);
+  out.rates.assign(nv, 0);
+  if (scene.modes)
+    for (std::size_t v = 0; v < nv; ++v) {
+      modes[v] = scene.modes(sweep.studies[v].config.params);
+      if (!modes[v].empty()) std::tie(out.rates[v], fastest[v]) = moduli(modes[v].back());
+    }
   for (std::size_t m = 0; m < base.methods.size(); ++m) {
     MethodReduction mr;
     mr.method = base.methods[m];
     mr.theory = stiff_theory(mr.method);
     const auto fit = [&](std::size_t v) -> const OrderFit& { return sweep.studies[v].fits[m].fit; };
     for (std::size_t v = 0; v < nv; ++v) {
-      const Window w = window(fit(v), out.rates[v]);
-      mr.h_lambda.push_back(std::sqrt(w.lo * w.hi));
-      const SceneKernel& sk = scene_kernel(base.scene);
-      const double dt_star = sk.modes && !method_info(mr.method).exact_flow ? modes_predicted_threshold(mr.method, sk.modes(sweep.studies[v].config.params))
-                                      : std::numeric_limits<double>::infinity();
+      const OrderFit& f = fit(v);
+      // the geometric mean of the window's ends in h |lambda|
+      mr.h_lambda.push_back(f.fitted ? std::sqrt((f.dt_lo * out.rates[v]) * (f.dt_hi * out.rates[v])) : kNaN);
+      const double dt_star = scene.modes && !method_info(mr.method).exact_flow ? modes_predicted_threshold(mr.method, modes[v])
+                                                                                : std::numeric_limits<double>::infinity();
       mr.dt_star.push_back(dt_star);
-      mr.past_stable.push_back(fit(v).fitted && fit(v).dt_hi > dt_star);
+      mr.past_stable.push_back(f.fitted && f.dt_hi > dt_star);
     }
     const OrderFit& first = fit(0);
     mr.non_stiff = check(first, mr.theory.classical, kNonStiffTolerance, first.fitted && first.dt_hi * fastest.front() <= kNonStiffRegime);

@@ -48,6 +48,7 @@
 #include <vector>
 
 #include "analysis/convergence.hpp"
+#include "analysis/defaults.hpp"
 
 namespace steplab {
 
@@ -67,10 +68,6 @@ struct StiffTheory {
 // (BDF) and its step map's stability as h |lambda| grows on the negative real axis.
 StiffTheory stiff_theory(std::size_t method);
 
-// |lambda| that sets a scene's stiffness: of its fastest mode (core/scene.hpp, Mode), the
-// eigenvalue of smallest modulus, omega (zeta - sqrt(zeta^2 - 1)) when overdamped, else omega;
-// 0 for a scene that declares no modes.
-double stiff_rate(std::size_t scene, const std::vector<double>& params);
 
 // The tolerances: a limit holds when the measured order is within these of the theory's
 // (or the fit's bound contains it).
@@ -114,9 +111,17 @@ struct OrderReduction {
   // (at most 2 a_f for an A-stable method): where it exceeds the slow modes' C h^p the fitted
   // order falls towards 0, a plateau, not a lower order. The stiff limit is not checked there.
   bool driven = true;
-  std::vector<double> rates;  // stiff_rate per swept value
+  // per swept value: |lambda| that sets the stiffness, of the scene's fastest mode (core/scene.hpp,
+  // Mode) the eigenvalue of smallest modulus, omega (zeta - sqrt(zeta^2 - 1)) when overdamped,
+  // else omega; 0 for a scene that declares no modes
+  std::vector<double> rates;
   std::vector<MethodReduction> methods;  // in the sweep's method order
 };
+
+// The study each value of the sweep runs: the steps of `d`, on `methods`, fitted to the largest
+// position error along the run (the report's section, `steplab study convergence --error max`).
+ConvergenceConfig stiff_order_config(std::size_t scene, std::vector<double> params, const StiffOrderDefaults& d,
+                                     std::vector<std::size_t> methods);
 
 // The sweep over the scene's stiffness parameter (it must declare one and its modes), each fit
 // marked against the theory.

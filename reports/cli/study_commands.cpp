@@ -106,12 +106,8 @@ std::pair<std::size_t, std::vector<double>> parse_sweep(const std::string& text,
                                  text, scene_name(scene), accepted));
   const std::string list = text.substr(eq + 1);
   if (list.empty()) throw UsageError(fmt::format("--sweep {}= has no values; accepted: {}=V1,V2,... increasing", name, name));
-  std::vector<double> values;
-  for (const std::string& v : split_list(list)) values.push_back(parse_number("--sweep " + name, v, it->bound));
-  for (std::size_t i = 1; i < values.size(); ++i)
-    if (!(values[i] > values[i - 1]))
-      throw UsageError(fmt::format("--sweep {}: {} does not follow {}; accepted: strictly increasing values", name, values[i],
-                                   values[i - 1]));
+  const std::vector<double> values = number_list("--sweep " + name, list, it->bound);
+  check_increasing(fmt::format("--sweep {} values", name), values);
   return {static_cast<std::size_t>(it - params.begin()), values};
 }
 

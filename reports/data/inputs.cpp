@@ -70,4 +70,11 @@ std::vector<double> number_list(std::string_view what, const std::string& text, 
   return out;
 }
 
+void check_increasing(std::string_view what, const std::vector<double>& values) {
+  for (std::size_t i = 1; i < values.size(); ++i)
+    if (!(values[i] > values[i - 1]))
+      throw UsageError(fmt::format("{} are not increasing ({} after {}); accepted: strictly increasing values", what, values[i],
+                                   values[i - 1]));
+}
+
 }  // namespace steplab

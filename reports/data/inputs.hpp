@@ -29,6 +29,8 @@ long long parse_count(std::string_view what, std::string_view text, long long lo
 std::vector<std::string> split_list(std::string_view text);
 // Comma-separated numbers, each within the bound.
 std::vector<double> number_list(std::string_view what, const std::string& text, Bound bound);
+// A UsageError naming `what` ("--sweep stiffness values") unless each value exceeds the one before.
+void check_increasing(std::string_view what, const std::vector<double>& values);
 
 // steps_for(t_end, dt) (core/simulate.hpp), or a UsageError if that is more than max_steps.
 inline constexpr long long max_steps = 1'000'000'000;

@@ -23,6 +23,8 @@ std::string convergence_table(const ConvergenceResult& r);
 // limits checked, the fits by method and value, and each value's whole convergence study), and
 // the table of fitted orders with the theory beside them (reports/data/sweep_output.cpp).
 Json order_reduction_json(const OrderReduction& r);
+// A limit's check in a word: holds, fails, not reached, no fit, or "-" without a theory.
+std::string limit_word(const LimitCheck& c, bool has_theory);
 std::string order_reduction_table(const OrderReduction& r);
 
 }  // namespace steplab

@@ -42,12 +42,10 @@ Json limit_json(const LimitCheck& c) {
   return j;
 }
 
-// "holds", "fails: 3.41", "not reached", "-" (no theory).
+// "holds (2.00)", "fails (3.41)", "not reached (3.63)", "no fit", "-".
 std::string limit_cell(const LimitCheck& c, bool has_theory) {
-  if (!has_theory) return "-";
-  if (!c.fitted) return "no fit";
-  if (!c.reached) return fmt::format("not reached ({:.2f})", c.order);
-  return c.holds ? fmt::format("holds ({:.2f})", c.order) : fmt::format("fails ({:.2f})", c.order);
+  const std::string word = limit_word(c, has_theory);
+  return has_theory && c.fitted ? fmt::format("{} ({:.2f})", word, c.order) : word;
 }
 
 std::string transition_cell(const MethodReduction& m) {
@@ -57,6 +55,13 @@ std::string transition_cell(const MethodReduction& m) {
 }
 
 }  // namespace
+
+std::string limit_word(const LimitCheck& c, bool has_theory) {
+  if (!has_theory) return "-";
+  if (!c.fitted) return "no fit";
+  if (!c.reached) return "not reached";
+  return c.holds ? "holds" : "fails";
+}
 
 Json order_reduction_json(const OrderReduction& r) {
   const ConvergenceSweep& s = r.sweep;

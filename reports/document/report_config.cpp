@@ -274,9 +274,7 @@ ReportConfig report_config_from_json(const Json& user, const ReportConfig& base)
   const Json& so = j["stiff_order"];
   StiffOrderDefaults& s = c.stiff_order;
   s.stiffnesses = nums(so["stiffnesses"], "stiff_order.stiffnesses", Bound::Positive);
-  for (std::size_t i = 1; i < s.stiffnesses.size(); ++i)
-    if (!(s.stiffnesses[i] > s.stiffnesses[i - 1]))
-      throw UsageError("config: stiff_order.stiffnesses are not increasing; accepted: strictly increasing values");
+  check_increasing("config: stiff_order.stiffnesses", s.stiffnesses);
   if (s.stiffnesses.size() < 2) throw UsageError("config: stiff_order.stiffnesses has fewer than 2 values; accepted: 2 or more");
   s.dt_max = num(so["dt_max"], "stiff_order.dt_max", Bound::Positive);
   s.dt_min = num(so["dt_min"], "stiff_order.dt_min", Bound::Positive);

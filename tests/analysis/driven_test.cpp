@@ -10,6 +10,7 @@
 #include "analysis/convergence.hpp"
 #include "analysis/kernel.hpp"
 #include "core/scenes/target.hpp"
+#include "tests/analysis/declared_order.hpp"
 
 namespace steplab {
 namespace {
@@ -32,13 +33,7 @@ ConvergenceConfig on_target(double stiffness) {
 TEST(Driven, EveryMethodKeepsItsOrderOnTheNonStiffTarget) {
   const ConvergenceResult r = convergence_study(on_target(1.0));
   EXPECT_FALSE(r.uses_reference);  // x(t) = sin t exactly
-  for (const ConvergenceFit& f : r.fits) {
-    const MethodInfo& info = method_info(f.method);
-    ASSERT_TRUE(f.fit.fitted) << info.name << ": " << f.fit.note;
-    EXPECT_NEAR(f.fit.order, info.order, 0.01) << info.name;
-    EXPECT_LE(f.fit.bound_lo, info.order) << info.name;
-    EXPECT_GE(f.fit.bound_hi, info.order) << info.name;
-  }
+  for (const ConvergenceFit& f : r.fits) ASSERT_NO_FATAL_FAILURE(expect_declared_order(f, 0.01));
 }
 
 // The sweep is the study at each value, nothing else: the same fits as each study alone.

@@ -62,14 +62,13 @@ TEST(OrderReductionTheory, MultistepAndExplicit) {
 // the last within 0.15 of the theory's stiff order, each bound containing it (the bars).
 OrderReduction report_sweep(const std::vector<double>& params_override = {}) {
   const StiffOrderDefaults d;
-  ConvergenceConfig c;
-  c.scene = *find_scene(kStiffenedScene);
-  c.params = params_override.empty() ? default_param_values(c.scene) : params_override;
-  c.t_end = d.t_end, c.dt_max = d.dt_max, c.dt_min = d.dt_min, c.points = d.points;
-  c.fit_error = ErrorKind::Max;
+  const std::size_t scene = *find_scene(kStiffenedScene);
+  std::vector<std::size_t> methods;
   for (std::size_t m = 0; m < method_count(); ++m)
-    if (!method_info(m).exact_flow) c.methods.push_back(m);
-  return order_reduction(c, d.stiffnesses);
+    if (!method_info(m).exact_flow) methods.push_back(m);
+  return order_reduction(
+      stiff_order_config(scene, params_override.empty() ? default_param_values(scene) : params_override, d, methods),
+      d.stiffnesses);
 }
 
 void expect_limits_hold(const OrderReduction& r) {

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "reports/document/report.hpp"
-#include "tests/reports/small_report.hpp"
+#include "small_report.hpp"
 
 namespace steplab {
 namespace {

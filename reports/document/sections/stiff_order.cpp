@@ -18,12 +18,6 @@ namespace {
 
 std::string order_or_dash(const OrderFit& f) { return f.fitted ? fmt::format("{:.2f}", f.order) : "-"; }
 
-std::string limit_word(const LimitCheck& c, int theory) {
-  if (theory < 0) return "-";
-  if (!c.fitted) return "no fit";
-  if (!c.reached) return "not reached";
-  return c.holds ? "holds" : "**differs**";
-}
 
 class StiffOrder : public Section {
  public:
@@ -32,14 +26,7 @@ class StiffOrder : public Section {
 
   void study(const ReportData& d) override {
     const ReportConfig& rc = d.config;
-    ConvergenceConfig c;
-    c.scene = rc.stiffened.scene;
-    c.params = rc.stiffened.params;
-    c.methods = d.numerical_methods();
-    c.t_end = rc.stiff_order.t_end;
-    c.dt_max = rc.stiff_order.dt_max, c.dt_min = rc.stiff_order.dt_min;
-    c.points = rc.stiff_order.points;
-    c.fit_error = ErrorKind::Max;  // over the whole run: the largest error, wherever it builds up
+    ConvergenceConfig c = stiff_order_config(rc.stiffened.scene, rc.stiffened.params, rc.stiff_order, d.numerical_methods());
     c.workers = d.workers;
     r_ = order_reduction(c, rc.stiff_order.stiffnesses);
   }
@@ -125,7 +112,7 @@ class StiffOrder : public Section {
         md += fmt::format(" {}{} |", order_or_dash(s.studies[v].fits[m].fit), mr.past_stable[v] ? "\\*" : "");
         starred |= mr.past_stable[v];
       }
-      md += fmt::format(" {} / {} |\n", limit_word(mr.non_stiff, mr.theory.classical), limit_word(mr.stiff, mr.theory.stiff));
+      md += fmt::format(" {} / {} |\n", limit_word(mr.non_stiff, true), limit_word(mr.stiff, mr.theory.stiff >= 0));
     }
     md += "\nLimits: the non-stiff one (the first stiffness) / the stiff one (the last), each *holds* when the order is within "
           "0.05 / 0.15 of the theory's and its bound contains it, in that limit's regime.";
