@@ -7,9 +7,9 @@
 //   forces          evaluations of the force, the right side z' = f(t, z) (CVODE's and odeint's
 //                   right-side calls; a difference-quotient Jacobian's calls included)
 //   jacobians       evaluations of the Jacobians dF/dx, dF/dv (CVODE: of df/dz)
-//   factorisations  iteration matrices factorised (steplab: each Newton update's dense or sparse
-//                   LU or LDL^T; CVODE: its linear solver's setups, M = I - gamma J formed and
-//                   factorised)
+//   factorisations  iteration matrices factorised (steplab: on a fixed size each Newton update's
+//                   dense LU; on a run-time size each kept matrix made anew, core/sparse.hpp;
+//                   CVODE: its linear solver's setups, M = I - gamma J formed and factorised)
 //   solves          linear solves with a factorisation
 //   newton          Newton iterations (each one a linear solve)
 #pragma once

@@ -56,7 +56,7 @@ inline constexpr std::array<std::string_view, 2> kLegacyScenes{"spring1d", "fall
 struct ScalingDefaults {
   std::vector<int> sizes{16, 64, 256, 1024};
   long long max_steps = 2'000'000;
-  std::vector<int> report_sizes{8, 32, 128};
+  std::vector<int> report_sizes{8, 32, 256};
 };
 ScalingDefaults scaling_defaults(std::string_view scene);
 

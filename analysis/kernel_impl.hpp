@@ -27,12 +27,12 @@ template <class M, class S> constexpr bool applies() {
   else return true;
 }
 
-// A scene that counts what a method asks of it, and each linear solve of Newton's method
-// (count_newton_update, core/method.hpp); otherwise the scene itself.
+// A scene that counts what a method asks of it, and each Newton iteration with its factorisations
+// and linear solves (count_iteration, core/method.hpp); otherwise the scene itself.
 template <Scene S> struct Counted : S {
   explicit Counted(std::span<const double> p) : S(p) {}
-  mutable long long forces = 0, jacobian_calls = 0, newton_updates = 0;
-  void newton_update() const { ++newton_updates; }
+  mutable long long forces = 0, jacobian_calls = 0, newton = 0, factorisations = 0, solves = 0;
+  void counted_iteration(const SolveCounts& did) const { ++newton, factorisations += did.factorisations, solves += did.solves; }
   Vec<S::dim> force(const Vec<S::dim>& x, const Vec<S::dim>& v) const requires AutonomousForce<S> {
     ++forces;
     return S::force(x, v);
@@ -104,9 +104,8 @@ template <class M, Scene S> struct PairCode {
   static AnyResult run_counted(Params p, const RunSpec& spec, Counts& n) {
     const Counted<S> s(p);
     AnyResult r = to_any(simulate<M>(s, spec));
-    // each Newton update factorises its matrix and solves once (full Newton)
-    n = {.steps = r.steps, .forces = s.forces, .jacobians = s.jacobian_calls, .factorisations = s.newton_updates,
-         .solves = s.newton_updates, .newton = s.newton_updates};
+    n = {.steps = r.steps, .forces = s.forces, .jacobians = s.jacobian_calls, .factorisations = s.factorisations,
+         .solves = s.solves, .newton = s.newton};
     return r;
   }
 
@@ -136,7 +135,7 @@ template <class M, Scene S> struct PairCode {
     for (long long i = 0; i < n; ++i) {
       stepper.step(s, y, k * h, h);
       asm volatile("" : "+m"(y) : : "memory");  // Google Benchmark's DoNotOptimize, for GCC and Clang
-      if (++k == restart) k = 0, y = s.initial(), stepper = {};
+      if (++k == restart) k = 0, y = s.initial(), stepper.forget();
     }
   }
 

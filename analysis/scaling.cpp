@@ -214,22 +214,43 @@ double run_seconds(const ScalingConfig& c, const ScalingRow& row) {
   return *std::min_element(times.begin(), times.end());
 }
 
-// Least-squares slope of ln y against ln N over the rows where y is finite and > 0; NaN with fewer
-// than two.
-template <class Y> double exponent(std::span<const ScalingRow> rows, Y&& y) {
-  std::vector<double> n, v;
-  for (const ScalingRow& r : rows)
-    if (const double x = y(r); std::isfinite(x) && x > 0) n.push_back(std::log(r.masses)), v.push_back(std::log(x));
-  return n.size() < 2 ? kNaN : fit_line(n, v).slope;
-}
-
 ScalingFit fit_of(const ScalingConfig& c, std::span<const ScalingRow> rows) {
-  const auto run = [&](const ScalingRow& r) { return r.reached() && r.steps > 0 ? scaling_cost(c, r) : kNaN; };
-  return {rows.front().solver, exponent(rows, [&](const ScalingRow& r) { return run(r) / static_cast<double>(r.steps); }),
-          exponent(rows, run), exponent(rows, [](const ScalingRow& r) { return r.dt_stable; })};
+  std::vector<double> masses, run, step, stable;
+  for (const ScalingRow& r : rows) {
+    masses.push_back(r.masses);
+    run.push_back(r.reached() && r.steps > 0 ? scaling_cost(c, r) : kNaN);
+    step.push_back(run.back() / static_cast<double>(r.steps));
+    stable.push_back(r.dt_stable);
+  }
+  ScalingFit f{rows.front().solver, fit_exponent(masses, step), fit_exponent(masses, run), fit_exponent(masses, stable)};
+  f.step.early = f.run.early = begins_early(masses, step);
+  return f;
 }
 
 }  // namespace
+
+bool begins_early(std::span<const double> masses, std::span<const double> step_cost) {
+  std::vector<std::size_t> known;
+  for (std::size_t k = 0; k < masses.size() && known.size() < 2; ++k)
+    if (std::isfinite(step_cost[k]) && step_cost[k] > 0) known.push_back(k);
+  if (known.size() < 2) return false;
+  const std::size_t a = known[0], b = known[1];
+  return std::log(step_cost[b] / step_cost[a]) < kAsymptoticSlope * std::log(masses[b] / masses[a]);
+}
+
+Exponent fit_exponent(std::span<const double> masses, std::span<const double> y) {
+  std::vector<double> n, v;
+  for (std::size_t k = 0; k < masses.size(); ++k)
+    if (std::isfinite(y[k]) && y[k] > 0) n.push_back(std::log(masses[k])), v.push_back(std::log(y[k]));
+  Exponent e;
+  e.sizes = static_cast<int>(n.size());
+  if (n.empty()) return e;
+  e.decades = (*std::max_element(n.begin(), n.end()) - *std::min_element(n.begin(), n.end())) / std::log(10.0);
+  if (e.sizes < kFitSizes || e.decades < kFitDecades - 1e-9) return e;
+  const LineFit line = fit_line(n, v);
+  e.value = line.slope, e.lo = line.ci95_lo, e.hi = line.ci95_hi;
+  return e;
+}
 
 double scaling_cost(const ScalingConfig& c, const ScalingRow& r) { return c.timing ? r.seconds : double(r.forces + r.jacobians) * r.masses; }
 

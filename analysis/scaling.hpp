@@ -19,13 +19,13 @@
 //     the timed region, the solver's set-up, run and clean-up inside), its counts (analysis/
 //     counts.hpp: steps, rejected steps, force and Jacobian evaluations, factorisations, linear
 //     solves, Newton iterations); the cost of one step is their ratio.
-// Then per solver the exponents p of cost ~ N^p, N the number of masses (least squares in log-log
-// over the sizes) for one
-// step and for the whole run, and the size from which an implicit method's whole run is cheaper
-// than every explicit one's.
+// Then per solver the exponents p of cost ~ N^p, N the number of masses, for one step and for the
+// whole run, and q of dt* ~ N^q (Exponent below), and the size from which an implicit method's
+// whole run is cheaper than every explicit one's.
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <string>
 #include <string_view>
@@ -73,10 +73,32 @@ struct ScalingRow {
   bool reached() const { return dt == dt; }
 };
 
+// An exponent p of y ~ N^p: least squares in log-log over the sizes where y is finite and > 0,
+// with its 95 % interval (Student's t, n - 2 degrees of freedom: analysis/fit.hpp), fitted only
+// over at least kFitSizes sizes spanning at least kFitDecades decades of N (two sizes fit any
+// exponent exactly; a narrow span measures the overheads' mix, not a power): else NaN, with the
+// sizes and span it had. `early`: the sizes begin below the asymptotic regime, where a step's cost
+// grows by less than N^kAsymptoticSlope from the smallest size to the next (a step touches every
+// mass, so its work grows at least as N; flatter, fixed overheads still dominate).
+inline constexpr int kFitSizes = 3;
+inline constexpr double kFitDecades = 1.5;
+inline constexpr double kAsymptoticSlope = 0.5;
+struct Exponent {
+  double value = std::numeric_limits<double>::quiet_NaN(), lo = value, hi = value;
+  int sizes = 0;       // sizes with a value
+  double decades = 0;  // log10(N_max / N_min) over them
+  bool early = false;
+  bool fitted() const { return !std::isnan(value); }
+};
+Exponent fit_exponent(std::span<const double> masses, std::span<const double> y);
+// Whether a step's cost (NaN or <= 0 where unknown) grows by less than N^kAsymptoticSlope from
+// the smallest size with one to the next.
+bool begins_early(std::span<const double> masses, std::span<const double> step_cost);
+
 struct ScalingFit {
   std::string solver;
-  double step_exponent, run_exponent;  // NaN with fewer than two sizes reached
-  double stable_exponent;              // dt* ~ N^q; NaN unless dt* is finite and > 0 at two sizes
+  Exponent step, run;  // cost of one step, of the whole run at the target error
+  Exponent stable;     // dt* ~ N^q, where dt* is finite and > 0
 };
 
 struct ScalingResult {

@@ -6,13 +6,14 @@
 //   x1 = x0 + h sum_i b_i V_i,   v1 = v0 + h sum_i b_i M^-1 F(X_i, V_i).
 //
 // The Jacobian of G, block (i, k):  M delta_ik - h a_ik dF/dv(k) - h^2 sum_j a_ij a_jk dF/dx(j).
-// Full Newton from V_i = v0, with the stopping test of solve_implicit (core/method.hpp): |G| below
-// NewtonSettings::tolerance times the size of the terms G balances. A force linear in (x, v)
-// converges in one Newton step. The force values of the converged stages give v1 directly.
+// Newton from V_i = v0, with the stopping test of solve_implicit (core/method.hpp): |G| below
+// NewtonSettings::tolerance times the size of the terms G balances; full Newton on a fixed size,
+// simplified Newton on a run-time size (below). A force linear in (x, v) converges in one Newton
+// step. The force values of the converged stages give v1 directly.
 #pragma once
 
 #include <array>
-#include <vector>
+#include <cmath>
 
 #include "core/method.hpp"
 
@@ -76,67 +77,84 @@ template <int Stages, class S, class T>
   return lanes.status();
 }
 
-// The same Newton iteration on a scene of run-time size n: the stage velocities in one vector of
-// Stages n, the block matrix G assembled from the sparse Jacobians (its blocks have their
-// pattern: tridiagonal for the rope) and factorised by sparse LU (core/sparse.hpp), its ordering
-// computed once per run (the thread's solver keeps it).
+// On a scene of run-time size n: simplified Newton, as RADAU5 (Hairer and Wanner II, IV.8). The
+// iteration matrix I (x) M - h A (x) dF/dv - h^2 A^2 (x) dF/dx is made from the Jacobians the run's
+// workspace keeps (evaluated at the last stage's iterate, on a run's first step and whenever an
+// iteration reduces the residual by less than kRefreshRate), and solved through the eigenvectors
+// of A: one real system of size n per real eigenvalue, one complex per complex pair, each
+// factorised once for as long as the Jacobians are kept (core/sparse.hpp). The stopping test and
+// its scale are the dense path's, the Jacobians' norms in it the kept ones'. Where simplified
+// Newton does not converge (the last iteration, or a residual that grows right after a refresh:
+// one Jacobian for all stages misses a change between them, as a contact switching within a
+// step), the step starts again by full Newton, each stage with its own Jacobians, as on a fixed
+// size: the fixed step has no smaller step to retreat to, as RADAU5 would.
 template <int Stages, Scene S>
 StepStatus implicit_rk_step_sparse(const S& s, State<S::dim>& y, double t0, double h, const ButcherTableau<Stages>& t) {
-  const Eigen::Index n = y.x.size(), N = Stages * n;
+  static_assert(Stages <= 4, "core/sparse.hpp keeps up to 4 stages");
+  NewtonWorkspace& ws = newton_workspace();
+  if (ws.transform_of != &t) ws.transform = StageTransform::of({&t.a[0][0], Stages * Stages}, Stages), ws.transform_of = &t;
+  IterationMatrices& kept = ws.matrices;
   const Eigen::VectorXd& m = s.mass();
-  Eigen::VectorXd V(N), r(N), dV;
-  for (int i = 0; i < Stages; ++i) V.segment(i * n, n) = y.v;
-  std::array<Eigen::VectorXd, Stages> X, F;
-  std::array<Jacobians<Eigen::Dynamic>, Stages> J;
-  SparseSolver& solver = local_solver(SparseSolver::Kind::General);
-  SparseMat G(N, N);
-  std::vector<Eigen::Triplet<double>> entries;
-  const auto add = [&](const SparseMat& a, double coef, Eigen::Index row, Eigen::Index col) {
-    if (coef == 0) return;
-    for (int c = 0; c < a.outerSize(); ++c)
-      for (SparseMat::InnerIterator e(a, c); e; ++e) entries.emplace_back(row + e.row(), col + e.col(), coef * e.value());
-  };
-  double force_terms = 0;
+  std::array<Eigen::VectorXd, 4>&X = ws.stage_x, &V = ws.stage_v, &F = ws.stage_f, &r = ws.stage_r, &dV = ws.stage_dv;
+  for (int i = 0; i < Stages; ++i) V[i] = y.v;
+  double force_terms = 0, r_last = 0;
+  bool fresh = false, full = false;  // Jacobians refreshed for the last update; full Newton
+  std::array<Jacobians<Eigen::Dynamic>, Stages> own;  // full Newton's, a stage each
   for (int it = 0;; ++it) {
     for (int i = 0; i < Stages; ++i) {
       X[i] = y.x;
-      for (int j = 0; j < Stages; ++j) X[i] += (h * t.a[i][j]) * V.segment(j * n, n);
-      F[i] = force_at(s, t0 + t.c(i) * h, X[i], V.segment(i * n, n));
+      for (int j = 0; j < Stages; ++j) X[i] += (h * t.a[i][j]) * V[j];
+      F[i] = force_at(s, t0 + t.c(i) * h, X[i], V[i]);
     }
-    double f_norm = 0;
+    double f_norm = 0, r_sq = 0, mv_sq = 0;
     for (int i = 0; i < Stages; ++i) {
-      Eigen::VectorXd g = m.cwiseProduct(V.segment(i * n, n) - y.v);
-      for (int j = 0; j < Stages; ++j) g -= (h * t.a[i][j]) * F[j];
-      r.segment(i * n, n) = g;
+      r[i] = m.cwiseProduct(V[i] - y.v);
+      for (int j = 0; j < Stages; ++j) r[i] -= (h * t.a[i][j]) * F[j];
       f_norm += F[i].norm();
+      r_sq += r[i].squaredNorm();
+      mv_sq += m.cwiseProduct(V[i]).squaredNorm();
     }
+    const double r_norm = std::sqrt(r_sq);
     if (it > 0) {
-      const double scale = (m.asDiagonal() * V.reshaped(n, Stages)).norm() + Stages * m.cwiseProduct(y.v).norm() +
-                           std::abs(h) * (f_norm + force_terms);
-      if (r.norm() <= NewtonSettings::tolerance * scale) break;
+      const double scale = std::sqrt(mv_sq) + Stages * m.cwiseProduct(y.v).norm() + std::abs(h) * (f_norm + force_terms);
+      if (r_norm <= NewtonSettings::tolerance * scale) break;
     }
-    if (it == NewtonSettings::max_iterations || !r.allFinite()) return StepStatus::NoConvergence;
-    for (int i = 0; i < Stages; ++i) J[i] = jacobians_at(s, t0 + t.c(i) * h, X[i], V.segment(i * n, n));
-    if (it == 0)
-      for (int i = 0; i < Stages; ++i) force_terms += J[i].dx.norm() * X[i].norm() + J[i].dv.norm() * V.segment(i * n, n).norm();
-    if (r.isZero(0.0)) break;  // already solved (at rest in equilibrium)
-    entries.clear();
-    for (int i = 0; i < Stages; ++i)
-      for (int k = 0; k < Stages; ++k) {
-        add(J[k].dv, -(h * t.a[i][k]), i * n, k * n);
-        for (int j = 0; j < Stages; ++j) add(J[j].dx, -(h * h * t.a[i][j] * t.a[j][k]), i * n, k * n);
-        if (i == k)
-          for (Eigen::Index c = 0; c < n; ++c) entries.emplace_back(i * n + c, k * n + c, m[c]);
+    if (it == NewtonSettings::max_iterations || !std::isfinite(r_norm) || (fresh && r_norm > r_last)) {
+      if (full) return StepStatus::NoConvergence;
+      full = true, fresh = false, force_terms = 0, it = -1;  // again from V_i = v0, by full Newton
+      for (int i = 0; i < Stages; ++i) V[i] = y.v;
+      continue;
+    }
+    SolveCounts n;
+    if (full) {
+      std::array<const SparseMat*, Stages> dx, dv;
+      for (int i = 0; i < Stages; ++i) {
+        own[i] = jacobians_at(s, t0 + t.c(i) * h, X[i], V[i]);
+        dx[i] = &own[i].dx, dv[i] = &own[i].dv;
+        if (it == 0) force_terms += own[i].dx.norm() * X[i].norm() + own[i].dv.norm() * V[i].norm();
       }
-    G.setFromTriplets(entries.begin(), entries.end());
-    count_newton_update(s);
-    if (!solver.factorize(G)) return StepStatus::NoConvergence;
-    solver.solve(r, dV);
-    V -= dV;
+      if (r_sq == 0) break;
+      n = IterationMatrices::solve_coupled({&t.a[0][0], Stages * Stages}, Stages, h, dx, dv, m, {r.data(), Stages}, {dV.data(), Stages});
+    } else {
+      fresh = !kept.has_jacobians() || (it > 0 && r_norm > kRefreshRate * r_last);
+      if (fresh) {
+        constexpr int last = Stages - 1;
+        const Jacobians<Eigen::Dynamic>& jac = jacobians_at(s, t0 + t.c(last) * h, X[last], V[last]);
+        kept.keep(jac.dx, jac.dv, m, kSymmetricJacobians<S>);
+      }
+      if (it == 0)
+        for (int i = 0; i < Stages; ++i) force_terms += kept.dx_norm() * X[i].norm() + kept.dv_norm() * V[i].norm();
+      if (r_sq == 0) break;  // already solved (at rest in equilibrium)
+      n = kept.solve_stages(ws.transform, h, {r.data(), Stages}, {dV.data(), Stages});
+    }
+    count_iteration(s, n);
+    if (!n.ok) return StepStatus::NoConvergence;
+    for (int i = 0; i < Stages; ++i) V[i] -= dV[i];
+    r_last = r_norm;
   }
   const Eigen::VectorXd& inv_m = s.inverse_mass();
   for (int i = 0; i < Stages; ++i) {
-    y.x += (h * t.b[i]) * V.segment(i * n, n);
+    y.x += (h * t.b[i]) * V[i];
     y.v += (h * t.b[i]) * F[i].cwiseProduct(inv_m);
   }
   return StepStatus::Ok;

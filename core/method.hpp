@@ -142,51 +142,67 @@ template <class T> struct NewtonLanes {
   Status<T> status() const { return status_of(failed); }
 };
 
-// A scene that counts (analysis/kernel_impl.hpp, Counted) is told of each Newton update, one
-// matrix factorised and one linear solve; for any other scene this is nothing at all.
-template <class S> [[gnu::always_inline]] inline void count_newton_update(const S& s) {
-  if constexpr (requires { s.newton_update(); }) s.newton_update();
+// A scene that counts (analysis/kernel_impl.hpp, Counted) is told of each Newton iteration, with
+// the factorisations and linear solves it made; for any other scene this is nothing at all. Full
+// Newton on a fixed size (count_newton_update): one factorisation and one solve each.
+template <class S> [[gnu::always_inline]] inline void count_iteration(const S& s, const SolveCounts& n) {
+  if constexpr (requires { s.counted_iteration(n); }) s.counted_iteration(n);
+}
+template <class S> [[gnu::always_inline]] inline void count_newton_update(const S& s) { count_iteration(s, SolveCounts{1, 1}); }
+
+// Newton's update u -= J^{-1} r on a fixed size, J = M - c dF/dv - c cx dF/dx, where `on` (the
+// lanes of a pack still iterating; one run: always): dense LU (lu_solve, core/small_lu.hpp: a
+// division for D = 1).
+template <int D, class T, class C>
+[[gnu::always_inline]] inline void dense_update(const Jacobians<D, T>& jac, const Vec<D, T>& m, const T& c, const T& cx,
+                                                const Vec<D, T>& r, const C& on, Vec<D, T>& u) {
+  Mat<D, T> J = -c * jac.dv - (c * cx) * jac.dx;
+  J.diagonal() += m;
+  u = select(on, Vec<D, T>(u - lu_solve(J, r)), u);
 }
 
-// Newton's update u -= J^{-1} r with J = M - c dF/dv - c cx dF/dx, where `on` (the lanes of a
-// pack still iterating; one run: always): dense LU on a fixed size (lu_solve, core/small_lu.hpp:
-// a division for D = 1); a sparse LDL^T or LU on a run-time size (core/sparse.hpp, stage_solve
-// below), its ordering computed once per run (the thread's solver keeps it). False if J is singular.
-template <int D, class T = double> struct StageSolve {
-  template <class C>
-  [[gnu::always_inline]] bool update(const Jacobians<D, T>& jac, const Vec<D, T>& m, const T& c, const T& cx, const Vec<D, T>& r, const C& on,
-              Vec<D, T>& u) {
-    Mat<D, T> J = -c * jac.dv - (c * cx) * jac.dx;
-    J.diagonal() += m;
-    u = select(on, Vec<D, T>(u - lu_solve(J, r)), u);
-    return true;
-  }
-};
-template <> struct StageSolve<Eigen::Dynamic, double> {
-  SparseSolver& solver;
-  SparseMat J;
-  Eigen::VectorXd du;
-  bool update(const Jacobians<Eigen::Dynamic>& jac, const Eigen::VectorXd& m, double c, double cx,
-              const Eigen::VectorXd& r, bool /*on*/, Eigen::VectorXd& u) {
-    J = -c * jac.dv - (c * cx) * jac.dx;
-    J += m.asDiagonal();
-    J.makeCompressed();
-    if (!solver.factorize(J)) return false;
-    solver.solve(r, du);
-    u -= du;
-    return true;
-  }
-};
-
 // A scene of run-time size whose dF/dx and dF/dv are symmetric (the rope) says so with
-// `static constexpr bool symmetric_jacobians = true`: one stage's matrix is then factorised by
-// LDL^T, otherwise (the soft body's dashpots) by LU.
+// `static constexpr bool symmetric_jacobians = true`: its iteration matrices are then factorised
+// by LDL^T, otherwise (the soft body's dashpots) by LU (core/sparse.hpp).
 template <class S> constexpr bool kSymmetricJacobians = requires { requires S::symmetric_jacobians; };
 
-template <class S, class T = double> StageSolve<S::dim, T> stage_solve() {
-  if constexpr (S::dim == Eigen::Dynamic)
-    return {local_solver(kSymmetricJacobians<S> ? SparseSolver::Kind::Symmetric : SparseSolver::Kind::General), {}, {}};
-  else return {};
+// On a scene of run-time size: simplified Newton, as RADAU5 and CVODE solve (core/sparse.hpp).
+// The iteration matrix J = E(c, c cx) is made from the Jacobians the run's workspace keeps, and
+// factorised once for as long as they are kept; they are evaluated afresh, at the current
+// iterate, on the first solve of a run and whenever an iteration reduces the residual by less
+// than kRefreshRate. The stopping test and its scale are full Newton's (below), the Jacobians'
+// norms in it the kept ones'. A linear scene's kept J is exact: one update, as full Newton.
+template <Scene S>
+StepStatus solve_implicit_sparse(const S& s, double t, const Eigen::VectorXd& x0, double cx, const Eigen::VectorXd& w, double c,
+                                 Eigen::VectorXd& u) {
+  NewtonWorkspace& ws = newton_workspace();
+  IterationMatrices& kept = ws.matrices;
+  const Eigen::VectorXd& m = s.mass();
+  Eigen::VectorXd &x = ws.x, &r = ws.r;
+  u = w;
+  double force_terms = 0, r_last = 0;
+  for (int it = 0;; ++it) {
+    x = x0 + cx * u;
+    const Eigen::VectorXd f = force_at(s, t, x, u);
+    r = m.cwiseProduct(u - w) - c * f;
+    const double r_norm = r.norm();
+    if (it > 0) {
+      const double scale = m.cwiseProduct(u).norm() + m.cwiseProduct(w).norm() + std::abs(c) * (f.norm() + force_terms);
+      if (r_norm <= NewtonSettings::tolerance * scale) return StepStatus::Ok;
+    }
+    if (it == NewtonSettings::max_iterations || !all_finite(r)) return StepStatus::NoConvergence;
+    if (!kept.has_jacobians() || (it > 0 && r_norm > kRefreshRate * r_last)) {
+      const Jacobians<Eigen::Dynamic>& jac = jacobians_at(s, t, x, u);  // a reference where the scene keeps its own (the rope)
+      kept.keep(jac.dx, jac.dv, m, kSymmetricJacobians<S>);
+    }
+    if (it == 0) force_terms = kept.dx_norm() * x.norm() + kept.dv_norm() * u.norm();
+    if (all_zero(r)) return StepStatus::Ok;  // already solved (e.g. at rest in equilibrium)
+    const SolveCounts n = kept.solve(c, c * cx, r, ws.du);
+    count_iteration(s, n);
+    if (!n.ok) return StepStatus::NoConvergence;
+    u -= ws.du;
+    r_last = r_norm;
+  }
 }
 
 // One run (T = double), or a pack of runs (S the pack's scene): each lane iterates as its run
@@ -198,11 +214,12 @@ template <class S, class T>
                          const std::type_identity_t<Vec<S::dim, T>>& w, Time<T> c, Vec<S::dim, T>& u) {
   using std::abs;
   constexpr int D = S::dim;
+  if constexpr (D == Eigen::Dynamic) return solve_implicit_sparse(s, t, x0, cx, w, c, u);
+  else {
   const Vec<D, T>& m = s.mass();
   u = w;
   T force_terms = 0;
   NewtonLanes<T> lanes;
-  StageSolve<D, T> linear = stage_solve<S, T>();
   for (int it = 0;; ++it) {
     const Vec<D, T> x = x0 + cx * u;
     const Vec<D, T> f = force_at(s, t, x, u);
@@ -216,7 +233,8 @@ template <class S, class T>
     if (it == 0) force_terms = jac.dx.norm() * x.norm() + jac.dv.norm() * u.norm();
     if (lanes.solved(all_zero(r))) return lanes.status();  // already solved (e.g. at rest in equilibrium)
     count_newton_update(s);
-    if (!linear.update(jac, m, c, cx, r, !lanes.done, u)) return status_of(MaskOf<T>(true));
+    dense_update(jac, m, c, cx, r, !lanes.done, u);
+  }
   }
 }
 

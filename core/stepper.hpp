@@ -7,8 +7,10 @@
 // analysis builds it at rest and perturbs it, the local-error table from the exact solution.
 // A one-step method declares none of this and is called exactly as before.
 //
-// Stepper<M, S> is what a run loop holds: it carries the memory of a multistep method and is an
-// empty wrapper around M::step for a one-step method, so one-step runs cost what they did.
+// Stepper<M, S> is what a run loop holds: it carries the memory of a multistep method and, on a
+// scene of run-time size, the run's Newton workspace (core/sparse.hpp: the kept iteration
+// matrices), installed while it steps. On a fixed size it is an empty wrapper around M::step for
+// a one-step method, so one-step runs cost what they did.
 #pragma once
 
 #include <algorithm>
@@ -43,23 +45,42 @@ template <int D, int K, class Entry> History<D, K> history_of(Entry&& entry) {
 
 template <class M> concept Multistep = requires { M::history; };
 
+// What a run keeps for Newton's method: nothing on a fixed size (full Newton, dense); the
+// workspace on a run-time size, installed for the step (use()).
+template <int D> struct RunWorkspace {
+  struct Use {};
+  Use use() { return {}; }
+};
+template <> struct RunWorkspace<Eigen::Dynamic> {
+  NewtonWorkspace newton;
+  UseWorkspace use() { return UseWorkspace(newton); }
+};
+
 // S: a scene, or the scene of a pack of runs with T its pack (step is then there only where M's
 // step is written over the scalar: core/batch.hpp's PackedStep asks).
+// forget(): back to a run's start (a multistep method's memory emptied) on the same scene and
+// step, the workspace kept (what holds for the scene and step still holds).
 template <class M, class S, class T = double> struct Stepper {
+  [[no_unique_address]] RunWorkspace<S::dim> work;
   auto step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h)
     requires requires { M::step(s, y, t, h); }
   {
+    [[maybe_unused]] const auto in_use = work.use();
     return M::step(s, y, t, h);
   }
+  void forget() {}
 };
 
 template <Multistep M, class S, class T> struct Stepper<M, S, T> {
   History<S::dim, M::history, T> memory{};
+  [[no_unique_address]] RunWorkspace<S::dim> work;
   auto step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h)
     requires requires { M::step(s, y, t, h, memory); }
   {
+    [[maybe_unused]] const auto in_use = work.use();
     return M::step(s, y, t, h, memory);
   }
+  void forget() { memory = {}; }
 };
 
 // The derivative of the first-order system at time t, f(t, y) = (v, a(t, x, v)), stored as a State.

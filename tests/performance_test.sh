@@ -26,7 +26,7 @@ assert "| `rk4` |" in md and "N = 64" in md, "the rope_size table"
 assert "`throughput_w1/spring/explicit_euler`" in md, "the packs table"
 assert bench["context"]["compiler"].startswith("GCC") and bench["context"]["compiler"] in md, "the machine line"
 for r in scal["rows"]:
-    assert any(l.startswith(f"| `{r['solver']}` | {r['masses']} |") and f"| {r['steps']} |" in l for l in md.splitlines()), r
+    assert any(l.startswith(f"| `{r['solver']}` | {r['masses']} |") and f"| {r['counts']['steps']} |" in l for l in md.splitlines()), r
 assert "scaling-softbody.json` is missing" in md and "work-precision.json` is missing" in md
 print("performance.md ok")
 PY

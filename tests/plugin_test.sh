@@ -329,8 +329,9 @@ beads = growth[growth.index("String of N beads ("):]
 assert [r["beads"] for r in scal["rows"] if r["solver"] == "rk4"] == [4, 8]
 for f in scal["exponents"]:
     row = next(l for l in beads.splitlines() if l.startswith(f"| `{f['solver']}` |"))
-    if f["run_exponent"] is not None:
-        assert f"| {f['run_exponent']:.2f} |" in row, (row, f)
+    e = f["run"]  # two sizes: not fitted ("-"); else the exponent and its interval
+    cell = "-" if e["exponent"] is None else f"{e['exponent']:.2f} [{e['ci95'][0]:.2f}, {e['ci95'][1]:.2f}]" + "*" * e["early"]
+    assert f"| {cell} |" in row, (row, f)
 print("beads: in the report, its exponents from its own study")
 EOF
 # ... and a report of the user's method beside the methods it should be compared with: those

@@ -1,6 +1,6 @@
 // `study scaling`: the rope of N masses or the soft body of n x n masses refined, every method and
 // the peers at each size (analysis/scaling.hpp); a table on stdout, --json the data (schema
-// steplab.scaling/1).
+// steplab.scaling/2).
 #include <cmath>
 #include <cstdio>
 
@@ -32,19 +32,19 @@ CLI::App* add_scaling_command(CLI::App* study, ScalingArgs& a) {
   cmd->add_option("--error", a.error, "target position error (largest over the coordinates at t_end)")->capture_default_str();
   cmd->add_option("--t-end", a.t_end, "simulated time")->capture_default_str();
   cmd->add_option("--max-steps", a.max_steps, "a search tries no step that needs more steps than this (default: 2000000 "
-                                              "on the rope, 200000 on the soft body, whose implicit steps cost a sparse LU each)");
+                                              "on the rope, 200000 on the soft body, whose implicit steps cost a sparse solve each)");
   cmd->add_option("--threads", a.threads, "worker threads for the searches (timings run one at a time)")->capture_default_str();
   cmd->add_flag("--no-timing", a.no_timing, "cost by force and Jacobian evaluations only (reproducible byte for byte)");
   cmd->add_flag("--no-peers", a.no_peers, "steplab's fixed-step methods only (no dopri5, CVODE, Boost.Odeint)");
   add_shard_option(cmd, a.shard);
-  cmd->add_option("--json", a.json, "write JSON (schema steplab.scaling/1) to this file");
+  cmd->add_option("--json", a.json, "write JSON (schema steplab.scaling/2) to this file");
   return cmd;
 }
 
 Json scaling_json(const ScalingResult& r) {
   const ScalingConfig& c = r.config;
   Json j;
-  j["schema"] = "steplab.scaling/1";
+  j["schema"] = "steplab.scaling/2";
   const std::size_t scene = scene_index(c.scene);
   const SceneKernel& s = scene_kernel(scene);
   const std::string size_key = param_key(s.params[s.size_param]);  // masses (rope), grid (soft body)
@@ -63,22 +63,36 @@ Json scaling_json(const ScalingResult& r) {
   for (const ScalingRow& w : r.rows) {
     Json row = {{"solver", w.solver}, {"implicit", w.implicit}, {"adaptive", w.adaptive}, {size_key, w.n},
                 {"dt_stable", num(w.dt_stable)}, {w.adaptive ? "tolerance" : "dt", num(w.dt)},
-                {"error", w.reached() ? Json(w.error) : Json(nullptr)}, {"steps", w.steps}, {"rejected_steps", w.rejected},
-                {"forces", w.forces}, {"jacobians", w.jacobians}, {"factorisations", w.factorisations},
-                {"linear_solves", w.solves}, {"newton_iterations", w.newton},
+                {"error", w.reached() ? Json(w.error) : Json(nullptr)}, {"counts", counts_json(w.counts())},
                 {"seconds", w.reached() && c.timing ? Json(w.seconds) : Json(nullptr)}, {"search_runs", w.runs}};
     if (!w.adaptive) row["dt_capped_at_stable"] = w.capped;
     row["masses"] = w.masses;
     rows.push_back(std::move(row));
   }
   j["rows"] = std::move(rows);
+  const auto exponent = [&](const Exponent& e) {
+    return Json{{"exponent", num(e.value)}, {"ci95", e.fitted() ? Json::array({e.lo, e.hi}) : Json(nullptr)},
+                {"sizes", e.sizes}, {"decades", e.decades}, {"early", e.early}};
+  };
   Json fits = Json::array();
   for (const ScalingFit& f : r.fits)
-    fits.push_back({{"solver", f.solver}, {"step_exponent", num(f.step_exponent)}, {"run_exponent", num(f.run_exponent)}});
+    fits.push_back({{"solver", f.solver}, {"step", exponent(f.step)}, {"run", exponent(f.run)}, {"stable_step", exponent(f.stable)}});
   j["exponents"] = std::move(fits);
   j["crossover"] = r.crossover == 0 ? Json(nullptr)
                                     : Json({{size_key, r.crossover}, {"masses", scaling_masses(c, r.crossover)}, {"method", r.crossover_method}});
   return j;
+}
+
+std::string exponent_text(const Exponent& e) {
+  if (!e.fitted()) return "-";
+  return fmt::format("{:.2f} [{:.2f}, {:.2f}]{}", e.value, e.lo, e.hi, e.early ? "*" : "");
+}
+
+std::string exponent_rule_text() {
+  return fmt::format("- not fitted: fewer than {} sizes, or less than {:g} decades of N, where the quantity is known; "
+                     "* the sizes begin below the asymptotic regime (a step's cost grows by less than N^{:g} from the "
+                     "smallest size to the next: fixed overheads still dominate)",
+                     kFitSizes, kFitDecades, kAsymptoticSlope);
 }
 
 std::string scaling_table(const ScalingResult& r) {
@@ -103,10 +117,11 @@ std::string scaling_table(const ScalingResult& r) {
   }
   if (capped)
     out += "^ the step search stopped at its cap, 0.95 dt*: dt* predicted from the exact modes, which no adaptive solver is told\n";
-  out += fmt::format("\nExponents p of cost ~ N^p (least squares over the sizes reached)\n{:<18} {:>10} {:>10}\n", "solver", "one step", "whole run");
+  out += fmt::format("\nExponents p of cost ~ N^p, q of dt* ~ N^q (least squares over the sizes reached, 95 % intervals)\n"
+                     "{:<18} {:>20} {:>20} {:>20}\n", "solver", "one step", "whole run", "dt*");
   for (const ScalingFit& f : r.fits)
-    out += fmt::format("{:<18} {:>10} {:>10}\n", f.solver, std::isnan(f.step_exponent) ? "-" : fmt::format("{:.2f}", f.step_exponent),
-                       std::isnan(f.run_exponent) ? "-" : fmt::format("{:.2f}", f.run_exponent));
+    out += fmt::format("{:<18} {:>20} {:>20} {:>20}\n", f.solver, exponent_text(f.step), exponent_text(f.run), exponent_text(f.stable));
+  out += exponent_rule_text() + "\n";
   out += r.crossover == 0 ? std::string("\nNo size here at which an implicit method's run is cheaper than every explicit one's.\n")
                           : fmt::format("\nFrom N = {} on the sizes here, {} is cheaper than every explicit method.\n",
                                         scaling_masses(c, r.crossover), r.crossover_method);

@@ -63,9 +63,13 @@ std::string mode_thresholds_table(std::string_view scene, const std::vector<Mode
 #include "analysis/scaling.hpp"
 
 namespace steplab {
-// `study scaling` (reports/cli/scaling_command.cpp): schema steplab.scaling/1.
+// `study scaling` (reports/cli/scaling_command.cpp): schema steplab.scaling/2.
 Json scaling_json(const ScalingResult& r);
 std::string scaling_table(const ScalingResult& r);
+// "1.02 [0.95, 1.09]" (its 95 % interval), "*" appended where `early`; "-" where not fitted.
+std::string exponent_text(const Exponent& e);
+// An exponent's note under a table: what "-" and "*" mean, with the rule's numbers.
+std::string exponent_rule_text();
 }  // namespace steplab
 
 #include "analysis/collision.hpp"

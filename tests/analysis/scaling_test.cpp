@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <vector>
 
 #include "analysis/kernel.hpp"
 #include "analysis/sized_peers.hpp"
@@ -68,11 +70,15 @@ TEST(Scaling, RowsReachTheTargetAndStableStepsShrinkAsOneOverN) {
     if (w.solver == "implicit_midpoint" || w.solver == "radau_iia5") {
       EXPECT_TRUE(std::isinf(w.dt_stable));
     }
-  // a fixed-step implicit method: one Jacobian and a constant number of force evaluations a step
+  // a fixed-step implicit method on the linear rope: its Jacobians evaluated and its iteration
+  // matrix factorised once a run (core/sparse.hpp), one Newton update and one solve a step, the
+  // residual evaluated twice (then its check)
   for (const ScalingRow& w : r.rows)
     if (w.solver == "implicit_midpoint") {
-      EXPECT_EQ(w.jacobians, w.steps) << w.n;  // the rope is linear: one Newton step a step
-      EXPECT_EQ(w.forces, 2 * w.steps) << w.n;  // the residual, then its check
+      EXPECT_EQ(w.jacobians, 1) << w.n;
+      EXPECT_EQ(w.factorisations, 1) << w.n;
+      EXPECT_EQ(w.solves, w.steps) << w.n;
+      EXPECT_EQ(w.forces, 2 * w.steps) << w.n;
     }
 }
 
@@ -108,6 +114,65 @@ TEST(Scaling, SameRowsForOneAndTwoThreads) {
     EXPECT_EQ(one.rows[i].error, two.rows[i].error);
     EXPECT_EQ(one.rows[i].forces, two.rows[i].forces);
   }
+}
+
+}  // namespace
+}  // namespace steplab
+
+namespace steplab {
+namespace {
+
+// The exponent rule (analysis/scaling.hpp): a power law y = 3 N^1.5 is recovered exactly over
+// 16 .. 1024 masses (1.8 decades, 4 sizes), its interval closing on it (zero residual); two sizes,
+// or three spanning 1.2 decades (8, 32, 128), are not fitted whatever their values; a value not
+// known (NaN, 0) is left out and counts for neither rule.
+TEST(ScalingExponent, FittedOnlyOverThreeSizesAndOneAndAHalfDecades) {
+  const std::vector<double> n{16, 64, 256, 1024};
+  std::vector<double> y;
+  for (double x : n) y.push_back(3 * std::pow(x, 1.5));
+  const Exponent e = fit_exponent(n, y);
+  ASSERT_TRUE(e.fitted());
+  EXPECT_NEAR(e.value, 1.5, 1e-12);
+  EXPECT_NEAR(e.lo, 1.5, 1e-9);
+  EXPECT_NEAR(e.hi, 1.5, 1e-9);
+  EXPECT_EQ(e.sizes, 4);
+  EXPECT_NEAR(e.decades, std::log10(64.0), 1e-12);
+
+  EXPECT_FALSE(fit_exponent(std::vector<double>{16, 1024}, std::vector<double>{1, 100}).fitted());
+  const Exponent narrow = fit_exponent(std::vector<double>{8, 32, 128}, std::vector<double>{1, 4, 16});
+  EXPECT_FALSE(narrow.fitted());
+  EXPECT_EQ(narrow.sizes, 3);
+  EXPECT_NEAR(narrow.decades, std::log10(16.0), 1e-12);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(fit_exponent(n, std::vector<double>{1, nan, 0, 64}).fitted());  // two known
+  EXPECT_TRUE(fit_exponent(n, std::vector<double>{1, nan, 16, 64}).fitted());   // three over 1.8 decades
+}
+
+// With scatter the interval is Student's: y = N (1, 1.2, 0.9, 1.1) over 16 .. 1024. The slope and
+// its standard error computed apart (ln N at 4 points, the residuals of the least-squares line,
+// se^2 = sum r^2 / (n - 2) / sum (ln N - mean)^2) are 0.99987 and 0.048928, so the interval is
+// 0.99987 -+ 4.303 x 0.048928 = [0.7893, 1.2104] (t(2) = 4.303); to 1e-4, the table's rounding of t.
+TEST(ScalingExponent, IntervalIsStudentsWithScatter) {
+  const std::vector<double> n{16, 64, 256, 1024}, f{1, 1.2, 0.9, 1.1};
+  std::vector<double> y;
+  for (std::size_t k = 0; k < n.size(); ++k) y.push_back(n[k] * f[k]);
+  const Exponent e = fit_exponent(n, y);
+  ASSERT_TRUE(e.fitted());
+  EXPECT_NEAR(e.value, 0.99987, 1e-5);
+  EXPECT_NEAR(e.lo, 0.7893, 1e-4);
+  EXPECT_NEAR(e.hi, 1.2104, 1e-4);
+}
+
+// Early: a step's cost flat from the smallest size to the next (overheads), or growing as N^0.3,
+// is below the asymptotic regime; growing as N^0.9 is not. Unknown costs are skipped.
+TEST(ScalingExponent, EarlyWhereAStepsCostIsStillFlat) {
+  const std::vector<double> n{16, 64, 256};
+  EXPECT_TRUE(begins_early(n, std::vector<double>{1.0, 1.05, 4.0}));
+  EXPECT_TRUE(begins_early(n, std::vector<double>{1.0, std::pow(4.0, 0.3), 16.0}));
+  EXPECT_FALSE(begins_early(n, std::vector<double>{1.0, std::pow(4.0, 0.9), 16.0}));
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(begins_early(n, std::vector<double>{nan, 1.0, 1.2}));
+  EXPECT_FALSE(begins_early(n, std::vector<double>{nan, 1.0, nan}));
 }
 
 }  // namespace

@@ -25,16 +25,16 @@ std::string params_but_size(std::size_t scene, const std::vector<double>& params
 // The exponents, and where a fixed-step method's step was held at its cap 0.95 dt* (told by the modes).
 std::string exponents_table(const ScalingResult& r) {
   std::string md = "| solver | cost ~ N^p^: one step | whole run | dt* ~ N^q^ | step at 0.95 dt* |\n|---|---:|---:|---:|---|\n";
-  const auto p = [](double x) { return std::isnan(x) ? std::string("-") : fmt::format("{:.2f}", x); };
+  const auto p = [](const Exponent& e) { return exponent_text(e); };
   for (std::size_t s = 0; s < r.fits.size(); ++s) {
     const ScalingFit& f = r.fits[s];
     std::vector<int> capped;
     for (const ScalingRow& w : r.rows_of(s))
       if (w.reached() && w.capped) capped.push_back(w.masses);
-    md += fmt::format("| `{}` | {} | {} | {} | {} |\n", f.solver, p(f.step_exponent), p(f.run_exponent), p(f.stable_exponent),
+    md += fmt::format("| `{}` | {} | {} | {} | {} |\n", f.solver, p(f.step), p(f.run), p(f.stable),
                       capped.empty() ? "-" : "N = " + join(capped));
   }
-  return md + "\n";
+  return md + "\nExponents with their 95 % intervals; " + exponent_rule_text() + ".\n\n";
 }
 
 // The crossover sentence, and steplab's cheapest against each CVODE configuration at the largest
