@@ -46,12 +46,13 @@ constexpr int kRestart = 10'000;
 // ---------------- steplab ----------------
 
 // Steps of method m on scene s (with parameter values p), timed through the kernel table: the
-// kernel steps kRestart at a time in place, from the initial state (a multistep method with a
-// fresh memory, so its start-up steps are 2 in 10 000 at most); an iteration is one step.
-void register_step(const std::string& name, std::size_t m, std::size_t s, std::vector<double> p) {
-  benchmark::RegisterBenchmark(name.c_str(), [m, s, p](benchmark::State& st) {
+// kernel steps `run` at a time in place, from the initial state (a multistep method with a fresh
+// memory, so at kRestart its start-up steps are 2 in 10 000 at most); an iteration is one step.
+benchmark::internal::Benchmark* register_step(const std::string& name, std::size_t m, std::size_t s, std::vector<double> p,
+                                              double dt = kDt, int run = kRestart) {
+  return benchmark::RegisterBenchmark(name.c_str(), [m, s, p = std::move(p), dt, run](benchmark::State& st) {
     const PairKernel& k = pair_kernel(m, s);
-    while (st.KeepRunningBatch(kRestart)) k.time_steps(p, kDt, kRestart, kRestart);
+    while (st.KeepRunningBatch(run)) k.time_steps(p, dt, run, run);
     st.counters["steps_per_second"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
   });
 }
@@ -88,34 +89,26 @@ void register_steplab() {
     for (std::size_t m = 0; m < method_count(); ++m)
       if (applies(m, s))
         register_step("step/" + std::string(scene_name(s)) + "/" + std::string(method_info(m).name), m, s, default_param_values(s));
-  // One step of the rope against its number of masses N (the implicit methods' sparse solves;
-  // RK4 beside them): dt = 0.2 / omega_max (omega_max ~ 2 sqrt(K/M) N), 100 steps a batch from the
-  // rope's start (the batch also makes the rope: its modes, O(N log N), under 1 % of 100 steps).
-  const std::size_t rope = scene_index("rope");
+  // One step against the number of masses N, RK4 beside the implicit methods' sparse solves:
+  // the rope at dt = 0.2 / omega_max (omega_max ~ 2 sqrt(K/M) N), runs of 100 steps; the soft
+  // body (a 2-D grid, whose sparse factors fill in as the rope's do not) at dt 1e-4, every method
+  // stable, runs of 200 steps. Each run from the start makes the scene (the rope's modes: under
+  // 1 % of its run) and factorises each kept iteration matrix once (core/sparse.hpp).
+  const std::size_t rope = scene_index("rope"), soft = scene_index("softbody");
   for (const char* name : {"rk4", "implicit_euler", "implicit_midpoint", "bdf2", "gauss_legendre4", "radau_iia5"})
     for (int n : {64, 256, 1024, 4096, 16384}) {
       std::vector<double> p = default_param_values(rope);
       p[0] = n;
-      const std::size_t m = *find_method(name);
-      const double dt = 0.2 / (2 * std::sqrt(p[2] / p[1]) * n);
-      benchmark::RegisterBenchmark(("rope_size/" + std::string(name) + "/" + std::to_string(n)).c_str(), [m, rope, p, dt](benchmark::State& st) {
-        const PairKernel& k = pair_kernel(m, rope);
-        while (st.KeepRunningBatch(100)) k.time_steps(p, dt, 100, 100);
-      })->Unit(benchmark::kMicrosecond);
+      register_step("rope_size/" + std::string(name) + "/" + std::to_string(n), *find_method(name), rope, p,
+                    0.2 / (2 * std::sqrt(p[2] / p[1]) * n), 100)
+          ->Unit(benchmark::kMicrosecond);
     }
-  // One step of the soft body against its masses N = n^2 (64 to 4096): a 2-D grid, whose sparse
-  // factorisations fill in as the rope's do not. dt 1e-4: every method stable; 20 steps a batch
-  // from the body's start (free fall).
-  const std::size_t soft = scene_index("softbody");
   for (const char* name : {"rk4", "implicit_euler", "gauss_legendre4", "radau_iia5"})
-    for (int n : {8, 16, 32, 64}) {
+    for (int side : {8, 16, 32, 64}) {
       std::vector<double> p = default_param_values(soft);
-      p[0] = n;
-      const std::size_t m = *find_method(name);
-      benchmark::RegisterBenchmark(("softbody_size/" + std::string(name) + "/" + std::to_string(n * n)).c_str(), [m, soft, p](benchmark::State& st) {
-        const PairKernel& k = pair_kernel(m, soft);
-        while (st.KeepRunningBatch(200)) k.time_steps(p, 1e-4, 200, 200);
-      })->Unit(benchmark::kMicrosecond);
+      p[0] = side;
+      register_step("softbody_size/" + std::string(name) + "/" + std::to_string(side * side), *find_method(name), soft, p, 1e-4, 200)
+          ->Unit(benchmark::kMicrosecond);
     }
 }
 

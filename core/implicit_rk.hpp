@@ -99,7 +99,6 @@ StepStatus implicit_rk_step_sparse(const S& s, State<S::dim>& y, double t0, doub
   for (int i = 0; i < Stages; ++i) V[i] = y.v;
   double force_terms = 0, r_last = 0;
   bool fresh = false, full = false;  // Jacobians refreshed for the last update; full Newton
-  std::array<Jacobians<Eigen::Dynamic>, Stages> own;  // full Newton's, a stage each
   for (int it = 0;; ++it) {
     for (int i = 0; i < Stages; ++i) {
       X[i] = y.x;
@@ -129,21 +128,18 @@ StepStatus implicit_rk_step_sparse(const S& s, State<S::dim>& y, double t0, doub
     if (full) {
       std::array<const SparseMat*, Stages> dx, dv;
       for (int i = 0; i < Stages; ++i) {
-        own[i] = jacobians_at(s, t0 + t.c(i) * h, X[i], V[i]);
-        dx[i] = &own[i].dx, dv[i] = &own[i].dv;
-        if (it == 0) force_terms += own[i].dx.norm() * X[i].norm() + own[i].dv.norm() * V[i].norm();
+        Jacobians<Eigen::Dynamic>& own = ws.stage_jacobians[i];
+        own = jacobians_at(s, t0 + t.c(i) * h, X[i], V[i]);
+        dx[i] = &own.dx, dv[i] = &own.dv;
+        if (it == 0) force_terms += own.dx.norm() * X[i].norm() + own.dv.norm() * V[i].norm();
       }
       if (r_sq == 0) break;
-      n = IterationMatrices::solve_coupled({&t.a[0][0], Stages * Stages}, Stages, h, dx, dv, m, {r.data(), Stages}, {dV.data(), Stages});
+      n = solve_coupled_stages({&t.a[0][0], Stages * Stages}, Stages, h, dx, dv, m, {r.data(), Stages}, {dV.data(), Stages});
     } else {
-      fresh = !kept.has_jacobians() || (it > 0 && r_norm > kRefreshRate * r_last);
-      if (fresh) {
-        constexpr int last = Stages - 1;
-        const Jacobians<Eigen::Dynamic>& jac = jacobians_at(s, t0 + t.c(last) * h, X[last], V[last]);
-        kept.keep(jac.dx, jac.dv, m, kSymmetricJacobians<S>);
-      }
+      constexpr int last = Stages - 1;
+      fresh = refresh_if_slow(kept, s, t0 + t.c(last) * h, X[last], V[last], it, r_norm, r_last);
       if (it == 0)
-        for (int i = 0; i < Stages; ++i) force_terms += kept.dx_norm() * X[i].norm() + kept.dv_norm() * V[i].norm();
+        for (int i = 0; i < Stages; ++i) force_terms += kept.force_terms(X[i], V[i]);
       if (r_sq == 0) break;  // already solved (at rest in equilibrium)
       n = kept.solve_stages(ws.transform, h, {r.data(), Stages}, {dV.data(), Stages});
     }

@@ -150,28 +150,30 @@ template <class S> [[gnu::always_inline]] inline void count_iteration(const S& s
 }
 template <class S> [[gnu::always_inline]] inline void count_newton_update(const S& s) { count_iteration(s, SolveCounts{1, 1}); }
 
-// Newton's update u -= J^{-1} r on a fixed size, J = M - c dF/dv - c cx dF/dx, where `on` (the
-// lanes of a pack still iterating; one run: always): dense LU (lu_solve, core/small_lu.hpp: a
-// division for D = 1).
-template <int D, class T, class C>
-[[gnu::always_inline]] inline void dense_update(const Jacobians<D, T>& jac, const Vec<D, T>& m, const T& c, const T& cx,
-                                                const Vec<D, T>& r, const C& on, Vec<D, T>& u) {
-  Mat<D, T> J = -c * jac.dv - (c * cx) * jac.dx;
-  J.diagonal() += m;
-  u = select(on, Vec<D, T>(u - lu_solve(J, r)), u);
-}
-
 // A scene of run-time size whose dF/dx and dF/dv are symmetric (the rope) says so with
 // `static constexpr bool symmetric_jacobians = true`: its iteration matrices are then factorised
 // by LDL^T, otherwise (the soft body's dashpots) by LU (core/sparse.hpp).
 template <class S> constexpr bool kSymmetricJacobians = requires { requires S::symmetric_jacobians; };
 
+// Simplified Newton's refresh (core/sparse.hpp): the Jacobians at (t, x, v) kept for the run's
+// iteration matrices where none are yet, or where iteration `it` reduced the residual by less
+// than kRefreshRate (r_norm against the last iteration's r_last). True where they were refreshed.
+template <Scene S>
+bool refresh_if_slow(IterationMatrices& kept, const S& s, double t, const Eigen::VectorXd& x, const Eigen::VectorXd& v, int it,
+                     double r_norm, double r_last) {
+  if (kept.has_jacobians() && !(it > 0 && r_norm > kRefreshRate * r_last)) return false;
+  const Jacobians<Eigen::Dynamic>& jac = jacobians_at(s, t, x, v);  // a reference where the scene keeps its own (the rope)
+  kept.keep(jac.dx, jac.dv, s.mass(), kSymmetricJacobians<S>);
+  return true;
+}
+
 // On a scene of run-time size: simplified Newton, as RADAU5 and CVODE solve (core/sparse.hpp).
 // The iteration matrix J = E(c, c cx) is made from the Jacobians the run's workspace keeps, and
 // factorised once for as long as they are kept; they are evaluated afresh, at the current
 // iterate, on the first solve of a run and whenever an iteration reduces the residual by less
-// than kRefreshRate. The stopping test and its scale are full Newton's (below), the Jacobians'
-// norms in it the kept ones'. A linear scene's kept J is exact: one update, as full Newton.
+// than kRefreshRate (refresh_if_slow). The stopping test and its scale are full Newton's (below),
+// the Jacobians' norms in it the kept ones'. A linear scene's kept J is exact: one update, as
+// full Newton.
 template <Scene S>
 StepStatus solve_implicit_sparse(const S& s, double t, const Eigen::VectorXd& x0, double cx, const Eigen::VectorXd& w, double c,
                                  Eigen::VectorXd& u) {
@@ -191,11 +193,8 @@ StepStatus solve_implicit_sparse(const S& s, double t, const Eigen::VectorXd& x0
       if (r_norm <= NewtonSettings::tolerance * scale) return StepStatus::Ok;
     }
     if (it == NewtonSettings::max_iterations || !all_finite(r)) return StepStatus::NoConvergence;
-    if (!kept.has_jacobians() || (it > 0 && r_norm > kRefreshRate * r_last)) {
-      const Jacobians<Eigen::Dynamic>& jac = jacobians_at(s, t, x, u);  // a reference where the scene keeps its own (the rope)
-      kept.keep(jac.dx, jac.dv, m, kSymmetricJacobians<S>);
-    }
-    if (it == 0) force_terms = kept.dx_norm() * x.norm() + kept.dv_norm() * u.norm();
+    refresh_if_slow(kept, s, t, x, u, it, r_norm, r_last);
+    if (it == 0) force_terms = kept.force_terms(x, u);
     if (all_zero(r)) return StepStatus::Ok;  // already solved (e.g. at rest in equilibrium)
     const SolveCounts n = kept.solve(c, c * cx, r, ws.du);
     count_iteration(s, n);
@@ -205,17 +204,17 @@ StepStatus solve_implicit_sparse(const S& s, double t, const Eigen::VectorXd& x0
   }
 }
 
-// One run (T = double), or a pack of runs (S the pack's scene): each lane iterates as its run
-// would alone and stops where that run stops (solved, or given up: failed); the pack's loop ends
-// when every lane has stopped. A stopped lane's u is not touched again. Always inlined: a call
-// left out of line would be compiled for the default instruction set, not the batch's (core/batch.hpp).
+// On a fixed size: full Newton, J = M - c dF/dv - c cx dF/dx factorised by dense LU at every
+// iteration (lu_solve, core/small_lu.hpp: a division for D = 1). One run (T = double), or a pack
+// of runs (S the pack's scene): each lane iterates as its run would alone and stops where that
+// run stops (solved, or given up: failed); the pack's loop ends when every lane has stopped. A
+// stopped lane's u is not touched again. Always inlined: a call left out of line would be
+// compiled for the default instruction set, not the batch's (core/batch.hpp).
 template <class S, class T>
-[[gnu::always_inline]] inline Status<T> solve_implicit(const S& s, Time<T> t, const std::type_identity_t<Vec<S::dim, T>>& x0, Time<T> cx,
-                         const std::type_identity_t<Vec<S::dim, T>>& w, Time<T> c, Vec<S::dim, T>& u) {
+[[gnu::always_inline]] inline Status<T> solve_implicit_dense(const S& s, Time<T> t, const Vec<S::dim, T>& x0, Time<T> cx,
+                                                             const Vec<S::dim, T>& w, Time<T> c, Vec<S::dim, T>& u) {
   using std::abs;
   constexpr int D = S::dim;
-  if constexpr (D == Eigen::Dynamic) return solve_implicit_sparse(s, t, x0, cx, w, c, u);
-  else {
   const Vec<D, T>& m = s.mass();
   u = w;
   T force_terms = 0;
@@ -229,13 +228,21 @@ template <class S, class T>
       lanes.solved(r.norm() <= NewtonSettings::tolerance * scale);
     }
     if (lanes.give_up(it, r)) return lanes.status();
-    const Jacobians<D, T>& jac = jacobians_at(s, t, x, u);  // a reference where the scene keeps its own (the rope)
+    const Jacobians<D, T>& jac = jacobians_at(s, t, x, u);
     if (it == 0) force_terms = jac.dx.norm() * x.norm() + jac.dv.norm() * u.norm();
     if (lanes.solved(all_zero(r))) return lanes.status();  // already solved (e.g. at rest in equilibrium)
     count_newton_update(s);
-    dense_update(jac, m, c, cx, r, !lanes.done, u);
+    Mat<D, T> J = -c * jac.dv - (c * cx) * jac.dx;
+    J.diagonal() += m;
+    u = select(!lanes.done, Vec<D, T>(u - lu_solve(J, r)), u);
   }
-  }
+}
+
+template <class S, class T>
+[[gnu::always_inline]] inline Status<T> solve_implicit(const S& s, Time<T> t, const std::type_identity_t<Vec<S::dim, T>>& x0, Time<T> cx,
+                                                       const std::type_identity_t<Vec<S::dim, T>>& w, Time<T> c, Vec<S::dim, T>& u) {
+  if constexpr (S::dim == Eigen::Dynamic) return solve_implicit_sparse(s, t, x0, cx, w, c, u);
+  else return solve_implicit_dense<S, T>(s, t, x0, cx, w, c, u);
 }
 
 }  // namespace steplab

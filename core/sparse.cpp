@@ -61,8 +61,7 @@ struct Slot {
   long version = -1, last_use = 0;
   std::unique_ptr<Eigen::SimplicialLDLT<SparseMat>> ldlt;  // its ordering and analysis: made once
   klu_numeric* numeric = nullptr;
-  std::vector<double> values;   // E's values in E's pattern (real) or as (re, im) pairs (complex)
-  Eigen::VectorXd e_values;     // LDL^T's copy (its matrix is E's pattern with these values)
+  std::vector<double> values;  // E's values in E's pattern (real) or as (re, im) pairs (complex)
 };
 
 }  // namespace
@@ -80,7 +79,7 @@ struct IterationMatrices::Impl {
   long clock = 0;
   std::array<Eigen::VectorXd, 4> wr;      // the transformed stages, real eigenvalues
   std::array<Eigen::VectorXcd, 4> wc;     // and complex pairs
-  Eigen::VectorXd rhs;                    // LDL^T's right side
+  Eigen::VectorXd rhs;                    // LDL^T's right side, where it is solved in place
 
   Impl() { klu_defaults(&common); }
   ~Impl() {
@@ -158,10 +157,12 @@ struct IterationMatrices::Impl {
     const std::size_t nnz = static_cast<std::size_t>(e.nonZeros());
     int* ap = e.outerIndexPtr();
     int* ai = e.innerIndexPtr();
+    s->values.resize(complex ? 2 * nnz : nnz);
+    if (complex) fill(a, b, reinterpret_cast<Complex*>(s->values.data()));
+    else fill(a.real(), b.real(), s->values.data());
+    double* x = s->values.data();
     if (!complex && symmetric) {
-      s->e_values.resize(e.nonZeros());
-      fill(a.real(), b.real(), s->e_values.data());
-      const Eigen::Map<const SparseMat> m(n(), n(), e.nonZeros(), ap, ai, s->e_values.data());
+      const Eigen::Map<const SparseMat> m(n(), n(), e.nonZeros(), ap, ai, x);
       if (!s->ldlt) {
         s->ldlt = std::make_unique<Eigen::SimplicialLDLT<SparseMat>>();
         s->ldlt->analyzePattern(m);
@@ -172,10 +173,6 @@ struct IterationMatrices::Impl {
       return s;
     }
     if (!symbolic && !(symbolic = klu_analyze(n(), ap, ai, &common))) return nullptr;
-    s->values.resize(complex ? 2 * nnz : nnz);
-    if (complex) fill(a, b, reinterpret_cast<Complex*>(s->values.data()));
-    else fill(a.real(), b.real(), s->values.data());
-    double* x = s->values.data();
     const auto fresh = [&] {
       if (s->numeric) klu_free_numeric(&s->numeric, &common);
       s->numeric = complex ? klu_z_factor(ap, ai, x, symbolic, &common) : klu_factor(ap, ai, x, symbolic, &common);
@@ -193,12 +190,14 @@ struct IterationMatrices::Impl {
     return s;
   }
 
-  bool solve_real(Slot& s, Eigen::VectorXd& z) {  // z: r in, E^-1 r out
+  // z = E^-1 r; r and z may be the same vector (LDL^T then solves from a copy; KLU in place).
+  bool solve_real(Slot& s, const Eigen::VectorXd& r, Eigen::VectorXd& z) {
     if (s.ldlt) {
-      rhs = z;
-      z = s.ldlt->solve(rhs);
+      if (&r == &z) rhs = r;
+      z = s.ldlt->solve(&r == &z ? rhs : r);
       return true;
     }
+    if (&r != &z) z = r;
     return klu_solve(symbolic, s.numeric, n(), 1, z.data(), &common) != 0;
   }
   bool solve_complex(Slot& s, Eigen::VectorXcd& z) {
@@ -240,8 +239,7 @@ SolveCounts IterationMatrices::solve(double a, double b, const Eigen::VectorXd& 
   SolveCounts n;
   Slot* s = impl_->factorised(a, b, false, version_, n.factorisations);
   if (!s) return {n.factorisations, 0, false};
-  z = r;
-  n.ok = impl_->solve_real(*s, z);
+  n.ok = impl_->solve_real(*s, r, z);
   n.solves = 1;
   return n;
 }
@@ -263,7 +261,7 @@ SolveCounts IterationMatrices::solve_stages(const StageTransform& tr, double h, 
       Eigen::VectorXd& w = m.wr[i];
       w.setZero(n);
       for (int j = 0; j < s; ++j) w += tr.t_inv[i][j].real() * r[j];
-      if (!m.solve_real(*slot, w)) return {counts.factorisations, counts.solves, false};
+      if (!m.solve_real(*slot, w, w)) return {counts.factorisations, counts.solves, false};
       for (int k = 0; k < s; ++k) dv[k] += tr.t[k][i].real() * w;
     } else {  // the pair: T[:, i] z + conj(T[:, i] z) = 2 Re(T[:, i] z)
       Eigen::VectorXcd& w = m.wc[i];
@@ -276,9 +274,9 @@ SolveCounts IterationMatrices::solve_stages(const StageTransform& tr, double h, 
   return counts;
 }
 
-SolveCounts IterationMatrices::solve_coupled(std::span<const double> a, int s, double h, std::span<const SparseMat* const> dx,
-                                             std::span<const SparseMat* const> dv, const Eigen::VectorXd& mass,
-                                             std::span<const Eigen::VectorXd> r, std::span<Eigen::VectorXd> dv_out) {
+SolveCounts solve_coupled_stages(std::span<const double> a, int s, double h, std::span<const SparseMat* const> dx,
+                                 std::span<const SparseMat* const> dv, const Eigen::VectorXd& mass,
+                                 std::span<const Eigen::VectorXd> r, std::span<Eigen::VectorXd> dv_out) {
   const Eigen::Index n = mass.size();
   const auto at = [&](int i, int j) { return a[static_cast<std::size_t>(i * s + j)]; };
   std::vector<Eigen::Triplet<double>> entries;

@@ -39,9 +39,10 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "core/state.hpp"
+
 namespace steplab {
 
-using SparseMat = Eigen::SparseMatrix<double>;  // as in core/state.hpp
 using Complex = std::complex<double>;
 
 // Simplified Newton's refresh rule (RADAU5's: the Jacobian is kept while the iteration converges
@@ -77,22 +78,15 @@ class IterationMatrices {
   bool has_jacobians() const { return version_ > 0; }
   // Keeps these Jacobians (their values copied) and the masses; every kept factorisation is now stale.
   void keep(const SparseMat& dx, const SparseMat& dv, const Eigen::VectorXd& mass, bool symmetric);
-  double dx_norm() const { return dx_norm_; }  // Frobenius norms of the kept Jacobians
-  double dv_norm() const { return dv_norm_; }
+  // |dF/dx| |x| + |dF/dv| |v| with the kept Jacobians (Frobenius norms): the size of the force's
+  // terms in Newton's stopping test (core/method.hpp).
+  double force_terms(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const { return dx_norm_ * x.norm() + dv_norm_ * v.norm(); }
 
   // z = E(a, b)^-1 r, factorising E(a, b) first where it is not kept.
   SolveCounts solve(double a, double b, const Eigen::VectorXd& r, Eigen::VectorXd& z);
   // The stage update of an s-stage method with this transform and step h: dV = K^-1 r, r and dV
   // s vectors of n, one a stage.
   SolveCounts solve_stages(const StageTransform& tr, double h, std::span<const Eigen::VectorXd> r, std::span<Eigen::VectorXd> dv);
-  // Full Newton's update of s coupled stages with each stage's own Jacobians (dx[k], dv[k]): the
-  // s n system, block (i, k) = M delta_ik - h a_ik dF/dv(k) - h^2 sum_j a_ij a_jk dF/dx(j) (a
-  // row-major s x s), assembled and factorised by sparse LU at each call. Where simplified Newton
-  // does not converge (one Jacobian for all stages misses what changes between them, as a
-  // contact that switches within a step): its fallback, which allocates.
-  static SolveCounts solve_coupled(std::span<const double> a, int s, double h, std::span<const SparseMat* const> dx,
-                                   std::span<const SparseMat* const> dv, const Eigen::VectorXd& mass,
-                                   std::span<const Eigen::VectorXd> r, std::span<Eigen::VectorXd> dv_out);
 
  private:
   struct Impl;
@@ -101,6 +95,15 @@ class IterationMatrices {
   double dx_norm_ = 0, dv_norm_ = 0;
 };
 
+// Full Newton's update of s coupled stages with each stage's own Jacobians (dx[k], dv[k]): the
+// s n system, block (i, k) = M delta_ik - h a_ik dF/dv(k) - h^2 sum_j a_ij a_jk dF/dx(j) (a
+// row-major s x s), assembled and factorised by sparse LU at each call: nothing kept. Where
+// simplified Newton does not converge (one Jacobian for all stages misses what changes between
+// them, as a contact that switches within a step): its fallback, which allocates.
+SolveCounts solve_coupled_stages(std::span<const double> a, int s, double h, std::span<const SparseMat* const> dx,
+                                 std::span<const SparseMat* const> dv, const Eigen::VectorXd& mass,
+                                 std::span<const Eigen::VectorXd> r, std::span<Eigen::VectorXd> dv_out);
+
 // A run's Newton workspace (MuJoCo's mjData in spirit): made with the run (its Stepper, core/
 // stepper.hpp), it holds the kept matrices and the vectors a step works in, so that after its
 // first step a run's Newton iterations allocate nothing.
@@ -108,6 +111,7 @@ struct NewtonWorkspace {
   IterationMatrices matrices;
   Eigen::VectorXd x, r, du;  // one stage's
   std::array<Eigen::VectorXd, 4> stage_x, stage_v, stage_f, stage_r, stage_dv;  // s stages' (s <= 4)
+  std::array<Jacobians<Eigen::Dynamic>, 4> stage_jacobians;  // full Newton's, a stage each (the fallback)
   const void* transform_of = nullptr;  // the Butcher matrix `transform` was made from
   StageTransform transform;
 };
