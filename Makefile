@@ -39,13 +39,19 @@ bench: build
 	  echo "$$o $$d" | awk '{ printf "  per step: %.1f us against %.1f us, Debian/optimised %.2f\n", 1e6*$$16/$$2, 1e6*$$34/$$20, ($$34/$$20)/($$16/$$2) }'; fi
 
 # docs/performance.md, regenerated from measurements on this machine: `make bench`, then the
-# studies whose figures it gives (about 4 minutes), then tools/performance-md, which writes every
+# studies whose figures it gives (about 4 minutes, and the maps), then tools/performance-md, which writes every
 # figure from their JSON with its command and the machine.
+MAP_METHODS = rk4,symplectic_euler,implicit_euler,implicit_midpoint,gauss_legendre4,radau_iia5,bdf2
 performance: bench
 	@mkdir -p $(BUILD)/performance
-	@$(BUILD)/steplab study scaling --sizes 1024 --json $(BUILD)/performance/scaling-rope.json >/dev/null
-	@$(BUILD)/steplab study scaling --scene softbody --json $(BUILD)/performance/scaling-softbody.json >/dev/null
+	@$(BUILD)/steplab study scaling --sizes 1024 --error 1e-4 --json $(BUILD)/performance/scaling-rope.json >/dev/null
+	@$(BUILD)/steplab study scaling --scene softbody --error 1e-4 --json $(BUILD)/performance/scaling-softbody.json >/dev/null
 	@$(BUILD)/steplab study work-precision --json $(BUILD)/performance/work-precision.json >/dev/null
+	@# the crossover maps (about an hour): tools/performance-md names these commands
+	@$(BUILD)/steplab study scaling --scene rope --sizes 64,256,1024,4096 --stiffness 5,50,500,5000 --error 1e-4,1% \
+	  --max-steps 500000 --methods $(MAP_METHODS),cvode_bdf_max2_band --json $(BUILD)/performance/scaling-map-rope.json >/dev/null
+	@$(BUILD)/steplab study scaling --scene softbody --sizes 8,16,24,32 --stiffness 10,100,1000,10000 --error 1e-4,1% \
+	  --max-steps 500000 --methods $(MAP_METHODS),cvode_bdf_max2_klu --json $(BUILD)/performance/scaling-map-softbody.json >/dev/null
 	@tools/performance-md --bench $(BUILD)/bench.json --studies $(BUILD)/performance --out docs/performance.md
 
 # The suite under AddressSanitizer and UndefinedBehaviorSanitizer, in its own build folder.

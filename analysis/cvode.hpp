@@ -39,14 +39,14 @@ struct CvodeRun {
   double* data() const { return N_VGetArrayPointer(z); }
 };
 
-// CVODE on z' = rhs(z) from the run's z at t = 0 (overwritten with the state at t_end), rtol = atol
-// = tol, Newton on the run's linear solver with the analytic Jacobian `jac`, the family and options
-// of `settings`; `scene` is the user data the callbacks read (CVODE takes a void*; they only read
-// it). `after_step(t)` after every internal step. Counts into n (failed if CVODE stopped before
-// t_end).
-template <class AfterStep>
-void cvode_solve(CvodeRun& run, CVRhsFn rhs, CVLsJacFn jac, const void* scene, const CvodeSettings& settings, double tol,
-                 double t_end, PeerCounts& n, AfterStep&& after_step) {
+// CVODE on z' = rhs(z) from the run's z at t = 0, rtol = atol = tol, Newton on the run's linear
+// solver with the analytic Jacobian `jac`, the family and options of `settings`; `scene` is the
+// user data the callbacks read (CVODE takes a void*; they only read it). `advance(mem, t)` drives
+// CVode from t = 0 to t_end (t its time, updated) and says whether every call succeeded. Counts
+// into n (failed if CVODE stopped before t_end).
+template <class Advance>
+void cvode_run(CvodeRun& run, CVRhsFn rhs, CVLsJacFn jac, const void* scene, const CvodeSettings& settings, double tol,
+               double t_end, PeerCounts& n, Advance&& advance) {
   N_Vector z = run.z;
   void* mem = CVodeCreate(settings.adams ? CV_ADAMS : CV_BDF, run.ctx);
   bool ok = CVodeInit(mem, rhs, 0.0, z) == CV_SUCCESS && CVodeSStolerances(mem, tol, tol) == CV_SUCCESS &&
@@ -56,10 +56,7 @@ void cvode_solve(CvodeRun& run, CVRhsFn rhs, CVLsJacFn jac, const void* scene, c
   if (ok && settings.max_order > 0) ok = CVodeSetMaxOrd(mem, settings.max_order) == CV_SUCCESS;
   if (ok && settings.stability_limit_detection) ok = CVodeSetStabLimDet(mem, SUNTRUE) == CV_SUCCESS;
   double t = 0;
-  while (ok && t < t_end) {
-    ok = CVode(mem, t_end, z, &t, CV_ONE_STEP) >= 0;
-    if (ok) after_step(t);
-  }
+  ok = ok && advance(mem, t);
   long int steps = 0, error_fails = 0, solve_fails = 0, rhs_evals = 0, fd_rhs_evals = 0, jac_evals = 0, setups = 0, newton = 0;
   CVodeGetNumSteps(mem, &steps);
   CVodeGetNumErrTestFails(mem, &error_fails);
@@ -74,6 +71,37 @@ void cvode_solve(CvodeRun& run, CVRhsFn rhs, CVLsJacFn jac, const void* scene, c
   n.factorisations = setups, n.solves = newton, n.newton = newton;  // a direct solver: one solve per Newton iteration
   n.failed = !ok;
   CVodeFree(&mem);
+}
+
+// One step at a time to t_end (CV_ONE_STEP), `after_step(t)` after each; the run's z is left at
+// t_end.
+template <class AfterStep>
+void cvode_solve(CvodeRun& run, CVRhsFn rhs, CVLsJacFn jac, const void* scene, const CvodeSettings& settings, double tol,
+                 double t_end, PeerCounts& n, AfterStep&& after_step) {
+  cvode_run(run, rhs, jac, scene, settings, tol, t_end, n, [&](void* mem, double& t) {
+    while (t < t_end) {
+      if (CVode(mem, t_end, run.z, &t, CV_ONE_STEP) < 0) return false;
+      after_step(t);
+    }
+    return true;
+  });
+}
+
+// Output at frames t_k = k t_end / frames, k = 1 .. frames, as CVODE's guide has it for output
+// times (CV_NORMAL: it steps past t_k as its error control chooses and interpolates z(t_k) there;
+// its steps nearly those of a run to t_end, its first step estimated from t_1); `at_frame(k)`
+// with the run's z at t_k.
+template <class AtFrame>
+void cvode_solve_frames(CvodeRun& run, CVRhsFn rhs, CVLsJacFn jac, const void* scene, const CvodeSettings& settings,
+                        double tol, double t_end, int frames, PeerCounts& n, AtFrame&& at_frame) {
+  cvode_run(run, rhs, jac, scene, settings, tol, t_end, n, [&](void* mem, double& t) {
+    for (int k = 1; k <= frames; ++k) {
+      const double tout = k == frames ? t_end : t_end * k / frames;
+      if (CVode(mem, tout, run.z, &t, CV_NORMAL) < 0) return false;
+      at_frame(k);
+    }
+    return true;
+  });
 }
 
 }  // namespace steplab

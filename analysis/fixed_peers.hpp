@@ -38,6 +38,36 @@ void odeint_adaptive(Stepper&& stepper, System&& system, Z& z, double t_end, dou
   }
 }
 
+// odeint's integrate_times for a controlled stepper (integrate/detail/integrate_times.hpp),
+// written out for the same reason: to each t_k = k t_end / frames in turn, k = 1 .. frames, the
+// step clipped to end there and the unclipped step kept for the next one (dt = max(dt, the
+// clipped step) after a success, the failed try's step after a failure); `at_frame(z, k)` at each.
+template <class Stepper, class System, class Z, class AtFrame>
+void odeint_times(Stepper&& stepper, System&& system, Z& z, double t_end, int frames, double dt, PeerCounts& n,
+                  AtFrame&& at_frame) {
+  namespace odeint = boost::numeric::odeint;
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  double t = 0;
+  for (int k = 1; k <= frames; ++k) {
+    const double tk = k == frames ? t_end : t_end * k / frames;
+    int fails = 0;
+    while (tk - t > eps) {
+      double step = std::min(dt, tk - t);
+      if (stepper.try_step(system, z, t, step) == odeint::success) {
+        ++n.steps, fails = 0;
+        dt = std::max(dt, step);
+      } else {
+        ++n.rejected, dt = step;
+        if (++fails == 500) {
+          n.failed = true;
+          return;
+        }
+      }
+    }
+    at_frame(z, k);
+  }
+}
+
 template <Scene S> struct OdeintDopri5 {
   static constexpr int D = S::dim;
   using Z = std::array<double, 2 * D>;

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include "analysis/convergence.hpp"
 #include "analysis/fit.hpp"
@@ -25,23 +27,26 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // A row crosses a shard as bytes (analysis/shard.hpp).
 template <class F> void encode_fields(ScalingRow& r, F&& f) {
-  f(r.solver), f(r.implicit), f(r.adaptive), f(r.n), f(r.masses), f(r.dt_stable), f(r.dt), f(r.capped), f(r.error);
-  f(r.steps), f(r.forces), f(r.jacobians), f(r.rejected), f(r.factorisations), f(r.solves), f(r.newton), f(r.seconds), f(r.runs);
+  f(r.solver), f(r.target), f(r.stiffness), f(r.implicit), f(r.adaptive), f(r.n), f(r.masses), f(r.dt_stable), f(r.dt);
+  f(r.capped), f(r.error), f(r.steps), f(r.forces), f(r.jacobians), f(r.rejected), f(r.factorisations), f(r.solves);
+  f(r.newton), f(r.seconds), f(r.runs);
 }
 
 namespace {
 
-// Timed runs: at least one and 0.1 s in all, the minimum kept; so a run shorter than 0.1 s is
-// timed at least twice, and a run of the largest sizes (seconds alone) once.
+// Timed runs: at least one and ScalingConfig::timing_seconds in all, the minimum kept; so a run
+// shorter than that is timed at least twice, and a run of the largest sizes (seconds alone) once.
 constexpr std::size_t kRepeats = 1;
-constexpr double kSeconds = 0.1;
 
 const SceneKernel& scene_of(const ScalingConfig& c) { return scene_kernel(scene_index(c.scene)); }
 
-// The study's parameters with the scene's size parameter (core/scene.hpp, size_param) at n.
-std::vector<double> sized(const ScalingConfig& c, int n) {
+// The study's parameters with the scene's size parameter (core/scene.hpp, size_param) at n and
+// its stiffness parameter at `stiffness` (NaN: the scene has none).
+std::vector<double> sized(const ScalingConfig& c, int n, double stiffness) {
   std::vector<double> p = c.params;
-  p[scene_of(c).size_param] = n;
+  const SceneKernel& s = scene_of(c);
+  p[s.size_param] = n;
+  if (s.stiffness_param >= 0) p[s.stiffness_param] = stiffness;
   return p;
 }
 
@@ -52,40 +57,74 @@ std::string fmt_reference_error(double estimated, double target, int n) {
   return text;
 }
 
-// Where each size's runs are measured against: the positions at t_end, exact where the scene has
-// an exact solution (the rope), else the reference solution (the soft body: dopri5 at rtol
-// 1e-13, analysis/convergence.hpp), whose own estimated error must stay a hundredth of the
-// target's.
-Eigen::VectorXd target_positions(const ScalingConfig& c, const std::vector<double>& p, int n) {
+// The frame times t_k = k t_end / frames, k = 0 .. frames (t_frames = t_end exactly).
+double frame_time(const ScalingConfig& c, int k) { return k == c.frames ? c.t_end : c.t_end * k / c.frames; }
+
+// The positions at the frames k = 0 .. frames the runs are measured against: exact where the
+// scene has an exact solution (the rope), else the reference solution, dopri5 at rtol 1e-13
+// through its dense output (analysis/convergence.hpp's reference, at every frame), whose own
+// error (against dopri5 at 1e-12, the largest over the frames) must stay a hundredth of the
+// smallest target's.
+std::vector<Eigen::VectorXd> frame_positions(const ScalingConfig& c, const std::vector<double>& p, int n, double smallest_target) {
   const SceneKernel& s = scene_of(c);
-  if (s.has_exact) return s.exact(p, c.t_end).x;
-  const ReferenceSolution ref = reference_solution(s, p, c.t_end);
-  if (!(ref.estimated_error <= 0.01 * c.target_error))
-    throw std::runtime_error(fmt_reference_error(ref.estimated_error, c.target_error, n));
-  return Eigen::Map<const Eigen::VectorXd>(ref.x.data(), std::ssize(ref.x));
+  std::vector<Eigen::VectorXd> frames;
+  if (s.has_exact) {
+    for (int k = 0; k <= c.frames; ++k) frames.push_back(s.exact(p, frame_time(c, k)).x);
+    return frames;
+  }
+  AdaptiveSpec spec;
+  spec.t_end = c.t_end, spec.errors = false, spec.max_samples = c.frames + 1;
+  spec.tol = {1e-13, 1e-13};
+  const AnyAdaptiveResult fine = s.dopri5(p, spec);
+  spec.tol = {1e-12, 1e-12};
+  const AnyAdaptiveResult check = s.dopri5(p, spec);
+  const auto complete = [&](const AnyAdaptiveResult& r) {
+    return r.run.status == RunStatus::Ok && std::ssize(r.run.samples) == c.frames + 1;
+  };
+  if (!complete(fine) || !complete(check)) throw std::runtime_error("the reference solution (dopri5 at rtol 1e-13) did not reach t_end");
+  double estimated = 0;
+  for (int k = 0; k <= c.frames; ++k) {
+    frames.push_back(fine.run.samples[k].x);
+    estimated = std::max(estimated, (fine.run.samples[k].x - check.run.samples[k].x).cwiseAbs().maxCoeff());
+  }
+  if (!(estimated <= 0.01 * smallest_target)) throw std::runtime_error(fmt_reference_error(estimated, smallest_target, n));
+  return frames;
 }
 
-// What every row at one size shares, made once before the rows: the parameters, the positions
-// the runs are measured against, the scene's modes (each method's dt*) and its masses.
-struct Size {
+// What every row of one cell (stiffness, size) shares, made once before the rows: the
+// parameters, the positions at the frames the runs are measured against, the scene's modes (each
+// method's dt*), its masses and the targets' absolute errors.
+struct Cell {
   int n;
+  double stiffness;
   std::vector<double> params;
-  Eigen::VectorXd target;
+  std::vector<Eigen::VectorXd> frames;
   std::vector<Mode> modes;
   int masses;
+  std::vector<double> errors;
 };
 
-Size size_of(const ScalingConfig& c, int n) {
-  std::vector<double> p = sized(c, n);
-  Eigen::VectorXd target = target_positions(c, p, n);
+Cell cell_of(const ScalingConfig& c, int n, double stiffness) {
+  std::vector<double> p = sized(c, n, stiffness);
+  std::vector<double> errors;
+  for (const ErrorTarget& t : c.targets) errors.push_back(absolute_error(c, t, stiffness));
+  std::vector<Eigen::VectorXd> frames = frame_positions(c, p, n, *std::min_element(errors.begin(), errors.end()));
   std::vector<Mode> modes = scene_of(c).modes(p);
   const int masses = scaling_masses(c, n);
-  return {n, std::move(p), std::move(target), std::move(modes), masses};
+  return {n, stiffness, std::move(p), std::move(frames), std::move(modes), masses, std::move(errors)};
 }
 
-// The largest |x_i - x_i(t_end)| over the masses; inf for a run that did not finish.
-double max_error(const Eigen::VectorXd& x, const Eigen::VectorXd& exact, bool ok) {
-  return ok && x.allFinite() ? (x - exact).cwiseAbs().maxCoeff() : std::numeric_limits<double>::infinity();
+// The largest |x_i(t_k) - x_i*(t_k)| over the coordinates and the frames k = 1 .. frames, `at(k)`
+// a run's positions at frame k; inf for a run that did not finish.
+template <class At> double frames_error(const Cell& cell, bool ok, At&& at) {
+  if (!ok) return std::numeric_limits<double>::infinity();
+  double e = 0;
+  for (std::size_t k = 1; k < cell.frames.size(); ++k) {
+    const Eigen::VectorXd& x = at(k);
+    if (!x.allFinite()) return std::numeric_limits<double>::infinity();
+    e = std::max(e, (x - cell.frames[k]).cwiseAbs().maxCoeff());
+  }
+  return e;
 }
 
 // What a run at a knob gave: its error (NaN: not run, it would take more than max_steps) and its
@@ -94,6 +133,15 @@ struct Trial {
   double error;
   Counts counts;
 };
+
+// The runs one solver made in one cell, by knob (a number of steps, or a tolerance): each target's
+// search asks them again where it lands on the same knob (a step capped at dt* lands there for
+// every target), and a run is deterministic, so it is made once.
+using Trials = std::map<double, Trial>;
+template <class Run> Trial remembered(Trials& made, double knob, Run&& run) {
+  const auto it = made.find(knob);
+  return it != made.end() ? it->second : made.emplace(knob, run()).first->second;
+}
 
 // A run at `knob` (a step, or a tolerance) gives a Trial; the search keeps the largest knob whose
 // error is at or below the target, with its counts. Error ~ C knob^p: the next knob aims at 0.7
@@ -129,134 +177,140 @@ template <class Run> void search(ScalingRow& row, double start, double most, dou
   ++row.runs;
 }
 
-ScalingRow method_row(const ScalingConfig& c, const Size& size, std::size_t m) {
-  const std::vector<double>& p = size.params;
-  const Eigen::VectorXd& exact = size.target;
+// A fixed-step run of `steps` steps (a multiple of the frames) with a sample at every frame.
+RunSpec frame_run(const ScalingConfig& c, long long steps) {
+  RunSpec spec;
+  spec.errors = false;
+  spec.steps = steps;
+  spec.dt = c.t_end / static_cast<double>(steps);
+  spec.max_samples = c.frames + 1;  // SamplePlan: step k (steps / frames), exactly frame k
+  return spec;
+}
+
+ScalingRow method_row(const ScalingConfig& c, const Cell& cell, int target, std::size_t m, Trials& made) {
   const std::size_t scene = scene_index(c.scene);
   const MethodInfo& info = method_info(m);
-  ScalingRow row{std::string(info.name), info.implicit, false, size.n, size.masses};
-  row.dt_stable = modes_predicted_threshold(m, size.modes);  // analysis/mode_stability.hpp
-  const double most = std::min(0.95 * row.dt_stable, c.t_end / 2);
+  ScalingRow row{std::string(info.name), target, cell.stiffness, info.implicit, false, cell.n, cell.masses};
+  row.dt_stable = modes_predicted_threshold(m, cell.modes);  // analysis/mode_stability.hpp
+  const double frame = c.t_end / c.frames;
+  const double most = std::min(0.95 * row.dt_stable, frame);
   if (!(most * c.max_steps >= c.t_end)) {  // no stable step covers t_end in max_steps
     row.dt = kNaN;
     return row;
   }
   const PairKernel& k = pair_kernel(m, scene);
-  // a whole number of steps ends at t_end: dt = t_end / ceil(t_end / knob)
-  search(row, std::min(most, c.t_end / 20), most, info.order, c.target_error, [&](double knob) {
-    RunSpec spec;
-    spec.errors = false;
-    spec.dt = c.t_end / std::ceil(c.t_end / knob * (1 - 1e-12));
-    spec.steps = steps_for(c.t_end, spec.dt);
-    if (spec.steps > c.max_steps) return Trial{kNaN, {}};
-    Counts counts;
-    const AnyResult res = k.run_counted(p, spec, counts);
-    return Trial{max_error(res.final.x, exact, res.status == RunStatus::Ok && res.steps == spec.steps), counts};
+  // steps = frames j: dt = frame / ceil(frame / knob), a whole number of steps to each frame
+  search(row, std::min(most, frame), most, info.order, cell.errors[target], [&](double knob) {
+    const long long steps = c.frames * static_cast<long long>(std::ceil(frame / knob * (1 - 1e-12)));
+    if (steps > c.max_steps) return Trial{kNaN, {}};
+    return remembered(made, static_cast<double>(steps), [&] {
+      Counts counts;
+      const AnyResult res = k.run_counted(cell.params, frame_run(c, steps), counts);
+      const bool ok = res.status == RunStatus::Ok && res.steps == steps && std::ssize(res.samples) == c.frames + 1;
+      return Trial{frames_error(cell, ok, [&](std::size_t f) -> const Eigen::VectorXd& { return res.samples[f].x; }), counts};
+    });
   });
   if (row.reached()) {
-    row.capped = row.dt >= most && 0.95 * row.dt_stable <= c.t_end / 2;  // the search stopped at 0.95 dt*
+    row.capped = row.dt >= most && 0.95 * row.dt_stable <= frame;  // the search stopped at 0.95 dt*
     row.dt = c.t_end / static_cast<double>(row.steps);
   }
   return row;
 }
 
-AdaptiveSpec adaptive_spec(double tol, double t_end) {
+AdaptiveSpec adaptive_spec(const ScalingConfig& c, double tol) {
   AdaptiveSpec spec;
   spec.tol = {tol, tol};
-  spec.t_end = t_end;
+  spec.t_end = c.t_end;
   spec.errors = false;
+  spec.max_samples = c.frames + 1;  // its dense output at every frame
   return spec;
 }
 
 // dopri5 (steplab's) or a peer (analysis/peers.hpp) at a tolerance.
-ScalingRow peer_row(const ScalingConfig& c, const Size& size, const std::string& solver) {
-  const std::vector<double>& p = size.params;
-  const Eigen::VectorXd& exact = size.target;
+ScalingRow peer_row(const ScalingConfig& c, const Cell& cell, int target, const std::string& solver, Trials& made) {
   const std::size_t scene = scene_index(c.scene);
   const PeerInfo& peer = *find_peer(solver);
-  ScalingRow row{solver, peer.implicit, true, size.n, size.masses, kNaN};
+  ScalingRow row{solver, target, cell.stiffness, peer.implicit, true, cell.n, cell.masses, kNaN};
+  const double error = cell.errors[target];
   if (solver == "dopri5") {
-    search(row, 1e-4, 1e-2, 1, c.target_error, [&](double tol) {
-      const AnyAdaptiveResult res = scene_kernel(scene).dopri5(p, adaptive_spec(tol, c.t_end));
-      return Trial{max_error(res.run.final.x, exact, res.run.status == RunStatus::Ok), counts_of(res.stats)};
+    search(row, 1e-4, 1e-2, 1, error, [&](double tol) {
+      return remembered(made, tol, [&] {
+        const AnyAdaptiveResult res = scene_kernel(scene).dopri5(cell.params, adaptive_spec(c, tol));
+        const bool ok = res.run.status == RunStatus::Ok && std::ssize(res.run.samples) == c.frames + 1;
+        return Trial{frames_error(cell, ok, [&](std::size_t f) -> const Eigen::VectorXd& { return res.run.samples[f].x; }),
+                     counts_of(res.stats)};
+      });
     });
     return row;
   }
   const SceneKernel& s = scene_kernel(scene);
-  const std::shared_ptr<const void> made = s.make(p);
-  search(row, 1e-4, 1e-2, 1, c.target_error, [&](double tol) {
-    PeerCounts counts;
-    const State<Eigen::Dynamic> end = run_sized_peer(peer, s, made.get(), tol, c.t_end, counts);
-    return Trial{max_error(end.x, exact, !counts.failed), counts};
+  const std::shared_ptr<const void> scene_made = s.make(cell.params);
+  search(row, 1e-4, 1e-2, 1, error, [&](double tol) {
+    return remembered(made, tol, [&] {
+      PeerCounts counts;
+      std::vector<Eigen::VectorXd> x(cell.frames.size());
+      run_sized_peer(peer, s, scene_made.get(), tol, c.t_end, counts, {c.frames, [&](int k, const Eigen::VectorXd& at) { x[k] = at; }});
+      return Trial{frames_error(cell, !counts.failed, [&](std::size_t f) -> const Eigen::VectorXd& { return x[f]; }), Counts(counts)};
+    });
   });
   return row;
 }
 
 double run_seconds(const ScalingConfig& c, const ScalingRow& row) {
-  const std::vector<double> p = sized(c, row.n);
+  const std::vector<double> p = sized(c, row.n, row.stiffness);
   const std::size_t scene = scene_index(c.scene);
   std::vector<double> times;
   if (!row.adaptive) {
-    RunSpec spec;
-    spec.errors = false;
-    spec.dt = row.dt;
-    spec.steps = row.steps;
-    times = pair_kernel(*find_method(row.solver), scene).timings(p, spec, kRepeats, kSeconds);
+    times = pair_kernel(*find_method(row.solver), scene).timings(p, frame_run(c, row.steps), kRepeats, c.timing_seconds);
   } else if (row.solver == "dopri5") {
-    times = scene_kernel(scene).dopri5_timings(p, adaptive_spec(row.dt, c.t_end), kRepeats, kSeconds);
-  } else {  // the scene made once, outside the timed runs
+    times = scene_kernel(scene).dopri5_timings(p, adaptive_spec(c, row.dt), kRepeats, c.timing_seconds);
+  } else {  // the scene made once, outside the timed runs; the frames kept as the search's runs kept them
     const PeerInfo& peer = *find_peer(row.solver);
     const SceneKernel& s = scene_kernel(scene);
     const std::shared_ptr<const void> made = s.make(p);
     PeerCounts counts;
-    times = repeated_timings([&] { run_sized_peer(peer, s, made.get(), row.dt, c.t_end, counts); }, kRepeats, kSeconds);
+    std::vector<Eigen::VectorXd> x(static_cast<std::size_t>(c.frames) + 1);
+    const PeerFrames frames{c.frames, [&](int k, const Eigen::VectorXd& at) { x[k] = at; }};
+    times = repeated_timings([&] { run_sized_peer(peer, s, made.get(), row.dt, c.t_end, counts, frames); }, kRepeats, c.timing_seconds);
   }
   return *std::min_element(times.begin(), times.end());
 }
 
-ScalingFit fit_of(const ScalingConfig& c, std::span<const ScalingRow> rows) {
-  std::vector<double> masses, run, step, stable;
-  for (const ScalingRow& r : rows) {
-    masses.push_back(r.masses);
-    run.push_back(r.reached() && r.steps > 0 ? scaling_cost(c, r) : kNaN);
-    step.push_back(run.back() / static_cast<double>(r.steps));
-    stable.push_back(r.dt_stable);
-  }
-  ScalingFit f{rows.front().solver, fit_exponent(masses, step), fit_exponent(masses, run), fit_exponent(masses, stable)};
-  f.step.early = f.run.early = begins_early(masses, step);
-  return f;
-}
-
 }  // namespace
 
-bool begins_early(std::span<const double> masses, std::span<const double> step_cost) {
-  std::vector<std::size_t> known;
-  for (std::size_t k = 0; k < masses.size() && known.size() < 2; ++k)
-    if (std::isfinite(step_cost[k]) && step_cost[k] > 0) known.push_back(k);
-  if (known.size() < 2) return false;
-  const std::size_t a = known[0], b = known[1];
-  return std::log(step_cost[b] / step_cost[a]) < kAsymptoticSlope * std::log(masses[b] / masses[a]);
+std::vector<double> scaling_stiffnesses(const ScalingConfig& c) {
+  const SceneKernel& s = scene_of(c);
+  if (s.stiffness_param < 0) return {kNaN};
+  return c.stiffnesses.empty() ? std::vector<double>{c.params[s.stiffness_param]} : c.stiffnesses;
 }
 
-Exponent fit_exponent(std::span<const double> masses, std::span<const double> y) {
-  std::vector<double> n, v;
-  for (std::size_t k = 0; k < masses.size(); ++k)
-    if (std::isfinite(y[k]) && y[k] > 0) n.push_back(std::log(masses[k])), v.push_back(std::log(y[k]));
-  Exponent e;
-  e.sizes = static_cast<int>(n.size());
-  if (n.empty()) return e;
-  e.decades = (*std::max_element(n.begin(), n.end()) - *std::min_element(n.begin(), n.end())) / std::log(10.0);
-  if (e.sizes < kFitSizes || e.decades < kFitDecades - 1e-9) return e;
-  const LineFit line = fit_line(n, v);
-  e.value = line.slope, e.lo = line.ci95_lo, e.hi = line.ci95_hi;
-  return e;
+double absolute_error(const ScalingConfig& c, const ErrorTarget& t, double stiffness) {
+  if (!t.of_extent) return t.value;
+  const SceneKernel& s = scene_of(c);
+  const Eigen::VectorXd x = s.initial(sized(c, *std::max_element(c.sizes.begin(), c.sizes.end()), stiffness)).x;
+  double extent = 0;
+  for (int axis = 0; axis < s.coords_per_mass; ++axis) {
+    const auto along = Eigen::Map<const Eigen::VectorXd, 0, Eigen::InnerStride<>>(x.data() + axis, x.size() / s.coords_per_mass,
+                                                                                  Eigen::InnerStride<>(s.coords_per_mass));
+    extent = std::max(extent, along.maxCoeff() - along.minCoeff());
+  }
+  return t.value * extent;
+}
+
+std::string target_text(const ScalingConfig& c, const ErrorTarget& t, double stiffness) {
+  char text[120];
+  if (t.of_extent)
+    std::snprintf(text, sizeof text, "%g %% of the extent, %.3g", 100 * t.value, absolute_error(c, t, stiffness));
+  else
+    std::snprintf(text, sizeof text, "%g", t.value);
+  return text;
 }
 
 double scaling_cost(const ScalingConfig& c, const ScalingRow& r) { return c.timing ? r.seconds : double(r.forces + r.jacobians) * r.masses; }
 
 int scaling_masses(const ScalingConfig& c, int n) {
   const SceneKernel& s = scene_of(c);
-  return static_cast<int>(s.initial(sized(c, n)).x.size()) / s.coords_per_mass;
+  return static_cast<int>(s.initial(sized(c, n, scaling_stiffnesses(c).front())).x.size()) / s.coords_per_mass;
 }
 
 std::vector<std::string> scaling_adaptive_solvers(std::string_view scene) {
@@ -280,32 +334,50 @@ ScalingResult scaling_study(const ScalingConfig& c) {
   for (const std::string& a : c.adaptive)
     if (const PeerInfo* p = find_peer(a); !p || !p->built || !peer_runs_on(*p, peer_scenes(scene_of(c))))
       throw std::logic_error("scaling_study: " + a + " is not an adaptive solver built for the " + c.scene);
+  if (c.targets.empty() || c.frames < 1) throw std::logic_error("scaling_study: no target, or no frame");
   ScalingResult out;
   out.config = c;
-  const std::size_t nm = c.methods.size(), ns = c.sizes.size(), np = c.adaptive.size();
-  std::vector<Size> sizes;
-  for (int n : c.sizes) sizes.push_back(size_of(c, n));
-  out.rows = study_map<ScalingRow>((nm + np) * ns, c.workers, [&](std::size_t task) {
-    const std::size_t solver = task / ns, k = task % ns;
-    return solver < nm ? method_row(c, sizes[k], c.methods[solver]) : peer_row(c, sizes[k], c.adaptive[solver - nm]);
+  const std::vector<double> stiffnesses = scaling_stiffnesses(c);
+  const std::size_t nm = c.methods.size(), ns = c.sizes.size(), nk = stiffnesses.size(), nsolvers = out.solvers();
+  std::vector<Cell> cells;  // stiffness-major
+  for (double k : stiffnesses)
+    for (int n : c.sizes) cells.push_back(cell_of(c, n, k));
+  // task: (stiffness * solvers + solver) * ns + size, each target's row; then the rows' order:
+  // ((target * nk + stiffness) * solvers + solver) * ns + size
+  const std::size_t tasks = nk * nsolvers * ns, nt = c.targets.size();
+  const std::vector<std::vector<ScalingRow>> found = study_map<std::vector<ScalingRow>>(tasks, c.workers, [&](std::size_t task) {
+    const std::size_t size = task % ns, solver = task / ns % nsolvers, k = task / ns / nsolvers;
+    const Cell& cell = cells[k * ns + size];
+    Trials made;
+    std::vector<ScalingRow> rows;
+    for (int t = 0; t < static_cast<int>(nt); ++t)
+      rows.push_back(solver < nm ? method_row(c, cell, t, c.methods[solver], made) : peer_row(c, cell, t, c.adaptive[solver - nm], made));
+    return rows;
   });
-  if (c.timing)
+  for (std::size_t t = 0; t < nt; ++t)
+    for (std::size_t task = 0; task < tasks; ++task) out.rows.push_back(found[task][t]);
+  if (c.timing) {  // a run timed once: the rows of other targets that chose the same run share its time
+    std::map<std::tuple<std::string, int, double, double>, double> timed;
     for (ScalingRow& r : out.rows)
-      if (r.reached()) r.seconds = run_seconds(c, r);
-  for (std::size_t s = 0; s < nm + np; ++s) out.fits.push_back(fit_of(c, out.rows_of(s)));
-  // crossover: the first size where the cheapest implicit method beats every explicit one (steplab's methods)
-  for (std::size_t k = 0; k < ns && out.crossover == 0; ++k) {
-    double explicit_best = std::numeric_limits<double>::infinity(), implicit_best = explicit_best;
-    std::string implicit_name;
-    for (std::size_t s = 0; s < nm; ++s) {
-      const ScalingRow& r = out.rows_of(s)[k];
-      if (!r.reached()) continue;
-      const double cost = scaling_cost(c, r);
-      if (r.implicit && cost < implicit_best) implicit_best = cost, implicit_name = r.solver;
-      if (!r.implicit && cost < explicit_best) explicit_best = cost;
-    }
-    if (implicit_best < explicit_best) out.crossover = c.sizes[k], out.crossover_method = implicit_name;
+      if (r.reached()) {
+        const auto key = std::tuple{r.solver, r.n, r.stiffness, r.adaptive ? r.dt : static_cast<double>(r.steps)};
+        const auto it = timed.find(key);
+        r.seconds = it != timed.end() ? it->second : timed.emplace(key, run_seconds(c, r)).first->second;
+      }
   }
+  for (std::size_t b = 0; b < nt * nk; ++b) {
+    ScalingBlock block;
+    block.target = static_cast<int>(b / nk), block.error = cells[b % nk * ns].errors[b / nk], block.stiffness = stiffnesses[b % nk];
+    for (std::size_t k = 0; k < ns; ++k) {
+      const Cell& at = cells[b % nk * ns + k];
+      ScalingCell cell;
+      cell.n = at.n, cell.masses = at.masses;
+      for (const Eigen::VectorXd& x : at.frames) cell.motion = std::max(cell.motion, (x - at.frames.front()).cwiseAbs().maxCoeff());
+      block.cells.push_back(std::move(cell));
+    }
+    out.blocks.push_back(std::move(block));
+  }
+  answer_rows(out);
   return out;
 }
 

@@ -92,7 +92,7 @@ int csr_jacobian(sunrealtype, N_Vector z, N_Vector, SUNMatrix J, void* data, N_V
   return k <= SUNSparseMatrix_NNZ(J) ? 0 : -1;
 }
 
-State<Eigen::Dynamic> odeint_dopri5(const MadeScene& s, double tol, double t_end, PeerCounts& n) {
+State<Eigen::Dynamic> odeint_dopri5(const MadeScene& s, double tol, double t_end, PeerCounts& n, const PeerFrames& frames) {
   namespace odeint = boost::numeric::odeint;
   using Z = Eigen::VectorXd;
   n = {};
@@ -107,12 +107,26 @@ State<Eigen::Dynamic> odeint_dopri5(const MadeScene& s, double tol, double t_end
     da.tail(d) = acceleration(s, t, Eigen::VectorXd(a.head(d)), Eigen::VectorXd(a.tail(d)));
   };
   using Stepper = odeint::runge_kutta_dopri5<Z, double, Z, double, odeint::vector_space_algebra>;
-  odeint_adaptive(odeint::make_controlled(tol, tol, Stepper()), rhs, z, t_end, 1e-6 * t_end, n, [](const Z&, double) {});
+  if (frames.count > 0)
+    odeint_times(odeint::make_controlled(tol, tol, Stepper()), rhs, z, t_end, frames.count, 1e-6 * t_end, n,
+                 [&](const Z& a, int k) { frames.at(k, a.head(d)); });
+  else
+    odeint_adaptive(odeint::make_controlled(tol, tol, Stepper()), rhs, z, t_end, 1e-6 * t_end, n, [](const Z&, double) {});
   return {z.head(d), z.tail(d)};
 }
 
+// CVODE to t_end, or through the frames when there are any, `positions()` the run's x (a copy).
+template <class Positions>
+void cvode_frames_or_end(CvodeRun& c, CVRhsFn rhs, CVLsJacFn jac, const MadeScene& s, const CvodeSettings& settings, double tol,
+                         double t_end, PeerCounts& n, const PeerFrames& frames, Positions&& positions) {
+  if (frames.count > 0)
+    cvode_solve_frames(c, rhs, jac, &s, settings, tol, t_end, frames.count, n, [&](int k) { frames.at(k, positions()); });
+  else
+    cvode_solve(c, rhs, jac, &s, settings, tol, t_end, n, [](double) {});
+}
+
 State<Eigen::Dynamic> cvode_band(const MadeScene& s, int bandwidth, const CvodeSettings& settings, double tol, double t_end,
-                                 PeerCounts& n) {
+                                 PeerCounts& n, const PeerFrames& frames) {
   const State<Eigen::Dynamic> y0 = s.initial();
   const Eigen::Index d = y0.x.size();
   CvodeRun c(2 * d);
@@ -120,14 +134,17 @@ State<Eigen::Dynamic> cvode_band(const MadeScene& s, int bandwidth, const CvodeS
   for (Eigen::Index i = 0; i < d; ++i) a[2 * i] = y0.x[i], a[2 * i + 1] = y0.v[i];
   c.J = SUNBandMatrix(2 * d, 2 * bandwidth, 2 * bandwidth + 1, c.ctx);
   c.ls = SUNLinSol_Band(c.z, c.J, c.ctx);
-  cvode_solve(c, interleaved_rhs, band_jacobian, &s, settings, tol, t_end, n, [](double) {});
+  cvode_frames_or_end(c, interleaved_rhs, band_jacobian, s, settings, tol, t_end, n, frames, [&] {
+    return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd, 0, Eigen::InnerStride<2>>(a, d));
+  });
   State<Eigen::Dynamic> end{Eigen::VectorXd(d), Eigen::VectorXd(d)};
   for (Eigen::Index i = 0; i < d; ++i) end.x[i] = a[2 * i], end.v[i] = a[2 * i + 1];
   return end;
 }
 
 #if STEPLAB_HAVE_KLU
-State<Eigen::Dynamic> cvode_klu(const MadeScene& s, const CvodeSettings& settings, double tol, double t_end, PeerCounts& n) {
+State<Eigen::Dynamic> cvode_klu(const MadeScene& s, const CvodeSettings& settings, double tol, double t_end, PeerCounts& n,
+                                const PeerFrames& frames) {
   const State<Eigen::Dynamic> y0 = s.initial();
   const sunindextype d = y0.x.size();
   CvodeRun c(2 * d);
@@ -135,7 +152,8 @@ State<Eigen::Dynamic> cvode_klu(const MadeScene& s, const CvodeSettings& setting
   const Jacobians<Eigen::Dynamic> j0 = s.jacobians(y0.x, y0.v);
   c.J = SUNSparseMatrix(2 * d, 2 * d, d + j0.dx.nonZeros() + j0.dv.nonZeros(), CSR_MAT, c.ctx);
   c.ls = SUNLinSol_KLU(c.z, c.J, c.ctx);
-  cvode_solve(c, blocked_rhs, csr_jacobian, &s, settings, tol, t_end, n, [](double) {});
+  cvode_frames_or_end(c, blocked_rhs, csr_jacobian, s, settings, tol, t_end, n, frames,
+                      [&] { return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(c.data(), d)); });
   const Eigen::Map<const Eigen::VectorXd> a(c.data(), 2 * d);
   return {a.head(d), a.tail(d)};
 }
@@ -148,13 +166,13 @@ State<Eigen::Dynamic> cvode_klu(const MadeScene& s, const CvodeSettings& setting
 }  // namespace
 
 State<Eigen::Dynamic> run_sized_peer(const PeerInfo& peer, const SceneKernel& scene, const void* made, double tol, double t_end,
-                                     PeerCounts& n) {
+                                     PeerCounts& n, const PeerFrames& frames) {
   if (!scene.made || !peer_runs_on(peer, peer_scenes(scene))) not_here(peer, scene);
   const MadeScene s{*scene.made, made};
-  if (peer.name == "odeint_dopri5") return odeint_dopri5(s, tol, t_end, n);
-  if (peer.linear_solver == "band") return cvode_band(s, scene.jacobian_bandwidth, peer.cvode, tol, t_end, n);
+  if (peer.name == "odeint_dopri5") return odeint_dopri5(s, tol, t_end, n, frames);
+  if (peer.linear_solver == "band") return cvode_band(s, scene.jacobian_bandwidth, peer.cvode, tol, t_end, n, frames);
 #if STEPLAB_HAVE_KLU
-  if (peer.linear_solver == "KLU" && peer.built) return cvode_klu(s, peer.cvode, tol, t_end, n);
+  if (peer.linear_solver == "KLU" && peer.built) return cvode_klu(s, peer.cvode, tol, t_end, n, frames);
 #endif
   not_here(peer, scene);
 }

@@ -18,15 +18,25 @@
 // (analysis/counts.hpp).
 #pragma once
 
+#include <functional>
+
 #include "analysis/kernel.hpp"
 #include "analysis/peers.hpp"
 
 namespace steplab {
 
+// Output at frames: the positions at t_k = k t_end / count, k = 1 .. count, handed to `at` as each
+// is reached. CVODE interpolates them in its normal mode (its steps nearly those of a run without
+// output); Boost.Odeint's controlled stepper steps to each, as its integrate_times does.
+struct PeerFrames {
+  int count = 0;  // 0: no frames, the run steps straight to t_end
+  std::function<void(int k, const Eigen::VectorXd& x)> at;
+};
+
 // `peer` one of peers_on(peer_scenes(scene)) but dopri5 (steplab's own runs through the kernel
 // table), on the scene `made` by scene.make(params).
 State<Eigen::Dynamic> run_sized_peer(const PeerInfo& peer, const SceneKernel& scene, const void* made, double tol, double t_end,
-                                     PeerCounts& n);
+                                     PeerCounts& n, const PeerFrames& frames = {});
 // The same on scene `scene` of the table with these parameters, made here.
 State<Eigen::Dynamic> run_sized_peer(const PeerInfo& peer, std::size_t scene, std::span<const double> params, double tol,
                                      double t_end, PeerCounts& n);

@@ -9,6 +9,7 @@ trap 'rm -rf "$tmp"' EXIT
 "$exe" study convergence --scene spring --dt-min 1e-3 --points 8 --json "$tmp/convergence_spring.json" >/dev/null
 "$exe" study stability --map-dt-points 4 --map-damping-points 3 --threshold-dampings 0.1 --json "$tmp/stability.json" >/dev/null
 "$exe" study collision --dts 0.002 --t-end 2 --json "$tmp/collision.json" >/dev/null
+"$exe" study scaling --sizes 8,16 --stiffness 5,5000 --methods rk4,implicit_euler --no-timing --json "$tmp/scaling_map.json" >/dev/null
 STEPLAB_DATA=$tmp STEPLAB_FIGURES=$tmp jupyter nbconvert --to notebook --execute --ExecutePreprocessor.timeout=120 \
   --output-dir "$tmp" --output executed "$src/reports/data/explore.ipynb" 2>"$tmp/log" || { cat "$tmp/log"; exit 1; }
 test -s "$tmp/convergence_from_notebook.png" || { echo "the notebook did not redraw figure 3"; exit 1; }

@@ -278,7 +278,7 @@ cmp stability_1.json stability_2.json
   --json conv_beads.json >/dev/null
 "$tool" study stability --scene beads --beads 16 --methods rk4,symplectic_euler --json stab_beads.json >/dev/null
 "$tool" study scaling --scene beads --sizes 8,16,32 --methods rk4,implicit_midpoint,cvode_adams_band --no-timing \
-  --json scal_beads.json >/dev/null
+  --error 1e-4 --json scal_beads.json >/dev/null
 python3 - run_beads.json conv_beads.json stab_beads.json scal_beads.json <<'EOF'
 import json, math, sys
 run, conv, stab, scal = (json.load(open(f)) for f in sys.argv[1:])
@@ -317,7 +317,7 @@ cat > small.json <<'EOF'
 {"convergence": {"points": 4, "dt_min": 0.01}, "work_precision": {"points": 3, "stiffnesses": [5], "timing": false},
  "stability": {"map_dt_points": 4, "map_damping_points": 4}, "collision": {"t_end": 1, "dts": [0.004]},
  "figures": {"energy_t_end": 2, "cannonball_t_end": 2},
- "scaling": {"rope": [4, 8], "softbody": [2], "beads": [4, 8], "t_end": 0.5}}
+ "scaling": {"rope": [4, 8], "softbody": [2], "beads": [4, 8], "t_end": 0.5, "map_sizes": [4, 8], "stiffening": [1, 100]}}
 EOF
 "$tool" report --print-config | python3 -c 'import json, sys; assert "beads" in json.load(sys.stdin)["scaling"]'
 "$tool" report --config small.json --out rep >/dev/null

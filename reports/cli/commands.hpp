@@ -129,8 +129,9 @@ struct ScalingArgs {
   SceneArgs scene;  // the scene's parameters (--masses, --grid replaced by each size); add_scaling_command makes rope the default
   std::string methods;
   std::string sizes;  // empty: the scene's default sizes (scaling_command.cpp)
-  std::string error = "1e-4";
+  std::string error = "1e-4,1%";  // targets: absolute, or N% of the body's extent
   std::string t_end = "2";
+  std::string frames = "100";
   std::string max_steps;  // empty: the scene's default (scaling_command.cpp)
   std::string threads = "0";
   bool no_timing = false;

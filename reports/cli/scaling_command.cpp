@@ -1,6 +1,6 @@
-// `study scaling`: the rope of N masses or the soft body of n x n masses refined, every method and
-// the peers at each size (analysis/scaling.hpp); a table on stdout, --json the data (schema
-// steplab.scaling/2).
+// `study scaling`: the rope of N masses or the soft body of n x n masses refined and stiffened,
+// every method and the peers in each cell, at each target (analysis/scaling.hpp); a table per
+// (target, stiffness) and the map on stdout, --json the data (schema steplab.scaling/3).
 #include <cmath>
 #include <cstdio>
 
@@ -27,10 +27,15 @@ CLI::App* add_scaling_command(CLI::App* study, ScalingArgs& a) {
                                           "cvode_bdf_band, cvode_bdf_max2_band on the rope, cvode_adams_klu, cvode_bdf_klu, "
                                           "cvode_bdf_max2_klu on the soft body; default: "
                                           "every numerical method, and every adaptive solver where the list names none)");
+  // The scene's stiffness option (--stiffness on the rope and the soft body) takes a list here: the map's axis.
   cmd->add_option("--sizes", a.sizes, "comma-separated sizes: the rope's numbers of masses (1 .. 100000), the soft body's "
                                       "grid sides n (1 .. 300; default 16,64,256,1024 masses on the rope, 4,8,16 on the soft body)");
-  cmd->add_option("--error", a.error, "target position error (largest over the coordinates at t_end)")->capture_default_str();
+  cmd->add_option("--error", a.error, "comma-separated target position errors (the largest over the coordinates and the "
+                                      "frames), each a number or a percentage of the body's extent at rest (1% the visual one)")
+      ->capture_default_str();
   cmd->add_option("--t-end", a.t_end, "simulated time")->capture_default_str();
+  cmd->add_option("--frames", a.frames, "output frames up to t_end where the error is measured (1 .. 10000); a fixed step "
+                                        "divides the frame interval")->capture_default_str();
   cmd->add_option("--max-steps", a.max_steps, "a search tries no step that needs more steps than this (default: 2000000 "
                                               "on the rope, 200000 on the soft body, whose implicit steps cost a sparse solve each)");
   cmd->add_option("--threads", a.threads, "worker threads for the searches (timings run one at a time)")->capture_default_str();
@@ -44,25 +49,32 @@ CLI::App* add_scaling_command(CLI::App* study, ScalingArgs& a) {
 Json scaling_json(const ScalingResult& r) {
   const ScalingConfig& c = r.config;
   Json j;
-  j["schema"] = "steplab.scaling/2";
+  j["schema"] = "steplab.scaling/3";
   const std::size_t scene = scene_index(c.scene);
   const SceneKernel& s = scene_kernel(scene);
   const std::string size_key = param_key(s.params[s.size_param]);  // masses (rope), grid (soft body)
+  const auto num = [](double x) { return std::isnan(x) ? Json(nullptr) : threshold_json(x); };
   j["scene"] = c.scene;
   Json p = scene_params_json(scene, c.params);
   p.erase(size_key);
+  if (s.stiffness_param >= 0) p.erase(param_key(s.params[s.stiffness_param]));
   p["sizes"] = c.sizes;
-  p["target_error"] = c.target_error;
+  Json stiffnesses = Json::array();
+  for (double k : scaling_stiffnesses(c)) stiffnesses.push_back(num(k));
+  p["stiffnesses"] = std::move(stiffnesses);
+  Json targets = Json::array();
+  for (const ErrorTarget& t : c.targets) targets.push_back({{"value", t.value}, {"of_extent", t.of_extent}});
+  p["targets"] = std::move(targets);
+  p["frames"] = c.frames;
   p["t_end"] = c.t_end;
   p["max_steps"] = c.max_steps;
   p["timing"] = c.timing;
   j["params"] = std::move(p);
   j["peer_builds"] = peer_builds_json();
-  const auto num = [](double x) { return std::isnan(x) ? Json(nullptr) : threshold_json(x); };
   Json rows = Json::array();
   for (const ScalingRow& w : r.rows) {
-    Json row = {{"solver", w.solver}, {"implicit", w.implicit}, {"adaptive", w.adaptive}, {size_key, w.n},
-                {"dt_stable", num(w.dt_stable)}, {w.adaptive ? "tolerance" : "dt", num(w.dt)},
+    Json row = {{"solver", w.solver}, {"target", w.target}, {"stiffness", num(w.stiffness)}, {"implicit", w.implicit},
+                {"adaptive", w.adaptive}, {size_key, w.n}, {"dt_stable", num(w.dt_stable)}, {w.adaptive ? "tolerance" : "dt", num(w.dt)},
                 {"error", w.reached() ? Json(w.error) : Json(nullptr)}, {"counts", counts_json(w.counts())},
                 {"seconds", w.reached() && c.timing ? Json(w.seconds) : Json(nullptr)}, {"search_runs", w.runs}};
     if (!w.adaptive) row["dt_capped_at_stable"] = w.capped;
@@ -76,10 +88,25 @@ Json scaling_json(const ScalingResult& r) {
   };
   Json fits = Json::array();
   for (const ScalingFit& f : r.fits)
-    fits.push_back({{"solver", f.solver}, {"step", exponent(f.step)}, {"run", exponent(f.run)}, {"stable_step", exponent(f.stable)}});
+    fits.push_back({{"solver", f.solver}, {"target", f.target}, {"stiffness", num(f.stiffness)}, {"step", exponent(f.step)},
+                    {"run", exponent(f.run)}, {"stable_step", exponent(f.stable)}});
   j["exponents"] = std::move(fits);
-  j["crossover"] = r.crossover == 0 ? Json(nullptr)
-                                    : Json({{size_key, r.crossover}, {"masses", scaling_masses(c, r.crossover)}, {"method", r.crossover_method}});
+  const auto name = [](const std::string& x) { return x.empty() ? Json(nullptr) : Json(x); };
+  Json blocks = Json::array();
+  for (const ScalingBlock& b : r.blocks) {
+    Json map = Json::array();
+    for (const ScalingCell& m : b.cells)
+      map.push_back({{size_key, m.n}, {"masses", m.masses}, {"cheapest", name(m.cheapest)}, {"next", name(m.next)},
+                     {"margin", num(m.margin)}, {"best_implicit", name(m.best_implicit)}, {"best_explicit", name(m.best_explicit)},
+                     {"best_cvode", name(m.best_cvode)}, {"implicit_over_explicit", num(m.over_explicit)},
+                     {"implicit_over_cvode", num(m.over_cvode)}, {"motion", m.motion}});
+    blocks.push_back({{"target", b.target}, {"error", b.error}, {"stiffness", num(b.stiffness)},
+                      {"crossover", b.crossover == 0 ? Json(nullptr)
+                                                     : Json({{size_key, b.crossover}, {"masses", scaling_masses(c, b.crossover)},
+                                                             {"method", b.crossover_method}})},
+                      {"map", std::move(map)}});
+  }
+  j["blocks"] = std::move(blocks);
   return j;
 }
 
@@ -95,36 +122,96 @@ std::string exponent_rule_text() {
                      kFitSizes, kFitDecades, kAsymptoticSlope);
 }
 
-std::string scaling_table(const ScalingResult& r) {
+std::string stiffness_text(const ScalingConfig& c, double k) {
+  const SceneKernel& s = scene_kernel(scene_index(c.scene));
+  return std::isnan(k) ? std::string() : fmt::format(", {} {:g}", s.params[s.stiffness_param].name, k);
+}
+
+namespace {
+
+// One (target, stiffness): its rows, exponents and crossover.
+std::string block_table(const ScalingResult& r, std::size_t b) {
   const ScalingConfig& c = r.config;
+  const ScalingBlock& block = r.blocks[b];
   const char* unit = c.timing ? "run [s]" : "evals x N";
-  std::string out = fmt::format("{}, error {:g} (largest over the coordinates at t = {:g}, against the {}); cost by {}\n\n"
+  const SceneKernel& scene = scene_kernel(scene_index(c.scene));
+  std::string out = fmt::format("{}{}, error {} (largest over the coordinates and {} frames to t = {:g}, against the {}); cost by {}\n\n"
                                 "{:<20} {:>7} {:>11} {:>12} {:>10} {:>9} {:>6} {:>9} {:>7} {:>7} {:>8} {:>12} {:>12}\n",
-                                scene_kernel(scene_index(c.scene)).title, c.target_error, c.t_end,
-                                scene_kernel(scene_index(c.scene)).has_exact ? "exact solution" : "reference solution", c.timing ? "run time" : "force + Jacobian evaluations x N", "solver",
-                                "N", "dt*", "dt / tol", "error", "steps", "rej", "forces", "jacs", "LUs", "Newton", unit, "per step");
+                                scene.title, stiffness_text(c, block.stiffness), target_text(c, c.targets[block.target], block.stiffness),
+                                c.frames, c.t_end, scene.has_exact ? "exact solution" : "reference solution",
+                                c.timing ? "run time" : "force + Jacobian evaluations x N", "solver", "N", "dt*", "dt / tol", "error",
+                                "steps", "rej", "forces", "jacs", "LUs", "Newton", unit, "per step");
   bool capped = false;
-  for (const ScalingRow& w : r.rows) {
-    const double cost = scaling_cost(c, w);
-    const auto count = [&](long long x) { return w.reached() ? std::to_string(x) : std::string("-"); };
-    capped = capped || (w.reached() && w.capped);
-    out += fmt::format("{:<20} {:>7} {:>11} {:>12} {:>10} {:>9} {:>6} {:>9} {:>7} {:>7} {:>8} {:>12} {:>12}\n", w.solver, w.masses,
-                       std::isnan(w.dt_stable) ? "-" : threshold_text(w.dt_stable),
-                       w.reached() ? fmt::format("{:.4g}{}", w.dt, w.capped ? "^" : "") : "not reached",
-                       w.reached() ? fmt::format("{:.2e}", w.error) : "-", count(w.steps), count(w.rejected), count(w.forces),
-                       count(w.jacobians), count(w.factorisations), count(w.newton),
-                       w.reached() ? fmt::format("{:.4g}", cost) : "-", w.reached() && w.steps > 0 ? fmt::format("{:.4g}", cost / w.steps) : "-");
-  }
+  for (std::size_t s = 0; s < r.solvers(); ++s)
+    for (const ScalingRow& w : r.rows_of(b * r.solvers() + s)) {
+      const double cost = scaling_cost(c, w);
+      const auto count = [&](long long x) { return w.reached() ? std::to_string(x) : std::string("-"); };
+      capped = capped || (w.reached() && w.capped);
+      out += fmt::format("{:<20} {:>7} {:>11} {:>12} {:>10} {:>9} {:>6} {:>9} {:>7} {:>7} {:>8} {:>12} {:>12}\n", w.solver, w.masses,
+                         std::isnan(w.dt_stable) ? "-" : threshold_text(w.dt_stable),
+                         w.reached() ? fmt::format("{:.4g}{}", w.dt, w.capped ? "^" : "") : "not reached",
+                         w.reached() ? fmt::format("{:.2e}", w.error) : "-", count(w.steps), count(w.rejected), count(w.forces),
+                         count(w.jacobians), count(w.factorisations), count(w.newton),
+                         w.reached() ? fmt::format("{:.4g}", cost) : "-", w.reached() && w.steps > 0 ? fmt::format("{:.4g}", cost / w.steps) : "-");
+    }
   if (capped)
     out += "^ the step search stopped at its cap, 0.95 dt*: dt* predicted from the exact modes, which no adaptive solver is told\n";
   out += fmt::format("\nExponents p of cost ~ N^p, q of dt* ~ N^q (least squares over the sizes reached, 95 % intervals)\n"
                      "{:<18} {:>20} {:>20} {:>20}\n", "solver", "one step", "whole run", "dt*");
-  for (const ScalingFit& f : r.fits)
+  for (std::size_t s = 0; s < r.solvers(); ++s) {
+    const ScalingFit& f = r.fits[b * r.solvers() + s];
     out += fmt::format("{:<18} {:>20} {:>20} {:>20}\n", f.solver, exponent_text(f.step), exponent_text(f.run), exponent_text(f.stable));
+  }
   out += exponent_rule_text() + "\n";
-  out += r.crossover == 0 ? std::string("\nNo size here at which an implicit method's run is cheaper than every explicit one's.\n")
-                          : fmt::format("\nFrom N = {} on the sizes here, {} is cheaper than every explicit method.\n",
-                                        scaling_masses(c, r.crossover), r.crossover_method);
+  out += block.crossover == 0 ? std::string("\nNo size here at which an implicit method's run is cheaper than every explicit one's.\n")
+                              : fmt::format("\nFrom N = {} on the sizes here, {} is cheaper than every explicit method.\n",
+                                            scaling_masses(c, block.crossover), block.crossover_method);
+  return out;
+}
+
+std::string ratio_text(double x) { return std::isnan(x) ? "-" : fmt::format("{:.3g}", x); }
+
+}  // namespace
+
+std::string scaling_map_table(const ScalingResult& r) {
+  const ScalingConfig& c = r.config;
+  std::string out;
+  const std::size_t nk = r.blocks.size() / c.targets.size();
+  for (std::size_t t = 0; t < c.targets.size(); ++t) {
+    out += fmt::format("\nThe map at error {}: per cell the cheapest solver x its margin over the next; the cheapest implicit "
+                       "fixed-step method's cost against the best explicit solver's and the best CVODE's (> 1: implicit cheaper); "
+                       "the body's motion (largest displacement from rest; ! below the target: a run at rest meets it)\n"
+                       "{:>10} {:>7}  {:<32} {:<26} {:>8} {:>8} {:>10}\n",
+                       target_text(c, c.targets[t], r.blocks[t * nk].stiffness), "stiffness", "N", "cheapest x margin",
+                       "best implicit", "vs expl", "vs CVODE", "motion");
+    for (std::size_t k = 0; k < nk; ++k) {
+      const ScalingBlock& b = r.blocks[t * nk + k];
+      for (const ScalingCell& m : b.cells)
+        out += fmt::format("{:>10} {:>7}  {:<32} {:<26} {:>8} {:>8} {:>10}\n", std::isnan(b.stiffness) ? "-" : fmt::format("{:g}", b.stiffness),
+                           m.masses, m.cheapest.empty() ? "none reached" : fmt::format("{} x {}", m.cheapest, ratio_text(m.margin)),
+                           m.best_implicit.empty() ? "-" : m.best_implicit, ratio_text(m.over_explicit), ratio_text(m.over_cvode),
+                           fmt::format("{:.2e}{}", m.motion, m.motion < b.error ? "!" : ""));
+    }
+  }
+  return out;
+}
+
+std::string scaling_table(const ScalingResult& r) {
+  std::string out;
+  for (std::size_t b = 0; b < r.blocks.size(); ++b) out += (b ? "\n" : "") + block_table(r, b);
+  return out + scaling_map_table(r);
+}
+
+// --error's list: each a positive number, or a percentage of the body's extent ("1%").
+std::vector<ErrorTarget> error_targets(const std::string& text) {
+  std::vector<ErrorTarget> out;
+  for (std::string item : split_list(text)) {
+    const bool percent = !item.empty() && item.back() == '%';
+    if (percent) item.pop_back();
+    const double v = parse_number("--error", item, Bound::Positive);
+    out.push_back({percent ? v / 100 : v, percent});
+  }
+  if (out.empty()) throw UsageError("--error '' names no target; accepted: positive numbers or percentages of the body's extent, e.g. 1e-4,1%");
   return out;
 }
 
@@ -135,6 +222,14 @@ int scaling_command(ScalingArgs& a, Context& ctx) {
                                  "that declares its modes)", a.scene.scene, scene_list(scales)));
   }
   ScalingConfig c = scaling_config(a.scene.scene);  // the scene's default sizes, step cap and solvers
+  // The scene's stiffness option may be a list: the stiffnesses of the map, each within its bounds.
+  if (scene.stiffness_param >= 0) {
+    const std::string key(scene.params[scene.stiffness_param].name);
+    if (a.scene.given(key)) {
+      c.stiffnesses = number_list("--" + key, a.scene.text[key], scene.params[scene.stiffness_param].bound);
+      a.scene.set(key, a.scene.text[key].substr(0, a.scene.text[key].find(',')));
+    }
+  }
   c.params = a.scene.values(a.scene.scene_index());
   Solvers solvers = resolve_solvers(a.methods, c.adaptive, scene.name, a.no_peers);
   c.methods = std::move(solvers.methods);
@@ -144,8 +239,9 @@ int scaling_command(ScalingArgs& a, Context& ctx) {
     const ParamSpec& size = scene.params[scene.size_param];  // --masses, --grid: its range
     for (const std::string& s : split_list(a.sizes)) c.sizes.push_back(static_cast<int>(parse_count("--sizes", s, 1, static_cast<long long>(size.max_count))));
   }
-  c.target_error = parse_number("--error", a.error, Bound::Positive);
+  c.targets = error_targets(a.error);
   c.t_end = parse_number("--t-end", a.t_end, Bound::Positive);
+  c.frames = static_cast<int>(parse_count("--frames", a.frames, 1, 10'000));
   if (!a.max_steps.empty()) c.max_steps = parse_count("--max-steps", a.max_steps, 1, 1'000'000'000);
   c.workers = ctx.workers(resolve_thread_count(a.threads));
   c.timing = !a.no_timing;

@@ -63,9 +63,13 @@ std::string mode_thresholds_table(std::string_view scene, const std::vector<Mode
 #include "analysis/scaling.hpp"
 
 namespace steplab {
-// `study scaling` (reports/cli/scaling_command.cpp): schema steplab.scaling/2.
+// `study scaling` (reports/cli/scaling_command.cpp): schema steplab.scaling/3.
 Json scaling_json(const ScalingResult& r);
 std::string scaling_table(const ScalingResult& r);
+// The map alone: per target, stiffness and size the cheapest solver and its margins.
+std::string scaling_map_table(const ScalingResult& r);
+// ", stiffness 5000" (the scene's stiffness parameter); empty where NaN (the scene has none).
+std::string stiffness_text(const ScalingConfig& c, double stiffness);
 // "1.02 [0.95, 1.09]" (its 95 % interval), "*" appended where `early`; "-" where not fitted.
 std::string exponent_text(const Exponent& e);
 // An exponent's note under a table: what "-" and "*" mean, with the rule's numbers.

@@ -38,6 +38,18 @@ std::string shade(std::string_view hue, int order) {
 
 }  // namespace
 
+std::string solver_hue(std::string_view solver) {
+  if (const auto m = find_method(solver)) return std::string(family_hue(method_info(*m).family));
+  const PeerInfo* p = find_peer(solver);
+  return p && p->is_cvode() ? "#56B4E9" : "#999999";
+}
+
+std::string solver_group(std::string_view solver) {
+  if (const auto m = find_method(solver)) return std::string(to_string(method_info(*m).family));
+  const PeerInfo* p = find_peer(solver);
+  return p && p->is_cvode() ? "CVODE" : "adaptive explicit";
+}
+
 MethodStyle method_style(std::size_t method) {
   const MethodInfo& info = method_info(method);
   // by order: filled circle, square, triangle, diamond, triangle down; solid, dashed, dash-dot,

@@ -21,6 +21,12 @@ struct MethodStyle {
 // in all three, and in grey scale in point, dash and grey level.
 MethodStyle method_style(std::size_t method);
 
+// A solver's colour on the crossover map: a method's family hue; CVODE sky blue; the explicit
+// adaptive solvers (dopri5, Boost.Odeint's) grey. And the group in words: the family's name,
+// "CVODE", "adaptive explicit".
+std::string solver_hue(std::string_view solver);
+std::string solver_group(std::string_view solver);
+
 // figures/styles.gp: `set linetype` per method (method k of the table is linetype k + 1),
 //   mlt(name)            the linetype of a method by name
 //   in_list(name, list)  whether a word is in a space-separated list

@@ -206,6 +206,9 @@ Json report_config_json(const ReportConfig& c) {
   for (const ReportSizes& s : c.scaling) scaling[std::string(scene_name(s.scene))] = s.sizes;
   scaling["error"] = c.scaling_error;
   scaling["t_end"] = c.scaling_t_end;
+  scaling["map_sizes"] = c.scaling_map_sizes;
+  scaling["stiffening"] = c.scaling_stiffening;
+  scaling["visual"] = c.scaling_visual;
   j["scaling"] = std::move(scaling);
   const StiffOrderDefaults& so = c.stiff_order;
   j[std::string(scene_name(c.stiffened.scene))] = scene_params_json(c.stiffened.scene, c.stiffened.params);
@@ -270,6 +273,15 @@ ReportConfig report_config_from_json(const Json& user, const ReportConfig& base)
   }
   c.scaling_error = num(sc["error"], "scaling.error", Bound::Positive);
   c.scaling_t_end = num(sc["t_end"], "scaling.t_end", Bound::Positive);
+  c.scaling_map_sizes.clear();
+  if (!c.scaling.empty()) {  // within the first scene's size range
+    const SceneKernel& k = scene_kernel(c.scaling.front().scene);
+    for (const Json& n : sc["map_sizes"])
+      c.scaling_map_sizes.push_back(count(n, "scaling.map_sizes", 1, static_cast<int>(k.params[static_cast<std::size_t>(k.size_param)].max_count)));
+  }
+  c.scaling_stiffening = nums(sc["stiffening"], "scaling.stiffening", Bound::Positive);
+  if (c.scaling_stiffening.empty()) throw UsageError("config: scaling.stiffening is empty; accepted: 1 or more positive factors");
+  c.scaling_visual = num(sc["visual"], "scaling.visual", Bound::Positive);
   c.stiffened.params = scene_values(j[std::string(scene_name(c.stiffened.scene))], c.stiffened.scene);
   const Json& so = j["stiff_order"];
   StiffOrderDefaults& s = c.stiff_order;

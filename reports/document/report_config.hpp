@@ -73,6 +73,11 @@ struct ReportConfig {
   // as the system grows: every scene of run-time size with modes, its defaults at these sizes
   std::vector<ReportSizes> scaling;
   double scaling_error = 1e-4, scaling_t_end = 2;
+  // the crossover map, on the first of them at these sizes: its default stiffness times each
+  // factor, at scaling_error and at the visual target, this fraction of the body's extent
+  std::vector<int> scaling_map_sizes{8, 32, 128};
+  std::vector<double> scaling_stiffening{1, 10, 100, 1000};
+  double scaling_visual = 0.01;
   // does the order hold when stiff: the scene swept (its parameters but the stiffness) and the sweep
   ReportScene stiffened;
   StiffOrderDefaults stiff_order;

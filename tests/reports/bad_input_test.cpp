@@ -116,6 +116,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"study scaling --methods rk4,odeint_dopri5 --no-peers", "--no-peers"},
         BadInput{"study work-precision --methods cvode_bdf_band", "--methods 'cvode_bdf_band'"}, BadInput{"study scaling --scene softbody --sizes 2.5", "--sizes"},
         BadInput{"study scaling --scene softbody --sizes 301", "--sizes"}, BadInput{"study scaling --max-steps 0", "--max-steps"},
+        // the stiffness axis, the targets (numbers or percentages of the extent), the frames
+        BadInput{"study scaling --stiffness 5,-50 --json {dir}/s.json", "--stiffness"},
+        BadInput{"study scaling --stiffness 5,,50", "--stiffness"}, BadInput{"study scaling --error 1e-4,abc%", "--error"},
+        BadInput{"study scaling --error 0", "--error"}, BadInput{"study scaling --error ,", "--error"},
+        BadInput{"study scaling --frames 0", "--frames"}, BadInput{"study scaling --frames 2.5", "--frames"},
         BadInput{"run --scene softbody --grid 0", "--grid"}, BadInput{"run --scene softbody --masses 4", "--masses"},
         // check
         BadInput{"check", "--method"}, BadInput{"check --method heun", "heun"},
@@ -133,6 +138,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"report --config {dir}/config.json --out {dir}/r", "JSON object", "[]"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "scaling.softbody", R"({"scaling": {"softbody": [2.5]}})"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "scaling.softbody", R"({"scaling": {"softbody": [301]}})"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "scaling.map_sizes", R"({"scaling": {"map_sizes": [0]}})"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "scaling.stiffening", R"({"scaling": {"stiffening": []}})"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "scaling.visual", R"({"scaling": {"visual": -1}})"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "sweep_dts", R"({"stability": {"sweep_dts": [0.01, "x"]}})"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "not valid JSON", R"({"spring": {"mass": NaN}})"},  // JSON has no NaN
         BadInput{"report --out {dir}/no/such/report", "no/such"},

@@ -53,7 +53,8 @@ std::string small_config(const TempDir& dir) {
                              "work_precision": {"points": 4, "stiffnesses": [5, 5e4], "timing": false},
                              "stability": {"map_dt_points": 16, "map_damping_points": 16},
                              "collision": {"t_end": 2}, "figures": {"energy_t_end": 10},
-                             "scaling": {"rope": [4, 8], "softbody": [2, 3]}})";
+                             "scaling": {"rope": [4, 8], "softbody": [2, 3], "map_sizes": [4, 8],
+                                         "stiffening": [1, 100]}})";
   return path;
 }
 

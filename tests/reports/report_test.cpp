@@ -252,23 +252,45 @@ std::string expect_growth_follows_data(ReportConfig& c) {
   ScalingConfig s;
   s.params = default_param_values(*find_scene("rope"));
   s.sizes = sizes_of(c, "rope");
-  s.target_error = c.scaling_error;
+  s.targets = {{c.scaling_error, false}};
   s.t_end = c.scaling_t_end;
   for (std::size_t m = 0; m < method_count(); ++m)
     if (!method_info(m).exact_flow) s.methods.push_back(m);
   s.timing = false;
   const ScalingResult r = scaling_study(s);
   for (const ScalingFit& f : r.fits) {
-    const std::string row = line_starting(md, "| `" + f.solver + "` |");
+    const std::string row = line_starting(md.substr(0, md.find("**When does implicit pay?**")), "| `" + f.solver + "` |");
     EXPECT_FALSE(row.empty()) << f.solver;
     EXPECT_NE(row.find("| " + exponent_text(f.run) + " |"), std::string::npos) << row;
   }
-  if (r.crossover == 0) {
+  if (r.blocks.front().crossover == 0) {
     EXPECT_NE(md.find("- At none of these sizes is an implicit method"), std::string::npos);
   } else {
-    EXPECT_NE(md.find(fmt::format("- From N = {} on (of these sizes), `{}`", r.crossover, r.crossover_method)), std::string::npos);
+    EXPECT_NE(md.find(fmt::format("- From N = {} on (of these sizes), `{}`", r.blocks.front().crossover,
+                                  r.blocks.front().crossover_method)),
+              std::string::npos);
   }
   EXPECT_NE(md.find(fmt::format("to N = {}", sizes_of(c, "rope").front())), std::string::npos);
+  // the map: the rope at the map's sizes, stiffened, at the report's error and the visual one;
+  // at each target, the cells where an implicit fixed-step method is the cheapest, counted here
+  ScalingConfig m = s;
+  m.adaptive = scaling_adaptive_solvers("rope");  // the report's peers: every one built
+  m.sizes = c.scaling_map_sizes;
+  for (double f : c.scaling_stiffening) m.stiffnesses.push_back(f * s.params[2]);
+  m.targets.push_back({c.scaling_visual, true});
+  m.max_steps = 200'000;
+  const ScalingResult map = scaling_study(m);
+  for (int t = 0; t < 2; ++t) {
+    int implicit = 0;
+    for (const ScalingBlock& b : map.blocks)
+      for (const ScalingCell& cell : b.cells) implicit += b.target == t && !cell.cheapest.empty() && cell.cheapest == cell.best_implicit;
+    const std::string line = line_starting(md, fmt::format("- At error {}:", target_text(m, m.targets[t], m.stiffnesses.back())));
+    EXPECT_FALSE(line.empty()) << t;
+    EXPECT_NE(line.find(implicit == 0 ? std::string("No implicit fixed-step method is the cheapest anywhere")
+                                      : fmt::format("An implicit fixed-step method is the cheapest in {} of them", implicit)),
+              std::string::npos)
+        << line;
+  }
   // the soft body's paragraph: its sentences from its own study
   s.scene = "softbody";
   s.params = default_param_values(*find_scene("softbody"));
@@ -282,9 +304,10 @@ std::string expect_growth_follows_data(ReportConfig& c) {
     EXPECT_NE(row.find("| " + exponent_text(f.run) + " |"), std::string::npos) << row;
   }
   const int largest = sizes_of(c, "softbody").back() * sizes_of(c, "softbody").back();
-  EXPECT_NE(tail.find(soft.crossover == 0 ? std::string("- At none of these sizes")
-                                          : fmt::format("- From N = {} on (of these sizes), `{}`", soft.crossover * soft.crossover,
-                                                        soft.crossover_method)),
+  const ScalingBlock& b = soft.blocks.front();
+  EXPECT_NE(tail.find(b.crossover == 0 ? std::string("- At none of these sizes")
+                                       : fmt::format("- From N = {} on (of these sizes), `{}`", b.crossover * b.crossover,
+                                                     b.crossover_method)),
             std::string::npos);
   EXPECT_NE(tail.find(fmt::format("- At N = {}, steplab's cheapest", largest)), std::string::npos) << tail;
   for (const char* cvode : {"Adams-Moulton and its KLU solver (`cvode_adams_klu`)", "BDF and its KLU solver (`cvode_bdf_klu`)",
@@ -296,11 +319,13 @@ std::string expect_growth_follows_data(ReportConfig& c) {
 TEST(ReportGrowth, FollowsTheDataUnderChangedParameters) {
   ReportConfig c = small_config();
   const std::string a = expect_growth_follows_data(c);
-  sizes_of(c, "rope") = {6, 12, 24};
+  sizes_of(c, "rope") = {4, 16, 128};  // 1.5 decades: the exponents fitted
   sizes_of(c, "softbody") = {3, 4};
   c.scaling_error = 1e-3;
+  c.scaling_stiffening = {1, 30, 1000};
   const std::string b = expect_growth_follows_data(c);
   EXPECT_NE(line_starting(a, "| `rk4` |"), line_starting(b, "| `rk4` |"));
+  EXPECT_NE(line_starting(a, "- At error"), line_starting(b, "- At error"));
 }
 
 }  // namespace

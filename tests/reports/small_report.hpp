@@ -33,6 +33,8 @@ inline ReportConfig small_config() {
   c.cannonball_t_end = 5;
   sizes_of(c, "rope") = {4, 8};
   sizes_of(c, "softbody") = {2, 3};
+  c.scaling_map_sizes = {4, 8};
+  c.scaling_stiffening = {1, 1000};
   return c;
 }
 
