@@ -85,23 +85,28 @@ ConvergenceRecord record_of(std::size_t method, double dt, double t_end, const A
 
 }  // namespace
 
-ReferenceSolution reference_solution(const SceneKernel& s, const std::vector<double>& params, double t_end) {
+ReferenceSolution reference_solution(const SceneKernel& s, const std::vector<double>& params, double t_end, int frames) {
   ReferenceSolution ref;
   AdaptiveSpec spec;
   spec.t_end = t_end;
   spec.errors = false;
+  spec.max_samples = frames > 0 ? frames + 1 : 0;  // dense output: the steps are the same
   spec.tol = {ref.rtol, ref.rtol};
   const AnyAdaptiveResult fine = s.dopri5(params, spec);
   spec.tol = {ref.check_rtol, ref.check_rtol};
   const AnyAdaptiveResult check = s.dopri5(params, spec);
-  if (fine.run.status != RunStatus::Ok || check.run.status != RunStatus::Ok)
-    throw std::runtime_error("the reference solution (dopri5 at rtol 1e-13) did not reach t_end");
+  const auto complete = [&](const AnyAdaptiveResult& r) { return r.run.status == RunStatus::Ok && std::ssize(r.run.samples) == spec.max_samples; };
+  if (!complete(fine) || !complete(check)) throw std::runtime_error("the reference solution (dopri5 at rtol 1e-13) did not reach t_end");
   ref.steps = fine.stats.accepted;
   ref.check_steps = check.stats.accepted;
   ref.estimated_error = s.norm(fine.run.final.x - check.run.final.x);
   ref.floor = kReferenceMargin * ref.estimated_error;
   ref.x.assign(fine.run.final.x.begin(), fine.run.final.x.end());
   ref.v.assign(fine.run.final.v.begin(), fine.run.final.v.end());
+  for (std::size_t k = 0; k < fine.run.samples.size(); ++k) {
+    ref.frames.push_back(fine.run.samples[k].x);
+    ref.frames_error = std::max(ref.frames_error, (fine.run.samples[k].x - check.run.samples[k].x).cwiseAbs().maxCoeff());
+  }
   return ref;
 }
 

@@ -49,13 +49,17 @@ struct ReferenceSolution {
   double estimated_error = 0;               // |u(check) - u(reference)| at t_end
   double floor = 0;                         // 100 x estimated_error: errors below are not fitted
   std::vector<double> x, v;                 // the reference state at t_end
+  // Asked for frames: the positions at t_k = k t_end / frames, k = 0 .. frames (dopri5's dense
+  // output), and |x(check) - x(reference)| there, the largest over the coordinates and frames.
+  std::vector<Eigen::VectorXd> frames;
+  double frames_error = 0;
 };
 
 struct SceneKernel;  // analysis/kernel.hpp
 
-// The reference solution at t_end of a scene with those parameters: dopri5 at rtol = atol = 1e-13,
-// its error estimated against a run at 1e-12.
-ReferenceSolution reference_solution(const SceneKernel& s, const std::vector<double>& params, double t_end);
+// The reference solution at t_end of a scene with those parameters (and at `frames` evenly spaced
+// times, if any): dopri5 at rtol = atol = 1e-13, its error estimated against a run at 1e-12.
+ReferenceSolution reference_solution(const SceneKernel& s, const std::vector<double>& params, double t_end, int frames = 0);
 
 inline constexpr double kTimingSeconds = 0.02;
 

@@ -61,10 +61,9 @@ std::string fmt_reference_error(double estimated, double target, int n) {
 double frame_time(const ScalingConfig& c, int k) { return k == c.frames ? c.t_end : c.t_end * k / c.frames; }
 
 // The positions at the frames k = 0 .. frames the runs are measured against: exact where the
-// scene has an exact solution (the rope), else the reference solution, dopri5 at rtol 1e-13
-// through its dense output (analysis/convergence.hpp's reference, at every frame), whose own
-// error (against dopri5 at 1e-12, the largest over the frames) must stay a hundredth of the
-// smallest target's.
+// scene has an exact solution (the rope), else the reference solution at the frames
+// (analysis/convergence.hpp), whose own error there must stay a hundredth of the smallest
+// target's.
 std::vector<Eigen::VectorXd> frame_positions(const ScalingConfig& c, const std::vector<double>& p, int n, double smallest_target) {
   const SceneKernel& s = scene_of(c);
   std::vector<Eigen::VectorXd> frames;
@@ -72,23 +71,9 @@ std::vector<Eigen::VectorXd> frame_positions(const ScalingConfig& c, const std::
     for (int k = 0; k <= c.frames; ++k) frames.push_back(s.exact(p, frame_time(c, k)).x);
     return frames;
   }
-  AdaptiveSpec spec;
-  spec.t_end = c.t_end, spec.errors = false, spec.max_samples = c.frames + 1;
-  spec.tol = {1e-13, 1e-13};
-  const AnyAdaptiveResult fine = s.dopri5(p, spec);
-  spec.tol = {1e-12, 1e-12};
-  const AnyAdaptiveResult check = s.dopri5(p, spec);
-  const auto complete = [&](const AnyAdaptiveResult& r) {
-    return r.run.status == RunStatus::Ok && std::ssize(r.run.samples) == c.frames + 1;
-  };
-  if (!complete(fine) || !complete(check)) throw std::runtime_error("the reference solution (dopri5 at rtol 1e-13) did not reach t_end");
-  double estimated = 0;
-  for (int k = 0; k <= c.frames; ++k) {
-    frames.push_back(fine.run.samples[k].x);
-    estimated = std::max(estimated, (fine.run.samples[k].x - check.run.samples[k].x).cwiseAbs().maxCoeff());
-  }
-  if (!(estimated <= 0.01 * smallest_target)) throw std::runtime_error(fmt_reference_error(estimated, smallest_target, n));
-  return frames;
+  ReferenceSolution ref = reference_solution(s, p, c.t_end, c.frames);
+  if (!(ref.frames_error <= 0.01 * smallest_target)) throw std::runtime_error(fmt_reference_error(ref.frames_error, smallest_target, n));
+  return std::move(ref.frames);
 }
 
 // What every row of one cell (stiffness, size) shares, made once before the rows: the
@@ -104,10 +89,8 @@ struct Cell {
   std::vector<double> errors;
 };
 
-Cell cell_of(const ScalingConfig& c, int n, double stiffness) {
+Cell cell_of(const ScalingConfig& c, int n, double stiffness, std::vector<double> errors) {
   std::vector<double> p = sized(c, n, stiffness);
-  std::vector<double> errors;
-  for (const ErrorTarget& t : c.targets) errors.push_back(absolute_error(c, t, stiffness));
   std::vector<Eigen::VectorXd> frames = frame_positions(c, p, n, *std::min_element(errors.begin(), errors.end()));
   std::vector<Mode> modes = scene_of(c).modes(p);
   const int masses = scaling_masses(c, n);
@@ -125,6 +108,12 @@ template <class At> double frames_error(const Cell& cell, bool ok, At&& at) {
     e = std::max(e, (x - cell.frames[k]).cwiseAbs().maxCoeff());
   }
   return e;
+}
+
+// The same from a run's samples (a fixed-step run's, dopri5's dense output): one at each frame.
+double frames_error(const Cell& cell, bool ok, const std::vector<Sample<Eigen::Dynamic>>& samples) {
+  return frames_error(cell, ok && samples.size() == cell.frames.size(),
+                      [&](std::size_t k) -> const Eigen::VectorXd& { return samples[k].x; });
 }
 
 // What a run at a knob gave: its error (NaN: not run, it would take more than max_steps) and its
@@ -206,8 +195,7 @@ ScalingRow method_row(const ScalingConfig& c, const Cell& cell, int target, std:
     return remembered(made, static_cast<double>(steps), [&] {
       Counts counts;
       const AnyResult res = k.run_counted(cell.params, frame_run(c, steps), counts);
-      const bool ok = res.status == RunStatus::Ok && res.steps == steps && std::ssize(res.samples) == c.frames + 1;
-      return Trial{frames_error(cell, ok, [&](std::size_t f) -> const Eigen::VectorXd& { return res.samples[f].x; }), counts};
+      return Trial{frames_error(cell, res.status == RunStatus::Ok && res.steps == steps, res.samples), counts};
     });
   });
   if (row.reached()) {
@@ -236,9 +224,7 @@ ScalingRow peer_row(const ScalingConfig& c, const Cell& cell, int target, const 
     search(row, 1e-4, 1e-2, 1, error, [&](double tol) {
       return remembered(made, tol, [&] {
         const AnyAdaptiveResult res = scene_kernel(scene).dopri5(cell.params, adaptive_spec(c, tol));
-        const bool ok = res.run.status == RunStatus::Ok && std::ssize(res.run.samples) == c.frames + 1;
-        return Trial{frames_error(cell, ok, [&](std::size_t f) -> const Eigen::VectorXd& { return res.run.samples[f].x; }),
-                     counts_of(res.stats)};
+        return Trial{frames_error(cell, res.run.status == RunStatus::Ok, res.run.samples), counts_of(res.stats)};
       });
     });
     return row;
@@ -297,10 +283,11 @@ double absolute_error(const ScalingConfig& c, const ErrorTarget& t, double stiff
   return t.value * extent;
 }
 
-std::string target_text(const ScalingConfig& c, const ErrorTarget& t, double stiffness) {
+std::string target_text(const ScalingConfig& c, const ScalingBlock& b) {
+  const ErrorTarget& t = c.targets[static_cast<std::size_t>(b.target)];
   char text[120];
   if (t.of_extent)
-    std::snprintf(text, sizeof text, "%g %% of the extent, %.3g", 100 * t.value, absolute_error(c, t, stiffness));
+    std::snprintf(text, sizeof text, "%g %% of the extent, %.3g", 100 * t.value, b.error);
   else
     std::snprintf(text, sizeof text, "%g", t.value);
   return text;
@@ -339,12 +326,18 @@ ScalingResult scaling_study(const ScalingConfig& c) {
   out.config = c;
   const std::vector<double> stiffnesses = scaling_stiffnesses(c);
   const std::size_t nm = c.methods.size(), ns = c.sizes.size(), nk = stiffnesses.size(), nsolvers = out.solvers();
+  const std::size_t nt = c.targets.size();
+  std::vector<double> errors(nt * nk);  // each (target, stiffness)'s absolute error, target-major
+  for (std::size_t b = 0; b < nt * nk; ++b) errors[b] = absolute_error(c, c.targets[b / nk], stiffnesses[b % nk]);
   std::vector<Cell> cells;  // stiffness-major
-  for (double k : stiffnesses)
-    for (int n : c.sizes) cells.push_back(cell_of(c, n, k));
+  for (std::size_t k = 0; k < nk; ++k) {
+    std::vector<double> at;  // the targets' errors at this stiffness
+    for (std::size_t t = 0; t < nt; ++t) at.push_back(errors[t * nk + k]);
+    for (int n : c.sizes) cells.push_back(cell_of(c, n, stiffnesses[k], at));
+  }
   // task: (stiffness * solvers + solver) * ns + size, each target's row; then the rows' order:
   // ((target * nk + stiffness) * solvers + solver) * ns + size
-  const std::size_t tasks = nk * nsolvers * ns, nt = c.targets.size();
+  const std::size_t tasks = nk * nsolvers * ns;
   const std::vector<std::vector<ScalingRow>> found = study_map<std::vector<ScalingRow>>(tasks, c.workers, [&](std::size_t task) {
     const std::size_t size = task % ns, solver = task / ns % nsolvers, k = task / ns / nsolvers;
     const Cell& cell = cells[k * ns + size];
@@ -367,7 +360,7 @@ ScalingResult scaling_study(const ScalingConfig& c) {
   }
   for (std::size_t b = 0; b < nt * nk; ++b) {
     ScalingBlock block;
-    block.target = static_cast<int>(b / nk), block.error = cells[b % nk * ns].errors[b / nk], block.stiffness = stiffnesses[b % nk];
+    block.target = static_cast<int>(b / nk), block.error = errors[b], block.stiffness = stiffnesses[b % nk];
     for (std::size_t k = 0; k < ns; ++k) {
       const Cell& at = cells[b % nk * ns + k];
       ScalingCell cell;

@@ -184,8 +184,8 @@ void answer_rows(ScalingResult& r);
 std::vector<double> scaling_stiffnesses(const ScalingConfig& c);
 // A target's absolute error on the study's scene.
 double absolute_error(const ScalingConfig& c, const ErrorTarget& t, double stiffness);
-// The target in words: "0.0001", or "1 % of the extent, 0.05".
-std::string target_text(const ScalingConfig& c, const ErrorTarget& t, double stiffness);
+// A block's target in words: "0.0001", or "1 % of the extent, 0.05".
+std::string target_text(const ScalingConfig& c, const ScalingBlock& b);
 
 // What a row's run cost: its seconds, or without timing its force and Jacobian evaluations times
 // N (each touches every mass; the linear solves not counted).

@@ -137,7 +137,7 @@ std::string block_table(const ScalingResult& r, std::size_t b) {
   const SceneKernel& scene = scene_kernel(scene_index(c.scene));
   std::string out = fmt::format("{}{}, error {} (largest over the coordinates and {} frames to t = {:g}, against the {}); cost by {}\n\n"
                                 "{:<20} {:>7} {:>11} {:>12} {:>10} {:>9} {:>6} {:>9} {:>7} {:>7} {:>8} {:>12} {:>12}\n",
-                                scene.title, stiffness_text(c, block.stiffness), target_text(c, c.targets[block.target], block.stiffness),
+                                scene.title, stiffness_text(c, block.stiffness), target_text(c, block),
                                 c.frames, c.t_end, scene.has_exact ? "exact solution" : "reference solution",
                                 c.timing ? "run time" : "force + Jacobian evaluations x N", "solver", "N", "dt*", "dt / tol", "error",
                                 "steps", "rej", "forces", "jacs", "LUs", "Newton", unit, "per step");
@@ -182,7 +182,7 @@ std::string scaling_map_table(const ScalingResult& r) {
                        "fixed-step method's cost against the best explicit solver's and the best CVODE's (> 1: implicit cheaper); "
                        "the body's motion (largest displacement from rest; ! below the target: a run at rest meets it)\n"
                        "{:>10} {:>7}  {:<32} {:<26} {:>8} {:>8} {:>10}\n",
-                       target_text(c, c.targets[t], r.blocks[t * nk].stiffness), "stiffness", "N", "cheapest x margin",
+                       target_text(c, r.blocks[t * nk]), "stiffness", "N", "cheapest x margin",
                        "best implicit", "vs expl", "vs CVODE", "motion");
     for (std::size_t k = 0; k < nk; ++k) {
       const ScalingBlock& b = r.blocks[t * nk + k];

@@ -285,7 +285,7 @@ std::string expect_growth_follows_data(ReportConfig& c) {
     int implicit = 0;
     for (const ScalingBlock& b : map.blocks)
       for (const ScalingCell& cell : b.cells) implicit += b.target == t && !cell.cheapest.empty() && cell.cheapest == cell.best_implicit;
-    const std::string line = line_starting(md, fmt::format("- At error {}:", target_text(m, m.targets[t], m.stiffnesses.back())));
+    const std::string line = line_starting(md, fmt::format("- At error {}:", target_text(m, map.blocks[static_cast<std::size_t>(t + 1) * m.stiffnesses.size() - 1])));
     EXPECT_FALSE(line.empty()) << t;
     EXPECT_NE(line.find(implicit == 0 ? std::string("No implicit fixed-step method is the cheapest anywhere")
                                       : fmt::format("An implicit fixed-step method is the cheapest in {} of them", implicit)),

@@ -127,7 +127,7 @@ std::string map_findings(const ScalingResult& r) {
     }
     std::string tally;
     for (const auto& [group, n] : wins) tally += fmt::format("{}{} {}", tally.empty() ? "" : ", ", group, n);
-    md += fmt::format("- At error {}: the cheapest solver's group, cells won: {} (of {}).", target_text(c, c.targets[t], stiffest->stiffness),
+    md += fmt::format("- At error {}: the cheapest solver's group, cells won: {} (of {}).", target_text(c, *stiffest),
                       tally, cells);
     md += implicit_cells.empty()
               ? " No implicit fixed-step method is the cheapest anywhere"
@@ -236,7 +236,7 @@ std::string map_vars(const ScalingResult& r) {
   for (std::size_t n = 0; n < c.sizes.size(); ++n) xt += fmt::format("{}{}", n ? " " : "", scaling_masses(c, c.sizes[n]));
   for (std::size_t k = 0; k < nk; ++k) yt += fmt::format("{}{:g}", k ? " " : "", r.blocks[k].stiffness);
   for (std::size_t t = 0; t < c.targets.size(); ++t)
-    titles += fmt::format("; tt{}='error {}'", t + 1, target_text(c, c.targets[t], r.blocks[t * nk].stiffness));
+    titles += fmt::format("; tt{}='error {}'", t + 1, target_text(c, r.blocks[t * nk]));
   const SceneKernel& s = scene_kernel(scene_index(c.scene));
   return fmt::format("ntargets={}; xlabels='{}'; ylabels='{}'; ylab='{}'{}", c.targets.size(), xt, yt,
                      s.params[s.stiffness_param].name, titles);
@@ -259,7 +259,7 @@ std::string map_markdown(const ScalingResult& r, Page& page) {
       "cheapest. `steplab study scaling --scene {} --sizes {} --stiffness {} --error {:g},{:g}% --max-steps {}` gives this map, with every peer and "
       "every count.\n\n",
       s.name, join(masses), s.params[s.stiffness_param].name, fmt::join(stiff, ", "), c.max_steps,
-      target_text(c, c.targets.back(), r.blocks.back().stiffness),
+      target_text(c, r.blocks.back()),
       s.name, join(c.sizes), fmt::join(stiff, ","), c.targets.front().value, 100 * c.targets.back().value, c.max_steps);
   md += page.figure("fig13_map", fmt::format("{}: the cheapest solver in each cell (masses N, {}); colour by group: explicit "
                                              "Runge-Kutta blue, symplectic splitting vermillion, implicit Runge-Kutta green, "
