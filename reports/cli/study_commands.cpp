@@ -342,6 +342,7 @@ int report_command(ReportArgs& a, Context& ctx) {
   }
   if (a.out.empty()) throw UsageError("--out is empty; accepted: a folder path");
   if (ctx.dry_run) return 0;
+  check_report_folder(a.out);
   check_writable((std::filesystem::path(a.out).parent_path().empty() ? std::filesystem::path(".")
                                                                      : std::filesystem::path(a.out).parent_path()) /
                  ".steplab-write-check");

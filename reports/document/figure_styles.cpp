@@ -65,7 +65,7 @@ MethodStyle method_style(std::size_t method) {
   return {shade(family_hue(info.family), std::max(o, 1)), points[o], dashes[o]};
 }
 
-std::string styles_gp(const std::vector<std::size_t>& methods) {
+std::string styles_gp() {
   std::string out =
       "# The methods' styles, the same in every figure (written by steplab report from\n"
       "# reports/document/figure_styles.cpp): colour by family (Okabe-Ito), darker, another point and another\n"
@@ -98,14 +98,7 @@ std::string styles_gp(const std::vector<std::size_t>& methods) {
   out += fmt::format("adaptive = \"{}\"\n", adaptive);
   out += "mlt(m) = sum [k=1:words(style_names)] (word(style_names, k) eq m ? k : 0)\n";
   out += "in_list(m, list) = strstrt(\" \".list.\" \", \" \".m.\" \") > 0\n";
-  int n = 0;
-  for (Family f : kReportFamilies) {
-    const std::vector<std::size_t> members = family_members(methods, f);
-    if (members.empty()) continue;
-    ++n;
-    out += fmt::format("fam{} = \"{}\"; famname{} = \"{}\"\n", n, method_words(members), n, to_string(f));
-  }
-  return out + fmt::format("nfam = {}\n", n);
+  return out;
 }
 
 }  // namespace steplab

@@ -31,9 +31,7 @@ std::string solver_group(std::string_view solver);
 //   mlt(name)            the linetype of a method by name
 //   in_list(name, list)  whether a word is in a space-separated list
 //   adaptive             the adaptive solvers of the work-precision study (linetypes after the table's)
-//   nfam, fam1 .. famN, famname1 .. famnameN
-//                        the family panels over `methods`, in report order, each family's members
-//                        by order (explicit and implicit Euler also open Adams-Bashforth and BDF)
-std::string styles_gp(const std::vector<std::size_t>& methods);
+// A figure's panels are its own (FigureSpec::panels, reports/document/section.hpp).
+std::string styles_gp();
 
 }  // namespace steplab

@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -45,6 +46,35 @@ std::string Page::figure(const std::string& file, const std::string& caption) {
   const std::string label = ext_ == "pdf" ? caption : fmt::format("Figure {}: {}", figure_, caption);
   return fmt::format("![{}](figures/{}.{})\n\n", label, file, ext_);
 }
+
+std::vector<Panel> family_panels(const std::vector<std::size_t>& methods, const std::function<bool(std::size_t)>& drawn) {
+  std::vector<Panel> out;
+  std::vector<std::size_t> shown;
+  for (Family f : kReportFamilies) {
+    Panel p{std::string(to_string(f)), {}};
+    bool adds = false;
+    for (std::size_t m : family_members(methods, f)) {
+      if (drawn && !drawn(m)) continue;
+      p.solvers.push_back(name(m));
+      adds |= std::find(shown.begin(), shown.end(), m) == shown.end();
+      shown.push_back(m);
+    }
+    if (adds) out.push_back(std::move(p));
+  }
+  return out;
+}
+
+namespace {
+
+// The panels as gnuplot variables: npanel, panel1 .., ptitle1 ..
+std::string panel_vars(const std::vector<Panel>& panels) {
+  std::string out = fmt::format("npanel={}; ", panels.size());
+  for (std::size_t i = 0; i < panels.size(); ++i)
+    out += fmt::format("panel{}='{}'; ptitle{}='{}'; ", i + 1, fmt::join(panels[i].solvers, " "), i + 1, panels[i].title);
+  return out;
+}
+
+}  // namespace
 
 std::string uncovered(const ReportConfig& c, std::initializer_list<std::size_t> scenes) {
   std::vector<std::string> missing;
@@ -113,13 +143,14 @@ std::string report_markdown(const Report& r, const std::string& ext, const std::
 
 namespace {
 
-// Runs `sh -c cmd` with its output discarded and returns its exit status. Not std::system:
-// that ignores SIGINT in the caller while the child runs, and an interrupt must not be lost.
-int run_quiet(const std::string& cmd) {
+// Runs `sh -c cmd` with its output (stdout and stderr) written to `log`, and returns its exit
+// status. Not std::system: that ignores SIGINT in the caller while the child runs, and an
+// interrupt must not be lost.
+int run_tool(const std::string& cmd, const fs::path& log = "/dev/null") {
   posix_spawn_file_actions_t io;
   posix_spawn_file_actions_init(&io);
-  posix_spawn_file_actions_addopen(&io, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&io, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&io, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&io, STDOUT_FILENO, STDERR_FILENO);
   const std::string full = cmd;
   const char* argv[] = {"/bin/sh", "-c", full.c_str(), nullptr};
   pid_t pid = 0;
@@ -132,6 +163,29 @@ int run_quiet(const std::string& cmd) {
   if (stop_requested) throw Interrupted();
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
+
+// What a tool said when it failed: the lines of its log that name an error (gnuplot's "line N:"
+// and its caret line, LaTeX's "!" lines), or else its last lines; at most eight, indented.
+std::string tool_errors(const fs::path& log) {
+  std::ifstream in(log);
+  std::vector<std::string> all, errors;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty()) continue;
+    all.push_back(line);
+    if (line.find("line ") != std::string::npos || line.rfind("!", 0) == 0 || line.find("rror") != std::string::npos ||
+        line.find('^') != std::string::npos)
+      errors.push_back(line);
+  }
+  const std::vector<std::string>& pick = errors.empty() ? all : errors;
+  std::string out;
+  for (std::size_t i = pick.size() > 8 ? pick.size() - 8 : 0; i < pick.size(); ++i) out += "\n    " + pick[i];
+  return out.empty() ? "\n    (it printed nothing)" : out;
+}
+
+// A tool that failed while the report was made: the folder it ran in is kept for a look.
+struct ToolFailed : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 // Staging folders left by a run that was killed (SIGKILL cannot be handled): removed when the
 // process that made them is gone.
@@ -198,7 +252,7 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force, 
     return 0;
   }
   remove_stale_staging(out);
-  if (run_quiet("command -v gnuplot") != 0 || run_quiet("command -v pandoc") != 0 || run_quiet("command -v pdflatex") != 0)
+  if (run_tool("command -v gnuplot") != 0 || run_tool("command -v pandoc") != 0 || run_tool("command -v pdflatex") != 0)
     throw std::runtime_error("the report needs gnuplot, pandoc and pdflatex; run: tools/install-deps report");
 
   const fs::path staging = out.parent_path() / fmt::format(".{}.staging-{}", out.filename().string(), getpid());
@@ -218,7 +272,7 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force, 
 
     // Figures: each script twice, PNG for the Markdown and PDF (vector) for the PDF.
     const std::string all = method_words(d.methods), numeric = method_words(d.collision.config.methods);
-    DataDir(staging / "figures").write("styles.gp", styles_gp(d.methods));  // loaded by every script
+    DataDir(staging / "figures").write("styles.gp", styles_gp());  // loaded by every script
     for (const auto& s : report.sections)
       for (const FigureSpec& fig : s->figures(d)) {
         const auto gp = std::find_if(gnuplot_scripts.begin(), gnuplot_scripts.end(), [&](const GnuplotScript& g) { return g.name == fig.script; });
@@ -227,10 +281,15 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force, 
         for (const char* fmt_name : {"png", "pdf"}) {
           const std::string cmd = fmt::format(
               "cd '{}' && gnuplot -e \"datadir='../data'; outfile='{}.{}'; format='{}'; methods='{}'; numeric='{}'; "
-              "springdts='{}'; largedt='{}'; {}\" '{}.gp'",
+              "springdts='{}'; largedt='{}'; {}{}\" '{}.gp'",
               (staging / "figures").string(), fig.script, fmt_name, fmt_name, all, numeric, words(c.spring_figure_dts), c.large_dt,
-              fig.vars, fig.script);
-          if (run_quiet(cmd) != 0) throw std::runtime_error(fmt::format("gnuplot failed on {}.gp ({})", fig.script, fmt_name));
+              panel_vars(fig.panels), fig.vars, fig.script);
+          const fs::path log = staging / "figures" / fmt::format("{}.{}.log", fig.script, fmt_name);
+          if (run_tool(cmd, log) != 0)
+            throw ToolFailed(fmt::format("gnuplot failed on {}.gp ({}):{}\nthe script, its data and gnuplot's log are kept in "
+                                         "{} (the next report into {} removes them)",
+                                         fig.script, fmt_name, tool_errors(log), (staging / "figures").string(), out.string()));
+          fs::remove(log);
         }
       }
     const std::string footer = machine_footer() + fmt::format(" · studies {:.1f} s", study_seconds);
@@ -240,10 +299,16 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force, 
         "cd '{}' && pandoc report-pdf.md -o report.pdf --pdf-engine=pdflatex -V geometry:margin=1.8cm -V fontsize=10pt "
         "-V colorlinks=true -V 'header-includes=\\usepackage{{float}}\\floatplacement{{figure}}{{H}}'",
         staging.string());
-    if (run_quiet(pandoc) != 0) throw std::runtime_error("pandoc could not make report.pdf (rerun it by hand to see why)");
+    if (run_tool(pandoc, staging / "pandoc.log") != 0)
+      throw ToolFailed(fmt::format("pandoc could not make report.pdf:{}\nits input and log are kept in {} (the next report into "
+                                   "{} removes them)", tool_errors(staging / "pandoc.log"), staging.string(), out.string()));
     fs::remove(staging / "report-pdf.md");
+    fs::remove(staging / "pandoc.log");
     data.write("stamp", stamp);
+    write_atomic((staging / kReportMarker).string(), report_marker(staging.string()));
     if (stop_requested) throw Interrupted();
+  } catch (const ToolFailed&) {
+    throw;  // the staging folder kept: the message names it
   } catch (...) {
     fs::remove_all(staging);
     throw;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <initializer_list>
 #include <memory>
 #include <string>
@@ -25,12 +26,29 @@ class DataDir {
   std::filesystem::path dir_;
 };
 
+// A panel of a figure: its title and the solvers it draws (method or peer names).
+struct Panel {
+  std::string title;
+  std::vector<std::string> solvers;
+};
+
 // A figure a section draws: reports/document/gnuplot/<script>.gp, with gnuplot variables of its own
-// (`name='value'; ...`) beside the ones every script gets (datadir, outfile, format, methods, ...).
+// (`name='value'; ...`) beside the ones every script gets (datadir, outfile, format, methods, ...),
+// and its panels, given to the script as npanel, panel1 .. (the solvers, space-separated) and
+// ptitle1 .. (the titles). A section gives a panel only solvers with data to draw: gnuplot stops
+// on a plot with no point.
 struct FigureSpec {
   std::string script;
   std::string vars;
+  std::vector<Panel> panels;
 };
+
+// A panel per family of the report (kReportFamilies), each with its members among `methods` that
+// `drawn` accepts (a method with data in this figure), by order. A family whose panel would draw
+// only methods an earlier panel draws is left out: explicit Euler opens the Adams-Bashforth family
+// as well, and alone there it would be drawn twice.
+std::vector<Panel> family_panels(const std::vector<std::size_t>& methods,
+                                 const std::function<bool(std::size_t)>& drawn = nullptr);
 
 // What a section's Markdown may use: the shared data and findings, and the figure numbering.
 class Page {

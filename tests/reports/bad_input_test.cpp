@@ -144,6 +144,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"report --config {dir}/config.json --out {dir}/r", "sweep_dts", R"({"stability": {"sweep_dts": [0.01, "x"]}})"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "not valid JSON", R"({"spring": {"mass": NaN}})"},  // JSON has no NaN
         BadInput{"report --out {dir}/no/such/report", "no/such"},
+        // no file of a user's replaced: a folder that holds one, a file, a JSON file not steplab's
+        BadInput{"report --sheet --out {dir}", "holds files steplab did not write (config.json)", "my thesis"},
+        BadInput{"report --sheet --out {dir}/config.json", "is a file steplab did not write", "my notes"},
+        BadInput{"run --json {dir}/config.json", "holds a file steplab did not write", "my notes"},
+        BadInput{"study convergence --json {dir}/config.json", "holds a file steplab did not write", R"({"mine": 1})"},
         // what the report covers: known names, each once, not an empty list, a numerical method
         BadInput{"report --methods heun,rk4 --out {dir}/r", "heun"}, BadInput{"report --methods rk4,rk4 --out {dir}/r", "twice"},
         BadInput{"report --methods ,rk4 --out {dir}/r", "--methods is empty"}, BadInput{"report --methods analytic --out {dir}/r", "numerical"},

@@ -12,6 +12,7 @@
 #include "cli_helpers.hpp"
 #include "analysis/kernel.hpp"
 #include "reports/document/figure_styles.hpp"
+#include "reports/document/section.hpp"
 #include "reports/document/report_text.hpp"
 
 namespace steplab {
@@ -53,21 +54,45 @@ TEST(FigureStyles, FamilyHuesAreOkabeIto) {
   EXPECT_EQ(method_style(*find_method("rk4")).colour, "#003755");  // 0.48 x (00, 72, B2)
 }
 
-// gnuplot reads styles.gp: mlt() finds each method's linetype, the panels list the families.
+// gnuplot reads styles.gp: mlt() finds each method's linetype.
 TEST(FigureStyles, GnuplotReadsTheStyles) {
   TempDir dir;
-  std::ofstream(dir.path("styles.gp")) << styles_gp(every_method());
+  std::ofstream(dir.path("styles.gp")) << styles_gp();
   std::ofstream(dir.path("probe.gp")) << "load 'styles.gp'\n"
                                          "print mlt('explicit_euler'), mlt('rk4'), mlt('bdf3'), mlt('nosuch')\n"
-                                         "print sprintf('%d|%s|%s', nfam, fam5, famname5)\n"
                                          "print in_list('rk4', 'rk3 rk4'), in_list('rk', 'rk3 rk4')\n";
   const std::string cmd = "cd '" + dir.root() + "' && gnuplot probe.gp 2>" + dir.path("out");
   ASSERT_EQ(std::system(cmd.c_str()), 0) << slurp(dir.path("out"));
   const auto lines = split_lines(slurp(dir.path("out")));
-  ASSERT_EQ(lines.size(), 3u) << slurp(dir.path("out"));
+  ASSERT_EQ(lines.size(), 2u) << slurp(dir.path("out"));
   EXPECT_EQ(lines[0], "1 6 14 0");
-  EXPECT_EQ(lines[1], "5|implicit_euler bdf2 bdf3|BDF");
-  EXPECT_EQ(lines[2], "1 0");
+  EXPECT_EQ(lines[1], "1 0");
+}
+
+std::vector<std::size_t> methods(std::initializer_list<std::string_view> names) {
+  std::vector<std::size_t> out;
+  for (std::string_view n : names) out.push_back(*find_method(n));
+  return out;
+}
+
+// A panel per family, its members by order; a family that would only draw what an earlier panel
+// draws is left out (explicit Euler alone under Adams-Bashforth), and a method without data is not
+// drawn (a panel of none is no panel).
+TEST(FigurePanels, AFamilyPanelDrawsSomethingNew) {
+  const std::vector<Panel> all = family_panels(every_method());
+  ASSERT_EQ(all.size(), 5u);
+  EXPECT_EQ(all[4].title, "BDF");
+  EXPECT_EQ(all[4].solvers, (std::vector<std::string>{"implicit_euler", "bdf2", "bdf3"}));
+  const std::vector<Panel> sheet = family_panels(methods({"explicit_euler", "symplectic_euler", "explicit_midpoint", "implicit_euler"}));
+  ASSERT_EQ(sheet.size(), 3u);
+  EXPECT_EQ(sheet[0].solvers, (std::vector<std::string>{"explicit_euler", "explicit_midpoint"}));
+  EXPECT_EQ(sheet[2].solvers, (std::vector<std::string>{"implicit_euler"}));
+  const auto not_euler = [](std::size_t m) { return name(m) != "explicit_euler"; };
+  const std::vector<Panel> some = family_panels(methods({"explicit_euler", "rk4", "adams_bashforth2"}), not_euler);
+  ASSERT_EQ(some.size(), 2u);
+  EXPECT_EQ(some[0].solvers, (std::vector<std::string>{"rk4"}));
+  EXPECT_EQ(some[1].solvers, (std::vector<std::string>{"adams_bashforth2"}));
+  EXPECT_TRUE(family_panels(methods({"explicit_euler"}), not_euler).empty());
 }
 
 }  // namespace

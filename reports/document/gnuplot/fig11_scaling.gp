@@ -2,11 +2,11 @@
 # a panel per family and one for the adaptive solvers; in the last panel the explicit methods'
 # stable step dt* against N (points) beside its 1/N prediction from the smallest N (dashed).
 # Variables set by steplab report: datadir, outfile, format (png|pdf), costname, limited (the
-# explicit methods with a finite dt* at every N), scaled (the adaptive solvers: dopri5 and the peers);
-# styles.gp (written beside this script): each method's style, nfam, fam1.., famname1..
+# explicit methods with a finite dt* at every N), the panels npanel, panel1.., ptitle1.. (a family's
+# methods, or the adaptive solvers, each with a cost at some N);
+# styles.gp (written beside this script): each method's style.
 load "styles.gp"
-npanel = nfam + 2
-nrow = (npanel + 2) / 3
+nrow = (npanel + 3) / 3
 if (format eq "png") { set terminal pngcairo enhanced size 1100,330 * nrow font ",10" } else { eval sprintf("set terminal pdfcairo enhanced size 16cm,%.1fcm font ',6.5'", 4.2 * nrow) }
 set output outfile
 set grid lc rgb "#dddddd"
@@ -14,9 +14,9 @@ set key top left samplen 2.5 spacing 0.9 noenhanced  # method names have undersc
 set logscale xy
 set format y "10^{%L}"
 set multiplot layout nrow,3
-do for [f=1:nfam+1] {
-  ms = f <= nfam ? value("fam".f) : scaled
-  set title (f <= nfam ? value("famname".f) : "adaptive solvers") noenhanced
+do for [f=1:npanel] {
+  ms = value("panel".f)
+  set title value("ptitle".f) noenhanced
   set xlabel "masses N"
   set ylabel costname
   plot for [m in ms] datadir."/scaling_".m.".dat" using 1:2 with linespoints lt mlt(m) title m

@@ -3,7 +3,7 @@
 # bar; dashed, each method's theory: its order p at the left, its stiff-limit order at the right
 # (analysis/order_reduction.hpp). A method stable only at low stiffness has points only there.
 # Variables set by steplab report: datadir, outfile, format (png|pdf), kmin and kmax (the x range);
-# styles.gp (written beside this script): each method's style, the family panels nfam, fam1.., famname1..
+# styles.gp (written beside this script): each method's style, the panels npanel, panel1.., ptitle1..
 if (format eq "png") { set terminal pngcairo enhanced size 1100,620 font ",11" } else { set terminal pdfcairo enhanced size 16cm,9.5cm font ",7" }
 set output outfile
 load "styles.gp"
@@ -14,10 +14,10 @@ set format x "10^{%L}"
 set xrange [kmin : kmax]
 set yrange [0 : 6.5]
 set multiplot layout 2,3
-do for [f=1:nfam] {
-  ms = value("fam".f)
-  set title value("famname".f) noenhanced
-  set xlabel (f > 3 || f + 3 > nfam ? "stiffness k" : "")
+do for [f=1:npanel] {
+  ms = value("panel".f)
+  set title value("ptitle".f) noenhanced
+  set xlabel (f > 3 || f + 3 > npanel ? "stiffness k" : "")
   set ylabel (f % 3 == 1 ? "fitted order" : "")
   plot for [m in ms] datadir."/stiff_".m.".dat" using 1:2:3:4 with yerrorlines lt mlt(m) title m, \
        for [m in ms] datadir."/stiff_theory_".m.".dat" index 0 using 1:2 with lines lt mlt(m) dt 2 lw 2 notitle, \

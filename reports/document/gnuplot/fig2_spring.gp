@@ -1,21 +1,21 @@
 # Figure 2: the spring's height y(t) per method against the exact solution: a row per family, a
 # column per step.
 # Variables set by steplab report: datadir, outfile, format (png|pdf), methods, numeric, springdts, largedt;
-# styles.gp (written beside this script): each method's style, the family panels nfam, fam1.., famname1..
+# styles.gp (written beside this script): each method's style, the panels npanel, panel1.., ptitle1..
 if (format eq "png") { set terminal pngcairo enhanced size 1100,1250 font ",11" } else { set terminal pdfcairo enhanced size 16cm,19cm font ",7" }
 set output outfile
 load "styles.gp"
 set grid lc rgb "#dddddd"
 set key outside right top samplen 3 noenhanced  # method names have underscores
 n = words(springdts)
-set multiplot layout nfam,n
-do for [f=1:nfam] {
-  ms = value("fam".f)
+set multiplot layout npanel,n
+do for [f=1:npanel] {
+  ms = value("panel".f)
   do for [k=1:n] {
-    if (f == nfam) { set xlabel "t (s)" } else { unset xlabel }
+    if (f == npanel) { set xlabel "t (s)" } else { unset xlabel }
     if (k == 1) { set ylabel "y (m)" } else { unset ylabel }
     if (k == n) { set key } else { unset key }
-    set title value("famname".f).", dt = ".word(springdts, k) noenhanced
+    set title value("ptitle".f).", dt = ".word(springdts, k) noenhanced
     stats datadir."/spring".(k-1)."_".word(ms, 1).".dat" using 1 nooutput
     nth = STATS_records > 20 ? int(STATS_records / 12) : 1
     plot datadir."/spring_exact.dat" using 1:2 with lines lw 4 lc rgb "#bbbbbb" title "exact", \

@@ -29,7 +29,10 @@ class Collision : public Section {
     }
   }
 
-  std::vector<FigureSpec> figures(const ReportData&) const override { return {{"fig8_triangle", ""}, {"fig9_bounce_energy", ""}}; }
+  std::vector<FigureSpec> figures(const ReportData& d) const override {
+    const std::vector<Panel> families = family_panels(d.collision.config.methods);
+    return {{"fig8_triangle", "", families}, {"fig9_bounce_energy", "", families}};
+  }
 
   std::string markdown(Page& page) const override {
     const ReportData& d = page.data;

@@ -59,7 +59,20 @@ class Convergence : public Section {
     dat.write("reference_slopes.dat", ref);
   }
 
-  std::vector<FigureSpec> figures(const ReportData&) const override { return {{"fig3_convergence", ""}}; }
+  // A panel per family, of the methods with an error to draw (not the exact flow's round-off).
+  std::vector<FigureSpec> figures(const ReportData& d) const override {
+    const ConvergenceResult& conv = drawn(d);
+    const std::size_t nd = conv.dts.size();
+    const auto has_points = [&](std::size_t m) {
+      const auto it = std::find(conv.config.methods.begin(), conv.config.methods.end(), m);
+      if (it == conv.config.methods.end()) return false;
+      const std::size_t i = static_cast<std::size_t>(it - conv.config.methods.begin());
+      for (std::size_t k = 0; k < nd; ++k)
+        if (conv.records[i * nd + k].status == RunStatus::Ok && conv.records[i * nd + k].error_final > 0) return true;
+      return false;
+    };
+    return {{"fig3_convergence", "", family_panels(d.methods, has_points)}};
+  }
 
   std::string markdown(Page& page) const override {
     const ReportData& d = page.data;

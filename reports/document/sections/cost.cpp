@@ -84,7 +84,19 @@ class Cost : public Section {
       vars += fmt::format("scene{}='{}'; xlo{}={}; xhi{}={}; ylo{}={}; yhi{}={}; ", k + 1, scene_word(d.work.scenes[k]), k + 1,
                           num(x0 / 1.5), k + 1, num(x1 * 1.5), k + 1, num(y0 / 3), k + 1, num(std::min(y1 * 3, 1e3)));
     }
-    return {{"fig7_work_precision", vars}};
+    // a row per family and one of the adaptive solvers, each of the solvers with a point to draw
+    const auto has_points = [&](std::string_view solver) {
+      for (const SceneWork& w : d.work.scenes)
+        for (const WorkPoint& p : w.points)
+          if (p.method == solver && p.status == RunStatus::Ok && p.error > 0) return true;
+      return false;
+    };
+    std::vector<Panel> panels = family_panels(d.work.config.methods, [&](std::size_t m) { return has_points(name(m)); });
+    Panel adaptive{"adaptive solvers", {}};
+    for (const std::string& a : d.work.config.adaptive)
+      if (has_points(a)) adaptive.solvers.push_back(a);
+    if (!adaptive.solvers.empty()) panels.push_back(std::move(adaptive));
+    return {{"fig7_work_precision", vars, std::move(panels)}};
   }
 
   std::string markdown(Page& page) const override {

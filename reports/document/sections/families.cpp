@@ -89,7 +89,7 @@ class Families : public Section {
     std::vector<std::size_t> with_region;
     for (const StabilityRegion& r : regions_.regions) with_region.push_back(r.method);
     std::sort(with_region.begin(), with_region.end(), family_order_less);
-    return {{"fig10_regions", fmt::format("regions='{}'", method_words(with_region))}};
+    return {{"fig10_regions", fmt::format("regions='{}'", method_words(with_region)), {}}};
   }
 
   std::string markdown(Page& page) const override {

@@ -322,11 +322,22 @@ class Growth : public Section {
       if (!limited.empty()) limited += ' ';
       limited += rows.front().solver;
     }
-    std::string scaled;
-    for (const std::string& a : first.config.adaptive) scaled += (scaled.empty() ? "" : " ") + a;
-    std::vector<FigureSpec> out{{"fig11_scaling", fmt::format("costname='{}'; limited='{}'; scaled='{}'",
-                                                              first.config.timing ? "run time (s)" : "evaluations x N", limited, scaled)}};
-    if (map_) out.push_back({"fig13_map", map_vars(*map_)});
+    // a panel per family and one of the adaptive solvers, each of the solvers that reached the target at some N
+    const auto reached = [&](std::string_view solver) {
+      for (std::size_t s = 0; s < first.solvers(); ++s)
+        for (const ScalingRow& w : first.rows_of(s))
+          if (w.solver == solver && w.reached()) return true;
+      return false;
+    };
+    std::vector<Panel> panels = family_panels(first.config.methods, [&](std::size_t m) { return reached(name(m)); });
+    Panel adaptive{"adaptive solvers", {}};
+    for (const std::string& a : first.config.adaptive)
+      if (reached(a)) adaptive.solvers.push_back(a);
+    if (!adaptive.solvers.empty()) panels.push_back(std::move(adaptive));
+    std::vector<FigureSpec> out{{"fig11_scaling", fmt::format("costname='{}'; limited='{}'",
+                                                              first.config.timing ? "run time (s)" : "evaluations x N", limited),
+                                 std::move(panels)}};
+    if (map_) out.push_back({"fig13_map", map_vars(*map_), {}});
     return out;
   }
 

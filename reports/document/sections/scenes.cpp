@@ -50,8 +50,8 @@ class SceneFigures : public Section {
 
   std::vector<FigureSpec> figures(const ReportData& d) const override {
     std::vector<FigureSpec> out;
-    if (d.config.covers(d.config.projectile.scene)) out.push_back({"fig1_cannonball", ""});
-    if (d.config.covers(d.config.oscillator.scene)) out.push_back({"fig2_spring", ""});
+    if (d.config.covers(d.config.projectile.scene)) out.push_back({"fig1_cannonball", "", family_panels(d.methods)});
+    if (d.config.covers(d.config.oscillator.scene)) out.push_back({"fig2_spring", "", family_panels(d.methods)});
     return out;
   }
 

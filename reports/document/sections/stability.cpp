@@ -45,8 +45,9 @@ class Stability : public Section {
     }
   }
 
-  std::vector<FigureSpec> figures(const ReportData&) const override {
-    return {{"fig4_energy", ""}, {"fig5_damping", ""}, {"fig6_maps", ""}};
+  std::vector<FigureSpec> figures(const ReportData& d) const override {
+    const std::vector<Panel> families = family_panels(d.methods);
+    return {{"fig4_energy", "", families}, {"fig5_damping", "", families}, {"fig6_maps", "", families}};
   }
 
   std::string markdown(Page& page) const override {

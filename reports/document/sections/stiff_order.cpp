@@ -51,9 +51,18 @@ class StiffOrder : public Section {
     }
   }
 
-  std::vector<FigureSpec> figures(const ReportData&) const override {
+  // A panel per family, of the methods with a fitted order to draw.
+  std::vector<FigureSpec> figures(const ReportData& d) const override {
     const std::vector<double>& v = r_.sweep.values;  // every panel over the whole sweep
-    return {{"fig12_stiff_order", fmt::format("kmin={}; kmax={}", num(v.front() / 3), num(v.back() * 3))}};
+    const auto fitted = [&](std::size_t method) {
+      for (std::size_t m = 0; m < r_.methods.size(); ++m)
+        if (r_.methods[m].method == method)
+          for (std::size_t i = 0; i < v.size(); ++i)
+            if (r_.sweep.studies[i].fits[m].fit.fitted && !r_.methods[m].past_stable[i]) return true;
+      return false;
+    };
+    return {{"fig12_stiff_order", fmt::format("kmin={}; kmax={}", num(v.front() / 3), num(v.back() * 3)),
+             family_panels(d.methods, fitted)}};
   }
 
   std::string markdown(Page& page) const override {
