@@ -68,9 +68,11 @@ performance: bench
 #   every study still runs here, split in parts and merged (Shards).
 # - the allocation counts on the rope and the soft body as they grow (Allocation.PerStepCount...):
 #   every method still steps every scene here (Allocation.NoneInAnyStep...).
-# - package.plugin (a project that instantiates the same templates on a new method and scene;
-#   package.consumer still builds and links one against the sanitized package).
-SANITIZE_SKIP ?= ReportGrowth|ReportSubsets|ReportChoice\.(AChosenMethodHasTheFullReportsNumbers|ACrossoverNeedsBothKinds)|ReportInterrupted|ReportUpToDate|package\.plugin|ReportFindings|WorkPrecision\.(Rk4Accuracy|BdfSteps|AdaptiveErrors|ImplicitPays)|Determinism\.SameBytes|StabilityJson\.SameForOneAndTwoThreads|Allocation\.PerStepCount|ReportSheet\.NumbersAreTheFullReports
+# - package.plugin and readme.walkthrough (projects that instantiate the same templates on a new
+#   method and scene; package.consumer still builds and links one against the sanitized package).
+# - ReportSubsets (a whole report for each method alone and for pairs: ReportChoice's sections
+#   and ReportSheet's whole report run here).
+SANITIZE_SKIP ?= readme\.walkthrough|ReportGrowth|ReportSubsets|ReportChoice\.(AChosenMethodHasTheFullReportsNumbers|ACrossoverNeedsBothKinds)|ReportInterrupted|ReportUpToDate|package\.plugin|ReportFindings|WorkPrecision\.(Rk4Accuracy|BdfSteps|AdaptiveErrors|ImplicitPays)|Determinism\.SameBytes|StabilityJson\.SameForOneAndTwoThreads|Allocation\.PerStepCount|ReportSheet\.NumbersAreTheFullReports
 test-sanitize: deps
 	@tools/install-deps test
 	@cmake -S . -B $(BUILD)-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSTEPLAB_SANITIZE=ON -DSTEPLAB_BUILD_BENCH=OFF -DSTEPLAB_WERROR=OFF >/dev/null

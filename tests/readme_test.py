@@ -23,11 +23,11 @@ ELSEWHERE = {
     "make report": "CI's clean clone (.ci/run) and the report tests (ReportFindings, ReportUpToDate)",
     "make test": "CI (.ci/run)",
     "build/steplab report": "the report tests (a whole report takes 40 s; ReportFindings, ReportUpToDate)",
-    "build/mysteplab": "package.plugin (tests/plugin_test.sh), which builds mysteplab from an empty folder",
-    "cmake": "package.plugin and package.consumer (tests/plugin_test.sh, tests/consumer_test.sh)",
+    "build/mysteplab": "readme.walkthrough (tests/readme_walkthrough_test.py), which builds mysteplab from an empty folder",
+    "cmake": "readme.walkthrough and package.consumer (tests/readme_walkthrough_test.py, tests/consumer_test.sh)",
     "find_package": "package.consumer", "target_link_libraries": "package.consumer",
-    "steplab_add_executable": "package.plugin", "cmake_minimum_required": "package.plugin",
-    "project": "package.plugin",
+    "steplab_add_executable": "readme.walkthrough", "cmake_minimum_required": "readme.walkthrough",
+    "project": "readme.walkthrough",
 }
 
 failures, ran, elsewhere = [], 0, []

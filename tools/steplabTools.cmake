@@ -7,6 +7,7 @@
 # and ends with the line that names its type, STEPLAB_METHOD(<type>); or STEPLAB_SCENE(<type>);.
 # Each new method is compiled on every scene, each built-in method on the new scenes only
 # (tools/kernels.cmake); the built-in pairs come from the installed libsteplab_kernels.a.
+# Optimised as steplab's Release build (-O3) when the project names no build type.
 function(steplab_add_executable name)
   cmake_parse_arguments(A "" "" "METHODS;SCENES" ${ARGN})
   if(A_UNPARSED_ARGUMENTS)
@@ -38,5 +39,12 @@ int main(int argc, char** argv) { return steplab::program_main(argc, argv); }
 " @ONLY)
   add_executable(${name} ${sources} "${dir}/main.cpp")
   target_compile_features(${name} PRIVATE cxx_std_20)
+  # A project that names no build type compiles with no -O at all: the kernels (every method
+  # inlined on every scene) then run about 100 times slower. Compiled as steplab's own Release
+  # build unless the project chose otherwise (CMAKE_BUILD_TYPE, or a multi-config generator).
+  if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
+    separate_arguments(release_flags UNIX_COMMAND "${CMAKE_CXX_FLAGS_RELEASE}")
+    target_compile_options(${name} PRIVATE ${release_flags})
+  endif()
   target_link_libraries(${name} PRIVATE steplab::reports)
 endfunction()
