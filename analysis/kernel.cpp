@@ -22,6 +22,15 @@ bool applies(std::size_t m, std::size_t s) {
   return m < t.methods.size() && s < t.scenes.size() && t.pairs[m * t.scenes.size() + s]->run != nullptr;
 }
 
+std::string why_not(std::size_t m, std::size_t s) {
+  if (applies(m, s)) return {};
+  const SceneKernel& scene = scene_kernel(s);
+  if (method_info(m).exact_flow) return "needs a scene with an exact solution; " + std::string(scene.name) + " has none";
+  return std::string(method_info(m).implicit ? "is implicit" : "solves an implicit stage (its damped kick)") +
+         " and needs the scene's Jacobians dF/dx and dF/dv; " + std::string(scene.name) +
+         " declares no jacobians(x, v) (core/scene.hpp), so the explicit methods run on it";
+}
+
 const PairKernel& pair_kernel(std::size_t m, std::size_t s) {
   if (!applies(m, s))
     throw std::invalid_argument("method " + std::to_string(m) + " does not run on scene " + std::to_string(s));
@@ -66,6 +75,22 @@ std::vector<AnyResult> run_all(const PairKernel& k, std::span<const BatchRun> ru
   if (width > 1 && k.run_batch && !samples) k.run_batch(runs, out.data(), width);
   else
     for (std::size_t i = 0; i < runs.size(); ++i) out[i] = k.run(runs[i].params, runs[i].spec);
+  return out;
+}
+
+std::vector<std::string> method_name_list() {
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < method_count(); ++i) out.emplace_back(method_info(i).name);
+  for (const auto& [alias, target] : kMethodAliases) out.emplace_back(alias);
+  return out;
+}
+
+std::vector<std::string> scene_name_list() {
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < scene_count(); ++i) {
+    out.emplace_back(scene_name(i));
+    if (!scene_kernel(i).old_name.empty()) out.emplace_back(scene_kernel(i).old_name);
+  }
   return out;
 }
 

@@ -128,6 +128,7 @@ struct SceneKernel {
   int dim;
   bool has_exact;
   bool driven = false;  // its force depends on t (core/scene.hpp, Driven)
+  bool has_jacobians = true;  // dF/dx and dF/dv: the implicit methods and CVODE's Newton (HasJacobians)
   // What the scene offers the studies (core/scene.hpp), asked for instead of its name; a
   // parameter by its index in `params`, -1 where the scene declares none.
   int size_param = -1;       // the count that refines a scene of run-time size; -1: fixed size
@@ -178,17 +179,22 @@ inline std::string_view scene_name(std::size_t s) { return scene_kernel(s).name;
 std::vector<AnyResult> run_all(const PairKernel& k, std::span<const BatchRun> runs, int width);
 
 // Method m's code on scene s; throws std::invalid_argument where m does not apply (the exact
-// flow on a scene without one): applies() tells first.
+// flow on a scene without one, an implicit method on a scene without Jacobians): applies() tells
+// first, and why_not says why in words ("needs ..."; empty where it applies).
 const PairKernel& pair_kernel(std::size_t m, std::size_t s);
 bool applies(std::size_t m, std::size_t s);
+std::string why_not(std::size_t m, std::size_t s);
 
 // Index of a method by its name or an old alias; of a scene by its name or its old name.
 std::optional<std::size_t> find_method(std::string_view name);
 std::optional<std::size_t> find_scene(std::string_view name);
 // The scene's index; throws std::logic_error if the table has none of that name.
 std::size_t scene_index(std::string_view name);
-// "explicit_euler, symplectic_euler, ... (old names: euler, ...)" for error messages and --help.
+// "explicit_euler, symplectic_euler, ... (old names: euler, ...)" for error messages and --help;
+// every name and old name a method is found by, and every scene's (for "did you mean").
 std::string method_names();
+std::vector<std::string> method_name_list();
+std::vector<std::string> scene_name_list();
 std::string scene_list();
 // "rope, softbody": the scenes for which `offers` holds, for a message naming what is accepted.
 std::string scene_list(bool (*offers)(const SceneKernel&));

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <span>
+#include <stdexcept>
 #include <string_view>
 
 #include "analysis/kernel.hpp"
@@ -21,9 +22,12 @@
 
 namespace steplab {
 
-// Whether method M can run on scene S (the exact flow needs a scene that has one).
+// Whether method M can run on scene S: the exact flow needs a scene that has one, an implicit
+// method the scene's Jacobians, and so does a method with an implicit stage (velocity Verlet's
+// damped kick) on a scene of run-time size (a fixed-size one differences its force: core/scene.hpp).
 template <class M, class S> constexpr bool applies() {
   if constexpr (M::info.exact_flow) return HasExact<S>;
+  else if constexpr (M::info.implicit || (solve_stages<M>() > 0 && S::dim == Eigen::Dynamic)) return HasJacobians<S>;
   else return true;
 }
 
@@ -37,7 +41,7 @@ template <Scene S> struct Counted : S {
     ++forces;
     return S::force(x, v);
   }
-  Jacobians<S::dim> jacobians(const Vec<S::dim>& x, const Vec<S::dim>& v) const requires AutonomousForce<S> {
+  Jacobians<S::dim> jacobians(const Vec<S::dim>& x, const Vec<S::dim>& v) const requires(AutonomousForce<S> && HasJacobians<S>) {
     ++jacobian_calls;
     return S::jacobians(x, v);
   }
@@ -45,7 +49,7 @@ template <Scene S> struct Counted : S {
     ++forces;
     return S::force(t, x, v);
   }
-  Jacobians<S::dim> jacobians(double t, const Vec<S::dim>& x, const Vec<S::dim>& v) const requires Driven<S> {
+  Jacobians<S::dim> jacobians(double t, const Vec<S::dim>& x, const Vec<S::dim>& v) const requires(Driven<S> && HasJacobians<S>) {
     ++jacobian_calls;
     return S::jacobians(t, x, v);
   }
@@ -302,7 +306,8 @@ template <Scene S> struct MadeCode {
   static std::shared_ptr<const void> make(Params p) { return std::make_shared<const S>(p); }
   static Eigen::VectorXd force(const void* s, const Eigen::VectorXd& x, const Eigen::VectorXd& v) { return of(s).force(x, v); }
   static Jacobians<Eigen::Dynamic> jacobians(const void* s, const Eigen::VectorXd& x, const Eigen::VectorXd& v) {
-    return of(s).jacobians(x, v);
+    if constexpr (HasJacobians<S>) return of(s).jacobians(x, v);
+    else throw std::logic_error("jacobians: the scene declares none");  // peer_scenes keeps the CVODE peers off it
   }
   static const Eigen::VectorXd& inverse_mass(const void* s) { return of(s).inverse_mass(); }
   static State<Eigen::Dynamic> initial(const void* s) { return of(s).initial(); }
@@ -318,6 +323,7 @@ template <Scene S> constexpr SceneKernel make_scene() {
                 .dim = S::dim,
                 .has_exact = HasExact<S>,
                 .driven = Driven<S>,
+                .has_jacobians = HasJacobians<S>,
                 .size_param = size_param_index<S>(),
                 .coords_per_mass = coords_per_mass<S>(),
                 .jacobian_bandwidth = jacobian_bandwidth<S>(),

@@ -59,6 +59,7 @@ const PeerInfo* find_peer(std::string_view name) {
 }
 
 PeerScenes peer_scenes(const SceneKernel& scene) {
+  if (!scene.has_jacobians) return PeerScenes::Explicit;
   if (scene.dim != Eigen::Dynamic) return PeerScenes::FixedSize;
   return scene.jacobian_bandwidth >= 0 ? PeerScenes::Banded : PeerScenes::Sparse;
 }

@@ -48,8 +48,9 @@ struct CvodeSettings {
 // Which scenes a peer runs on, by the linear solver that fits their Jacobian: the fixed-size
 // scenes of the work-precision study (dense), the scenes of run-time size that declare their
 // Jacobians banded (core/scene.hpp, jacobian_bandwidth: the rope), the other scenes of run-time
-// size (sparse: the soft body); or any scene (the explicit solvers).
-enum class PeerScenes { FixedSize, Banded, Sparse, Any };
+// size (sparse: the soft body); or any scene (the explicit solvers). A scene without Jacobians
+// (Explicit) has the explicit solvers alone.
+enum class PeerScenes { FixedSize, Banded, Sparse, Explicit, Any };
 struct SceneKernel;  // analysis/kernel.hpp
 PeerScenes peer_scenes(const SceneKernel& scene);
 

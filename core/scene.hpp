@@ -7,8 +7,9 @@
 //   inverse_mass()        its reciprocal, stored (a step multiplies by it)
 //   force(x, v)           F(x, v), an autonomous scene's; or force(t, x, v), a driven one's
 //                         (Driven): every method evaluates it at each of its stages' own times
-//   jacobians(x, v)       dF/dx and dF/dv (used by the implicit methods only); jacobians(t, x, v)
-//                         for a driven scene
+//   jacobians(x, v)       dF/dx and dF/dv, optional (HasJacobians): the implicit methods and the
+//                         CVODE peers solve with them; a scene without them runs the explicit
+//                         methods and the explicit peers only. jacobians(t, x, v) for a driven scene
 //   velocity_dependent()  whether F depends on v (damping); F must be affine in v
 //   energy(x, v)          the energy whose ratio to its start value the studies track
 //   initial()             the start state
@@ -71,12 +72,17 @@ struct ParamSpec {
 template <class S>
 concept AutonomousForce = requires(const S& s, const Vec<S::dim>& x, const Vec<S::dim>& v) {
   { s.force(x, v) } -> std::convertible_to<Vec<S::dim>>;
-  { s.jacobians(x, v) } -> std::convertible_to<Jacobians<S::dim>>;
 };
 template <class S>
 concept Driven = requires(const S& s, double t, const Vec<S::dim>& x, const Vec<S::dim>& v) {
   { s.force(t, x, v) } -> std::convertible_to<Vec<S::dim>>;
-  { s.jacobians(t, x, v) } -> std::convertible_to<Jacobians<S::dim>>;
+};
+// Its Jacobians dF/dx and dF/dv, with the force's arguments: what an implicit method's Newton
+// iteration solves with. Without them only the explicit methods run on the scene.
+template <class S>
+concept HasJacobians = requires(const S& s, double t, const Vec<S::dim>& x, const Vec<S::dim>& v) {
+  requires(Driven<S> && requires { { s.jacobians(t, x, v) } -> std::convertible_to<Jacobians<S::dim>>; }) ||
+              (!Driven<S> && requires { { s.jacobians(x, v) } -> std::convertible_to<Jacobians<S::dim>>; });
 };
 
 template <class S>
@@ -225,9 +231,33 @@ template <class S, class Tm, class X, class V>
   if constexpr (Driven<S>) return s.force(t, x, v);
   else return s.force(x, v);
 }
+// A fixed-size scene without Jacobians (HasJacobians) is asked for them by one step only: velocity
+// Verlet's closing kick where the force is damped, solved at fixed x. There F is affine in v, so
+// dF/dv from differences of the force in v is exact up to round-off (a unit step in each velocity);
+// dF/dx, which only scales that solve's stopping test, from central differences. (The implicit
+// methods do not run on such a scene: analysis/kernel_impl.hpp, applies.)
+template <class S, class Tm, class X, class V>
+Jacobians<S::dim, typename X::Scalar> differenced_jacobians(const S& s, Tm t, const X& x, const V& v) {
+  using T = typename X::Scalar;
+  using std::abs;
+  constexpr int D = S::dim;
+  Jacobians<D, T> j;
+  const Vec<D, T> f = force_at(s, t, x, v);
+  for (int k = 0; k < D; ++k) {
+    Vec<D, T> vk = v, xp = x, xm = x;
+    vk[k] += T(1);
+    j.dv.col(k) = force_at(s, t, x, vk) - f;
+    const T d = T(1e-6) * (T(1) + abs(x[k]));
+    xp[k] += d, xm[k] -= d;
+    j.dx.col(k) = (force_at(s, t, xp, v) - force_at(s, t, xm, v)) / (T(2) * d);
+  }
+  return j;
+}
+
 template <class S, class Tm, class X, class V>
 [[gnu::always_inline]] inline decltype(auto) jacobians_at(const S& s, Tm t, const X& x, const V& v) {
-  if constexpr (Driven<S>) return s.jacobians(t, x, v);
+  if constexpr (!HasJacobians<S>) return differenced_jacobians(s, t, x, v);
+  else if constexpr (Driven<S>) return s.jacobians(t, x, v);
   else return s.jacobians(x, v);
 }
 // Written out, not through force_at: one inlined layer less keeps GCC inlining the Eigen

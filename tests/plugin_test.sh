@@ -17,11 +17,13 @@
 #   mysteplab report --scenes pendulum ...   a report on the user's scene: its convergence, the
 #                                            sections it cannot feed left out with one line each
 # and a scene of run-time size (beads on a string, exact modes) that run and the studies of
-# convergence, stability and scaling take by what it declares.
+# convergence, stability and scaling take by what it declares; and docs/scenes.md's worked
+# example (the Duffing oscillator, no Jacobians), its commands printing what the page shows.
 # Usage: plugin_test.sh BUILD_DIR [extra cmake arguments for the project]
 set -euo pipefail
 build=$1
 shift
+docs=$(cd "$(dirname "$0")/.." && pwd)/docs/scenes.md  # its worked example of a scene
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cmake --install "$build" --prefix "$tmp/prefix" >/dev/null
@@ -230,11 +232,19 @@ struct Beads {
 STEPLAB_SCENE(Beads);
 EOF
 
+# docs/scenes.md's worked example, as the page prints it: a scene without Jacobians.
+python3 - "$docs" <<'EOF'
+import re, sys
+page = open(sys.argv[1]).read()
+section = page[page.index("## A scene of your own"):]
+open("duffing.hpp", "w").write(re.search(r"```cpp\n(.*?)```", section, flags=re.S).group(1))
+EOF
+
 cat > CMakeLists.txt <<'EOF'
 cmake_minimum_required(VERSION 3.22)
 project(mine LANGUAGES CXX)
 find_package(steplab 0.2 REQUIRED)
-steplab_add_executable(mysteplab METHODS heun.hpp heun_claims_3.hpp heun_frozen_time.hpp SCENES pendulum.hpp beads.hpp)
+steplab_add_executable(mysteplab METHODS heun.hpp heun_claims_3.hpp heun_frozen_time.hpp SCENES pendulum.hpp beads.hpp duffing.hpp)
 EOF
 
 cmake -S . -B build -DCMAKE_PREFIX_PATH="$tmp/prefix" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
@@ -267,6 +277,33 @@ EOF
 "$tool" study stability --methods heun,rk4 --lanes 1 --json stability_1.json >/dev/null
 "$tool" study stability --methods heun,rk4 --lanes 2 --json stability_2.json >/dev/null
 cmp stability_1.json stability_2.json
+# docs/scenes.md's commands on the Duffing scene print what the page shows; an implicit method on
+# it (no Jacobians) is refused in one line naming them
+python3 - "$docs" "$tool" <<'EOF'
+import re, shlex, subprocess, sys
+page, tool = open(sys.argv[1]).read(), sys.argv[2]
+section = page[page.index("## A scene of your own"):]
+for block in re.findall(r"^```\n(.*?)^```", section, flags=re.S | re.M):
+    for cmd_block in re.split(r"^(?=\$ )", block, flags=re.M):
+        lines = [l for l in cmd_block.rstrip("\n").split("\n") if l]
+        if not lines or not lines[0].startswith("$ build/mysteplab "):
+            continue
+        out = subprocess.run([tool] + shlex.split(lines[0])[1:], capture_output=True, text=True, check=True).stdout.split("\n")
+        at = 0
+        for want in lines[1:]:
+            if want.endswith("..."):
+                want = want[:-3]
+                while at < len(out) and not out[at].startswith(want):
+                    at += 1
+            else:
+                while at < len(out) and out[at] != want:
+                    at += 1
+            assert at < len(out), f"{lines[0]}: docs/scenes.md shows a line it does not print:\n{want}\n" + "\n".join(out)
+            at += 1
+        print(f"docs/scenes.md: {lines[0][2:]}: as printed")
+r = subprocess.run([tool, "run", "--scene", "duffing", "--method", "implicit_euler"], capture_output=True, text=True)
+assert r.returncode == 2 and len(r.stderr.splitlines()) == 1 and "jacobians" in r.stderr and not r.stdout, r
+EOF
 # the new method on a built-in scene, the built-in ones on the new scene
 "$tool" run --scene chain --method heun --dt 0.001 --t-end 1 >/dev/null
 "$tool" run --scene pendulum --method radau_iia5 --dt 0.01 --t-end 1 >/dev/null

@@ -64,7 +64,8 @@ int legacy_command(const LegacyArgs& l, Context& ctx) {
   const auto is = [&](std::span<const std::string_view> list) { return std::find(list.begin(), list.end(), l.testcase) != list.end(); };
   const bool measurement = is(legacy_measurements);
   if (!measurement && !is(kLegacyScenes))
-    throw UsageError(fmt::format("-testcase '{}' is unknown; accepted: {}", l.testcase, legacy_testcases()));
+    throw UsageError(fmt::format("-testcase '{}' is unknown{}; accepted: {}", l.testcase,
+                                 did_you_mean(l.testcase, split_list(legacy_testcases())), legacy_testcases()));
   // Checked here first so that a message names the flag as typed.
   parse_number("-step", l.step, Bound::Positive);
   for (const auto& [flag, value] : {std::pair{"-mass", &l.mass}, {"-stiff", &l.stiff}, {"-damp", &l.damp}, {"-length", &l.length}})
@@ -127,6 +128,51 @@ void terminal_progress(std::size_t done, std::size_t total, double seconds) {
   if (done == total) std::fputs("\r\033[K", stderr);
 }
 
+std::vector<std::string> names_of(const std::vector<CLI::App*>& apps) {
+  std::vector<std::string> out;
+  for (const CLI::App* a : apps) out.push_back(a->get_name());
+  return out;
+}
+
+// A command word that names no command (`steplab frobnicate`, `steplab study stabilty`): named,
+// with the nearest command, before CLI11 would call it an extra argument or a missing subcommand.
+void check_command_words(CLI::App& app, const std::vector<std::string>& args) {
+  const auto check = [](CLI::App& parent, const std::string& word, const std::string& where) {
+    const std::vector<std::string> names = names_of(parent.get_subcommands({}));
+    if (std::find(names.begin(), names.end(), word) == names.end())
+      throw UsageError(fmt::format("{} '{}' is unknown{}; accepted: {}", where, word, did_you_mean(word, names), fmt::join(names, ", ")));
+  };
+  if (args.empty() || args[0].empty() || args[0][0] == '-') return;
+  check(app, args[0], "command");
+  CLI::App* sub = app.get_subcommand(args[0]);
+  if (sub->get_require_subcommand_min() == 0) return;
+  if (args.size() < 2 || args[1].empty() || args[1][0] == '-') {
+    if (args.size() >= 2 && (args[1] == "--help" || args[1] == "-h")) return;
+    throw UsageError(fmt::format("{} needs a subcommand; accepted: {}", args[0], fmt::join(names_of(sub->get_subcommands({})), ", ")));
+  }
+  check(*sub, args[1], args[0]);
+}
+
+// What no option took (allow_extras): the first such word named, and for an option the nearest
+// option of the command it was given to.
+void check_no_extras(CLI::App& app) {
+  CLI::App* at = &app;
+  while (!at->get_subcommands().empty()) at = at->get_subcommands().front();
+  const std::vector<std::string> extra = app.remaining(true);
+  if (extra.empty()) return;
+  const std::string command = at == &app ? "steplab" : at->get_parent() == &app ? "steplab " + at->get_name()
+                                                                                 : "steplab " + at->get_parent()->get_name() + " " + at->get_name();
+  const std::string& word = extra.front();
+  if (word.rfind("-", 0) != 0)
+    throw UsageError(fmt::format("'{}' is not expected by {} (a value needs the option it belongs to); see {} --help", word, command,
+                                 command));
+  std::vector<std::string> options;
+  for (const CLI::Option* o : at->get_options())
+    for (const std::string& n : o->get_lnames()) options.push_back("--" + n);
+  const std::string name = word.substr(0, word.find('='));
+  throw UsageError(fmt::format("{} is not an option of {}{}; see {} --help", name, command, did_you_mean(name, options), command));
+}
+
 }  // namespace
 
 int cli_main(int argc, const char* const* argv, bool dry_run) {
@@ -152,6 +198,7 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
 
   CLI::App app{"steplab: measures how time integrators behave (convergence order, stability, cost)"};
   app.name("steplab");
+  app.allow_extras();  // inherited by every command: an unknown option is named below, with the nearest one
   app.set_version_flag("--version", "steplab " STEPLAB_VERSION);
   app.failure_message([](const CLI::App*, const CLI::Error& e) { return std::string(e.what()) + "\n"; });
 
@@ -254,7 +301,9 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   std::vector<const char*> cargv{"steplab"};
   for (const auto& a : args) cargv.push_back(a.c_str());
   try {
+    check_command_words(app, args);
     app.parse(static_cast<int>(cargv.size()), cargv.data());
+    check_no_extras(app);
     if (run_cmd->parsed()) return run_command(run, ctx);
     if (conv_cmd->parsed()) return convergence_command(conv, ctx);
     if (damp_cmd->parsed()) return damping_command(damp, ctx);

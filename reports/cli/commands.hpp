@@ -2,6 +2,7 @@
 // (before writing anything) and returns the exit status.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -68,7 +69,10 @@ int convergence_command(ConvergenceArgs& args, Context& ctx);
 
 // Shared by the commands.
 std::size_t resolve_method(std::string_view name);
-std::vector<std::size_t> resolve_methods(const std::string& list, bool with_analytic);
+// The methods of a comma-separated list (empty: every one, the exact flow if `with_analytic`); on
+// `scene`, every one that runs there, and a named one that cannot is refused (why_not).
+std::vector<std::size_t> resolve_methods(const std::string& list, bool with_analytic,
+                                         std::optional<std::size_t> scene = std::nullopt);
 // --methods of a study with peers: the table's numerical methods and the adaptive solvers
 // `available` on its scene (dopri5 and the peers, analysis/peers.hpp). The adaptive ones named are
 // run, or every available one where none is named (none with --no-peers). A peer not built into

@@ -33,7 +33,9 @@ std::string csv(const AnyResult& r) {
 
 std::size_t resolve_method(std::string_view name) {
   const auto m = find_method(name);
-  if (!m) throw UsageError(fmt::format("--method '{}' is unknown; accepted: {}", name, method_names()));
+  if (!m)
+    throw UsageError(fmt::format("--method '{}' is unknown{}; accepted: {}", name, did_you_mean(name, method_name_list()),
+                                 method_names()));
   return *m;
 }
 
@@ -101,6 +103,7 @@ int run_command(RunArgs& a, Context& ctx) {
     throw UsageError(fmt::format("--rtol and --atol apply to the adaptive dopri5 only; --method {} takes --dt", a.method));
   const std::size_t scene = a.scene.scene_index();
   const std::size_t method = resolve_method(a.method);
+  if (!applies(method, scene)) throw UsageError(fmt::format("--method {} {}", a.method, why_not(method, scene)));
   const std::vector<double> params = a.scene.values(scene);
   RunSpec spec;
   spec.dt = a.dt.empty() ? 0.01 : parse_number("--dt", a.dt, Bound::Positive);
@@ -108,11 +111,13 @@ int run_command(RunArgs& a, Context& ctx) {
   spec.steps = step_count(t_end, spec.dt);
   spec.max_samples = parse_count("--samples", a.samples, 2, 100'000'000);
   if (ctx.stop_after_validation(a.json)) return 0;
+  // A step that does not divide the time: the run takes whole steps, so it ends after t_end.
+  if (const double end = static_cast<double>(spec.steps) * spec.dt; std::abs(end - t_end) > 1e-9 * std::max(t_end, spec.dt))
+    fmt::print(stderr, "steplab: --t-end {} is not a whole number of steps of --dt {}: the run takes {} step{} and ends at t = {}\n",
+               t_end, spec.dt, spec.steps, spec.steps == 1 ? "" : "s", end);
 
   const SceneKernel& s = scene_kernel(scene);
   const std::string_view name = method_info(method).name;
-  if (!applies(method, scene))
-    throw UsageError(fmt::format("--method {} needs a scene with an exact solution; scene {} has none", name, s.name));
   // For the JSON, counted where the table counts (scenes with an exact solution or of run-time
   // size): the same run, its force and Jacobian evaluations and Newton solves added up beside it.
   // The CSV has no counts, so that run is not counted (the counters cost RK4 on the spring about

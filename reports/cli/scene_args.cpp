@@ -49,7 +49,8 @@ bool SceneArgs::given(std::string_view name) const {
 
 std::size_t SceneArgs::scene_index() const {
   const auto index = find_scene(scene);
-  if (!index) throw UsageError(fmt::format("--scene '{}' is unknown; accepted: {}", scene, scene_list()));
+  if (!index)
+    throw UsageError(fmt::format("--scene '{}' is unknown{}; accepted: {}", scene, did_you_mean(scene, scene_name_list()), scene_list()));
   return *index;
 }
 

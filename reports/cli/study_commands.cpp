@@ -17,17 +17,19 @@
 
 namespace steplab {
 
-std::vector<std::size_t> resolve_methods(const std::string& list, bool with_analytic) {
+std::vector<std::size_t> resolve_methods(const std::string& list, bool with_analytic, std::optional<std::size_t> scene) {
   std::vector<std::size_t> out;
   if (list.empty()) {
     for (std::size_t i = 0; i < method_count(); ++i)
-      if (with_analytic || !method_info(i).exact_flow) out.push_back(i);
+      if ((with_analytic || !method_info(i).exact_flow) && (!scene || applies(i, *scene))) out.push_back(i);
     return out;
   }
   for (const std::string& name : split_list(list)) {
     const std::size_t m = resolve_method(name);
     if (std::find(out.begin(), out.end(), m) != out.end())
       throw UsageError(fmt::format("--methods names '{}' twice; accepted: each method once", name));
+    if (scene && !applies(m, *scene))
+      throw UsageError(fmt::format("--methods '{}' {}", name, why_not(m, *scene)));
     out.push_back(m);
   }
   return out;
@@ -36,17 +38,23 @@ std::vector<std::size_t> resolve_methods(const std::string& list, bool with_anal
 Solvers resolve_solvers(const std::string& list, const std::vector<std::string>& available, std::string_view scene, bool no_peers,
                         std::span<const PeerInfo> table) {
   Solvers out{{}, no_peers ? std::vector<std::string>{} : available};
-  if (list.empty()) return {resolve_methods(list, false), out.adaptive};
+  const std::optional<std::size_t> index = find_scene(scene);
+  if (list.empty()) return {resolve_methods(list, false, index), out.adaptive};
   const auto accepted = [&] { return fmt::format("{}; and here {}", method_names(), fmt::join(available, ", ")); };
   std::vector<std::string> named;
   for (const std::string& name : split_list(list)) {
     const auto it = std::find_if(table.begin(), table.end(), [&](const PeerInfo& p) { return p.name == name; });
     const PeerInfo* peer = it == table.end() ? nullptr : &*it;
     if (!peer) {
-      if (!find_method(name)) throw UsageError(fmt::format("--methods '{}' is unknown; accepted: {}", name, accepted()));
+      if (!find_method(name)) {
+        std::vector<std::string> names = method_name_list();
+        names.insert(names.end(), available.begin(), available.end());
+        throw UsageError(fmt::format("--methods '{}' is unknown{}; accepted: {}", name, did_you_mean(name, names), accepted()));
+      }
       const std::size_t m = *find_method(name);
       if (std::find(out.methods.begin(), out.methods.end(), m) != out.methods.end())
         throw UsageError(fmt::format("--methods names '{}' twice; accepted: each method once", name));
+      if (index && !applies(m, *index)) throw UsageError(fmt::format("--methods '{}' {}", name, why_not(m, *index)));
       out.methods.push_back(m);
       continue;
     }
@@ -119,7 +127,7 @@ int convergence_command(ConvergenceArgs& a, Context& ctx) {
   const bool has_exact = scene_kernel(c.scene).has_exact;
   c.reference = a.reference || !has_exact;
   c.params = a.scene.values(c.scene);
-  c.methods = resolve_methods(a.methods, false);
+  c.methods = resolve_methods(a.methods, false, c.scene);
   c.t_end = a.t_end.empty() ? (c.reference ? 1.0 : 10.0) : parse_number("--t-end", a.t_end, Bound::Positive);
   c.dt_max = parse_number("--dt-max", a.dt_max, Bound::Positive);
   c.dt_min = parse_number("--dt-min", a.dt_min, Bound::Positive);
@@ -132,7 +140,8 @@ int convergence_command(ConvergenceArgs& a, Context& ctx) {
   if (a.error == "final") c.fit_error = ErrorKind::Final;
   else if (a.error == "max") c.fit_error = ErrorKind::Max;
   else if (a.error == "rms") c.fit_error = ErrorKind::Rms;
-  else throw UsageError(fmt::format("--error '{}' is unknown; accepted: final, max, rms", a.error));
+  else throw UsageError(fmt::format("--error '{}' is unknown{}; accepted: final, max, rms", a.error,
+                                     did_you_mean(a.error, {"final", "max", "rms"})));
   if (c.reference && c.fit_error != ErrorKind::Final)
     throw UsageError(fmt::format("--error {} needs the exact solution along the run; against the reference solution "
                                  "(--scene {}{}) accepted: final",
@@ -228,7 +237,7 @@ int mode_stability_command(StabilityArgs& a, Context& ctx) {
   ModeStabilityConfig c;
   c.scene = a.scene.scene_index();
   c.params = a.scene.values(c.scene);
-  c.methods = resolve_methods(a.methods, false);
+  c.methods = resolve_methods(a.methods, false, c.scene);
   c.workers = ctx.workers(resolve_thread_count(a.threads));
   resolve_lanes(a.lanes);  // checked; the runs of a scene of run-time size go one at a time
   begin_shard(ctx, a.shard, a.json, false);

@@ -25,8 +25,11 @@ double check_number(std::string_view what, double value, Bound bound);
 // A whole number in [lo, hi].
 long long parse_count(std::string_view what, std::string_view text, long long lo, long long hi);
 
-// Comma-separated list, e.g. "euler,rk4".
+// Comma-separated list, e.g. "euler,rk4"; spaces around an item are dropped ("rk4, euler").
 std::vector<std::string> split_list(std::string_view text);
+// " (did you mean 'rk4'?)" where one of `candidates` is a typo away from `typed` (at most two
+// edits, a swap of neighbours counting one, and fewer edits than half its letters); "" otherwise.
+std::string did_you_mean(std::string_view typed, const std::vector<std::string>& candidates);
 // Comma-separated numbers, each within the bound.
 std::vector<double> number_list(std::string_view what, const std::string& text, Bound bound);
 // A UsageError naming `what` ("--sweep stiffness values") unless each value exceeds the one before.

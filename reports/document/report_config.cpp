@@ -91,7 +91,7 @@ std::vector<std::size_t> chosen(const std::vector<std::string>& names, const std
   std::vector<std::size_t> out;
   for (const std::string& n : names) {
     const std::optional<std::size_t> i = find(n);
-    if (!i) throw UsageError(fmt::format("{}: '{}' is not known; accepted: {}", what, n, accepted));
+    if (!i) throw UsageError(fmt::format("{}: '{}' is not known{}; accepted: {}", what, n, did_you_mean(n, split_list(accepted)), accepted));
     if (std::find(out.begin(), out.end(), *i) != out.end())
       throw UsageError(fmt::format("{}: '{}' is named twice; accepted: each once", what, n));
     out.push_back(*i);
@@ -115,8 +115,8 @@ void choose_scenes(ReportConfig& c, const std::vector<std::string>& names, const
 void check_choice(const ReportConfig& c, const std::string& what) {
   for (std::size_t m : c.methods)
     if (std::none_of(c.covered.begin(), c.covered.end(), [&](std::size_t s) { return applies(m, s); }))
-      throw UsageError(fmt::format("{}: '{}' runs on none of the chosen scenes (it needs a scene with an exact solution); "
-                                   "accepted: methods that run on at least one of them", what, method_info(m).name));
+      throw UsageError(fmt::format("{}: '{}' runs on none of the chosen scenes (it {}); accepted: methods that run on at "
+                                   "least one of them", what, method_info(m).name, why_not(m, c.covered.front())));
 }
 
 void choose_sections(ReportConfig& c, const std::vector<std::string>& names, const std::string& what) {

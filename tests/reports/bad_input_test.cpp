@@ -62,6 +62,14 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         // run: names
         BadInput{"run --scene pendulum", "pendulum"}, BadInput{"run --method heun", "heun"},
+        // a typo: the nearest name, whatever kind of name it is
+        BadInput{"study stabilty", "study 'stabilty' is unknown (did you mean 'stability'?)"},
+        BadInput{"run --dtt 0.01", "--dtt is not an option of steplab run (did you mean '--dt'?)"},
+        BadInput{"study convergence --dt-mx 0.1", "(did you mean '--dt-max'?)"},
+        BadInput{"run --method rk5", "(did you mean 'rk4'?)"}, BadInput{"run --scene sprign", "(did you mean 'spring'?)"},
+        BadInput{"study convergence --methods rk4,explict_euler", "(did you mean 'explicit_euler'?)"},
+        BadInput{"report --sections sumary --out {dir}/r", "(did you mean 'summary'?)"},
+        BadInput{"rnu", "command 'rnu' is unknown (did you mean 'run'?)"},
         BadInput{"run --frobnicate 3", "--frobnicate"}, BadInput{"frobnicate", "frobnicate"},
         // run: numbers
         BadInput{"run --dt 0", "--dt"}, BadInput{"run --dt -0.1", "--dt"}, BadInput{"run --dt nan", "--dt"},

@@ -18,6 +18,23 @@
 namespace steplab {
 namespace {
 
+// Spaces around a list's items are dropped, as a shell user types them.
+TEST(Cli, ListItemsAreTrimmed) {
+  const Result r = run_steplab("study convergence --methods \"rk4, explicit_euler\" --points 4 --dt-min 0.01");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("explicit_euler"), std::string::npos);
+}
+
+// A step that does not divide the time span: the run still takes whole steps, and says where it ends.
+TEST(Cli, RunSaysWhereAStepThatDoesNotDivideTheSpanEnds) {
+  Result r = run_steplab("run --dt 5 --t-end 1");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "steplab: --t-end 1 is not a whole number of steps of --dt 5: the run takes 1 step and ends at t = 5\n");
+  r = run_steplab("run --dt 0.3 --t-end 1 --samples 2");
+  EXPECT_NE(r.err.find("takes 4 steps and ends at t = 1.2"), std::string::npos) << r.err;
+  EXPECT_TRUE(run_steplab("run --dt 0.1 --t-end 1").err.empty());  // 10 steps of 0.1 (to round-off)
+}
+
 TEST(Cli, RunWritesTheRunJson) {
   TempDir dir;
   const std::string out = dir.path("out.json");

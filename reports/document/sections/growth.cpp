@@ -155,7 +155,8 @@ ScalingConfig config_for(const ReportData& d, const ReportSizes& s) {
   c.targets = {{d.config.scaling_error, false}};
   c.timing_seconds = kTimingSeconds;  // the report's timing budget per run (analysis/convergence.hpp)
   c.t_end = d.config.scaling_t_end;
-  c.methods = d.numerical_methods();
+  for (std::size_t m : d.numerical_methods())
+    if (applies(m, s.scene)) c.methods.push_back(m);  // a scene without Jacobians: the explicit methods
   c.timing = d.config.timing;
   c.workers = d.workers;
   return c;
