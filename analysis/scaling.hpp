@@ -135,7 +135,7 @@ struct ScalingFit {
 struct ScalingCell {
   int n = 0, masses = 0;
   std::string cheapest, next, best_implicit, best_explicit, best_cvode;
-  double margin = 0, over_explicit = 0, over_cvode = 0;
+  double margin = 0, explicit_over_implicit = 0, cvode_over_implicit = 0;
   double motion = 0;
 };
 

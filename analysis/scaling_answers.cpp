@@ -50,8 +50,8 @@ void answer_cell(const ScalingResult& r, std::size_t b, std::size_t k, ScalingCe
   }
   const auto ratio = [](double num, double den) { return std::isfinite(num) && std::isfinite(den) ? num / den : kNaN; };
   cell.margin = ratio(next, cheapest);
-  cell.over_explicit = ratio(explicit_, implicit);
-  cell.over_cvode = ratio(cvode, implicit);
+  cell.explicit_over_implicit = ratio(explicit_, implicit);
+  cell.cvode_over_implicit = ratio(cvode, implicit);
 }
 
 // The first size where the cheapest implicit method beats every explicit one (steplab's methods).

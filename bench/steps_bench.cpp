@@ -1,7 +1,7 @@
 // Per-step cost: every method on every scene (step/<scene>/<method>), the same problems stepped
 // with Boost.Odeint (odeint/<scene>/<method>), and the plainest hand-written loop of the same
-// update (baseline/<scene>/<method>) as the floor. After the run a table of time-per-step ratios
-// steplab/odeint and steplab/baseline (medians of the repetitions) is printed (console format
+// update (hand/<scene>/<method>) as the floor. After the run a table of time-per-step ratios
+// steplab/odeint and steplab/hand-written (medians of the repetitions) is printed (console format
 // only) and, with --ratios=FILE, written as Markdown. Every Google Benchmark flag works as it
 // documents it (--benchmark_format=json prints JSON on stdout, --benchmark_out=FILE, ...).
 //
@@ -9,7 +9,7 @@
 // dt = 0.001, and starts again from the initial state every kRestart steps (10 simulated
 // seconds): long enough that the restart costs nothing measurable, short enough that no run
 // decays to rest (where denormals or an early Newton exit would distort the time) or grows
-// without bound. steplab, odeint and the baselines all restart alike.
+// without bound. steplab, odeint and the hand-written loops all restart alike.
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
@@ -136,25 +136,25 @@ template <class Step> void register_loop(const char* name, SpringForce f, Step s
   });
 }
 
-void register_baselines() {
+void register_hand_written() {
   const double h = kDt;
   SpringForce damped, undamped;
   undamped.gamma = 0;
-  register_loop("baseline/spring/explicit_euler", damped, [h](const SpringForce& f, double& y, double& v) {
+  register_loop("hand/spring/explicit_euler", damped, [h](const SpringForce& f, double& y, double& v) {
     const double a = f(y, v) / f.m;
     y += h * v;
     v += h * a;
   });
-  register_loop("baseline/spring/symplectic_euler", damped, [h](const SpringForce& f, double& y, double& v) {
+  register_loop("hand/spring/symplectic_euler", damped, [h](const SpringForce& f, double& y, double& v) {
     v += h * f(y, v) / f.m;
     y += h * v;
   });
-  register_loop("baseline/spring/explicit_midpoint", damped, [h](const SpringForce& f, double& y, double& v) {
+  register_loop("hand/spring/explicit_midpoint", damped, [h](const SpringForce& f, double& y, double& v) {
     const double ym = y + 0.5 * h * v, vm = v + 0.5 * h * f(y, v) / f.m;
     y += h * vm;
     v += h * f(ym, vm) / f.m;
   });
-  register_loop("baseline/spring/rk4", damped, [h](const SpringForce& f, double& y, double& v) {
+  register_loop("hand/spring/rk4", damped, [h](const SpringForce& f, double& y, double& v) {
     const double k1x = v, k1v = f(y, v) / f.m;
     const double k2x = v + 0.5 * h * k1v, k2v = f(y + 0.5 * h * k1x, k2x) / f.m;
     const double k3x = v + 0.5 * h * k2v, k3v = f(y + 0.5 * h * k2x, k3x) / f.m;
@@ -162,28 +162,28 @@ void register_baselines() {
     y += h / 6 * (k1x + 2 * k2x + 2 * k3x + k4x);
     v += h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
   });
-  register_loop("baseline/spring/velocity_verlet", damped, [h](const SpringForce& f, double& y, double& v) {
+  register_loop("hand/spring/velocity_verlet", damped, [h](const SpringForce& f, double& y, double& v) {
     // closing kick implicit in the (linear) damping: v1 (1 + h/2 gamma/m) = v + h/2 (a0 + F(y1, 0)/m)
     const double a0 = f(y, v) / f.m;
     y += h * v + 0.5 * h * h * a0;
     v = (v + 0.5 * h * (a0 + f(y, 0.0) / f.m)) / (1 + 0.5 * h * f.gamma / f.m);
   });
-  register_loop("baseline/spring_undamped/velocity_verlet", undamped, [h](const SpringForce& f, double& y, double& v) {
+  register_loop("hand/spring_undamped/velocity_verlet", undamped, [h](const SpringForce& f, double& y, double& v) {
     const double a0 = f(y, v) / f.m;
     y += h * v + 0.5 * h * h * a0;
     v += 0.5 * h * (a0 + f(y, v) / f.m);
   });
-  register_loop("baseline/spring_undamped/symplectic_euler", undamped, [h](const SpringForce& f, double& y, double& v) {
+  register_loop("hand/spring_undamped/symplectic_euler", undamped, [h](const SpringForce& f, double& y, double& v) {
     v += h * f(y, v) / f.m;
     y += h * v;
   });
-  register_loop("baseline/spring/implicit_euler", damped, [h](const SpringForce& f, double& y, double& v) {
+  register_loop("hand/spring/implicit_euler", damped, [h](const SpringForce& f, double& y, double& v) {
     // one Newton step is exact (linear below the anchor): v1 = v + h F(y + h v1, v1) / m
     const double r = -h * f(y + h * v, v);
     v -= r / (f.m + h * f.gamma + h * h * f.k);
     y += h * v;
   });
-  register_loop("baseline/spring/implicit_midpoint", damped, [h](const SpringForce& f, double& y, double& v) {
+  register_loop("hand/spring/implicit_midpoint", damped, [h](const SpringForce& f, double& y, double& v) {
     const double c = 0.5 * h, r = -c * f(y + c * v, v);
     const double vm = v - r / (f.m + c * f.gamma + c * c * f.k);
     y += h * vm;
@@ -280,6 +280,26 @@ template <class Reporter, class... Args> std::map<std::string, double> run_colle
   return reporter.ns_per_step;
 }
 
+// The CPU's model name (Google Benchmark's context gives its cores and clock only), and the load
+// average over the last minute: what the times were measured on, and beside what else.
+std::string cpu_model() {
+  std::ifstream info("/proc/cpuinfo");
+  for (std::string line; std::getline(info, line);)
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  return "unknown CPU";
+}
+double load_average() {
+  double load = -1;
+  std::ifstream("/proc/loadavg") >> load;
+  return load;
+}
+std::string machine_line() {
+  char out[300];
+  std::snprintf(out, sizeof out, "Measured on %s (%ld cores); load average over the last minute %.2f at the end.",
+                cpu_model().c_str(), sysconf(_SC_NPROCESSORS_ONLN), load_average());
+  return out;
+}
+
 // The value of --flag=value among the arguments (the last one given), or `fallback`.
 std::string flag_value(int argc, char** argv, const std::string& flag, const std::string& fallback) {
   std::string v = fallback;
@@ -290,8 +310,9 @@ std::string flag_value(int argc, char** argv, const std::string& flag, const std
 
 std::pair<int, long long> throughput_work{1, 1};  // trajectories, trajectory-steps per iteration
 
+// Every ratio is a time over a time, steplab's first: below 1 steplab is faster.
 std::string ratio_table(const std::map<std::string, double>& t) {
-  std::string out = "| scene/method | steplab ns/step | odeint ns/step | baseline ns/step | steplab/odeint | steplab/baseline |\n"
+  std::string out = "| scene/method | steplab ns/step | odeint ns/step | hand-written ns/step | steplab/odeint | steplab/hand-written |\n"
                     "|---|---:|---:|---:|---:|---:|\n";
   const auto cell = [&](const std::string& key) {
     const auto it = t.find(key);
@@ -300,12 +321,12 @@ std::string ratio_table(const std::map<std::string, double>& t) {
   for (const auto& [name, ns] : t) {
     if (name.rfind("step/", 0) != 0) continue;
     const std::string rest = name.substr(5);
-    const auto od = t.find("odeint/" + rest), base = t.find("baseline/" + rest);
+    const auto od = t.find("odeint/" + rest), base = t.find("hand/" + rest);
     char r1[32] = "-", r2[32] = "-";
     if (od != t.end()) std::snprintf(r1, sizeof r1, "%.2f", ns / od->second);
     if (base != t.end()) std::snprintf(r2, sizeof r2, "%.2f", ns / base->second);
     if (od == t.end() && base == t.end()) continue;
-    out += "| " + rest + " | " + cell(name) + " | " + cell("odeint/" + rest) + " | " + cell("baseline/" + rest) + " | " + r1 +
+    out += "| " + rest + " | " + cell(name) + " | " + cell("odeint/" + rest) + " | " + cell("hand/" + rest) + " | " + r1 +
            " | " + r2 + " |\n";
   }
   // Throughput (throughput_bench.cpp): the same trajectory-steps per iteration in every row;
@@ -314,25 +335,25 @@ std::string ratio_table(const std::map<std::string, double>& t) {
     const auto it = t.find(row + "/spring/explicit_euler");
     return it == t.end() ? 0.0 : it->second / static_cast<double>(throughput_work.second);
   };
-  const double table = per_step("throughput"), hand = per_step("throughput_baseline"), rate = per_step("throughput_rate"),
-               hand_rate = per_step("throughput_baseline_rate"), one = per_step("throughput_w1");
+  const double table = per_step("throughput"), hand = per_step("throughput_hand"), rate = per_step("throughput_rate"),
+               hand_rate = per_step("throughput_hand_rate"), one = per_step("throughput_w1");
   char line[400];
   if (table > 0 && hand > 0) {
     std::snprintf(line, sizeof line,
                   "\nthroughput/spring/explicit_euler (%d trajectories in packs of %d through the kernel table): %.3f ns per "
-                  "trajectory-step; hand-written interleaved baseline %.3f; throughput steplab/baseline %.2f\n",
-                  throughput_work.first, best_width(), table, hand, hand / table);
+                  "trajectory-step; the same runs interleaved by hand %.3f; steplab/hand-written %.2f\n",
+                  throughput_work.first, best_width(), table, hand, table / hand);
     out += line;
   }
   if (one > 0 && table > 0) {
-    std::snprintf(line, sizeof line, "one run at a time: %.3f ns per trajectory-step; packs/one at a time %.2fx\n", one, one / table);
+    std::snprintf(line, sizeof line, "one run at a time: %.3f ns per trajectory-step; packs/one at a time %.2f\n", one, table / one);
     out += line;
   }
   if (rate > 0 && hand_rate > 0) {
     std::snprintf(line, sizeof line,
-                  "with the energy-rate fit of study stability: %.3f ns per trajectory-step; baseline with the same fit %.3f; "
-                  "throughput steplab/baseline %.2f\n",
-                  rate, hand_rate, hand_rate / rate);
+                  "with the energy-rate fit of study stability: %.3f ns per trajectory-step; hand-written with the same fit "
+                  "%.3f; steplab/hand-written %.2f\n",
+                  rate, hand_rate, rate / hand_rate);
     out += line;
   }
   return out;
@@ -351,7 +372,7 @@ int main(int argc, char** argv) {
   }
   argc = kept;
   register_steplab();
-  register_baselines();
+  register_hand_written();
   register_odeint_all();
   throughput_work = register_throughput();
   register_peers();
@@ -368,6 +389,8 @@ int main(int argc, char** argv) {
   benchmark::AddCustomContext("compiler", "GCC " __VERSION__);
   benchmark::AddCustomContext("cxx_flags", STEPLAB_BENCH_CXX_FLAGS);
   benchmark::AddCustomContext("steplab_version", STEPLAB_BENCH_VERSION);
+  benchmark::AddCustomContext("cpu_model", cpu_model());
+  benchmark::AddCustomContext("load_at_start", std::to_string(load_average()));
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
 #pragma GCC diagnostic push
@@ -380,8 +403,10 @@ int main(int argc, char** argv) {
 #pragma GCC diagnostic pop
   benchmark::Shutdown();
   const std::string table = ratio_table(ns_per_step) + "\n" + peer_ratio_lines(ns_per_step);
-  if (format == "console") {  // json and csv on stdout stay machine-readable
-    std::printf("\nTime per step, median of the repetitions (ratios < 1: steplab is faster)\n\n%s", table.c_str());
+  const std::string rule = "Time per step, the median of the repetitions; every ratio is steplab's time over the other's (below 1: "
+                           "steplab is faster).\n\n";
+  if (format == "console" && !ns_per_step.empty()) {  // json and csv on stdout stay machine-readable
+    std::printf("\n%s%s", rule.c_str(), table.c_str());
     for (const auto& [name, ns] : ns_per_step) {
       if (name.rfind("finite_check/", 0) != 0 || name.size() < 3 || name.substr(name.size() - 3) != "/on") continue;
       const auto off = ns_per_step.find(name.substr(0, name.size() - 3) + "/off");
@@ -390,6 +415,8 @@ int main(int argc, char** argv) {
                     ns, off->second, 100 * (ns / off->second - 1));
     }
   }
-  if (!ratios_path.empty()) std::ofstream(ratios_path) << table;
+  if (!ratios_path.empty())
+    std::ofstream(ratios_path) << "# steplab bench: a step against Boost.Odeint and hand-written loops\n\n"
+                               << machine_line() << "\n\n" << rule << table;
   return 0;
 }

@@ -6,11 +6,11 @@
 //                                              CPU's best width, each kSteps steps, with the run
 //                                              loop's checks (non-finite state, energy ratio)
 //   throughput_w<N>/...                        the same at pack width N (1: one run at a time)
-//   throughput_baseline/spring/explicit_euler  the same update written by hand over the same
+//   throughput_hand/spring/explicit_euler  the same update written by hand over the same
 //                                              number of interleaved trajectories, nothing else
 //   throughput_rate/spring/explicit_euler      the first with the energy-rate fit, as in
 //                                              `study stability` (ln E and its slope, a log a step)
-//   throughput_baseline_rate/...               the baseline with the same fit written by hand
+//   throughput_hand_rate/...               the baseline with the same fit written by hand
 //
 // Each iteration runs every trajectory kSteps steps from the initial state, each with its own
 // step (no error against the exact solution: the runs of `study stability` do without it).
@@ -140,7 +140,7 @@ std::pair<int, long long> register_throughput() {
   register_steplab_throughput("throughput_rate", true, 0);
   for (int w : kPackWidths)
     if (cpu_has_width(w)) register_steplab_throughput("throughput_w" + std::to_string(w), false, w);
-  register_baseline("throughput_baseline", baseline_steps);
-  register_baseline("throughput_baseline_rate", baseline_rate_steps);
+  register_baseline("throughput_hand", baseline_steps);
+  register_baseline("throughput_hand_rate", baseline_rate_steps);
   return {static_cast<int>(kLanes), static_cast<long long>(kLanes) * kSteps};
 }

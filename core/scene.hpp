@@ -254,11 +254,12 @@ Jacobians<S::dim, typename X::Scalar> differenced_jacobians(const S& s, Tm t, co
   return j;
 }
 
+// Asked of the arguments' own types: a pack of runs' scene (Packable) takes packs, not doubles.
 template <class S, class Tm, class X, class V>
 [[gnu::always_inline]] inline decltype(auto) jacobians_at(const S& s, Tm t, const X& x, const V& v) {
-  if constexpr (!HasJacobians<S>) return differenced_jacobians(s, t, x, v);
-  else if constexpr (Driven<S>) return s.jacobians(t, x, v);
-  else return s.jacobians(x, v);
+  if constexpr (requires { s.jacobians(t, x, v); }) return s.jacobians(t, x, v);
+  else if constexpr (requires { s.jacobians(x, v); }) return s.jacobians(x, v);
+  else return differenced_jacobians(s, t, x, v);
 }
 // Written out, not through force_at: one inlined layer less keeps GCC inlining the Eigen
 // assignments of a step that calls it several times (RK4 on the spring).

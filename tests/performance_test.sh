@@ -8,7 +8,7 @@ set -euo pipefail
 bench=$1 steplab=$2 src=$3
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-"$bench" --benchmark_filter='^((step|odeint|baseline)/spring/rk4|rope_size/rk4/64|throughput_w1/spring/explicit_euler)$' \
+"$bench" --benchmark_filter='^((step|odeint|hand)/spring/rk4|rope_size/rk4/64|throughput_w1/spring/explicit_euler)$' \
   --benchmark_min_time=0.001 --benchmark_repetitions=3 --benchmark_out="$tmp/bench.json" --benchmark_out_format=json >/dev/null
 mkdir "$tmp/studies"
 "$steplab" study scaling --sizes 8,16 --methods rk4,cvode_adams_band --error 1e-4 --no-timing --json "$tmp/studies/scaling-rope.json" >/dev/null

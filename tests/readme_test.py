@@ -22,6 +22,7 @@ blocks = re.findall(r"^ *```[a-z]*\n(.*?)^ *```", readme, flags=re.S | re.M)
 ELSEWHERE = {
     "make report": "CI's clean clone (.ci/run) and the report tests (ReportFindings, ReportUpToDate)",
     "make test": "CI (.ci/run)",
+    "jupyter nbconvert": "notebook.explore (tests/notebook_test.sh), from a folder laid out as steplab's",
     "build/steplab report": "the report tests (a whole report takes 40 s; ReportFindings, ReportUpToDate)",
     "build/mysteplab": "readme.walkthrough (tests/readme_walkthrough_test.py), which builds mysteplab from an empty folder",
     "cmake": "readme.walkthrough and package.consumer (tests/readme_walkthrough_test.py, tests/consumer_test.sh)",
@@ -64,7 +65,7 @@ for block in blocks:
         text = line.strip()
         if not text or text.startswith(("#", "//", "$", "t,", "0,")) or not re.match(r"[a-z_]", text):
             continue
-        if text.startswith(("make ", "build/", "cmake", "find_package", "target_link", "steplab_add", "project(")):
+        if text.startswith(("make ", "build/", "cmake", "find_package", "target_link", "steplab_add", "project(", "jupyter")):
             key = max((k for k in ELSEWHERE if text.startswith(k)), key=len, default=None)
             if key is None:
                 failures.append(f"a command the README shows that no test runs: {text}")

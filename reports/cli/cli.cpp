@@ -17,6 +17,7 @@
 #include "analysis/kernel.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/cli/parts.hpp"
+#include "reports/data/schemas.hpp"
 #include "reports/data/study_output.hpp"
 #include "analysis/parallel.hpp"
 #include "analysis/local_error.hpp"
@@ -39,6 +40,9 @@ std::string legacy_testcases() {
     for (const std::string_view name : list) out += (out.empty() ? "" : ", ") + std::string(name);
   return out;
 }
+
+// The collision study's scenes: the rebound scene and the contact body (analysis/defaults.hpp).
+bool collision_scene(const SceneKernel& s) { return s.name == kReboundScene || s.name == kContactBodyScene; }
 
 // Its defaults: step 0.003, mass 0.1, stiffness 10, damping 0.01, rest length 1.
 struct LegacyArgs {
@@ -96,36 +100,63 @@ int legacy_command(const LegacyArgs& l, Context& ctx) {
 }
 
 // What each option takes, shown in --help instead of CLI11's TEXT (every value is read as text and
-// checked by reports/data/inputs.cpp, so that a bad one gets steplab's own message).
-std::string_view value_kind(std::string_view option) {
+// checked by reports/data/inputs.cpp, so that a bad one gets steplab's own message). A list is
+// "KIND,...". By command where one option takes different things in different commands.
+std::string_view value_kind(std::string_view command, std::string_view option) {
+  static constexpr std::pair<std::string_view, std::string_view> by_command[] = {
+      {"scaling --error", "NUMBER[%],..."}, {"scaling --stiffness", "NUMBER,..."}, {"convergence --error", "final|max|rms"},
+      {"scaling --sizes", "WHOLE,..."}};
+  for (const auto& [name, kind] : by_command)
+    if (name.substr(0, name.find(' ')) == command && name.substr(name.find(' ') + 1) == option) return kind;
   static constexpr std::pair<std::string_view, std::string_view> kinds[] = {
       {"--samples", "WHOLE"},         {"--points", "WHOLE"},          {"--threads", "WHOLE"},
-      {"--lanes", "auto|WHOLE"},      {"--shard", "i/N"},
-      {"--map-dt-points", "WHOLE"},   {"--map-damping-points", "WHOLE"},
+      {"--lanes", "auto|1|2|4|8"},    {"--shard", "i/N"},             {"--frames", "WHOLE"},
+      {"--max-steps", "WHOLE"},       {"--map-dt-points", "WHOLE"},   {"--map-damping-points", "WHOLE"},
       {"--methods", "NAME,..."},      {"--dts", "NUMBER,..."},        {"--threshold-dampings", "NUMBER,..."},
-      {"--dampings", "NUMBER,..."},   {"--method", "NAME"},           {"--scene", "NAME"},
-      {"--error", "NAME"},            {"--testcase", "NAME"},         {"--json", "FILE"},
+      {"--dampings", "NUMBER,..."},   {"--stiffnesses", "NUMBER,..."}, {"--method", "NAME"},
+      {"--scene", "NAME"},            {"--testcase", "NAME"},         {"--json", "FILE"},
       {"--config", "FILE"},           {"--out", "FOLDER"},            {"--scenes", "NAME,..."},
-      {"--sweep", "NAME=NUMBER,..."},
-      {"--sections", "NAME,..."}};
+      {"--sweep", "NAME=NUMBER,..."}, {"--sections", "NAME,..."}};
   for (const auto& [name, kind] : kinds)
     if (name == option) return kind;
   return "NUMBER";  // steps, times, ranges and every scene parameter
 }
 
+// Every option's help in one style: what it takes as its label, its default at the end of its
+// description, "(default X)", as the scene parameters' help has it.
 void name_value_kinds(CLI::App& app) {
-  for (CLI::Option* o : app.get_options())
-    if (o->get_expected_max() != 0 && !o->get_lnames().empty() && o != app.get_help_ptr())  // not flags, not --help
-      o->type_name(std::string(value_kind("--" + o->get_lnames()[0])));
+  for (CLI::Option* o : app.get_options()) {
+    if (o->get_expected_max() == 0 || o->get_lnames().empty() || o == app.get_help_ptr()) continue;  // flags, --help
+    o->type_name(std::string(value_kind(app.get_name(), "--" + o->get_lnames()[0])));
+    if (const std::string d = o->get_default_str(); !d.empty()) {
+      o->description(fmt::format("{} (default {})", o->get_description(), d));
+      o->default_str("");
+    }
+  }
   for (CLI::App* sub : app.get_subcommands({})) name_value_kinds(*sub);
 }
 
-// Progress of a study on stderr, only when stderr is a terminal and the study has run for a
-// second: "steplab: 1234/4096 runs".
+// "1234/4096 runs, 12 s, about 29 s left": a stage of a study (one parallel_for) as it goes.
+std::string progress_text(std::size_t done, std::size_t total, double seconds) {
+  const double left = seconds * static_cast<double>(total - done) / static_cast<double>(done);
+  return fmt::format("steplab: {}/{} runs, {:.0f} s, about {:.0f} s left", done, total, seconds, left);
+}
+
+// On a terminal: one line rewritten in place, once a stage has run for a second.
 void terminal_progress(std::size_t done, std::size_t total, double seconds) {
   if (seconds < 1) return;
-  std::fprintf(stderr, "\r\033[Ksteplab: %zu/%zu runs", done, total);
+  std::fprintf(stderr, "\r\033[K%s", progress_text(done, total, seconds).c_str());
   if (done == total) std::fputs("\r\033[K", stderr);
+}
+
+// Elsewhere (--progress, into a log): a line every 5 s of a stage, and its last one. Called under
+// parallel_for's lock, one stage at a time.
+void log_progress(std::size_t done, std::size_t total, double seconds) {
+  static double printed = 0;
+  if (done == 1) printed = 0;  // a new stage
+  if (seconds < 1 || (seconds - printed < 5 && done < total)) return;
+  printed = seconds;
+  std::fprintf(stderr, "%s\n", progress_text(done, total, seconds).c_str());
 }
 
 std::vector<std::string> names_of(const std::vector<CLI::App*>& apps) {
@@ -214,16 +245,16 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   run_cmd->add_option("--rtol", run.rtol, "dopri5: relative tolerance, 1e-13 .. 1 (default 1e-3, as SciPy's RK45)");
   run_cmd->add_option("--atol", run.atol, "dopri5: absolute tolerance, > 0 (default 1e-6)");
   run_cmd->add_option("--t-end", run.t_end, "simulated time; t_end / dt steps, rounded up")->capture_default_str();
-  run_cmd->add_option("--samples", run.samples, "at most this many rows, evenly decimated, last step kept")
-      ->capture_default_str();
-  run_cmd->add_option("--json", run.json, "write JSON (schema steplab.run/1) to this file instead of CSV");
+  run_cmd->add_option("--samples", run.samples, "at most this many rows, evenly decimated, last step kept (default 10001, "
+                                                 "fewer on a large scene: at most 10^6 numbers in all)");
+  run_cmd->add_option("--json", run.json, fmt::format("write JSON (schema {}) to this file instead of CSV", schema::run));
 
   CLI::App* study = app.add_subcommand("study", "a study over many runs; prints a table, --json writes its data");
   study->require_subcommand(1);
   ConvergenceArgs conv;
   CLI::App* conv_cmd = study->add_subcommand("convergence", "errors against the exact solution over a dt sweep, fitted orders");
   conv.scene.add_to(conv_cmd);
-  conv_cmd->add_option("--methods", conv.methods, "comma-separated methods (default: every numerical method)");
+  conv_cmd->add_option("--methods", conv.methods, "comma-separated methods (default every numerical method)");
   conv_cmd->add_option("--dt-max", conv.dt_max, "largest step")->capture_default_str();
   conv_cmd->add_option("--dt-min", conv.dt_min, "smallest step")->capture_default_str();
   conv_cmd->add_option("--points", conv.points, "steps in the geometric sweep (>= 3)")->capture_default_str();
@@ -239,19 +270,21 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   conv_cmd->add_flag("--timing", conv.timing, "also time every run (work-precision; not reproducible byte for byte)");
   conv_cmd->add_option("--sweep", conv.sweep, "NAME=V1,V2,...: the study at each value of the scene's parameter NAME "
                       "(increasing), each method's order read against it (e.g. --scene target --sweep stiffness=1,1e2,1e4)");
-  conv_cmd->add_option("--json", conv.json, "write JSON (schema steplab.convergence/2; with --sweep steplab.convergence_sweep/1) to this file");
+  conv_cmd->add_option("--json", conv.json, fmt::format("write JSON (schema {}; with --sweep {}) to this file", schema::convergence,
+                                                        schema::convergence_sweep));
 
   StabilityArgs damp, stab;
   CLI::App* damp_cmd = study->add_subcommand("damping", "spring: energy growth rate measured and predicted over damping and dt");
   add_stability_options(damp_cmd, damp, true, false);
-  CLI::App* stab_cmd = study->add_subcommand("stability", "stability thresholds dt* predicted and measured: the spring (and a (dt, damping) map) or the rope of N masses");
+  CLI::App* stab_cmd = study->add_subcommand("stability", "stability thresholds dt* predicted and measured: the spring (and a (dt, damping) map) "
+                                                          "or any scene that declares its modes (the rope of N masses)");
   add_stability_options(stab_cmd, stab, false, true);
 
   WorkPrecisionArgs wp;
   CLI::App* wp_cmd = study->add_subcommand("work-precision", "cost against error on the spring and the stiff chain; "
                                                              "cheapest method per error level; stiffness crossover");
   wp_cmd->add_option("--methods", wp.methods, "comma-separated methods and adaptive solvers (dopri5, odeint_dopri5, cvode_adams_dense, "
-                                                "cvode_bdf_dense, cvode_bdf_max2_dense; default: every numerical method, and every adaptive solver where the list names none)");
+                                                "cvode_bdf_dense, cvode_bdf_max2_dense; default every numerical method, and every adaptive solver where the list names none)");
   wp_cmd->add_option("--points", wp.points, "fixed-step methods: steps in each scene's dt sweep, 3 .. 100")->capture_default_str();
   wp_cmd->add_option("--stiffnesses", wp.stiffnesses, "comma-separated k2 of the stiffness sweep (the chain's k1 is 5)")
       ->capture_default_str();
@@ -260,17 +293,17 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   add_lanes_option(wp_cmd, wp.lanes);
   add_shard_option(wp_cmd, wp.shard);
   wp_cmd->add_flag("--no-timing", wp.no_timing, "cost by force and Jacobian evaluations only (reproducible byte for byte)");
-  wp_cmd->add_option("--json", wp.json, "write JSON (schema steplab.work_precision/1) to this file");
+  wp_cmd->add_option("--json", wp.json, fmt::format("write JSON (schema {}) to this file", schema::work_precision));
   CollisionArgs coll;
   CLI::App* coll_cmd = study->add_subcommand("collision", "the bounce and the falling triangle on the penalty ground");
-  coll.scene.add_to(coll_cmd, false);
-  coll_cmd->add_option("--methods", coll.methods, "comma-separated methods (default: every numerical method)");
+  coll.scene.add_to(coll_cmd, collision_scene, false);
+  coll_cmd->add_option("--methods", coll.methods, "comma-separated methods (default every numerical method)");
   coll_cmd->add_option("--dts", coll.dts, "steps for the bounce")->capture_default_str();
   coll_cmd->add_option("--t-end", coll.t_end, "simulated time")->capture_default_str();
   coll_cmd->add_option("--triangle-dt", coll.triangle_dt, "step for the falling triangle")->capture_default_str();
   coll_cmd->add_option("--threads", coll.threads, "worker threads, 0 = all cores")->capture_default_str();
   add_shard_option(coll_cmd, coll.shard);
-  coll_cmd->add_option("--json", coll.json, "write JSON (schema steplab.collision/1) to this file");
+  coll_cmd->add_option("--json", coll.json, fmt::format("write JSON (schema {}) to this file", schema::collision));
 
   ScalingArgs scaling;
   CLI::App* scaling_cmd = add_scaling_command(study, scaling);
@@ -279,9 +312,9 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   CLI::App* rep_cmd = app.add_subcommand("report", "run every study and write report.md, report.pdf, figures/ and data/ into one folder");
   rep_cmd->add_option("--out", rep.out, "output folder")->capture_default_str();
   rep_cmd->add_option("--config", rep.config, "JSON file overriding any study parameter (see --print-config)");
-  CLI::Option* rep_methods = rep_cmd->add_option("--methods", rep.methods, "comma-separated methods the report covers (default: every one, analytic included)");
-  CLI::Option* rep_scenes = rep_cmd->add_option("--scenes", rep.scenes, "comma-separated scenes the report covers (default: the report's own; a section that needs another is left out with one line): " + scene_list());
-  CLI::Option* rep_sections = rep_cmd->add_option("--sections", rep.sections, "comma-separated sections, in any order (default: the full report's): " + fmt::format("{}", fmt::join(section_names(), ", ")));
+  CLI::Option* rep_methods = rep_cmd->add_option("--methods", rep.methods, "comma-separated methods the report covers (default every one, analytic included)");
+  CLI::Option* rep_scenes = rep_cmd->add_option("--scenes", rep.scenes, "comma-separated scenes the report covers (default the report's own; a section that needs another is left out with one line): " + scene_list());
+  CLI::Option* rep_sections = rep_cmd->add_option("--sections", rep.sections, "comma-separated sections, in any order (default the full report's): " + fmt::format("{}", fmt::join(section_names(), ", ")));
   rep_cmd->add_flag("--sheet", rep.sheet, "the exercise's hand-in: the sheet's four methods and the analytic solution on the cannon ball and the spring, in a few pages (--config, --methods, --scenes and --sections apply over it)");
   rep_cmd->add_flag("--force", rep.force, "redo the report even if it is up to date");
   rep_cmd->add_flag("--print-config", rep.print_config, "print the configuration (defaults, or --config applied) and exit");
@@ -295,6 +328,10 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   MergeArgs merge;
   add_merge_command(app, merge);
 
+  bool progress = false;
+  for (CLI::App* cmd : {conv_cmd, damp_cmd, stab_cmd, wp_cmd, coll_cmd, scaling_cmd, rep_cmd, check_cmd})
+    cmd->add_flag("--progress", progress, "progress on stderr also where it is not a terminal (a log): runs done, time spent and left");
+
   name_value_kinds(app);
   ctx.invocation = args;
 
@@ -304,6 +341,7 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
     check_command_words(app, args);
     app.parse(static_cast<int>(cargv.size()), cargv.data());
     check_no_extras(app);
+    if (progress) ctx.progress = log_progress;
     if (run_cmd->parsed()) return run_command(run, ctx);
     if (conv_cmd->parsed()) return convergence_command(conv, ctx);
     if (damp_cmd->parsed()) return damping_command(damp, ctx);

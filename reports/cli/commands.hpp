@@ -40,7 +40,7 @@ struct RunArgs {
   std::string dt;  // empty: 0.01 (dopri5 refuses a --dt given)
   std::string rtol, atol;  // dopri5 only; empty: SciPy's defaults 1e-3 and 1e-6
   std::string t_end = "10";
-  std::string samples = "10001";
+  std::string samples;  // empty: default_samples (run_command.cpp)
   std::string json;  // write JSON here instead of CSV on stdout
 };
 

@@ -14,12 +14,13 @@
 #include "reports/cli/commands.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/data/output.hpp"
+#include "reports/data/schemas.hpp"
 
 namespace steplab {
 namespace {
 
 using Json = nlohmann::ordered_json;
-constexpr const char* kSchema = "steplab.part/1";
+constexpr std::string_view kSchema = schema::part;
 constexpr long long kMaxShards = 1'000'000;
 
 // The options that change how a study runs, not what it computes: left out of a part's command.

@@ -1,4 +1,5 @@
 // `steplab run`: one method on one scene; CSV (t, x..., v..., energy) on stdout or JSON to a file.
+#include <algorithm>
 #include <cstdio>
 
 #include <fmt/format.h>
@@ -47,6 +48,18 @@ bool Context::stop_after_validation(const std::string& output_path) const {
 
 namespace {
 
+// --samples: as given, or 10001 rows where they hold at most 10^6 numbers (t, x, v and the energy
+// each), fewer on a large scene (a rope of 1000 masses: 499 rows, 10 MB of CSV, where 10001 were
+// 390 MB). A row count given that makes more than 100 MB of CSV is said on stderr.
+long long samples_for(const std::string& given, const SceneKernel& scene, Params params) {
+  const long long columns = 2 * static_cast<long long>(scene.initial(params).x.size()) + 2;
+  if (given.empty()) return std::clamp(1'000'000 / columns, 101LL, 10'001LL);
+  const long long rows = parse_count("--samples", given, 2, 100'000'000);
+  if (const double mb = 20e-6 * static_cast<double>(rows * columns); mb > 100)
+    fmt::print(stderr, "steplab: up to {} rows of {} columns: about {:.0f} MB of CSV (--samples sets fewer)\n", rows, columns, mb);
+  return rows;
+}
+
 // --rtol and --atol (empty: the defaults), checked.
 Tolerance read_tolerance(const std::string& rtol, const std::string& atol) {
   Tolerance t;
@@ -74,7 +87,7 @@ int run_dopri5(RunArgs& a, const Context& ctx) {
   AdaptiveSpec spec;
   spec.tol = read_tolerance(a.rtol, a.atol);
   spec.t_end = parse_number("--t-end", a.t_end, Bound::NonNegative);
-  spec.max_samples = parse_count("--samples", a.samples, 2, 100'000'000);
+  spec.max_samples = samples_for(a.samples, scene_kernel(scene), params);
   if (ctx.stop_after_validation(a.json)) return 0;
   const SceneKernel& s = scene_kernel(scene);
   const AnyAdaptiveResult r = s.dopri5(params, spec);
@@ -109,7 +122,7 @@ int run_command(RunArgs& a, Context& ctx) {
   spec.dt = a.dt.empty() ? 0.01 : parse_number("--dt", a.dt, Bound::Positive);
   const double t_end = parse_number("--t-end", a.t_end, Bound::NonNegative);
   spec.steps = step_count(t_end, spec.dt);
-  spec.max_samples = parse_count("--samples", a.samples, 2, 100'000'000);
+  spec.max_samples = samples_for(a.samples, scene_kernel(scene), params);
   if (ctx.stop_after_validation(a.json)) return 0;
   // A step that does not divide the time: the run takes whole steps, so it ends after t_end.
   if (const double end = static_cast<double>(spec.steps) * spec.dt; std::abs(end - t_end) > 1e-9 * std::max(t_end, spec.dt))

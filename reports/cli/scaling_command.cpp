@@ -1,6 +1,6 @@
 // `study scaling`: the rope of N masses or the soft body of n x n masses refined and stiffened,
 // every method and the peers in each cell, at each target (analysis/scaling.hpp); a table per
-// (target, stiffness) and the map on stdout, --json the data (schema steplab.scaling/3).
+// (target, stiffness) and the map on stdout, --json the data (schema::scaling).
 #include <cmath>
 #include <cstdio>
 
@@ -15,6 +15,7 @@
 #include "reports/data/run_json.hpp"
 #include "reports/cli/parts.hpp"
 #include "reports/data/study_output.hpp"
+#include "reports/data/schemas.hpp"
 
 namespace steplab {
 
@@ -22,10 +23,10 @@ CLI::App* add_scaling_command(CLI::App* study, ScalingArgs& a) {
   CLI::App* cmd = study->add_subcommand("scaling", "rope of N masses or soft body of n x n: cost of a step and of a run at a "
                                                    "given error, largest stable step, against N; fitted exponents, crossover");
   a.scene.scene = std::string(kDefaultSizedScene);  // any scene that scales() (analysis/scaling.hpp)
-  a.scene.add_to(cmd);
+  a.scene.add_to(cmd, scales);
   cmd->add_option("--methods", a.methods, "comma-separated methods and adaptive solvers (dopri5, odeint_dopri5, cvode_adams_band, "
                                           "cvode_bdf_band, cvode_bdf_max2_band on the rope, cvode_adams_klu, cvode_bdf_klu, "
-                                          "cvode_bdf_max2_klu on the soft body; default: "
+                                          "cvode_bdf_max2_klu on the soft body; default "
                                           "every numerical method, and every adaptive solver where the list names none)");
   // The scene's stiffness option (--stiffness on the rope and the soft body) takes a list here: the map's axis.
   cmd->add_option("--sizes", a.sizes, "comma-separated sizes: the rope's numbers of masses (1 .. 100000), the soft body's "
@@ -36,20 +37,20 @@ CLI::App* add_scaling_command(CLI::App* study, ScalingArgs& a) {
   cmd->add_option("--t-end", a.t_end, "simulated time")->capture_default_str();
   cmd->add_option("--frames", a.frames, "output frames up to t_end where the error is measured (1 .. 10000); a fixed step "
                                         "divides the frame interval")->capture_default_str();
-  cmd->add_option("--max-steps", a.max_steps, "a search tries no step that needs more steps than this (default: 2000000 "
+  cmd->add_option("--max-steps", a.max_steps, "a search tries no step that needs more steps than this (default 2000000 "
                                               "on the rope, 200000 on the soft body, whose implicit steps cost a sparse solve each)");
   cmd->add_option("--threads", a.threads, "worker threads for the searches (timings run one at a time)")->capture_default_str();
   cmd->add_flag("--no-timing", a.no_timing, "cost by force and Jacobian evaluations only (reproducible byte for byte)");
   cmd->add_flag("--no-peers", a.no_peers, "steplab's fixed-step methods only (no dopri5, CVODE, Boost.Odeint)");
   add_shard_option(cmd, a.shard);
-  cmd->add_option("--json", a.json, "write JSON (schema steplab.scaling/2) to this file");
+  cmd->add_option("--json", a.json, fmt::format("write JSON (schema {}) to this file", schema::scaling));
   return cmd;
 }
 
 Json scaling_json(const ScalingResult& r) {
   const ScalingConfig& c = r.config;
   Json j;
-  j["schema"] = "steplab.scaling/3";
+  j["schema"] = schema::scaling;
   const std::size_t scene = scene_index(c.scene);
   const SceneKernel& s = scene_kernel(scene);
   const std::string size_key = param_key(s.params[s.size_param]);  // masses (rope), grid (soft body)
@@ -98,8 +99,8 @@ Json scaling_json(const ScalingResult& r) {
     for (const ScalingCell& m : b.cells)
       map.push_back({{size_key, m.n}, {"masses", m.masses}, {"cheapest", name(m.cheapest)}, {"next", name(m.next)},
                      {"margin", num(m.margin)}, {"best_implicit", name(m.best_implicit)}, {"best_explicit", name(m.best_explicit)},
-                     {"best_cvode", name(m.best_cvode)}, {"implicit_over_explicit", num(m.over_explicit)},
-                     {"implicit_over_cvode", num(m.over_cvode)}, {"motion", m.motion}});
+                     {"best_cvode", name(m.best_cvode)}, {"explicit_over_implicit", num(m.explicit_over_implicit)},
+                     {"cvode_over_implicit", num(m.cvode_over_implicit)}, {"motion", m.motion}});
     blocks.push_back({{"target", b.target}, {"error", b.error}, {"stiffness", num(b.stiffness)},
                       {"crossover", b.crossover == 0 ? Json(nullptr)
                                                      : Json({{size_key, b.crossover}, {"masses", scaling_masses(c, b.crossover)},
@@ -189,7 +190,7 @@ std::string scaling_map_table(const ScalingResult& r) {
       for (const ScalingCell& m : b.cells)
         out += fmt::format("{:>10} {:>7}  {:<32} {:<26} {:>8} {:>8} {:>10}\n", std::isnan(b.stiffness) ? "-" : fmt::format("{:g}", b.stiffness),
                            m.masses, m.cheapest.empty() ? "none reached" : fmt::format("{} x {}", m.cheapest, ratio_text(m.margin)),
-                           m.best_implicit.empty() ? "-" : m.best_implicit, ratio_text(m.over_explicit), ratio_text(m.over_cvode),
+                           m.best_implicit.empty() ? "-" : m.best_implicit, ratio_text(m.explicit_over_implicit), ratio_text(m.cvode_over_implicit),
                            fmt::format("{:.2e}{}", m.motion, m.motion < b.error ? "!" : ""));
     }
   }

@@ -17,9 +17,10 @@ std::vector<std::string> all_scene_parameters() {
   return out;
 }
 
-std::string scene_parameters_help() {
+std::string scene_parameters_help(bool (*accepts)(const SceneKernel&)) {
   std::string out = "Scene parameters (each a NUMBER), by scene:\n";
   for (std::size_t s = 0; s < scene_count(); ++s) {
+    if (accepts && !accepts(scene_kernel(s))) continue;
     out += fmt::format("  {}:\n", scene_name(s));
     for (const ParamSpec& p : scene_kernel(s).params)
       out += fmt::format("    {:<28}{} (default {})\n", fmt::format("--{} NUMBER", p.name), p.help, p.default_value);
@@ -27,18 +28,20 @@ std::string scene_parameters_help() {
   return out;
 }
 
-void SceneArgs::add_to(CLI::App* a, bool with_scene_option) {
+void SceneArgs::add_to(CLI::App* a, bool (*accepts)(const SceneKernel&), bool with_scene_option) {
   app = a;
+  const auto every = [](const SceneKernel&) { return true; };
+  if (!accepts) accepts = every;
   if (with_scene_option) {
     std::string old_names;  // " (spring1d is the old name of spring)"
     for (std::size_t i = 0; i < scene_count(); ++i)
-      if (const SceneKernel& k = scene_kernel(i); !k.old_name.empty())
+      if (const SceneKernel& k = scene_kernel(i); accepts(k) && !k.old_name.empty())
         old_names += fmt::format(" ({} is the old name of {})", k.old_name, k.name);
-    a->add_option("--scene", scene, "scene: " + scene_list() + old_names)->capture_default_str();
+    a->add_option("--scene", scene, "scene: " + scene_list(accepts) + old_names)->capture_default_str();
   }
   // Listed once, by scene, in the footer; an empty group keeps them out of the merged option list.
   for (const std::string& name : all_scene_parameters()) a->add_option("--" + name, text[name])->group("");
-  a->footer(scene_parameters_help());
+  a->footer(scene_parameters_help(accepts));
 }
 
 bool SceneArgs::given(std::string_view name) const {

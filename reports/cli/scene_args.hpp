@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include "analysis/defaults.hpp"
+#include "analysis/kernel.hpp"
 
 namespace steplab {
 
@@ -20,8 +21,9 @@ struct SceneArgs {
   std::map<std::string, double, std::less<>> old_defaults;  // the old framework's defaults, in place of the scene's
   CLI::App* app = nullptr;
 
-  // Adds --scene, one option per parameter name of any scene, and their help by scene.
-  void add_to(CLI::App* a, bool with_scene_option = true);
+  // Adds --scene (unless the command has its scenes fixed), one option per parameter name of any
+  // scene, and their help by scene: of the scenes the command `accepts` (null: every one).
+  void add_to(CLI::App* a, bool (*accepts)(const SceneKernel&) = nullptr, bool with_scene_option = true);
   void set(std::string_view name, std::string value) { text[std::string(name)] = std::move(value); }
   bool given(std::string_view name) const;
 
@@ -33,7 +35,8 @@ struct SceneArgs {
 
 // Every parameter name that some scene has, in first-seen order.
 std::vector<std::string> all_scene_parameters();
-// The scenes' parameters for --help, grouped by scene, each with its meaning and default.
-std::string scene_parameters_help();
+// The parameters of the scenes `accepts` takes (null: every one) for --help, grouped by scene,
+// each with its meaning and default.
+std::string scene_parameters_help(bool (*accepts)(const SceneKernel&) = nullptr);
 
 }  // namespace steplab

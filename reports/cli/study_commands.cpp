@@ -13,6 +13,7 @@
 #include "reports/data/inputs.hpp"
 #include "reports/data/output.hpp"
 #include "reports/cli/parts.hpp"
+#include "reports/data/schemas.hpp"
 #include "reports/data/study_output.hpp"
 
 namespace steplab {
@@ -92,8 +93,9 @@ int resolve_lanes(const std::string& text) {
 void add_lanes_option(CLI::App* app, std::string& lanes) {
   lanes = "auto";
   app->add_option("--lanes", lanes,
-                  "runs of a method stepped together in SIMD lanes, where its kernel is packed (README, Speed): auto "
-                  "(4 with AVX2, else 2), 2 (SSE2), 4 (AVX2), 8 (AVX-512), or 1: one at a time. The output is the same")
+                  "runs of a method stepped together in SIMD lanes, where its kernel is packed (docs/design.md, \"Why a "
+                  "step is fast\"): auto (4 with AVX2, else 2), 2 (SSE2), 4 (AVX2), 8 (AVX-512), or 1: one at a time. "
+                  "The output is the same")
       ->capture_default_str();
 }
 
@@ -188,12 +190,22 @@ StabilityConfig stability_config(StabilityArgs& a, Context& ctx) {
 
 }  // namespace
 
+namespace {
+
+// The scenes each stability command takes: damping the spring's alone; stability the spring's
+// (thresholds over dampings, the map) or a scene's that declares its modes.
+bool spring_scene(const SceneKernel& s) { return runs_spring_study(s); }
+bool stability_scene(const SceneKernel& s) { return runs_spring_study(s) || s.modes != nullptr; }
+
+}  // namespace
+
 void add_stability_options(CLI::App* app, StabilityArgs& a, bool sweep, bool map) {
-  a.scene.add_to(app, map);  // study stability: the spring or the rope
-  app->add_option("--methods", a.methods, "comma-separated methods (default: every numerical method)");
+  // study stability: the spring or a scene with modes; study damping: the spring
+  a.scene.add_to(app, map ? stability_scene : spring_scene, map);
+  app->add_option("--methods", a.methods, "comma-separated methods (default every numerical method)");
   if (sweep) {
     app->add_option("--dts", a.dts, "comma-separated steps of the sweep")->capture_default_str();
-    app->add_option("--dampings", a.dampings, "comma-separated dampings (default: 0 to twice critical in 21 steps, and 0.1)");
+    app->add_option("--dampings", a.dampings, "comma-separated dampings (default 0 to twice critical in 21 steps, and 0.1)");
   } else {
     app->add_option("--threshold-dampings", a.threshold_dampings, "dampings at which to find dt*")->capture_default_str();
   }
@@ -206,7 +218,9 @@ void add_stability_options(CLI::App* app, StabilityArgs& a, bool sweep, bool map
   app->add_option("--threads", a.threads, "worker threads, 0 = all cores")->capture_default_str();
   add_lanes_option(app, a.lanes);
   add_shard_option(app, a.shard);
-  app->add_option("--json", a.json, "write JSON (schema steplab.stability/1) to this file");
+  app->add_option("--json", a.json, map ? fmt::format("write JSON (schema {} on the spring, {} on a scene with modes) to this "
+                                                      "file", schema::stability, schema::mode_stability)
+                                        : fmt::format("write JSON (schema {}) to this file", schema::stability));
 }
 
 int damping_command(StabilityArgs& a, Context& ctx) {

@@ -14,6 +14,7 @@
 #include "reports/cli/parts.hpp"
 #include "reports/data/run_json.hpp"
 #include "reports/data/study_output.hpp"
+#include "reports/data/schemas.hpp"
 
 namespace steplab {
 namespace {
@@ -28,7 +29,7 @@ Json point_counts(const SceneWork& w, std::ptrdiff_t i) { return i < 0 ? Json(nu
 Json work_precision_json(const WorkPrecisionResult& r) {
   const WorkPrecisionConfig& c = r.config;
   Json j;
-  j["schema"] = "steplab.work_precision/1";
+  j["schema"] = schema::work_precision;
   j["params"] = {{"t_end", c.t_end},          {"sweep_t_end", c.sweep_t_end},   {"points", c.points},
                  {"tolerances", c.tolerances}, {"error_levels", c.error_levels}, {"stiffnesses", c.stiffnesses},
                  {"crossover_error", c.crossover_error}, {"timing", c.timing}, {"adaptive_solvers", c.adaptive}};

@@ -4,12 +4,13 @@
 
 #include "analysis/kernel.hpp"
 #include "reports/data/study_output.hpp"
+#include "reports/data/schemas.hpp"
 
 namespace steplab {
 
 Json mode_stability_json(const ModeStabilityConfig& c, const std::vector<ModeThresholdRow>& rows) {
   Json j;
-  j["schema"] = "steplab.rope_stability/1";
+  j["schema"] = schema::mode_stability;
   j["scene"] = scene_name(c.scene);
   Json p = scene_params_json(c.scene, c.params);
   p["run_steps"] = c.steps;

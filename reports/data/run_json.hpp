@@ -9,6 +9,7 @@
 
 #include "analysis/counts.hpp"
 #include "core/simulate.hpp"
+#include "reports/data/schemas.hpp"
 
 namespace steplab {
 
@@ -44,7 +45,7 @@ inline Json counts_json(const Counts& n) {
 template <int D>
 Json run_json(std::string_view scene, std::string_view method, Json params, const RunResult<D>& r) {
   Json j;
-  j["schema"] = "steplab.run/1";
+  j["schema"] = schema::run;
   j["scene"] = scene;
   j["method"] = method;
   j["params"] = std::move(params);

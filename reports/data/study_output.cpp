@@ -8,6 +8,7 @@
 #include "analysis/peers.hpp"
 #include "core/scenes/spring.hpp"
 #include "reports/data/run_json.hpp"
+#include "reports/data/schemas.hpp"
 
 namespace steplab {
 namespace {
@@ -31,7 +32,7 @@ Json peer_builds_json() {
 Json convergence_json(const ConvergenceResult& r) {
   const ConvergenceConfig& c = r.config;
   Json j;
-  j["schema"] = "steplab.convergence/2";
+  j["schema"] = schema::convergence;
   j["scene"] = scene_name(c.scene);
   Json p = scene_params_json(c.scene, c.params);
   p["t_end"] = c.t_end;
@@ -193,16 +194,23 @@ std::string local_error_tables(const LocalErrorResult& r) {
 namespace steplab {
 namespace {
 
-// JSON has no infinity: an unbounded threshold is the string "inf".
+// Where a method is stable again beyond dt*: a number; "never" where it is not; null where dt* is
+// unbounded (nothing lies beyond it).
+Json again_json(double again, double dt) {
+  if (std::isinf(dt)) return nullptr;
+  return std::isinf(again) ? Json("never") : Json(again);
+}
+
 }  // namespace
 
-Json threshold_json(double x) { return std::isinf(x) ? Json("inf") : Json(x); }
+// JSON has no infinity: a threshold of every step is the string "unbounded".
+Json threshold_json(double x) { return std::isinf(x) ? Json("unbounded") : Json(x); }
 std::string threshold_text(double x) { return std::isinf(x) ? "inf" : fmt::format("{:.6g}", x); }
 
 Json stability_json(const std::vector<double>& params, const std::vector<ThresholdRow>& thresholds,
                     const std::vector<SweepRow>& sweep, const StabilityMap* map) {
   Json j;
-  j["schema"] = "steplab.stability/1";
+  j["schema"] = schema::stability;
   j["scene"] = Spring::name;  // the study of the damped spring's linear regime (analysis/stability.hpp)
   Json p = scene_params_json(scene_index(Spring::name), params);
   p["stable_rate_tolerance"] = kStableRate;
@@ -212,8 +220,8 @@ Json stability_json(const std::vector<double>& params, const std::vector<Thresho
   for (const ThresholdRow& r : thresholds)
     t.push_back({{"method", method_info(r.method).name}, {"damping", r.damping}, {"dt_theory", threshold_json(r.dt_theory)},
                  {"dt_measured", threshold_json(r.dt_measured)},
-                 {"stable_again_theory", threshold_json(r.again_theory)},
-                 {"stable_again_measured", threshold_json(r.again_measured)}});
+                 {"stable_again_theory", again_json(r.again_theory, r.dt_theory)},
+                 {"stable_again_measured", again_json(r.again_measured, r.dt_measured)}});
   j["thresholds"] = std::move(t);
   Json s = Json::array();
   for (const SweepRow& r : sweep)
@@ -340,7 +348,7 @@ Json collision_run_json(const CollisionRun& run, bool bounce) {
 Json collision_json(const CollisionResult& r) {
   const CollisionConfig& c = r.config;
   Json j;
-  j["schema"] = "steplab.collision/1";
+  j["schema"] = schema::collision;
   j["params"] = {{scene_name(c.rebound_scene), scene_params_json(c.rebound_scene, c.rebound_params)},
                  {scene_name(c.body_scene), scene_params_json(c.body_scene, c.body_params)},
                  {"t_end", c.t_end},

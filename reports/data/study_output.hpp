@@ -39,14 +39,14 @@ std::string local_error_tables(const LocalErrorResult& r);
 #include "analysis/stability.hpp"
 
 namespace steplab {
-// schema steplab.stability/1; a study fills the parts it computed, the others are empty.
+// schema::stability; a study fills the parts it computed, the others are empty.
 Json stability_json(const std::vector<double>& params, const std::vector<ThresholdRow>& thresholds,
                     const std::vector<SweepRow>& sweep, const StabilityMap* map);
 std::string thresholds_table(const std::vector<ThresholdRow>& rows);
 std::string sweep_table(const std::vector<SweepRow>& rows);
 std::string map_summary(const StabilityMap& map);
 std::string amplitude_table_text(const AmplitudeTable& t);
-// A threshold dt*: a number, or "inf" (stable at every step).
+// A threshold dt*: a number, or "unbounded" (stable at every step).
 Json threshold_json(double x);
 std::string threshold_text(double x);
 }  // namespace steplab
@@ -54,8 +54,7 @@ std::string threshold_text(double x);
 #include "analysis/mode_stability.hpp"
 
 namespace steplab {
-// `study stability` on a scene with modes (reports/data/mode_output.cpp): schema
-// steplab.rope_stability/1 (named after the first scene it served; the same for every scene).
+// `study stability` on a scene with modes (reports/data/mode_output.cpp): schema::mode_stability.
 Json mode_stability_json(const ModeStabilityConfig& c, const std::vector<ModeThresholdRow>& rows);
 std::string mode_thresholds_table(std::string_view scene, const std::vector<ModeThresholdRow>& rows);
 }  // namespace steplab

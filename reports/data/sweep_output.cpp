@@ -5,6 +5,7 @@
 
 #include "analysis/kernel.hpp"
 #include "reports/data/study_output.hpp"
+#include "reports/data/schemas.hpp"
 
 namespace steplab {
 namespace {
@@ -66,7 +67,7 @@ std::string limit_word(const LimitCheck& c, bool has_theory) {
 Json order_reduction_json(const OrderReduction& r) {
   const ConvergenceSweep& s = r.sweep;
   Json j;
-  j["schema"] = "steplab.convergence_sweep/1";
+  j["schema"] = schema::convergence_sweep;
   j["scene"] = scene_name(s.studies.front().config.scene);
   j["param"] = param_name(s);
   j["values"] = s.values;

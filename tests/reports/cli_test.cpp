@@ -216,3 +216,53 @@ TEST(Cli, CheckPrintsOneLinePerClaimAndExitsZero) {
 
 }  // namespace
 }  // namespace steplab
+
+namespace steplab {
+namespace {
+
+// Each command's --help names the schema of the JSON it writes: read back from a file it wrote.
+TEST(CliHelp, NamesTheSchemaEachCommandWrites) {
+  struct Case {
+    const char* command;  // the --help of the first words
+    const char* args;     // a small run of it
+  };
+  const Case cases[] = {
+      {"run", "run --t-end 0.1"},
+      {"study convergence", "study convergence --points 3 --dt-min 0.01"},
+      {"study convergence", "study convergence --scene target --sweep stiffness=1,10 --points 3 --dt-min 0.01 --methods rk4"},
+      {"study damping", "study damping --methods rk4 --dts 0.1"},
+      {"study stability", "study stability --methods rk4 --map-dt-points 2 --map-damping-points 2"},
+      {"study stability", "study stability --scene rope --masses 4 --methods rk4"},
+      {"study collision", "study collision --methods rk4 --t-end 0.5 --dts 0.01"},
+      {"study work-precision", "study work-precision --methods rk4 --points 3 --stiffnesses 5 --no-timing"},
+      {"study scaling", "study scaling --sizes 2,4 --methods rk4 --no-peers --no-timing --error 1e-2"},
+  };
+  for (const Case& c : cases) {
+    const Result help = run_steplab(std::string(c.command) + " --help");
+    ASSERT_EQ(help.status, 0) << c.command;
+    const std::size_t at = help.out.find("--json FILE");
+    ASSERT_NE(at, std::string::npos) << c.command;
+    const std::string json_line = help.out.substr(at, help.out.find('\n', at) - at);
+    TempDir dir;
+    const Result r = run_steplab(std::string(c.args) + " --json " + dir.path("out.json"));
+    ASSERT_EQ(r.status, 0) << c.args << ": " << r.err;
+    const std::string schema = nlohmann::json::parse(std::ifstream(dir.path("out.json")))["schema"];
+    EXPECT_NE(json_line.find(" " + schema), std::string::npos) << c.args << " wrote " << schema << "; its help says: " << json_line;
+  }
+}
+
+// The options of a study list only the scenes it takes, and a list's label says it is one.
+TEST(CliHelp, ListsWhatEachCommandTakes) {
+  const Result stability = run_steplab("study stability --help");
+  EXPECT_NE(stability.out.find("scene: spring, chain, rope, softbody, target"), std::string::npos) << stability.out;
+  EXPECT_EQ(stability.out.find("  cannonball:"), std::string::npos);  // no parameters of a scene it refuses
+  const Result scaling = run_steplab("study scaling --help");
+  EXPECT_NE(scaling.out.find("--sizes WHOLE,..."), std::string::npos);
+  EXPECT_NE(scaling.out.find("--error NUMBER[%],..."), std::string::npos);
+  EXPECT_EQ(scaling.out.find("README, Speed"), std::string::npos);
+  EXPECT_EQ(scaling.out.find("=1e-4"), std::string::npos);  // defaults in one style: "(default ...)"
+  EXPECT_NE(scaling.out.find("(default 1e-4,1%)"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace steplab

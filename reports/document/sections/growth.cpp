@@ -137,8 +137,8 @@ std::string map_findings(const ScalingResult& r) {
     const auto times = [](double over) { return std::isnan(over) ? std::string("-") : fmt::format("{:.3g}", 1 / over); };
     md += fmt::format("; at stiffness {:g} and N = {}, the cheapest implicit method, `{}`, costs {} times what the best explicit "
                       "solver (`{}`) costs and {} times what the best CVODE (`{}`) costs; counts there: {}.",
-                      stiffest->stiffness, far.masses, far.best_implicit.empty() ? "none" : far.best_implicit, times(far.over_explicit),
-                      far.best_explicit.empty() ? "none reached" : far.best_explicit, times(far.over_cvode),
+                      stiffest->stiffness, far.masses, far.best_implicit.empty() ? "none" : far.best_implicit, times(far.explicit_over_implicit),
+                      far.best_explicit.empty() ? "none reached" : far.best_explicit, times(far.cvode_over_implicit),
                       far.best_cvode.empty() ? "none reached" : far.best_cvode, far_counts(r, t * nk + nk - 1, far));
     if (!still.empty())
       md += fmt::format(" At stiffness {} the body moves less than this target (at most {:.2g}): a run that stays at rest "

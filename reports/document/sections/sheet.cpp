@@ -19,6 +19,7 @@
 
 #include <fmt/format.h>
 
+#include "analysis/defaults.hpp"
 #include "analysis/kernel.hpp"
 #include "core/scenes/spring.hpp"
 #include "reports/document/report_text.hpp"
@@ -60,9 +61,19 @@ class Sheet : public Section {
     const AnyState start = projectile.exact(c.projectile.params, 0), later = projectile.exact(c.projectile.params, 1);
     const Spring s(c.oscillator.params);
     std::string md = "## " + title() + "\n\n";
-    md += fmt::format(
-        "The 2018 sheet (exercise 1, time integration) asks for {} on two scenes, each compared with the analytic solution:\n\n",
-        method_list(page.data.numerical_methods()));
+    // The sheet's own methods, and those of this hand-in that are not the sheet's (a user's choice).
+    std::vector<std::size_t> sheet, added, left_out;
+    for (std::string_view n : kSheetMethods)
+      if (const std::size_t m = *find_method(n); !method_info(m).exact_flow) sheet.push_back(m);
+    for (std::size_t m : page.data.numerical_methods())
+      if (std::find(sheet.begin(), sheet.end(), m) == sheet.end()) added.push_back(m);
+    for (std::size_t m : sheet)
+      if (std::find(page.data.methods.begin(), page.data.methods.end(), m) == page.data.methods.end()) left_out.push_back(m);
+    md += fmt::format("The 2018 sheet (exercise 1, time integration) asks for {} on two scenes, each compared with the analytic "
+                      "solution.", method_list(sheet));
+    if (!added.empty()) md += fmt::format(" Beside them this hand-in measures {}, chosen with `--methods`.", method_list(added));
+    if (!left_out.empty()) md += fmt::format(" It leaves out {}, not chosen.", method_list(left_out));
+    md += "\n\n";
     md += fmt::format("- **Problem 1, the cannon ball** ({}): from the origin with v0 = ({:.4g}, {:.4g}); the analytic solution is "
                       "x(t) = v0 t + g t^2 / 2 with g = (0, -{:g}).\n",
                       params_text(c.projectile.scene, c.projectile.params), start.v[0], start.v[1], start.v[1] - later.v[1]);
