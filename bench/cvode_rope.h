@@ -10,6 +10,7 @@ typedef struct {
   int max_order;        /* CVodeSetMaxOrd; 0: CVODE's default (12 Adams, 5 BDF) */
   int stab_lim_det;     /* CVodeSetStabLimDet */
   long setup_frequency; /* CVodeSetLSetupFrequency; 0: CVODE's default (20) */
+  int fixed_point;      /* the nonlinear solver: fixed-point (functional) iteration, no Jacobian, if nonzero; else Newton */
 } cvode_rope_settings;
 
 typedef struct {

@@ -48,7 +48,7 @@ void register_peers() {
     })->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("cvode_rope/plain_c/" + family + "/" + size).c_str(), [adams](benchmark::State& st) {
       cvode_rope_counts c{};
-      for (auto _ : st) benchmark::DoNotOptimize(cvode_rope_run(kMasses, kTol, kEnd, {adams, adams ? 0 : 2, 0, 0}, &c, nullptr));
+      for (auto _ : st) benchmark::DoNotOptimize(cvode_rope_run(kMasses, kTol, kEnd, {adams, adams ? 0 : 2, 0, 0, 0}, &c, nullptr));
       counters(st, c.steps, c.rhs, c.jacobians, c.setups);
     })->Unit(benchmark::kMillisecond);
   }

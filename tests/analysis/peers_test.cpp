@@ -57,7 +57,7 @@ TEST(Peers, CvodeOnTheRopeIsCvodeAsPlainCCallsIt) {
     const State<Eigen::Dynamic> end = run_sized_peer(peer, rope, p, 1e-6, 1.0, ours);
     cvode_rope_counts c{};
     std::vector<double> y(n);
-    ASSERT_EQ(cvode_rope_run(n, 1e-6, 1.0, {adams, adams ? 0 : 2, 0, 0}, &c, y.data()), 0);
+    ASSERT_EQ(cvode_rope_run(n, 1e-6, 1.0, {adams, adams ? 0 : 2, 0, 0, 0}, &c, y.data()), 0);
     EXPECT_EQ(ours.steps, c.steps) << peer.name;
     EXPECT_EQ(ours.rejected, c.error_test_fails + c.solve_fails) << peer.name;
     EXPECT_EQ(ours.forces, c.rhs) << peer.name;
