@@ -124,6 +124,7 @@ struct SceneKernel {
   std::string_view name;
   std::string_view title;  // the scene in a few words, for a table's heading (its name if it gives none)
   std::string_view old_name;  // the name it had in the old framework, also accepted (empty: none)
+  std::string_view equation;  // its equation of motion in one line, for the report (empty: not given)
   std::span<const ParamSpec> params;
   int dim;
   bool has_exact;

@@ -319,6 +319,7 @@ template <Scene S> constexpr SceneKernel make_scene() {
   SceneKernel k{.name = S::name,
                 .title = scene_title<S>(),
                 .old_name = scene_old_name<S>(),
+                .equation = scene_equation<S>(),
                 .params = std::span<const ParamSpec>(S::params),
                 .dim = S::dim,
                 .has_exact = HasExact<S>,

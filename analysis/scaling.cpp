@@ -293,7 +293,7 @@ std::string target_text(const ScalingConfig& c, const ScalingBlock& b) {
   return text;
 }
 
-double scaling_cost(const ScalingConfig& c, const ScalingRow& r) { return c.timing ? r.seconds : double(r.forces + r.jacobians) * r.masses; }
+double scaling_cost(const ScalingConfig& c, const ScalingRow& r) { return c.timing ? r.seconds : double(r.forces) * r.masses; }
 
 int scaling_masses(const ScalingConfig& c, int n) {
   const SceneKernel& s = scene_of(c);

@@ -187,8 +187,8 @@ double absolute_error(const ScalingConfig& c, const ErrorTarget& t, double stiff
 // A block's target in words: "0.0001", or "1 % of the extent, 0.05".
 std::string target_text(const ScalingConfig& c, const ScalingBlock& b);
 
-// What a row's run cost: its seconds, or without timing its force and Jacobian evaluations times
-// N (each touches every mass; the linear solves not counted).
+// What a row's run cost: its seconds, or without timing its force evaluations times N (each
+// touches every mass; the Jacobians, factorisations and solves counted beside, not added in).
 double scaling_cost(const ScalingConfig& c, const ScalingRow& r);
 // The number of masses at size n (the scene's: n on the rope, n^2 on the soft body).
 int scaling_masses(const ScalingConfig& c, int n);

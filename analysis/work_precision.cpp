@@ -140,13 +140,13 @@ std::vector<WorkPoint> scene_points(const Where& w, const WorkPrecisionConfig& c
   return points;
 }
 
-// Whether a run of (seconds, evaluations) is cheaper than one of (than_seconds, than_evaluations):
-// by time where the study times its runs, else by evaluations.
+// Whether a run of (seconds, force evaluations) is cheaper than one of (than_seconds, than_evaluations):
+// by time where the study times its runs, else by force evaluations.
 bool cheaper(bool timing, double seconds, long long evals, double than_seconds, long long than_evals) {
   return timing ? seconds < than_seconds : evals < than_evals;
 }
 
-// The cheapest run of `points` whose error is at most `level`, by time and by evaluations.
+// The cheapest run of `points` whose error is at most `level`, by time and by force evaluations.
 Cheapest cheapest_at(const std::vector<WorkPoint>& points, double level) {
   Cheapest c{level, "", ""};
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -154,8 +154,8 @@ Cheapest cheapest_at(const std::vector<WorkPoint>& points, double level) {
     if (p.status != RunStatus::Ok || !(p.error <= level)) continue;
     if (p.seconds >= 0 && (c.seconds < 0 || p.seconds < c.seconds))
       c.seconds = p.seconds, c.by_time = p.method, c.time_point = static_cast<std::ptrdiff_t>(i);
-    if (c.by_evaluations.empty() || p.evaluations() < c.evaluations)
-      c.evaluations = p.evaluations(), c.by_evaluations = p.method, c.evaluations_point = static_cast<std::ptrdiff_t>(i);
+    if (c.by_forces.empty() || p.force_evaluations < c.forces)
+      c.forces = p.force_evaluations, c.by_forces = p.method, c.forces_point = static_cast<std::ptrdiff_t>(i);
   }
   return c;
 }
@@ -268,9 +268,9 @@ std::vector<StiffnessRow> stiffness_rows(const WorkPrecisionConfig& c, std::size
       const bool implicit = is_implicit(w.method);
       std::string& best = implicit ? row.best_implicit : row.best_explicit;
       double& secs = implicit ? row.implicit_seconds : row.explicit_seconds;
-      long long& evals = implicit ? row.implicit_evaluations : row.explicit_evaluations;
-      if (best.empty() || cheaper(c.timing, w.seconds, w.evaluations(), secs, evals))
-        best = w.method, secs = w.seconds, evals = w.evaluations();
+      long long& evals = implicit ? row.implicit_forces : row.explicit_forces;
+      if (best.empty() || cheaper(c.timing, w.seconds, w.force_evaluations, secs, evals))
+        best = w.method, secs = w.seconds, evals = w.force_evaluations;
     }
     rows.push_back(std::move(row));
   }
@@ -306,8 +306,8 @@ WorkPrecisionResult work_precision_study(const WorkPrecisionConfig& config) {
     const StiffnessRow& r = out.stiffness[i];
     const bool implicit_wins =
         !r.best_implicit.empty() &&
-        (r.best_explicit.empty() || cheaper(config.timing, r.implicit_seconds, r.implicit_evaluations,
-                                            r.explicit_seconds, r.explicit_evaluations));
+        (r.best_explicit.empty() || cheaper(config.timing, r.implicit_seconds, r.implicit_forces,
+                                            r.explicit_seconds, r.explicit_forces));
     if (!implicit_wins) break;
     out.crossover_ratio = r.ratio;
   }

@@ -4,8 +4,8 @@
 //
 // A point is one run to t_end: its largest position error against the exact solution at its steps
 // (not the final one alone, which a lucky phase can make small), and its cost
-// counted two ways: force and Jacobian evaluations (exact and repeatable: the run is made once more
-// through a counting scene), and run time, the minimum over repeated timings (at least
+// counted two ways: force evaluations (exact and repeatable: the run is made once more through a
+// counting scene; its Jacobian evaluations, factorisations and solves counted beside), and run time, the minimum over repeated timings (at least
 // kMinRepeats, and kMinSeconds in all), the integration alone, one run at a time. The minimum, not
 // the median: a timing can only be slowed by the machine, never sped up, so the minimum is the
 // estimate least disturbed by other load.
@@ -44,7 +44,6 @@ struct WorkPoint {
   long long rejected = 0, factorisations = 0, solves = 0, newton = 0;  // analysis/counts.hpp
   double seconds = -1;   // minimum of the timings; -1 without timing
   Counts counts() const { return {steps, rejected, force_evaluations, jacobian_evaluations, factorisations, solves, newton}; }
-  long long evaluations() const { return force_evaluations + jacobian_evaluations; }  // the study's cost untimed
 };
 
 template <class F> void encode_fields(WorkPoint& p, F&& f) {  // analysis/shard.hpp
@@ -52,12 +51,14 @@ template <class F> void encode_fields(WorkPoint& p, F&& f) {  // analysis/shard.
   f(p.jacobian_evaluations), f(p.rejected), f(p.factorisations), f(p.solves), f(p.newton), f(p.seconds);
 }
 
+// "Evaluations" in steplab are force evaluations F(x, v): the study's cost untimed. Jacobian
+// evaluations, factorisations and linear solves are counted beside them (Counts), never added in.
 struct Cheapest {
   double error_level;
-  std::string by_time, by_evaluations;  // empty: no run reached the level
+  std::string by_time, by_forces;  // empty: no run reached the level
   double seconds = -1;
-  long long evaluations = 0;           // force + Jacobian evaluations
-  std::ptrdiff_t time_point = -1, evaluations_point = -1;  // those runs in SceneWork::points (their counts)
+  long long forces = 0;            // force evaluations of the cheapest by them
+  std::ptrdiff_t time_point = -1, forces_point = -1;  // those runs in SceneWork::points (their counts)
 };
 
 // On the stiff scene: where each explicit method's steps stop being stable, against the step its
@@ -80,7 +81,7 @@ struct StiffnessRow {
   double stiffness2, ratio;  // k2 and k2 / k1
   std::string best_explicit, best_implicit;
   double explicit_seconds = -1, implicit_seconds = -1;  // cheapest run with error <= crossover_error
-  long long explicit_evaluations = 0, implicit_evaluations = 0;
+  long long explicit_forces = 0, implicit_forces = 0;
 };
 
 struct WorkPrecisionConfig {

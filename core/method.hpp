@@ -57,7 +57,7 @@ struct MethodInfo {
   bool implicit = false;      // solves a nonlinear system each step
   bool a_stable = false;      // stable for every h lambda with Re <= 0: every step on a damped spring
   bool exact_flow = false;    // the analytic solution: needs a scene with an exact flow
-  std::string_view summary;
+  std::string_view summary;   // its update in one line (y = (x, v), f = (v, a)), for the report's appendix
   Family first_of = Family::None;  // a second family whose first member the method is (explicit Euler: AB1)
 };
 

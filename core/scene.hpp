@@ -42,6 +42,7 @@
 //                                 Work-precision measures the step accuracy alone would allow
 //                                 on it (HasStiffLimit)
 //   title = "<words>"             the scene in a few words, for a table's heading
+//   equation = "<m x'' = ...>"    its equation of motion in one line, for the report's appendix
 //   old_name = "<name>"           a name the old framework gave it, also accepted
 #pragma once
 
@@ -318,6 +319,10 @@ concept HasStiffLimit = Scene<S> && requires(std::span<const double> p) {
 template <Scene S> constexpr std::string_view scene_title() {
   if constexpr (requires { S::title; }) return S::title;
   else return S::name;
+}
+template <Scene S> constexpr std::string_view scene_equation() {
+  if constexpr (requires { S::equation; }) return S::equation;
+  else return {};
 }
 template <Scene S> constexpr std::string_view scene_old_name() {
   if constexpr (requires { S::old_name; }) return S::old_name;

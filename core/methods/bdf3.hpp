@@ -12,7 +12,7 @@ namespace steplab {
 struct Bdf3 : BdfMethod<std::array{18.0 / 11, -9.0 / 11, 2.0 / 11}, 6.0 / 11> {
   static constexpr MethodInfo info{.name = "bdf3", .order = 3, .family = Family::Bdf,
                                    .implicit = true,
-                                   .summary = "BDF of order 3 (three past states), by Newton, started by Gauss-Legendre"};
+                                   .summary = "y_(n+1) - 18/11 y_n + 9/11 y_(n-1) - 2/11 y_(n-2) = 6/11 h f(y_(n+1)), by Newton, started by Gauss-Legendre"};
 };
 
 }  // namespace steplab

@@ -9,7 +9,7 @@ namespace steplab {
 // Undamped oscillator: |R(i w h)|^2 = 1 + (w h)^4 / 4 > 1, unstable at every step.
 struct ExplicitMidpoint {
   static constexpr MethodInfo info{.name = "explicit_midpoint", .order = 2, .family = Family::ExplicitRungeKutta,
-                                   .summary = "half an Euler step to the midpoint, then the full step with its slope"};
+                                   .summary = "y_(n+1) = y_n + h f(y_n + h/2 f(y_n)), y = (x, v), f = (v, a)"};
   template <class S, class T> static StepStatus step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
     const Vec<S::dim, T> xm = y.x + 0.5 * h * y.v;
     const Vec<S::dim, T> vm = y.v + 0.5 * h * acceleration(s, t, y.x, y.v);

@@ -11,7 +11,7 @@ namespace steplab {
 struct ImplicitEuler {
   static constexpr MethodInfo info{.name = "implicit_euler", .order = 1, .family = Family::ImplicitRungeKutta,
                                    .implicit = true, .a_stable = true,
-                                   .summary = "x += h v', v += h a(x', v') at the new state, by Newton", .first_of = Family::Bdf};
+                                   .summary = "y_(n+1) = y_n + h f(y_(n+1)), solved by Newton for the new velocity", .first_of = Family::Bdf};
   static constexpr int solve_stages = 1;  // core/method.hpp
   static constexpr ButcherTableau<1> tableau{{{{1.0}}}, {1.0}};  // c = 1: stiffly accurate
   template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {

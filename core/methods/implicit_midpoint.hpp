@@ -11,7 +11,7 @@ namespace steplab {
 struct ImplicitMidpoint {
   static constexpr MethodInfo info{.name = "implicit_midpoint", .order = 2, .family = Family::ImplicitRungeKutta,
                                    .symplectic = true, .implicit = true, .a_stable = true,
-                                   .summary = "backward Euler for h/2 to the midpoint, then extrapolate to h"};
+                                   .summary = "y_(n+1) = y_n + h f((y_n + y_(n+1)) / 2): backward Euler for h/2 to the midpoint, then extrapolated to h"};
   static constexpr int solve_stages = 1;  // core/method.hpp
   static constexpr ButcherTableau<1> tableau{{{{0.5}}}, {1.0}};  // c = 1/2
   template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {

@@ -10,7 +10,7 @@ namespace steplab {
 // R(z) = 1 + z + z^2/2 + z^3/6: undamped oscillator stable up to w h = sqrt(3).
 struct Rk3 {
   static constexpr MethodInfo info{.name = "rk3", .order = 3, .family = Family::ExplicitRungeKutta,
-                                   .summary = "Kutta's three-stage Runge-Kutta"};
+                                   .summary = "k1 = f(y_n), k2 = f(y_n + h/2 k1), k3 = f(y_n - h k1 + 2h k2); y_(n+1) = y_n + h/6 (k1 + 4 k2 + k3)"};
   template <class S, class T> static StepStatus step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
     using V = Vec<S::dim, T>;
     const V kx1 = y.v, kv1 = acceleration(s, t, y.x, y.v);

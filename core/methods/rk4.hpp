@@ -9,7 +9,7 @@ namespace steplab {
 // Undamped oscillator: stable up to w h = 2 sqrt(2).
 struct Rk4 {
   static constexpr MethodInfo info{.name = "rk4", .order = 4, .family = Family::ExplicitRungeKutta,
-                                   .summary = "classic four-stage Runge-Kutta"};
+                                   .summary = "k1 = f(y_n), k2 = f(y_n + h/2 k1), k3 = f(y_n + h/2 k2), k4 = f(y_n + h k3); y_(n+1) = y_n + h/6 (k1 + 2 k2 + 2 k3 + k4)"};
   template <class S, class T> static StepStatus step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
     using V = Vec<S::dim, T>;
     const V kx1 = y.v, kv1 = acceleration(s, t, y.x, y.v);

@@ -14,7 +14,7 @@ namespace steplab {
 struct VelocityVerlet {
   static constexpr MethodInfo info{.name = "velocity_verlet", .order = 2, .family = Family::Splitting,
                                    .symplectic = true,
-                                   .summary = "kick h/2, drift h, kick h/2 with the new acceleration"};
+                                   .summary = "v += h/2 a(x, v); x += h v; v += h/2 a(x, v) at the new x (implicit in v where the force is damped)"};
   static constexpr int solve_stages = 1;  // the implicit kick (core/method.hpp)
   template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
     using V = Vec<S::dim, T>;

@@ -12,7 +12,7 @@ namespace steplab {
 struct Yoshida4 {
   static constexpr MethodInfo info{.name = "yoshida4", .order = 4, .family = Family::Splitting,
                                    .symplectic = true,
-                                   .summary = "velocity Verlet steps of w1 h, w0 h, w1 h (triple jump)"};
+                                   .summary = "velocity Verlet steps of w1 h, w0 h, w1 h, w1 = 1/(2 - 2^(1/3)), w0 = 1 - 2 w1 (the triple jump)"};
   static constexpr int solve_stages = VelocityVerlet::solve_stages;  // core/method.hpp
   static constexpr double cbrt2 = 1.2599210498948731648;  // 2^(1/3)
   static constexpr double w1 = 1 / (2 - cbrt2), w0 = -cbrt2 / (2 - cbrt2);

@@ -30,6 +30,8 @@ template <class T> struct BounceT {
   template <class U> using as = BounceT<U>;
   static constexpr int dim = 1;
   static constexpr std::string_view name = "bounce";
+  // The equation of motion, for the report (the math above is its derivation).
+  static constexpr std::string_view equation = "m y'' = -m g + F_g,  F_g = k_g p - c_g y' while the penetration p = -1 - y > 0, else 0";
   static constexpr std::array<ParamSpec, 4> params{{
       {"mass", 1.0, Bound::Positive, "mass m"},
       {"gravity", 9.81, Bound::Positive, "gravitational acceleration g (pointing down)"},

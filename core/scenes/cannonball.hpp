@@ -20,6 +20,8 @@ template <class T> struct CannonballT {
   static constexpr int dim = 2;
   static constexpr std::string_view name = "cannonball";
   static constexpr std::string_view title = "Cannon ball";
+  // The equation of motion, for the report (the math above is its derivation).
+  static constexpr std::string_view equation = "m x'' = m g, with g = (0, -g): a parabola";
   // Defaults from the 2018 sheet: mass 1, from the origin at 100 * (cos 1.047, sin 1.047).
   static constexpr std::array<ParamSpec, 4> params{{
       {"mass", 1.0, Bound::Positive, "mass m"},

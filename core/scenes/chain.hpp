@@ -67,6 +67,8 @@ struct Chain : ChainT<double> {
   static constexpr bool affine_flow = true;  // flow(y, h) = e^{A h} y (core/scene.hpp)
   static constexpr std::string_view stiffness_param = "stiffness2";  // the stiff spring
   static constexpr std::string_view title = "Stiff two-mass chain";
+  // The equation of motion, for the report (the math above is its derivation).
+  static constexpr std::string_view equation = "m1 u1'' = -k1 u1 - c1 u1' + k2 (u2 - u1) + c2 (u2' - u1'),  m2 u2'' = -k2 (u2 - u1) - c2 (u2' - u1')";
 
   // Its stiff limit k2 -> inf: the two masses move as one, (m1 + m2) u'' = -k1 u - c1 u', the
   // spring scene (which starts at rest, m g / k above its equilibrium: g is chosen for the

@@ -24,6 +24,8 @@ template <class T> struct FallingT {
   template <class U> using as = FallingT<U>;
   static constexpr int dim = 6;
   static constexpr std::string_view name = "falling";
+  // The equation of motion, for the report (the math above is its derivation).
+  static constexpr std::string_view equation = "m x_i'' = the two damped springs along the triangle's sides + (0, -m g) + the ground's F_g on each mass below y = -1";
   // The old command-line framework's defaults: mass 0.1, stiffness 10, damping 0.01; ground 100.
   static constexpr std::array<ParamSpec, 6> params{{
       {"mass", 0.1, Bound::Positive, "mass of each of the three particles"},

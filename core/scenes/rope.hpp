@@ -54,6 +54,8 @@ struct Rope {
   // What it offers the studies (core/scene.hpp): refined by its number of masses; its modes in
   // closed form (modes() below); tridiagonal Jacobians.
   static constexpr std::string_view title = "Rope of N masses";
+  // The equation of motion, for the report (the math above is its derivation).
+  static constexpr std::string_view equation = "m y_i'' = T_i - T_(i+1) - c y_i' - m g,  T_i = k ((y_(i-1) - y_i) - l) + d (y_(i-1)' - y_i'),  T_(N+1) = 0";
   static constexpr std::string_view size_param = "masses";
   static constexpr std::string_view stiffness_param = "stiffness";
   static constexpr std::string_view damping_param = "damping";

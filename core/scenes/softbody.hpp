@@ -41,6 +41,8 @@ struct SoftBody {
   // What it offers the studies (core/scene.hpp): refined by its grid side n, two coordinates per
   // mass, its fastest mode (modes() below), contact (penetration).
   static constexpr std::string_view title = "Soft body of N = n x n masses";
+  // The equation of motion, for the report (the math above is its derivation).
+  static constexpr std::string_view equation = "m x_i'' = sum over the springs j of i: f_ij along the spring, damped along it; - m g in y; the ground below y = -1";
   static constexpr std::string_view size_param = "grid";
   static constexpr int coords_per_mass = 2;
   static constexpr std::string_view stiffness_param = "stiffness";

@@ -23,6 +23,8 @@ template <class T> struct SpringT {
   static constexpr int dim = 1;
   static constexpr std::string_view name = "spring";
   static constexpr std::string_view title = "Spring";
+  // The equation of motion, for the report (the math above is its derivation).
+  static constexpr std::string_view equation = "m y'' = -k (y + L) - gamma y' - m g, while the cube hangs below the anchor (y < 0)";
   static constexpr bool affine_flow = true;  // flow(y, h) below is linear in y - y_eq (core/scene.hpp)
   static constexpr std::string_view old_name = "spring1d";  // the old framework's test case
   static constexpr std::string_view stiffness_param = "stiffness";

@@ -26,6 +26,8 @@ struct Target {
   static constexpr int dim = 1;
   static constexpr std::string_view name = "target";
   static constexpr std::string_view title = "Mass pulled to a moving target";
+  // The equation of motion, for the report (the math above is its derivation).
+  static constexpr std::string_view equation = "m x'' = -k (x - g(t)) - c (x' - g'(t)) + m g''(t),  g(t) = sin(w t),  c = 2 zeta sqrt(k m)";
   static constexpr std::string_view stiffness_param = "stiffness";
   static constexpr std::array<ParamSpec, 4> params{{
       {"mass", 1.0, Bound::Positive, "mass m"},

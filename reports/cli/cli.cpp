@@ -292,7 +292,7 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
       ->capture_default_str();
   add_lanes_option(wp_cmd, wp.lanes);
   add_shard_option(wp_cmd, wp.shard);
-  wp_cmd->add_flag("--no-timing", wp.no_timing, "cost by force and Jacobian evaluations only (reproducible byte for byte)");
+  wp_cmd->add_flag("--no-timing", wp.no_timing, "cost by force evaluations only (reproducible byte for byte)");
   wp_cmd->add_option("--json", wp.json, fmt::format("write JSON (schema {}) to this file", schema::work_precision));
   CollisionArgs coll;
   CLI::App* coll_cmd = study->add_subcommand("collision", "the bounce and the falling triangle on the penalty ground");

@@ -40,7 +40,7 @@ CLI::App* add_scaling_command(CLI::App* study, ScalingArgs& a) {
   cmd->add_option("--max-steps", a.max_steps, "a search tries no step that needs more steps than this (default 2000000 "
                                               "on the rope, 200000 on the soft body, whose implicit steps cost a sparse solve each)");
   cmd->add_option("--threads", a.threads, "worker threads for the searches (timings run one at a time)")->capture_default_str();
-  cmd->add_flag("--no-timing", a.no_timing, "cost by force and Jacobian evaluations only (reproducible byte for byte)");
+  cmd->add_flag("--no-timing", a.no_timing, "cost by force evaluations only (reproducible byte for byte)");
   cmd->add_flag("--no-peers", a.no_peers, "steplab's fixed-step methods only (no dopri5, CVODE, Boost.Odeint)");
   add_shard_option(cmd, a.shard);
   cmd->add_option("--json", a.json, fmt::format("write JSON (schema {}) to this file", schema::scaling));
@@ -140,7 +140,7 @@ std::string block_table(const ScalingResult& r, std::size_t b) {
                                 "{:<20} {:>7} {:>11} {:>12} {:>10} {:>9} {:>6} {:>9} {:>7} {:>7} {:>8} {:>12} {:>12}\n",
                                 scene.title, stiffness_text(c, block.stiffness), target_text(c, block),
                                 c.frames, c.t_end, scene.has_exact ? "exact solution" : "reference solution",
-                                c.timing ? "run time" : "force + Jacobian evaluations x N", "solver", "N", "dt*", "dt / tol", "error",
+                                c.timing ? "run time" : "force evaluations x N", "solver", "N", "dt*", "dt / tol", "error",
                                 "steps", "rej", "forces", "jacs", "LUs", "Newton", unit, "per step");
   bool capped = false;
   for (std::size_t s = 0; s < r.solvers(); ++s)
@@ -213,6 +213,11 @@ std::vector<ErrorTarget> error_targets(const std::string& text) {
     out.push_back({percent ? v / 100 : v, percent});
   }
   if (out.empty()) throw UsageError("--error '' names no target; accepted: positive numbers or percentages of the body's extent, e.g. 1e-4,1%");
+  for (std::size_t i = 0; i < out.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (out[i].value == out[j].value && out[i].of_extent == out[j].of_extent)
+        throw UsageError(fmt::format("--error names {}{} twice; accepted: each target once", out[i].of_extent ? 100 * out[i].value : out[i].value,
+                                     out[i].of_extent ? "%" : ""));
   return out;
 }
 
@@ -228,6 +233,7 @@ int scaling_command(ScalingArgs& a, Context& ctx) {
     const std::string key(scene.params[scene.stiffness_param].name);
     if (a.scene.given(key)) {
       c.stiffnesses = number_list("--" + key, a.scene.text[key], scene.params[scene.stiffness_param].bound);
+      check_distinct("--" + key, c.stiffnesses);
       a.scene.set(key, a.scene.text[key].substr(0, a.scene.text[key].find(',')));
     }
   }
@@ -239,6 +245,7 @@ int scaling_command(ScalingArgs& a, Context& ctx) {
     c.sizes.clear();
     const ParamSpec& size = scene.params[scene.size_param];  // --masses, --grid: its range
     for (const std::string& s : split_list(a.sizes)) c.sizes.push_back(static_cast<int>(parse_count("--sizes", s, 1, static_cast<long long>(size.max_count))));
+    check_distinct("--sizes", std::vector<double>(c.sizes.begin(), c.sizes.end()));
   }
   c.targets = error_targets(a.error);
   c.t_end = parse_number("--t-end", a.t_end, Bound::Positive);

@@ -57,9 +57,9 @@ Json work_precision_json(const WorkPrecisionResult& r) {
                           {"by_time", name_or_null(ch.by_time)},
                           {"seconds", null_if_negative(ch.seconds)},
                           {"by_time_counts", point_counts(w, ch.time_point)},
-                          {"by_evaluations", name_or_null(ch.by_evaluations)},
-                          {"evaluations", ch.by_evaluations.empty() ? Json(nullptr) : Json(ch.evaluations)},
-                          {"by_evaluations_counts", point_counts(w, ch.evaluations_point)}});
+                          {"by_forces", name_or_null(ch.by_forces)},
+                          {"forces", ch.by_forces.empty() ? Json(nullptr) : Json(ch.forces)},
+                          {"by_forces_counts", point_counts(w, ch.forces_point)}});
     s["cheapest"] = std::move(cheapest);
     scenes.push_back(std::move(s));
   }
@@ -74,10 +74,10 @@ Json work_precision_json(const WorkPrecisionResult& r) {
                     {"ratio", s.ratio},
                     {"best_explicit", name_or_null(s.best_explicit)},
                     {"explicit_seconds", null_if_negative(s.explicit_seconds)},
-                    {"explicit_evaluations", s.explicit_evaluations},
+                    {"explicit_forces", s.explicit_forces},
                     {"best_implicit", name_or_null(s.best_implicit)},
                     {"implicit_seconds", null_if_negative(s.implicit_seconds)},
-                    {"implicit_evaluations", s.implicit_evaluations}});
+                    {"implicit_forces", s.implicit_forces}});
   j["stiffness_sweep"] = std::move(rows);
   j["crossover_ratio"] = null_if_negative(r.crossover_ratio);
   return j;
@@ -89,14 +89,14 @@ std::string work_precision_table(const WorkPrecisionResult& r) {
   for (const SceneWork& w : r.scenes) {
     out += fmt::format("Cheapest run with its largest error at most the level, {} (t_end {}):\n", scene_name(w.scene),
                        r.config.t_end);
-    out += fmt::format("{:>8}  {:<64} {}\n", "error", timed ? "by run time (minimum of repeats)" : "", "by force + Jacobian evaluations");
+    out += fmt::format("{:>8}  {:<64} {}\n", "error", timed ? "by run time (minimum of repeats)" : "", "by force evaluations");
     for (const Cheapest& ch : w.cheapest)
       out += fmt::format("{:>8.0e}  {:<64} {}\n", ch.error_level,
                          ch.by_time.empty() ? (timed ? "none" : "")
                                             : fmt::format("{} {:.3g} s ({})", ch.by_time, ch.seconds, counts_text(w.points[ch.time_point].counts())),
-                         ch.by_evaluations.empty() ? "none"
-                                                   : fmt::format("{} {} ({})", ch.by_evaluations, ch.evaluations,
-                                                                 counts_text(w.points[ch.evaluations_point].counts())));
+                         ch.by_forces.empty() ? "none"
+                                                   : fmt::format("{} {} ({})", ch.by_forces, ch.forces,
+                                                                 counts_text(w.points[ch.forces_point].counts())));
     out += "\n";
   }
   out += fmt::format(
@@ -110,11 +110,11 @@ std::string work_precision_table(const WorkPrecisionResult& r) {
                : fmt::format("  {:<18} stable to {:<10.3g} accuracy alone {:<10.3g} ({:.3g}x the stable step)\n", l.method,
                              l.largest_stable_dt, l.accuracy_dt, l.accuracy_dt / l.largest_stable_dt);
   out += fmt::format("\nStiffness sweep (chain, t_end {}): cheapest run reaching error {:.0e}, {}\n", r.config.sweep_t_end,
-                     r.config.crossover_error, timed ? "by run time" : "by evaluations");
+                     r.config.crossover_error, timed ? "by run time" : "by force evaluations");
   for (const StiffnessRow& s : r.stiffness)
     out += fmt::format("  k2 {:<8g} k2/k1 {:<8g} explicit {:<18} {:<10}  implicit {:<18} {}\n", s.stiffness2, s.ratio,
-                       s.best_explicit, timed ? fmt::format("{:.3g} s", s.explicit_seconds) : std::to_string(s.explicit_evaluations),
-                       s.best_implicit, timed ? fmt::format("{:.3g} s", s.implicit_seconds) : std::to_string(s.implicit_evaluations));
+                       s.best_explicit, timed ? fmt::format("{:.3g} s", s.explicit_seconds) : std::to_string(s.explicit_forces),
+                       s.best_implicit, timed ? fmt::format("{:.3g} s", s.implicit_seconds) : std::to_string(s.implicit_forces));
   out += r.crossover_ratio > 0
              ? fmt::format("From k2/k1 = {:g} on, an implicit method is cheaper than every explicit one at error {:.0e}.\n",
                            r.crossover_ratio, r.config.crossover_error)

@@ -103,6 +103,13 @@ std::vector<double> number_list(std::string_view what, const std::string& text, 
   return out;
 }
 
+void check_distinct(std::string_view what, const std::vector<double>& values) {
+  for (std::size_t i = 0; i < values.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (values[i] == values[j])
+        throw UsageError(fmt::format("{} names {} twice; accepted: each value once", what, values[i]));
+}
+
 void check_increasing(std::string_view what, const std::vector<double>& values) {
   for (std::size_t i = 1; i < values.size(); ++i)
     if (!(values[i] > values[i - 1]))

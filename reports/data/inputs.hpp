@@ -34,6 +34,8 @@ std::string did_you_mean(std::string_view typed, const std::vector<std::string>&
 std::vector<double> number_list(std::string_view what, const std::string& text, Bound bound);
 // A UsageError naming `what` ("--sweep stiffness values") unless each value exceeds the one before.
 void check_increasing(std::string_view what, const std::vector<double>& values);
+// A UsageError naming `what` ("--stiffness") and the value if a list names one twice.
+void check_distinct(std::string_view what, const std::vector<double>& values);
 
 // steps_for(t_end, dt) (core/simulate.hpp), or a UsageError if that is more than max_steps.
 inline constexpr long long max_steps = 1'000'000'000;

@@ -1,6 +1,6 @@
 // The schema every JSON document of steplab's opens with, "steplab.<kind>/<version>": one name
 // per kind, read by the writers and by each command's --help. The version steps when a field
-// changes its meaning or goes; docs/studies.md ("JSON documents") says what changed.
+// changes its meaning or goes; docs/json.md says what changed.
 #pragma once
 
 #include <string_view>
@@ -16,7 +16,9 @@ inline constexpr std::string_view stability = "steplab.stability/2";
 // study stability on any other scene that declares its modes (version 1 was named after the rope)
 inline constexpr std::string_view mode_stability = "steplab.mode_stability/1";
 inline constexpr std::string_view collision = "steplab.collision/1";        // study collision
-inline constexpr std::string_view work_precision = "steplab.work_precision/1";  // study work-precision
+// study work-precision: the untimed cost is force evaluations, the Jacobians beside (version 1 added
+// them in): by_forces, forces, explicit_forces, implicit_forces where it had *evaluations*
+inline constexpr std::string_view work_precision = "steplab.work_precision/2";
 // study scaling: "unbounded" for a stable step of every size (version 3 wrote "inf")
 inline constexpr std::string_view scaling = "steplab.scaling/4";
 inline constexpr std::string_view part = "steplab.part/1";                  // --shard i/N, read by steplab merge

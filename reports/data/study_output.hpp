@@ -1,4 +1,4 @@
-// JSON documents and printed tables of the studies. Field names are an interface (README).
+// JSON documents and printed tables of the studies. Field names are an interface (docs/json.md).
 #pragma once
 
 #include <string>

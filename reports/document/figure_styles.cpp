@@ -78,9 +78,10 @@ std::string styles_gp() {
     if (!names.empty()) names += ' ';
     names += name(m);
   }
-  // the adaptive solvers (analysis/peers.hpp): steplab's dopri5 black, odeint's grey, CVODE in
-  // the sky blue the families leave free (Adams and BDF by point and dash, whatever the linear
-  // solver: one figure has one of each), each with a point and a dash of its own
+  // the adaptive solvers (analysis/peers.hpp): steplab's dopri5 black, odeint's grey, and CVODE's
+  // three set-ups in colours the families leave free, Adams sky blue, BDF indigo, BDF of orders
+  // 1-2 olive (Paul Tol's), whatever the linear solver (one figure has one of each); each with a
+  // point and a dash of its own
   std::string adaptive;
   std::size_t lt = method_count();
   for (const PeerInfo& p : peers()) {
@@ -88,8 +89,8 @@ std::string styles_gp() {
     const MethodStyle st = p.name == "dopri5"          ? MethodStyle{"#000000", 7, 1}
                            : !cvode                    ? MethodStyle{"#777777", 6, 2}
                            : p.cvode.adams             ? MethodStyle{"#56B4E9", 13, 2}
-                           : p.cvode.max_order == 2    ? MethodStyle{"#56B4E9", 9, 5}
-                                                       : MethodStyle{"#56B4E9", 15, 4};
+                           : p.cvode.max_order == 2    ? MethodStyle{"#999933", 9, 5}
+                                                       : MethodStyle{"#332288", 15, 4};
     out += fmt::format("set linetype {} lc rgb \"{}\" pt {} dt {} lw 1.5 ps 0.6  # {}\n", ++lt, st.colour, st.point, st.dash, p.name);
     names += fmt::format(" {}", p.name);
   }

@@ -41,10 +41,19 @@ void DataDir::write(const std::string& file, const std::string& content) const {
   if (!out) throw std::runtime_error("cannot write " + (dir_ / file).string());
 }
 
-std::string Page::figure(const std::string& file, const std::string& caption) {
+std::string figure_file(int number, const std::string& script) { return fmt::format("fig{}_{}", number, script); }
+
+int Page::number(const std::string& script) const {
+  const auto it = std::find(order_.begin(), order_.end(), script);
+  return it == order_.end() ? 0 : static_cast<int>(it - order_.begin()) + 1;
+}
+
+std::string Page::figure(const std::string& script, const std::string& caption) {
+  if (static_cast<std::size_t>(figure_) >= order_.size() || order_[static_cast<std::size_t>(figure_)] != script)
+    throw std::logic_error("the report's Markdown shows " + script + " out of the order its sections list their figures");
   ++figure_;
   const std::string label = ext_ == "pdf" ? caption : fmt::format("Figure {}: {}", figure_, caption);
-  return fmt::format("![{}](figures/{}.{})\n\n", label, file, ext_);
+  return fmt::format("![{}](figures/{}.{})\n\n", label, figure_file(figure_, script), ext_);
 }
 
 std::vector<Panel> family_panels(const std::vector<std::size_t>& methods, const std::function<bool(std::size_t)>& drawn) {
@@ -87,6 +96,7 @@ std::string uncovered(const ReportConfig& c, std::initializer_list<std::size_t> 
 std::string uncovered_for(const ReportConfig& c, unsigned studies) {
   std::string why;
   if (studies & (kStabilityStudy | kWorkPrecisionStudy)) why = uncovered(c, {c.oscillator.scene});
+  if (why.empty() && (studies & kStiffOrderStudy)) why = uncovered(c, {c.stiffened.scene});
   if (why.empty() && (studies & kCollisionStudy)) why = uncovered(c, {c.rebound.scene, c.body.scene});
   if (why.empty() && (studies & kSceneFigures) && !c.covers(c.oscillator.scene) && !c.covers(c.projectile.scene))
     why = uncovered(c, {c.projectile.scene, c.oscillator.scene});
@@ -114,11 +124,23 @@ Report::Report() = default;
 Report::Report(Report&&) noexcept = default;
 Report::~Report() = default;
 
+std::vector<std::string> figure_order(const Report& r) {
+  std::vector<std::string> out;
+  for (const auto& s : r.sections)
+    for (const FigureSpec& f : s->figures(r.data)) out.push_back(f.script);
+  return out;
+}
+
 Report build_report(const ReportConfig& config, ProgressHook progress) {
   Report r;
   for (std::unique_ptr<Section>& s : report_sections(config.sections)) {
     const std::string why = s->missing(config);
-    r.sections.push_back(why.empty() ? std::move(s) : std::make_unique<LeftOut>(s->title(), why));
+    if (!why.empty()) {
+      std::unique_ptr<Section> left = std::make_unique<LeftOut>(s->title(), why);
+      left->id = s->id;
+      s = std::move(left);
+    }
+    r.sections.push_back(std::move(s));
   }
   unsigned studies = 0;
   for (const auto& s : r.sections) studies |= s->needs();
@@ -129,12 +151,14 @@ Report build_report(const ReportConfig& config, ProgressHook progress) {
 }
 
 std::string report_markdown(const Report& r, const std::string& ext, const std::string& footer) {
-  std::string md = "# steplab report: how time integrators behave, family by family, on the course's scenes\n\n";
+  std::string md = r.data.config.has_section("sheet")
+                       ? "# Time integration: the exercise's hand-in, measured by steplab\n\n"
+                       : "# steplab report: how time integrators behave, family by family, on the course's scenes\n\n";
   const ReportScene& spring = r.data.config.oscillator;
   if (r.data.config.covers(spring.scene)) md += fmt::format("The hanging spring: {}. ", params_text(spring.scene, spring.params));
   md += "Every number below was measured by the commands at the end of this report; every sentence that states a finding was "
         "generated from those numbers.\n\n";
-  Page page(r.data, r.findings, ext);
+  Page page(r.data, r.findings, ext, figure_order(r));
   for (const auto& s : r.sections) md += s->markdown(page);
   return md + "---\n\n" + footer + "\n";
 }
@@ -268,22 +292,28 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force, 
 
     const DataDir data(staging / "data");
     data.write("config.json", report_config_json(c).dump(1) + "\n");
-    for (const auto& s : report.sections) s->write_data(d, data);
+    for (const auto& s : report.sections) {  // each section's data in a folder of its own
+      fs::create_directories(staging / "data" / s->id);
+      s->write_data(d, DataDir(staging / "data" / s->id));
+      if (fs::is_empty(staging / "data" / s->id)) fs::remove(staging / "data" / s->id);
+    }
 
     // Figures: each script twice, PNG for the Markdown and PDF (vector) for the PDF.
     const std::string all = method_words(d.methods), numeric = method_words(d.collision.config.methods);
     DataDir(staging / "figures").write("styles.gp", styles_gp());  // loaded by every script
+    int number = 0;
     for (const auto& s : report.sections)
       for (const FigureSpec& fig : s->figures(d)) {
+        const std::string file = figure_file(++number, fig.script);
         const auto gp = std::find_if(gnuplot_scripts.begin(), gnuplot_scripts.end(), [&](const GnuplotScript& g) { return g.name == fig.script; });
         if (gp == gnuplot_scripts.end()) throw std::logic_error("no gnuplot script " + fig.script);
         DataDir(staging / "figures").write(fig.script + ".gp", std::string(gp->text));
         for (const char* fmt_name : {"png", "pdf"}) {
           const std::string cmd = fmt::format(
-              "cd '{}' && gnuplot -e \"datadir='../data'; outfile='{}.{}'; format='{}'; methods='{}'; numeric='{}'; "
+              "cd '{}' && gnuplot -e \"datadir='../data/{}'; outfile='{}.{}'; format='{}'; methods='{}'; numeric='{}'; "
               "springdts='{}'; largedt='{}'; {}{}\" '{}.gp'",
-              (staging / "figures").string(), fig.script, fmt_name, fmt_name, all, numeric, words(c.spring_figure_dts), c.large_dt,
-              panel_vars(fig.panels), fig.vars, fig.script);
+              (staging / "figures").string(), s->id, file, fmt_name, fmt_name, all, numeric, words(c.spring_figure_dts),
+              c.large_dt, panel_vars(fig.panels), fig.vars, fig.script);
           const fs::path log = staging / "figures" / fmt::format("{}.{}.log", fig.script, fmt_name);
           if (run_tool(cmd, log) != 0)
             throw ToolFailed(fmt::format("gnuplot failed on {}.gp ({}):{}\nthe script, its data and gnuplot's log are kept in "
@@ -297,7 +327,7 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force, 
     write_atomic((staging / "report-pdf.md").string(), report_markdown(report, "pdf", footer));
     const std::string pandoc = fmt::format(
         "cd '{}' && pandoc report-pdf.md -o report.pdf --pdf-engine=pdflatex -V geometry:margin=1.8cm -V fontsize=10pt "
-        "-V colorlinks=true -V 'header-includes=\\usepackage{{float}}\\floatplacement{{figure}}{{H}}'",
+        "-V colorlinks=true -V 'header-includes=\\usepackage{{float}}\\floatplacement{{figure}}{{htbp}}'",
         staging.string());
     if (run_tool(pandoc, staging / "pandoc.log") != 0)
       throw ToolFailed(fmt::format("pandoc could not make report.pdf:{}\nits input and log are kept in {} (the next report into "

@@ -9,11 +9,14 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "analysis/collision.hpp"
 #include "analysis/convergence.hpp"
+#include "analysis/order_reduction.hpp"
+#include "analysis/scaling.hpp"
 #include "analysis/stability.hpp"
 #include "analysis/work_precision.hpp"
 #include "reports/document/report_config.hpp"
@@ -28,6 +31,8 @@ enum ReportStudy : unsigned {
   kCollisionStudy = 4,
   kWorkPrecisionStudy = 8,
   kSceneFigures = 16,  // cannon, spring
+  kStiffOrderStudy = 32,  // does the order hold when stiff: the stiffened scene's sweep
+  kScalingStudy = 64,     // as the system grows: every covered scene of run-time size, and the first one's map
   kFindings = kConvergenceStudy | kStabilityStudy,
 };
 
@@ -44,6 +49,11 @@ struct ReportData {
   StabilityMap map;
   CollisionResult collision;
   WorkPrecisionResult work;  // spring and chain, with the peers; the stiffness sweep
+  OrderReduction stiff_order;  // the stiffened scene's order against its stiffness
+  // Each covered scene of config.scaling refined (the report's error, its first stiffness), and the
+  // first one that declares a stiffness, stiffened as well at the map's sizes (both targets).
+  std::vector<ScalingResult> scaling;
+  std::optional<ScalingResult> scaling_map;
   // figure data
   std::vector<RunResult<2>> cannon;               // [method]: the projectile's path
   std::vector<std::vector<RunResult<1>>> spring;  // [figure dt][method]
@@ -64,13 +74,27 @@ struct MethodFinding {
   double growth_large_dt;     // measured d ln E / dt at config.large_dt
   double again_measured;      // stable again from here (at the spring's damping; inf: never)
   double dt_undamped_theory, dt_undamped_measured;  // at damping 0
+  // At damping 0, where the method is stable again beyond dt* (predicted / measured; inf: at no
+  // step the threshold search tried), and whether any step of the stability map is stable there.
+  double again_undamped_theory, again_undamped_measured;
+  bool map_stable_undamped;
 };
 
+// What the shared studies say, every statistic and every list over the numerical methods only:
+// the exact flow is the reference the others are measured against, not one of them.
 struct Findings {
-  std::vector<MethodFinding> rows;
-  double spearman = 0;                  // rank correlation of declared order and measured dt*, pooled
-  std::vector<std::size_t> stable_large, unstable_large, stable_undamped, unstable_undamped;
-  std::vector<std::size_t> never_stable_undamped, always_stable;  // predicted dt* = 0 at gamma = 0 / inf
+  std::vector<MethodFinding> rows;  // every method of the report, the exact flow's row included (the tables')
+  std::vector<std::size_t> numerical;   // the rows of the numerical methods
+  // Spearman's rank correlation of the declared order and the measured dt* at the spring's
+  // damping, over the numerical methods (spearman_n of them); NaN for fewer than 2.
+  double spearman = 0;
+  std::size_t spearman_n = 0;
+  std::vector<std::size_t> stable_large, unstable_large, stable_undamped, unstable_undamped;  // rows, numerical
+  // Undamped, unstable at every small step (predicted dt* = 0): all of them; of those, the ones
+  // stable at no step at all (neither the threshold search nor the map found one); the others are
+  // stable again from again_undamped_*.
+  std::vector<std::size_t> unstable_small_undamped, never_stable_undamped;
+  std::vector<std::size_t> always_stable;  // dt* unbounded at the spring's damping: stable at every step tried
 };
 
 Findings compute_findings(const ReportData& d);
@@ -97,6 +121,8 @@ struct Report {
 };
 
 Report build_report(const ReportConfig& config, ProgressHook progress = nullptr);
+// The report's figures (their scripts) in the order its sections list them: figure n is the n-th.
+std::vector<std::string> figure_order(const Report& r);
 
 std::string report_markdown(const Report& r, const std::string& figure_ext, const std::string& footer);
 

@@ -182,7 +182,7 @@ ReportConfig sheet_report_config() {
   ReportConfig c = default_report_config();
   choose_methods(c, {kSheetMethods.begin(), kSheetMethods.end()}, "the sheet's methods");
   choose_scenes(c, {std::string(kSheetOscillator), std::string(kSheetProjectile)}, "the sheet's scenes");
-  c.sections = {"sheet", "summary", "stable", "order", "scenes", "convergence", "reproduce"};
+  c.sections = {"answers", "sheet", "summary", "stable", "order", "energy", "scenes", "convergence", "advice", "reproduce"};
   return c;
 }
 

@@ -8,6 +8,7 @@
 
 #include "analysis/parallel.hpp"
 #include "analysis/kernel.hpp"
+#include "analysis/peers.hpp"
 #include "core/scenes/spring.hpp"
 #include "reports/document/report.hpp"
 
@@ -49,6 +50,41 @@ template <int D> RunResult<D> figure_run(std::size_t method, std::size_t scene, 
   spec.max_samples = samples;
   spec.errors = false;
   return to_fixed<D>(pair_kernel(method, scene).run(params, spec));
+}
+
+// The scaling study of a scene of the report's sizes (analysis/scaling.hpp): the scene's defaults,
+// as `study scaling --scene ...` has them, at the report's error, on the methods that run on it.
+ScalingConfig scaling_config_for(const ReportData& d, const ReportSizes& s) {
+  ScalingConfig c = scaling_config(scene_name(s.scene));
+  c.sizes = s.sizes;
+  c.targets = {{d.config.scaling_error, false}};
+  c.timing_seconds = kTimingSeconds;  // the report's timing budget per run (analysis/convergence.hpp)
+  c.t_end = d.config.scaling_t_end;
+  for (std::size_t m : d.numerical_methods())
+    if (applies(m, s.scene)) c.methods.push_back(m);  // a scene without Jacobians: the explicit methods
+  c.timing = d.config.timing;
+  c.workers = d.workers;
+  return c;
+}
+
+// The peers on the map: CVODE as its guide would set it up for stiff oscillations, Adams or BDF of
+// orders 1-2 (A-stable); its BDF of orders up to 5, unstable near the imaginary axis, crawls over
+// the stiff scenes' lightly damped fast modes (up to 200 000 steps a run at K 5000, N 128), which
+// the scaling study above already shows; and the explicit adaptive solvers.
+bool map_peer(const PeerInfo& p) {
+  return !p.is_cvode() || p.cvode.adams || (p.cvode.max_order >= 1 && p.cvode.max_order <= 2);
+}
+
+// The map's study: the scene at the map's sizes, stiffened, at the report's error and the visual one.
+ScalingConfig scaling_map_config(const ReportData& d, const ReportSizes& s) {
+  ScalingConfig c = scaling_config_for(d, s);
+  const SceneKernel& k = scene_kernel(s.scene);
+  c.sizes = d.config.scaling_map_sizes;
+  for (double f : d.config.scaling_stiffening) c.stiffnesses.push_back(f * c.params[static_cast<std::size_t>(k.stiffness_param)]);
+  c.targets.push_back({d.config.scaling_visual, true});
+  c.max_steps = kReportMapSteps;
+  std::erase_if(c.adaptive, [](const std::string& a) { return !map_peer(*find_peer(a)); });
+  return c;
 }
 
 }  // namespace
@@ -116,6 +152,19 @@ ReportData run_report_studies(const ReportConfig& c, unsigned studies, ProgressH
   wc.timing = c.timing;
   wc.workers = d.workers;
   if (studies & kWorkPrecisionStudy) d.work = work_precision_study(wc);
+
+  if ((studies & kStiffOrderStudy) && c.covers(c.stiffened.scene)) {
+    ConvergenceConfig so = stiff_order_config(c.stiffened.scene, c.stiffened.params, c.stiff_order, d.numerical_methods());
+    so.workers = d.workers;
+    d.stiff_order = order_reduction(so, c.stiff_order.stiffnesses);
+  }
+  if (studies & kScalingStudy)
+    for (const ReportSizes& s : c.scaling)
+      if (c.covers(s.scene)) {
+        if (d.scaling.empty() && scene_kernel(s.scene).stiffness_param >= 0 && !c.scaling_map_sizes.empty())
+          d.scaling_map = scaling_study(scaling_map_config(d, s));
+        d.scaling.push_back(scaling_study(scaling_config_for(d, s)));
+      }
 
   // Figures: the cannon ball's path and the spring's y(t) (kSceneFigures); the undamped energy at
   // the large step and the predicted growth rate against damping on a fine grid (kStabilityStudy).
@@ -197,9 +246,11 @@ Findings compute_findings(const ReportData& d) {
       if (r.method == m && r.dt == dt && r.damping == damping) return &r;
     return nullptr;
   };
+  // the stability map's undamped row, if it has one
+  const auto undamped_row = std::find(d.map.damping.begin(), d.map.damping.end(), 0.0);
   for (std::size_t i = 0; i < d.methods.size(); ++i) {
     const std::size_t m = d.methods[i];
-    MethodFinding row{m, &conv.fits[i], false, false, 0, 0, 0, 0, 0, 0};
+    MethodFinding row{m, &conv.fits[i], false, false, 0, 0, 0, 0, 0, 0, INFINITY, INFINITY, false};
     const SweepRow* large = sweep_row(m, c.large_dt, gamma);
     const SweepRow* undamped = sweep_row(m, c.small_dt, 0.0);
     const ThresholdRow* th = find_threshold(d, m, gamma);
@@ -212,20 +263,33 @@ Findings compute_findings(const ReportData& d) {
     const ThresholdRow* th0 = find_threshold(d, m, 0.0);
     row.dt_undamped_theory = th0 ? th0->dt_theory : NAN;
     row.dt_undamped_measured = th0 ? th0->dt_measured : NAN;
+    if (th0) row.again_undamped_theory = th0->again_theory, row.again_undamped_measured = th0->again_measured;
+    const auto in_map = std::find(d.map.methods.begin(), d.map.methods.end(), m);
+    if (in_map != d.map.methods.end() && undamped_row != d.map.damping.end()) {
+      const auto& cells = d.map.stable[static_cast<std::size_t>(in_map - d.map.methods.begin())]
+                                      [static_cast<std::size_t>(undamped_row - d.map.damping.begin())];
+      row.map_stable_undamped = std::find(cells.begin(), cells.end(), true) != cells.end();
+    }
+    f.rows.push_back(row);
+    if (method_info(m).exact_flow) continue;  // the reference, in no list and no statistic
+    f.numerical.push_back(i);
     (row.stable_large_dt ? f.stable_large : f.unstable_large).push_back(i);
     (row.stable_undamped ? f.stable_undamped : f.unstable_undamped).push_back(i);
-    if (row.dt_undamped_theory == 0) f.never_stable_undamped.push_back(i);
+    if (row.dt_undamped_theory == 0) {
+      f.unstable_small_undamped.push_back(i);
+      if (std::isinf(row.again_undamped_theory) && std::isinf(row.again_undamped_measured) && !row.map_stable_undamped)
+        f.never_stable_undamped.push_back(i);
+    }
     if (std::isinf(row.dt_theory)) f.always_stable.push_back(i);
-    f.rows.push_back(row);
   }
-  // Order (the exact flow: infinite) against measured dt* over every method.
+  // Declared order against measured dt*, over the numerical methods.
   std::vector<double> order, dt;
-  for (const MethodFinding& r : f.rows) {
-    const MethodInfo& info = method_info(r.method);
-    order.push_back(info.exact_flow ? INFINITY : info.order);
-    dt.push_back(r.dt_measured);
+  for (std::size_t i : f.numerical) {
+    order.push_back(method_info(f.rows[i].method).order);
+    dt.push_back(f.rows[i].dt_measured);
   }
-  f.spearman = spearman(order, dt);
+  f.spearman_n = order.size();
+  f.spearman = order.size() >= 2 ? spearman(order, dt) : NAN;
   return f;
 }
 

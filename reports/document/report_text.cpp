@@ -14,6 +14,7 @@ namespace steplab {
 
 std::string name(std::size_t m) { return std::string(method_info(m).name); }
 std::string dt_text(double x) { return std::isinf(x) ? "inf" : std::isnan(x) ? "-" : fmt::format("{:.4g}", x); }
+std::string table_dt(double x) { return std::isinf(x) ? "$\\infty$" : dt_text(x); }
 std::string num(double x) { return std::isfinite(x) ? fmt::format("{}", x) : "NaN"; }
 
 std::string order_text(std::size_t m) {
@@ -44,18 +45,15 @@ std::string method_list(const std::vector<std::size_t>& methods) {
 }
 
 std::string fits_table(const ConvergenceResult& r) {
-  std::string out =
-      "| method | declared | order | bound | window slope [95 % t] | R² | points | dt range |\n"
-      "|------------------|-----:|------:|-----------------|-----------------------|-------:|-----:|-------------------|\n";
+  std::string out = "| method | declared | fitted order [bound] | points | dt range |\n"
+                    "|------------------|-----:|-----------------------|-----:|-------------------|\n";
   for (const ConvergenceFit& f : r.fits) {
-    const MethodInfo& info = method_info(f.method);
-    const std::string declared = order_text(f.method);
-    if (f.fit.exact) out += fmt::format("| `{}` | {} | exact | - | - | - | - | - |\n", info.name, declared);
-    else if (!f.fit.fitted) out += fmt::format("| `{}` | {} | - ({}) | - | - | - | - | - |\n", info.name, declared, f.fit.note);
+    if (method_info(f.method).exact_flow || f.fit.exact) continue;  // the reference; the exact ones named in a sentence
+    const std::string n(method_info(f.method).name);
+    if (!f.fit.fitted) out += fmt::format("| `{}` | {} | - ({}) | - | - |\n", n, order_text(f.method), f.fit.note);
     else
-      out += fmt::format("| `{}` | {} | {:.3f} | [{:.3f}, {:.3f}] | {:.3f} [{:.3f}, {:.3f}] | {:.5f} | {} | {:.3g} – {:.3g} |\n",
-                         info.name, declared, f.fit.order, f.fit.bound_lo, f.fit.bound_hi, f.fit.line.slope, f.fit.line.ci95_lo,
-                         f.fit.line.ci95_hi, f.fit.line.r2, f.fit.line.n, f.fit.dt_lo, f.fit.dt_hi);
+      out += fmt::format("| `{}` | {} | {} | {} | {:.3g} – {:.3g} |\n", n, order_text(f.method), fitted_text(f), f.fit.line.n,
+                         f.fit.dt_lo, f.fit.dt_hi);
   }
   return out;
 }

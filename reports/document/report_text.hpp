@@ -15,12 +15,13 @@ namespace steplab {
 
 std::string name(std::size_t method);                     // the method's table name
 std::string dt_text(double x);                            // 4 significant digits, inf, or - for NaN
+std::string table_dt(double x);                           // the same for a table: $\infty$ for inf
 std::string num(double x);                                // full precision for data files; NaN if not finite
 std::string order_text(std::size_t method);               // declared order, or "exact"
 std::string fitted_text(const ConvergenceFit& fit);       // headline order and its bound
 std::string and_list(const std::vector<std::string>& items);       // a, b and c
 std::string method_list(const std::vector<std::size_t>& methods);  // `a`, `b` and `c`; "none"
-std::string fits_table(const ConvergenceResult& r);       // the Markdown table of fitted orders
+std::string fits_table(const ConvergenceResult& r);       // the Markdown table of fitted orders (not the exact ones)
 // "mass 1, stiffness 5, ..." in table order; `skip`: a parameter's index to leave out (-1: none).
 std::string params_text(std::size_t scene, const std::vector<double>& values, int skip = -1);
 std::string wrapped(const std::string& cmd);              // a shell command broken for the page

@@ -51,19 +51,31 @@ std::vector<Panel> family_panels(const std::vector<std::size_t>& methods,
                                  const std::function<bool(std::size_t)>& drawn = nullptr);
 
 // What a section's Markdown may use: the shared data and findings, and the figure numbering.
+// The report's figures are numbered in the order the sections list them (Section::figures), the
+// order the Markdown must show them in: figure n is drawn into figures/fig<n>_<script>.<ext>.
 class Page {
  public:
-  Page(const ReportData& d, const Findings& f, std::string ext) : data(d), findings(f), ext_(std::move(ext)) {}
+  Page(const ReportData& d, const Findings& f, std::string ext, std::vector<std::string> figures)
+      : data(d), findings(f), ext_(std::move(ext)), order_(std::move(figures)) {}
   const ReportData& data;
   const Findings& findings;
-  // ![caption](figures/<file>.<ext>): numbered "Figure n:" in the Markdown; LaTeX numbers the PDF's.
-  std::string figure(const std::string& file, const std::string& caption);
+  // ![caption](figures/fig<n>_<script>.<ext>): numbered "Figure n:" in the Markdown; LaTeX numbers
+  // the PDF's alike. std::logic_error if `script` is not the next figure of the report's order.
+  std::string figure(const std::string& script, const std::string& caption);
+  // Whether the report draws this figure, and its number (0: it does not): for a sentence that
+  // points to a figure of another section, before or after.
+  bool has(const std::string& script) const { return number(script) > 0; }
+  int number(const std::string& script) const;
   int next_figure() const { return figure_ + 1; }
 
  private:
   std::string ext_;
+  std::vector<std::string> order_;
   int figure_ = 0;
 };
+
+// figures/fig<n>_<script>: the file a figure is drawn into.
+std::string figure_file(int number, const std::string& script);
 
 // A section's `missing()` for the scenes it needs: "" if the config covers each of them, else
 // "it needs `bounce` and `falling`, not among the chosen scenes".
@@ -76,6 +88,8 @@ std::string uncovered_for(const ReportConfig& c, unsigned studies);
 class Section {
  public:
   virtual ~Section() = default;
+  // Its name in the section list (sections.hpp): its data go to data/<id>/.
+  std::string id;
   // The shared studies it reads (ReportStudy bits): the report runs those of its chosen sections.
   virtual unsigned needs() const { return 0; }
   // Why it cannot be made from the config's choice (a scene it needs is not covered), or "": the

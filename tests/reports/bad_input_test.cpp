@@ -129,6 +129,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"study scaling --stiffness 5,,50", "--stiffness"}, BadInput{"study scaling --error 1e-4,abc%", "--error"},
         BadInput{"study scaling --error 0", "--error"}, BadInput{"study scaling --error ,", "--error"},
         BadInput{"study scaling --frames 0", "--frames"}, BadInput{"study scaling --frames 2.5", "--frames"},
+        // a list names each value once, as the others do
+        BadInput{"study scaling --stiffness 5,5", "--stiffness names 5 twice"},
+        BadInput{"study scaling --error 1e-4,1e-4", "--error names 0.0001 twice"},
+        BadInput{"study scaling --error 1%,1%", "--error names 1% twice"}, BadInput{"study scaling --sizes 8,8", "--sizes names 8 twice"},
         BadInput{"run --scene softbody --grid 0", "--grid"}, BadInput{"run --scene softbody --masses 4", "--masses"},
         // check
         BadInput{"check", "--method"}, BadInput{"check --method heun", "heun"},

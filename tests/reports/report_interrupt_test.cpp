@@ -64,7 +64,7 @@ TEST(ReportInterrupted, PreviousReportStaysIntact) {
   const Result first = run_steplab("report --config " + config + " --out " + out);
   ASSERT_EQ(first.status, 0) << first.err;
   const auto before = snapshot(out);
-  ASSERT_TRUE(before.count("report.pdf") && before.count("report.md") && before.count("data/stability.json"));
+  ASSERT_TRUE(before.count("report.pdf") && before.count("report.md") && before.count("data/stability/stability.json"));
 
   int interrupted = 0;
   for (int ms : {300, 1500}) {  // during the studies, and during the figures

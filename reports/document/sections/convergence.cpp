@@ -71,7 +71,7 @@ class Convergence : public Section {
         if (conv.records[i * nd + k].status == RunStatus::Ok && conv.records[i * nd + k].error_final > 0) return true;
       return false;
     };
-    return {{"fig3_convergence", "", family_panels(d.methods, has_points)}};
+    return {{"convergence", "", family_panels(d.methods, has_points)}};
   }
 
   std::string markdown(Page& page) const override {
@@ -80,35 +80,54 @@ class Convergence : public Section {
     const ConvergenceResult& shown = drawn(d);
     std::string md = "## " + title() + "\n\n";
     md += fmt::format(
-        "Errors against the exact solution over {} steps from {} to {} (t = {}). The order is the asymptotic one: over "
-        "the range of steps where the local slopes have settled, ln e = a + p ln dt + b dt^q is fitted, the next error "
-        "term modelled (q = 1, or 2 for a method whose error expands in dt^2, whichever fits better). Its *bound* is "
-        "round-off noise (95 %) plus the truncation left over (the same fit without the two smallest steps, and the other "
-        "q): a bound, not a confidence interval. The window's plain least-squares slope is shown beside it; its Student-t "
-        "interval is not a statement about the order, because truncation error is smooth, not random.\n\n",
-        shown.dts.size(), c.conv_dt_max, c.conv_dt_min, c.conv_t_end);
+        "Errors against the exact solution at t = {} over {} steps from {} to {}. The order is the asymptotic one: over the "
+        "steps where the local slopes have settled, ln e = a + p ln dt + b dt^q^ is fitted with the next error term "
+        "modelled. Its *bound* is round-off noise (95 %) plus the truncation left over: a bound on the order, not a "
+        "confidence interval (truncation error is smooth, not random).\n\n",
+        c.conv_t_end, shown.dts.size(), c.conv_dt_max, c.conv_dt_min);
     for (const ConvergenceResult& r : d.convergence)
       if (r.uses_reference)
         md += fmt::format("{} has no exact solution: its errors are final-position errors against a reference solution "
                           "(dopri5 at rtol = atol = {:g}, its own error estimated at {:.2g}).\n\n",
                           scene_kernel(r.config.scene).title, r.reference.rtol, r.reference.estimated_error);
-    const std::string on = shown.config.scene == c.oscillator.scene ? "the spring" : std::string(scene_kernel(shown.config.scene).title);
-    md += page.figure("fig3_convergence", fmt::format("error against dt on {}, a panel per family: least-squares lines (solid) and reference slopes 1, 2, 4 (grey, dashed)", on));
     int diverged = 0, runs = 0;
     for (const ConvergenceResult& r : d.convergence)
       for (const ConvergenceRecord& rec : r.records) diverged += rec.status != RunStatus::Ok, ++runs;
-    md += diverged == 0 ? fmt::format("All {} runs of the convergence studies stayed finite.\n\n", runs)
-                        : fmt::format("{} of the {} runs of the convergence studies diverged (a non-finite state, recorded "
-                                      "with its step in `data/`); they are left out of the fits and of figure {}.\n\n",
-                                      diverged, runs, page.next_figure() - 1);
+    if (diverged > 0)
+      md += fmt::format("{} of the {} runs diverged (a non-finite state, recorded with its step in `data/`); the fits and the "
+                        "figure leave them out.\n\n", diverged, runs);
     for (const ConvergenceResult& r : d.convergence) {
       if (r.config.scene == c.rebound.scene) continue;  // in the collision section
-      md += std::string(scene_kernel(r.config.scene).title);
-      if (r.config.scene == c.projectile.scene)
-        md += " (constant acceleration: every method of order 2 or more, and every Adams-Bashforth and BDF method, is exact on it)";
-      md += ":\n\n" + fits_table(r) + "\n";
+      if (r.config.scene == c.oscillator.scene && c.has_section("summary")) {
+        md += "Spring: its fitted orders are the summary's; the steps each was fitted over are in "
+              "`data/convergence/convergence_spring.json`.\n\n";
+        continue;
+      }
+      md += scene_fits(r);
     }
+    const std::string on = shown.config.scene == c.oscillator.scene ? "the spring" : std::string(scene_kernel(shown.config.scene).title);
+    if (page.has("convergence"))
+      md += page.figure("convergence", fmt::format("Error against dt on {}, a panel per family: least-squares lines over the "
+                                                   "fitted window (solid), slopes 1, 2 and 4 for reference (grey, dashed)", on));
     return md;
+  }
+
+ private:
+  // A scene's fits: the methods exact on it (to round-off) in a sentence, the others in a table,
+  // or in the sentence too where they are few.
+  static std::string scene_fits(const ConvergenceResult& r) {
+    std::vector<std::size_t> exact;
+    std::vector<const ConvergenceFit*> fitted;
+    for (const ConvergenceFit& f : r.fits)
+      if (!method_info(f.method).exact_flow) (f.fit.exact ? exact.push_back(f.method) : fitted.push_back(&f));
+    const std::string scene(scene_kernel(r.config.scene).title);
+    if (exact.empty()) return scene + ":\n\n" + fits_table(r) + "\n";
+    std::string md = fmt::format("{}: exact to round-off for {}", scene, method_list(exact));
+    if (fitted.empty()) return md + ".\n\n";
+    if (fitted.size() > 3) return md + "; the others:\n\n" + fits_table(r) + "\n";
+    std::vector<std::string> others;
+    for (const ConvergenceFit* f : fitted) others.push_back(fmt::format("`{}` {}", name(f->method), fitted_text(*f)));
+    return md + fmt::format("; {} at {}.\n\n", fitted.size() == 1 ? "the other converges" : "the others converge", and_list(others));
   }
 };
 

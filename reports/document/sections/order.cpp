@@ -10,11 +10,15 @@
 #include <fmt/format.h>
 
 #include "analysis/kernel.hpp"
+#include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
 
 namespace steplab {
 namespace {
+
+// dt* in a sentence: "unbounded" where every step tried is stable.
+std::string dt_words(double x) { return std::isinf(x) ? "unbounded" : dt_text(x); }
 
 // Two measured dt* differ when one is 0 or inf and the other not, or when they are a factor 2 apart:
 // well beyond the threshold search's resolution, which is a few per cent.
@@ -37,7 +41,7 @@ class Order : public Section {
     const auto dts = [](const std::vector<const MethodFinding*>& rows) {
       std::vector<std::string> out;
       for (const MethodFinding* r : rows)
-        out.push_back(fmt::format("`{}` {} ({} undamped)", name(r->method), dt_text(r->dt_measured), dt_text(r->dt_undamped_measured)));
+        out.push_back(fmt::format("`{}` {} ({} undamped)", name(r->method), dt_words(r->dt_measured), dt_words(r->dt_undamped_measured)));
       return and_list(out);
     };
     std::string md = "## " + title() + "\n\n";
@@ -50,20 +54,13 @@ class Order : public Section {
         for (const MethodFinding* b : rows) same_order_differ |= differ(a->dt_measured, b->dt_measured);
     }
     md += "\n";
-    // Each family's methods among these (family_members: by order), from its lowest order to its highest.
-    const auto dt_of = [&](std::size_t m) -> double {
-      for (const MethodFinding& r : page.findings.rows)
-        if (r.method == m) return r.dt_measured;
-      return NAN;
-    };
+    // Each family's methods among these, by order: how dt* moves from its lowest order to its highest.
     std::vector<std::string> trends;
-    for (Family f : kReportFamilies) {
-      const std::vector<std::size_t> fam = family_members(page.data.methods, f);
-      if (fam.size() < 2 || method_info(fam.front()).order == method_info(fam.back()).order) continue;
-      const double lo = dt_of(fam.front()), hi = dt_of(fam.back());
+    for (const FamilyTrend& t : family_trends(page.data, gamma)) {
+      const double lo = t.dt.front(), hi = t.dt.back();
       const char* way = !differ(lo, hi) ? "stays about the same" : (hi > lo ? "grows" : "shrinks");
-      trends.push_back(fmt::format("in the {} family dt* {} with the order (`{}` {}, `{}` {})", to_string(f), way, name(fam.front()),
-                                   dt_text(lo), name(fam.back()), dt_text(hi)));
+      trends.push_back(fmt::format("in the {} family dt* {} with the order (`{}` {}, `{}` {})", to_string(t.family), way,
+                                   name(t.members.front()), dt_words(lo), name(t.members.back()), dt_words(hi)));
     }
     if (same_order_differ)
       md += "**Not as a rule.** Methods of the same order are stable up to very different steps: how a method is built "
@@ -74,8 +71,10 @@ class Order : public Section {
     else
       md += "No two of these methods share an order, so only a family's methods set side by side can answer it.";
     if (!trends.empty()) md += fmt::format(" Within one construction the order does move it: {}.", and_list(trends));
-    md += fmt::format(" Pooled over all {} methods, Spearman's rank correlation between order and dt* is {:.2f}.\n\n",
-                      page.findings.rows.size(), page.findings.spearman);
+    if (page.findings.spearman_n >= 3)
+      md += fmt::format(" Over these {} methods, Spearman's rank correlation between order and dt* is {:.2f} ({}).",
+                        page.findings.spearman_n, page.findings.spearman, correlation_words(page.findings.spearman));
+    md += "\n\n";
     return md;
   }
 };

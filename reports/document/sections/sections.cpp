@@ -29,7 +29,7 @@ std::vector<std::unique_ptr<Section>> report_sections(const std::vector<std::str
   const auto wanted = [&](const char* n) { return std::find(chosen.begin(), chosen.end(), n) != chosen.end(); };
   std::vector<std::unique_ptr<Section>> out;
 #define STEPLAB_MAKE_SECTION(n, full) \
-  if (wanted(#n)) out.push_back(make_##n##_section());
+  if (wanted(#n)) out.push_back(make_##n##_section()), out.back()->id = #n;
   STEPLAB_REPORT_SECTIONS(STEPLAB_MAKE_SECTION)
 #undef STEPLAB_MAKE_SECTION
   return out;

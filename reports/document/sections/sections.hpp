@@ -6,16 +6,20 @@
 #pragma once
 
 #define STEPLAB_REPORT_SECTIONS(X) \
+  X(answers, true)                 \
   X(sheet, false)                  \
   X(summary, true)                 \
-  X(stable, true)                  \
+  X(stable, false)                 \
   X(order, false)                  \
   X(families, true)                \
-  X(scenes, true)                  \
+  X(energy, true)                  \
+  X(scenes, false)                 \
   X(convergence, true)             \
   X(stiff_order, true)             \
   X(stability, true)               \
   X(cost, true)                    \
   X(collision, true)               \
   X(growth, true)                  \
+  X(advice, true)                  \
+  X(physics, true)                 \
   X(reproduce, true)

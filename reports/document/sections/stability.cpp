@@ -1,83 +1,118 @@
-// Stability on the spring: thresholds predicted and measured, the undamped energy at the large
-// step, growth rates against damping, and the (dt, damping) maps grouped by family.
+// Stability on the spring in detail: dt* predicted from each method's step map against dt*
+// measured, at every damping; the energy growth rate against damping at the sheet's step; and
+// the measured edge of stability over (dt, damping) against the predicted one.
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
 
 #include "analysis/kernel.hpp"
+#include "reports/data/study_output.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
-#include "reports/data/study_output.hpp"
 
 namespace steplab {
 namespace {
 
 class Stability : public Section {
  public:
-  std::string title() const override { return "Stability"; }
+  std::string title() const override { return "Stability in detail"; }
   unsigned needs() const override { return kStabilityStudy; }
   void write_data(const ReportData& d, const DataDir& dat) const override {
     dat.write("stability.json", stability_json(d.config.oscillator.params, d.thresholds, d.sweep, &d.map).dump(1) + "\n");
     for (std::size_t i = 0; i < d.methods.size(); ++i) {
       const std::string m = name(d.methods[i]);
-      std::string s = "# t energy_ratio\n";
-      const double e0 = d.energy[i].samples.empty() ? 1 : d.energy[i].samples.front().energy;
-      for (const auto& p : d.energy[i].samples) s += num(p.t) + " " + num(p.energy / e0) + "\n";
-      dat.write("energy_" + m + ".dat", s);
-      s = "# damping rate_measured\n";
+      std::string s = "# damping rate_measured\n";
       for (const SweepRow& r : d.sweep)
         if (r.method == d.methods[i] && r.dt == d.config.large_dt) s += num(r.damping) + " " + num(r.run.rate) + "\n";
       dat.write("sweep_" + m + ".dat", s);
       s = "# damping rate_predicted\n";
       for (std::size_t g = 0; g < d.curve_damping.size(); ++g) s += num(d.curve_damping[g]) + " " + num(d.curve_rate[i][g]) + "\n";
       dat.write("predicted_" + m + ".dat", s);
-      s = "# dt damping stable\n";
-      for (std::size_t g = 0; g < d.map.damping.size(); ++g)
-        for (std::size_t k = 0; k < d.map.dt.size(); ++k)
-          s += num(d.map.dt[k]) + " " + num(d.map.damping[g]) + " " + (d.map.stable[i][g][k] ? "1" : "0") + "\n";
-      dat.write("map_" + m + ".dat", s);
-      s = "# dt* damping\n";
+    }
+    // The map's edge per method: at each damping, the measured dt* (the first unstable step of the
+    // map's row, every smaller one stable) and the predicted one; where the row is stable again
+    // further out, that step too (a block of its own).
+    for (std::size_t i = 0; i < d.map.methods.size(); ++i) {
+      std::string s = "# damping dt_star_measured dt_star_predicted (index 0); damping stable_again_measured (index 1)\n", again;
       for (std::size_t g = 0; g < d.map.damping.size(); ++g) {
-        const double b = d.map.boundary[i][g];
-        if (b > 0 && std::isfinite(b)) s += num(std::min(b, d.map.dt.back())) + " " + num(d.map.damping[g]) + "\n";
+        const std::vector<bool>& row = d.map.stable[i][g];
+        const auto first_unstable = std::find(row.begin(), row.end(), false);
+        const std::size_t k = static_cast<std::size_t>(first_unstable - row.begin());
+        const double measured = k == 0 ? NAN : k == row.size() ? d.map.dt.back() : d.map.dt[k - 1];
+        const double predicted = std::min(d.map.boundary[i][g], d.map.dt.back());
+        s += num(d.map.damping[g]) + " " + num(measured) + " " + num(predicted > 0 ? predicted : NAN) + "\n";
+        const auto back = std::find(first_unstable, row.end(), true);
+        if (back != row.end()) again += num(d.map.damping[g]) + " " + num(d.map.dt[static_cast<std::size_t>(back - row.begin())]) + "\n";
       }
-      dat.write("boundary_" + m + ".dat", s);
+      dat.write("edge_" + name(d.map.methods[i]) + ".dat", s + "\n\n" + (again.empty() ? "NaN NaN\n" : again));
     }
   }
 
   std::vector<FigureSpec> figures(const ReportData& d) const override {
+    std::vector<FigureSpec> out;
     const std::vector<Panel> families = family_panels(d.methods);
-    return {{"fig4_energy", "", families}, {"fig5_damping", "", families}, {"fig6_maps", "", families}};
+    if (!families.empty()) out.push_back({"damping", "", families});
+    // the edge: the methods with a step of the map where they turn unstable (not those stable throughout)
+    const auto has_edge = [&](std::size_t m) {
+      const auto it = std::find(d.map.methods.begin(), d.map.methods.end(), m);
+      if (it == d.map.methods.end()) return false;
+      for (const std::vector<bool>& row : d.map.stable[static_cast<std::size_t>(it - d.map.methods.begin())])
+        if (std::find(row.begin(), row.end(), false) != row.end()) return true;
+      return false;
+    };
+    std::vector<Panel> edges = family_panels(d.methods, has_edge);
+    if (!edges.empty())
+      out.push_back({"maps", fmt::format("dtmin={}; dtmax={}", num(d.map.dt.front()), num(d.map.dt.back())), std::move(edges)});
+    return out;
   }
 
   std::string markdown(Page& page) const override {
     const ReportData& d = page.data;
     const ReportConfig& c = d.config;
-    std::string md = "## " + title() + "\n\n";
-    md += "dt*: the largest step with every smaller step stable. Where a method is stable again beyond dt* (its stable set "
-          "is not an interval), the last column says from where.\n\n"
-          "| method | damping | dt* predicted | dt* measured | stable again from (predicted / measured) |\n|---|---:|---:|---:|---:|\n";
+    std::vector<double> dampings;
     for (const ThresholdRow& r : d.thresholds)
-      md += fmt::format("| `{}` | {} | {} | {} | {} |\n", name(r.method), r.damping, dt_text(r.dt_theory), dt_text(r.dt_measured),
-                        std::isinf(r.again_theory) && std::isinf(r.again_measured)
-                            ? "-"
-                            : dt_text(r.again_theory) + " / " + dt_text(r.again_measured));
-    md += "\n";
-    std::string ended;
-    for (std::size_t i = 0; i < d.energy.size(); ++i)
-      if (d.energy[i].status != RunStatus::Ok)
-        ended += fmt::format("{}`{}` at t = {:g}", ended.empty() ? "" : ", ", name(d.methods[i]), d.energy[i].failed_t);
-    const int energy_fig = page.next_figure();
-    md += page.figure("fig4_energy", fmt::format("energy ratio E/E0 against time without damping at dt {} (log scale), a panel per family", c.large_dt));
-    if (!ended.empty()) md += fmt::format("In figure {} the curves of runs that diverged end where they did: {}.\n\n", energy_fig, ended);
-    md += page.figure("fig5_damping", fmt::format("energy growth rate against damping at dt {}: measured (points), predicted "
-                                                  "2 ln(rho)/h (lines), a panel per family", c.large_dt));
-    md += page.figure("fig6_maps", "measured stable (dark) and unstable (light) steps over (dt, damping), one row per family; "
-                                   "predicted dt* (line). Cells that disagree with the prediction at that cell: see `data/stability.json`");
+      if (std::find(dampings.begin(), dampings.end(), r.damping) == dampings.end()) dampings.push_back(r.damping);
+    std::sort(dampings.begin(), dampings.end());
+    std::string md = "## " + title() + "\n\n";
+    md += "dt* measured (predicted from the whole step map's spectral radius, a multistep method's memory included), at each "
+          "damping; \"again\": where a method is stable again beyond dt*, measured (predicted).\n\n| method |";
+    std::string rule = "|------------|";
+    for (double g : dampings) md += fmt::format(" damping {} |", g), rule += "-------|";
+    md += "\n" + rule + "\n";
+    std::size_t agree = 0, rows = 0;
+    for (std::size_t m : d.methods) {
+      if (method_info(m).exact_flow) continue;
+      md += fmt::format("| `{}` |", name(m));
+      for (double g : dampings) {
+        const ThresholdRow* r = find_threshold(d, m, g);
+        if (!r) {
+          md += " - |";
+          continue;
+        }
+        ++rows;
+        agree += r->dt_theory == r->dt_measured || std::abs(r->dt_measured / r->dt_theory - 1) <= 0.01;
+        md += fmt::format(" {} ({}){} |", table_dt(r->dt_measured), table_dt(r->dt_theory),
+                          std::isinf(r->again_measured) && std::isinf(r->again_theory)
+                              ? ""
+                              : fmt::format("; again {} ({})", table_dt(r->again_measured), table_dt(r->again_theory)));
+      }
+      md += "\n";
+    }
+    md += fmt::format("\nThe measured dt* is within 1 % of the prediction in {} of these {} cases.\n\n", agree, rows);
+    if (page.has("damping"))
+      md += page.figure("damping", fmt::format("Energy growth rate d ln E / dt against damping at dt = {}: measured (points), "
+                                               "predicted 2 ln(rho) / h from the step map (lines), a panel per family", c.large_dt));
     std::size_t disagree = 0;
     for (std::size_t i = 0; i < d.map.methods.size(); ++i) disagree += disagreeing_cells(d.map, i);
     const std::size_t cells = d.map.methods.size() * d.map.damping.size() * d.map.dt.size();
-    md += fmt::format("Of the map's {} cells, {} disagree with the step matrix's prediction at that cell.\n\n", cells, disagree);
+    md += fmt::format("Over a grid of {} steps from {} to {} and {} dampings from 0 to {:.3g}, each cell a run: {} of its {} cells "
+                      "disagree with the step map's prediction at that cell.\n\n",
+                      d.map.dt.size(), c.map_dt_min, c.map_dt_max, d.map.damping.size(), d.map.damping.back(), disagree, cells);
+    if (page.has("maps"))
+      md += page.figure("maps", "The edge of stability over (dt, damping): the measured dt* of each damping's row of runs "
+                                "(points: the largest step of the grid with every smaller one stable), the predicted one "
+                                "(lines), and where a row is stable again further out (open points), a panel per family");
     return md;
   }
 };

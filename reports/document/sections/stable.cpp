@@ -1,4 +1,8 @@
 // The sheet's first question: which methods are stable at its large step, and without damping?
+// The exact flow is the reference, in none of the lists.
+#include <algorithm>
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "reports/document/report_text.hpp"
@@ -24,11 +28,25 @@ class Stable : public Section {
                       methods(f.stable_large), methods(f.unstable_large));
     md += fmt::format("- Without damping (dt = {}): stable: {}; unstable: {}.\n", c.small_dt, methods(f.stable_undamped),
                       methods(f.unstable_undamped));
+    // Unstable at every small step undamped (predicted dt* = 0): at every step tried, or stable again further out.
+    std::vector<std::string> again;
+    for (std::size_t i : f.unstable_small_undamped)
+      if (std::find(f.never_stable_undamped.begin(), f.never_stable_undamped.end(), i) == f.never_stable_undamped.end()) {
+        const MethodFinding& r = f.rows[i];
+        const double from = std::isfinite(r.again_undamped_measured) ? r.again_undamped_measured : r.again_undamped_theory;
+        again.push_back(std::isfinite(from) ? fmt::format("`{}` (stable again from dt = {})", name(r.method), dt_text(from))
+                                            : fmt::format("`{}` (stable at a larger step of the (dt, damping) map)", name(r.method)));
+      }
     if (!f.never_stable_undamped.empty())
-      md += fmt::format("- Without damping no step at all is stable for {} (predicted dt* = 0: the step map's spectral radius "
-                        "exceeds 1 for every h > 0 tried).\n", methods(f.never_stable_undamped));
+      md += fmt::format("- Without damping no step is stable for {}: the step map's spectral radius exceeds 1 at every "
+                        "small h, and neither the threshold search nor the map (up to dt = {}) finds a stable step.\n",
+                        methods(f.never_stable_undamped), c.map_dt_max);
+    if (!again.empty())
+      md += fmt::format("- Without damping no small step is stable for {}, but a larger one is: {} stable steps are not one "
+                        "interval from 0.\n",
+                        and_list(again), again.size() == 1 ? "its" : "their");
     if (!f.always_stable.empty())
-      md += fmt::format("- Stable at every step (dt* = inf at damping {}): {}.\n", c.damping(), methods(f.always_stable));
+      md += fmt::format("- Stable at every step tried (dt* = $\\infty$ at damping {}): {}.\n", c.damping(), methods(f.always_stable));
     return md + "\n";
   }
 };

@@ -1,4 +1,6 @@
-// The summary: one row per method, grouped by family, with what the answers below rest on.
+// The summary: one row per method, grouped by family, with what the answers rest on: its order
+// (declared and fitted), its largest stable step dt* undamped and at the spring's damping, and
+// whether it is stable at the sheet's two tests.
 #include <algorithm>
 
 #include <fmt/format.h>
@@ -10,6 +12,21 @@
 namespace steplab {
 namespace {
 
+// The family's name, shortened for a narrow column.
+std::string_view short_family(Family f) {
+  switch (f) {
+    case Family::ExplicitRungeKutta: return "explicit RK";
+    case Family::ImplicitRungeKutta: return "implicit RK";
+    case Family::Splitting: return "splitting";
+    default: return to_string(f);
+  }
+}
+
+// dt* with where the method is stable again beyond it: "0.2183, again from 0.7899".
+std::string threshold_cell(double dt, double again) {
+  return std::isfinite(again) && std::isfinite(dt) ? fmt::format("{}, again from {}", table_dt(dt), table_dt(again)) : table_dt(dt);
+}
+
 class Summary : public Section {
  public:
   std::string title() const override { return "Summary"; }
@@ -18,11 +35,10 @@ class Summary : public Section {
     const ReportConfig& c = page.data.config;
     const double gamma = c.damping();
     std::string md = "## " + title() + "\n\n";
-    // Widths for pandoc: the dashes of the rule set the columns' relative widths in the PDF.
-    md += fmt::format("| family | method | order | fitted order [bound] | stable: dt {} / undamped dt {} | dt* undamped | "
-                      "dt* at damping {} | stable again from | energy growth at dt {} (1/s) |\n"
-                      "|---------|--------------|---:|-------------------:|-------:|-----:|-----:|-----:|-----:|\n",
-                      c.large_dt, c.small_dt, gamma, c.large_dt);
+    // The dashes of the rule set pandoc's column widths in the PDF.
+    md += fmt::format("| family | method | order | fitted order [bound] | dt* undamped | dt* at damping {} | stable at dt {}, "
+                      "at dt {} undamped |\n|------|-----------|--|-----------|------|-------|-------|\n",
+                      gamma, c.large_dt, c.small_dt);
     std::vector<const MethodFinding*> rows;
     for (const MethodFinding& r : page.findings.rows) rows.push_back(&r);
     std::sort(rows.begin(), rows.end(),
@@ -32,22 +48,15 @@ class Summary : public Section {
       const MethodFinding& r = *rows[i];
       const Family f = method_info(r.method).family;
       const bool first = i == 0 || method_info(rows[i - 1]->method).family != f;  // the family named once per group
-      md += fmt::format("| {} | `{}` | {} | {} | {} / {} | {} | {} | {} | {:.3g} |\n", first ? to_string(f) : "", name(r.method),
-                        order_text(r.method), fitted_text(*r.fit), yes(r.stable_large_dt), yes(r.stable_undamped),
-                        dt_text(r.dt_undamped_measured), dt_text(r.dt_measured),
-                        std::isinf(r.again_measured) ? "-" : dt_text(r.again_measured), r.growth_large_dt);
+      md += fmt::format("| {} | `{}` | {} | {} | {} | {} | {}, {} |\n", first ? short_family(f) : "", name(r.method),
+                        order_text(r.method), fitted_text(*r.fit), threshold_cell(r.dt_undamped_measured, r.again_undamped_measured),
+                        threshold_cell(r.dt_measured, r.again_measured), yes(r.stable_large_dt), yes(r.stable_undamped));
     }
-    // Where the details are: the report's section, or the study that has them if it is not chosen.
-    const auto in = [&](const char* section, const char* title, const char* study) {
-      return c.has_section(section) ? std::string(title) : fmt::format("`steplab study {}`", study);
-    };
-    md += fmt::format("\nFitted orders: spring, final position error over t = {}, the asymptotic order and its bound (see "
-                      "{}). dt*: the largest step with every smaller step stable, measured (energy growth rate <= {:g} "
-                      "per unit time over {} steps; {} sets it beside the prediction from the spectral "
-                      "radius of the whole step map, a multistep method's memory included). \"Stable again from\": where a "
-                      "method whose stable set is not an interval is stable again beyond dt* (at damping {}).\n\n",
-                      c.conv_t_end, in("convergence", "Convergence", "convergence"), kStableRate, kRateSteps,
-                      in("stability", "the Stability section", "stability"), gamma);
+    md += fmt::format(
+        "\nFitted order: on the spring, the final position error over t = {}, with its bound (Convergence). dt*: the "
+        "largest step with every smaller step stable, measured ($\\infty$: every step tried is stable); where a method is "
+        "stable again beyond it, from where. Stable: energy growing by at most {:g} per unit time over {} steps.{}\n\n",
+        c.conv_t_end, kStableRate, kRateSteps, c.has_section("physics") ? " The terms: the appendix." : "");
     return md;
   }
 };

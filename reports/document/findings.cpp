@@ -1,0 +1,179 @@
+#include "reports/document/findings.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "analysis/kernel.hpp"
+#include "analysis/peers.hpp"
+#include "reports/document/report_text.hpp"
+
+namespace steplab {
+
+bool tied(double margin, bool timed) { return timed ? margin < kTieMargin : margin == 1; }
+
+std::string_view to_text(Trend t) {
+  switch (t) {
+    case Trend::StaysInfinite: return "stays unbounded";
+    case Trend::Rises: return "rises";
+    case Trend::Falls: return "falls";
+    case Trend::StaysTheSame: return "stays the same";
+    case Trend::Mixed: return "does not move one way";
+  }
+  return "?";
+}
+
+Trend trend(const std::vector<double>& dt) {
+  if (std::all_of(dt.begin(), dt.end(), [](double x) { return std::isinf(x); })) return Trend::StaysInfinite;
+  // Two measured dt* closer than the threshold search resolves them (analysis/stability.hpp) are equal.
+  const auto same = [](double a, double b) { return a == b || std::abs(a - b) <= kSameThreshold * std::max(a, b); };
+  bool up = false, down = false;
+  for (std::size_t i = 0; i + 1 < dt.size(); ++i)
+    if (!same(dt[i + 1], dt[i])) up |= dt[i + 1] > dt[i], down |= dt[i + 1] < dt[i];
+  return up && down ? Trend::Mixed : up ? Trend::Rises : down ? Trend::Falls : Trend::StaysTheSame;
+}
+
+std::vector<FamilyTrend> family_trends(const ReportData& d, double damping) {
+  std::vector<FamilyTrend> out;
+  for (Family f : kReportFamilies) {
+    const std::vector<std::size_t> fam = family_members(d.methods, f);
+    if (fam.size() < 2 || method_info(fam.front()).order == method_info(fam.back()).order) continue;
+    FamilyTrend t{f, fam, {}, Trend::Mixed};
+    for (std::size_t m : fam) {
+      const ThresholdRow* r = find_threshold(d, m, damping);
+      t.dt.push_back(r ? r->dt_measured : NAN);
+    }
+    t.trend = trend(t.dt);
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
+std::string correlation_words(double rho) {
+  const double a = std::abs(rho);
+  const char* strength = a < 0.3 ? "weak" : a < 0.7 ? "moderate" : "strong";
+  return std::string(strength) + (rho >= 0 ? " positive" : " negative");
+}
+
+std::string_view to_text(EnergyKind k) {
+  switch (k) {
+    case EnergyKind::Bounded: return "bounded";
+    case EnergyKind::Drifts: return "drifts";
+    case EnergyKind::Damped: return "damped out";
+    case EnergyKind::Blows: return "blows up";
+  }
+  return "?";
+}
+
+std::vector<EnergyBehaviour> energy_behaviour(const ReportData& d) {
+  std::vector<EnergyBehaviour> out;
+  for (std::size_t i = 0; i < d.methods.size() && i < d.energy.size(); ++i) {
+    const RunResult<1>& run = d.energy[i];
+    if (method_info(d.methods[i]).exact_flow || run.samples.empty()) continue;
+    EnergyBehaviour e{d.methods[i]};
+    const double e0 = run.samples.front().energy, t_end = run.samples.back().t;
+    for (const auto& s : run.samples) {
+      const double r = s.energy / e0;
+      e.lo = std::min(e.lo, r), e.hi = std::max(e.hi, r);
+      double& half = s.t <= t_end / 2 ? e.first_half : e.second_half;
+      half = std::max(half, std::abs(r - 1));
+    }
+    e.final_ratio = run.samples.back().energy / e0;
+    if (run.status != RunStatus::Ok) e.ended = run.failed_t;
+    e.kind = run.status != RunStatus::Ok || e.hi > kBlownRatio ? EnergyKind::Blows
+             : e.lo < 1 / kBlownRatio                           ? EnergyKind::Damped
+             : e.second_half <= kBoundedGrowth * e.first_half   ? EnergyKind::Bounded
+                                                                : EnergyKind::Drifts;
+    out.push_back(e);
+  }
+  return out;
+}
+
+std::vector<StiffClaim> stiff_claims(const OrderReduction& r) {
+  std::vector<StiffClaim> out;
+  const ConvergenceSweep& s = r.sweep;
+  for (std::size_t m = 0; m < r.methods.size(); ++m) {
+    const MethodReduction& mr = r.methods[m];
+    const StiffTheory& t = mr.theory;
+    StiffClaim c{mr.method, StiffVerdict::Keeps, t.classical, t.stiff};
+    c.non_stiff_order = mr.non_stiff.order, c.stiff_order = mr.stiff.order;
+    c.keeps_to = mr.keeps_to, c.reduced_from = mr.reduced_from;
+    c.starter = method_kernel(mr.method).starter;
+    if (t.stiff < 0) c.verdict = StiffVerdict::Unstable;
+    else if (!mr.stiff.reached || !mr.stiff.fitted) c.verdict = StiffVerdict::NotReached;
+    else if (!mr.stiff.holds || !mr.non_stiff.holds) c.verdict = StiffVerdict::Differs;
+    else if (t.stiff < t.classical) c.verdict = StiffVerdict::Falls;
+    else if (t.stiff > t.classical) c.verdict = StiffVerdict::Rises;
+    if (c.verdict == StiffVerdict::Keeps) {
+      // Kept at every stiffness only if every fit between the limits keeps it too.
+      double worst = 0;
+      for (std::size_t v = 0; v < s.values.size(); ++v) {
+        const OrderFit& f = s.studies[v].fits[m].fit;
+        if (!f.fitted || mr.past_stable[v]) continue;
+        const double off = std::abs(f.order - t.classical);
+        const bool keeps = off <= kStiffTolerance || (f.bound_lo <= t.classical && t.classical <= f.bound_hi);
+        if (!keeps && off > worst) {
+          worst = off, c.verdict = StiffVerdict::Strays;
+          c.stray_order = f.order, c.stray_lo = f.bound_lo, c.stray_hi = f.bound_hi, c.stray_value = s.values[v];
+          c.stray_h_lambda = mr.h_lambda[v];
+        }
+      }
+    }
+    out.push_back(c);
+  }
+  return out;
+}
+
+double point_cost(const WorkPoint& p, bool timed) { return timed ? p.seconds : static_cast<double>(p.force_evaluations); }
+
+std::string cost_text(bool timed, double seconds, long long forces) {
+  if (!timed) return fmt::format("{} force evaluations", forces);
+  if (seconds < 1e-3) return fmt::format("{:.3g} µs", seconds * 1e6);
+  return seconds < 1 ? fmt::format("{:.3g} ms", seconds * 1e3) : fmt::format("{:.3g} s", seconds);
+}
+
+const WorkPoint* cheapest_point(const SceneWork& w, const std::string& solver, double level, bool timed) {
+  const WorkPoint* best = nullptr;
+  for (const WorkPoint& p : w.points)
+    if (p.method == solver && p.status == RunStatus::Ok && p.error <= level && (!best || point_cost(p, timed) < point_cost(*best, timed)))
+      best = &p;
+  return best;
+}
+
+LevelWinner level_winner(const SceneWork& w, double level, bool timed) {
+  LevelWinner out;
+  std::vector<std::string> solvers;
+  for (const WorkPoint& p : w.points)
+    if (std::find(solvers.begin(), solvers.end(), p.method) == solvers.end()) solvers.push_back(p.method);
+  const WorkPoint* second = nullptr;
+  for (const std::string& s : solvers) {
+    const WorkPoint* p = cheapest_point(w, s, level, timed);
+    if (!p) continue;
+    if (!out.point || point_cost(*p, timed) < point_cost(*out.point, timed)) second = out.point, out.point = p;
+    else if (!second || point_cost(*p, timed) < point_cost(*second, timed)) second = p;
+  }
+  if (!out.point) return out;
+  if (second) out.next = second->method, out.margin = point_cost(*second, timed) / point_cost(*out.point, timed);
+  out.tie = second && tied(out.margin, timed);
+  double edge = 0;  // the largest step or the loosest tolerance the winner's sweep tried
+  for (const WorkPoint& p : w.points)
+    if (p.method == out.point->method) edge = std::max(edge, p.setting);
+  out.at_edge = out.point->setting == edge;
+  return out;
+}
+
+std::vector<PeerComparison> implicit_against_cvode(const WorkPrecisionResult& r, const SceneWork& w, double level, bool timed) {
+  const WorkPoint* best = nullptr;
+  for (std::size_t m : r.config.methods)
+    if (method_info(m).implicit)
+      if (const WorkPoint* p = cheapest_point(w, name(m), level, timed); p && (!best || point_cost(*p, timed) < point_cost(*best, timed)))
+        best = p;
+  std::vector<PeerComparison> out;
+  for (const std::string& solver : r.config.adaptive)
+    if (const PeerInfo* peer = find_peer(solver); peer && peer->is_cvode())
+      out.push_back({level, best, solver, cheapest_point(w, solver, level, timed)});
+  return out;
+}
+
+}  // namespace steplab

@@ -1,0 +1,118 @@
+// What the report's sentences state, as values computed from the data they are about: the
+// sections render these, and tests/reports/claims_test.cpp recomputes each from the studies' own
+// numbers under changed parameters. Every statistic, count and list of methods here is over the
+// numerical methods: the exact flow is the reference the others are measured against.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/method.hpp"
+#include "reports/document/report.hpp"
+
+namespace steplab {
+
+// A margin of one solver's cost over another's below this is within the noise of timing runs this
+// short (the minimum of repeats moves by up to 10-20 % from one report to the next on a 2-core
+// machine): a tie, not a win. Exact counts (an untimed report) tie only when equal.
+inline constexpr double kTieMargin = 1.2;
+bool tied(double margin, bool timed);
+
+// How dt* moves along a family's orders; two dt* within kSameThreshold of each other (relative:
+// the threshold search's resolution, a few parts in 10^4) count as the same.
+enum class Trend { StaysInfinite, Rises, Falls, StaysTheSame, Mixed };
+inline constexpr double kSameThreshold = 1e-3;
+std::string_view to_text(Trend t);
+Trend trend(const std::vector<double>& dt);
+
+// A family of the report with methods of at least two orders: its members by order and their
+// measured dt* at one damping.
+struct FamilyTrend {
+  Family family;
+  std::vector<std::size_t> members;
+  std::vector<double> dt;
+  Trend trend;
+};
+std::vector<FamilyTrend> family_trends(const ReportData& d, double damping);
+
+// Spearman's rho in words: "weak positive", "strong negative", ...: |rho| < 0.3 weak, < 0.7 moderate.
+std::string correlation_words(double rho);
+
+// The undamped spring over the long run (the energy figure): E/E0's range, the largest
+// |E/E0 - 1| over the run's first and second halves, and what that says.
+enum class EnergyKind {
+  Bounded,  // its second half strays no further than its first (within kBoundedGrowth): oscillates
+  Drifts,   // strays further and further: grows or decays steadily
+  Damped,   // E/E0 below 1 / kBlownRatio: the method's own damping has taken the motion out
+  Blows     // diverged, or E/E0 beyond kBlownRatio
+};
+inline constexpr double kBoundedGrowth = 1.25, kBlownRatio = 10;
+struct EnergyBehaviour {
+  std::size_t method;
+  double lo = 1, hi = 1;                    // min and max of E/E0 over the run
+  double first_half = 0, second_half = 0;   // max |E/E0 - 1| over each half
+  double final_ratio = 1;
+  EnergyKind kind = EnergyKind::Bounded;
+  double ended = -1;                        // t where a diverged run ended; -1: it did not
+};
+// The numerical methods' runs of ReportData::energy (the stability study's figure runs).
+std::vector<EnergyBehaviour> energy_behaviour(const ReportData& d);
+std::string_view to_text(EnergyKind k);
+
+// Does the order hold when stiff: each method's verdict on the stiffened scene.
+enum class StiffVerdict {
+  Keeps,       // p in both limits and at every fit between them
+  Strays,      // p in both limits, but a fit between them strays (the transition, with its bounds)
+  Falls,       // to the theory's lower stiff order
+  Rises,       // to the theory's higher stiff order (a multistep method: its one-step start's)
+  NotReached,  // the stiff limit not reached at these steps
+  Differs,     // a limit does not hold
+  Unstable     // no stiff limit: not stable as h |lambda| grows
+};
+struct StiffClaim {
+  std::size_t method;
+  StiffVerdict verdict;
+  int p = 0, stiff = -1;
+  double non_stiff_order = 0, stiff_order = 0;
+  double keeps_to = 0, reduced_from = 0;  // MethodReduction's transition (NaN: not seen)
+  // Strays: the fit farthest from p between the limits, its bound, stiffness and h |lambda|
+  double stray_order = 0, stray_lo = 0, stray_hi = 0, stray_value = 0, stray_h_lambda = 0;
+  std::string_view starter = {};  // a multistep method's one-step start
+};
+// An order is kept where it is within this of the theory's (the non-stiff limit's tolerance, 0.05:
+// analysis/order_reduction.hpp) or its bound contains it.
+std::vector<StiffClaim> stiff_claims(const OrderReduction& r);
+
+// What accuracy costs (the work-precision study): a run's cost, by run time or, untimed, by force
+// evaluations ("evaluations" are force evaluations throughout; Jacobians and factorisations are
+// counted beside them), and in words: "1.2 µs", "812 force evaluations".
+double point_cost(const WorkPoint& p, bool timed);
+std::string cost_text(bool timed, double seconds, long long forces);
+// The cheapest run of `solver` on the scene with its error at most `level`; null if none reaches it.
+const WorkPoint* cheapest_point(const SceneWork& w, const std::string& solver, double level, bool timed);
+
+// The cheapest solver at an error level, its margin over the next solver's cheapest run, whether
+// that is a tie (kTieMargin), and whether its winning run is at the edge of its sweep (its largest
+// step or loosest tolerance: a larger one, not tried, might be cheaper still).
+struct LevelWinner {
+  const WorkPoint* point = nullptr;  // null: no run reached the level
+  std::string next;                  // the runner-up solver ("" if none)
+  double margin = INFINITY;          // the runner-up's cost over the winner's
+  bool tie = false, at_edge = false;
+};
+LevelWinner level_winner(const SceneWork& w, double level, bool timed);
+
+// On a scene at an error level: steplab's cheapest implicit fixed-step run against each CVODE
+// set-up's cheapest (either may be null where it does not reach the level).
+struct PeerComparison {
+  double level;
+  const WorkPoint* steplab;
+  std::string peer;
+  const WorkPoint* run;
+};
+std::vector<PeerComparison> implicit_against_cvode(const WorkPrecisionResult& r, const SceneWork& w, double level, bool timed);
+
+}  // namespace steplab

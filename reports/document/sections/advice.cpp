@@ -1,0 +1,137 @@
+// What to use when: the report's closing advice, each line drawn from the same data as the
+// answers (findings.hpp) and shown only where the report ran the study it rests on.
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "analysis/kernel.hpp"
+#include "analysis/peers.hpp"
+#include "reports/document/figure_styles.hpp"
+#include "reports/document/findings.hpp"
+#include "reports/document/report_text.hpp"
+#include "reports/document/section.hpp"
+
+namespace steplab {
+namespace {
+
+// A long run of a conservative system: the methods whose energy stayed bounded, by order.
+std::string long_runs(const ReportData& d) {
+  std::vector<EnergyBehaviour> bounded;
+  for (const EnergyBehaviour& e : energy_behaviour(d))
+    if (e.kind == EnergyKind::Bounded) bounded.push_back(e);
+  if (bounded.empty()) return {};
+  std::sort(bounded.begin(), bounded.end(), [](const EnergyBehaviour& a, const EnergyBehaviour& b) {
+    return std::pair(method_info(a.method).order, a.method) < std::pair(method_info(b.method).order, b.method);
+  });
+  std::vector<std::string> items;
+  for (const EnergyBehaviour& e : bounded)
+    items.push_back(fmt::format("`{}` (order {}{}, E/E0 within [{:.4g}, {:.4g}])", name(e.method), method_info(e.method).order,
+                                method_info(e.method).symplectic ? ", symplectic" : "", e.lo, e.hi));
+  return fmt::format("- **A long run of an undamped system** (energy must not drift): {}, measured over t = {:g} at dt = {}. "
+                     "A method whose energy drifts here will drift further over a longer run.\n",
+                     and_list(items), d.config.energy_t_end, d.config.large_dt);
+}
+
+// Accuracy at a price: the cheapest solver at the loosest and the tightest error level on a scene.
+std::string cheapest_at(const ReportData& d, const SceneWork& w, std::string_view what) {
+  const bool timed = d.config.timing;
+  const std::vector<double>& levels = d.work.config.error_levels;
+  std::vector<std::string> parts;
+  for (double level : {levels.front(), d.work.config.crossover_error, levels.back()}) {
+    const LevelWinner win = level_winner(w, level, timed);
+    if (!win.point) continue;
+    parts.push_back(fmt::format("to error {:.0e} {}", level,
+                                win.tie ? fmt::format("`{}` or `{}` (a tie)", win.point->method, win.next) : "`" + win.point->method + "`"));
+  }
+  if (parts.empty()) return {};
+  return fmt::format("- **{}** ({}): {}, the cheapest by {} of every fixed-step method and adaptive solver tried.\n", what,
+                     scene_name(w.scene), and_list(parts), timed ? "run time" : "force evaluations");
+}
+
+std::string accuracy(const ReportData& d) {
+  const WorkPrecisionResult& r = d.work;
+  std::string md;
+  for (std::size_t i = 0; i < r.scenes.size(); ++i)
+    md += cheapest_at(d, r.scenes[i], static_cast<int>(i) == r.stiff ? "A stiff system" : "A smooth, non-stiff system");
+  if (r.crossover_ratio > 0)
+    md += fmt::format("- **How stiff before implicit pays**: on the chain, from stiffness ratio {:g} on an implicit method is "
+                      "the cheaper at error {:.0e}.\n", r.crossover_ratio, r.config.crossover_error);
+  return md;
+}
+
+// A large system: the group that wins most cells of the map at each target (clear wins only).
+std::string large_systems(const ReportData& d) {
+  if (!d.scaling_map) return {};
+  const ScalingResult& r = *d.scaling_map;
+  const ScalingConfig& c = r.config;
+  const std::size_t nk = r.blocks.size() / c.targets.size();
+  std::vector<std::string> parts;
+  for (std::size_t t = 0; t < c.targets.size(); ++t) {
+    std::map<std::string, int> wins;
+    int cells = 0;
+    for (std::size_t k = 0; k < nk; ++k)
+      for (const ScalingCell& m : r.blocks[t * nk + k].cells) {
+        ++cells;
+        if (!m.cheapest.empty() && !tied(m.margin, c.timing)) ++wins[solver_group(m.cheapest)];
+      }
+    if (wins.empty()) continue;
+    const auto top = std::max_element(wins.begin(), wins.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+    parts.push_back(fmt::format("at error {} {} ({} of {} cells)", target_text(c, r.blocks[t * nk]), top->first, top->second, cells));
+  }
+  if (parts.empty()) return {};
+  return fmt::format("- **A large system** ({} of up to {} masses, stiffened up to {:g} times): the group most often cheapest is, "
+                     "{}.\n",
+                     scene_kernel(scene_index(c.scene)).title, scaling_masses(c, c.sizes.back()),
+                     c.stiffnesses.back() / c.stiffnesses.front(), and_list(parts));
+}
+
+// Contact: the methods that keep the undamped bounce's energy within 1 % at the largest step.
+std::string contact(const ReportData& d) {
+  const CollisionResult& r = d.collision;
+  if (r.bounce.empty()) return {};
+  const double dt = *std::max_element(r.config.dts.begin(), r.config.dts.end());
+  std::vector<std::size_t> kept, lost;
+  for (const CollisionRun& run : r.bounce)
+    if (run.dt == dt && run.status == RunStatus::Ok && !run.bounces.empty())
+      (std::abs(run.bounces.back().energy_ratio - 1) <= 0.01 ? kept : lost).push_back(run.method);
+  if (kept.empty()) return {};
+  return fmt::format("- **Contact with a penalty ground**: at dt = {} the undamped bounce keeps its energy within 1 % with {}; "
+                     "{} gain or lose more.\n", dt, method_list(kept), method_list(lost));
+}
+
+// The sheet's spring at its large step: stable damped and undamped, its energy bounded.
+std::string sheet_step(const ReportData& d, const Findings& f) {
+  const std::vector<EnergyBehaviour> e = energy_behaviour(d);
+  std::vector<std::size_t> good;
+  for (std::size_t i : f.numerical) {
+    const MethodFinding& r = f.rows[i];
+    const auto b = std::find_if(e.begin(), e.end(), [&](const EnergyBehaviour& x) { return x.method == r.method; });
+    if (r.stable_large_dt && r.stable_undamped && b != e.end() && b->kind == EnergyKind::Bounded) good.push_back(r.method);
+  }
+  if (good.empty()) return {};
+  return fmt::format("- **The sheet's spring at dt = {}**: stable with and without damping and its energy bounded: {}.\n",
+                     d.config.large_dt, method_list(good));
+}
+
+class Advice : public Section {
+ public:
+  std::string title() const override { return "What to use when"; }
+  std::string markdown(Page& page) const override {
+    const ReportData& d = page.data;
+    std::string md;
+    if ((d.studies & kFindings) == kFindings) md += sheet_step(d, page.findings) + long_runs(d);
+    if (d.studies & kWorkPrecisionStudy) md += accuracy(d);
+    if (d.studies & kScalingStudy) md += large_systems(d);
+    if (d.studies & kCollisionStudy) md += contact(d);
+    if (md.empty()) return "## " + title() + "\n\nThis report ran none of the studies the advice rests on.\n\n";
+    return "## " + title() + "\n\nDrawn from the measurements above, each with the data it rests on:\n\n" + md + "\n";
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Section> make_advice_section() { return std::make_unique<Advice>(); }
+
+}  // namespace steplab

@@ -1,0 +1,202 @@
+// The report opens with its answers: each question it asks, answered in a sentence or two
+// computed from the data, with the figure or section that shows it. A question is asked only if
+// the report ran the study that answers it; "What to use when" closes the report (advice.cpp).
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "analysis/defaults.hpp"
+#include "analysis/kernel.hpp"
+#include "analysis/peers.hpp"
+#include "reports/document/findings.hpp"
+#include "reports/document/report_text.hpp"
+#include "reports/document/section.hpp"
+
+namespace steplab {
+namespace {
+
+// " (figure 3)", or "" where the report does not draw it.
+std::string see(const Page& page, const std::string& figure) {
+  const int n = page.number(figure);
+  return n ? fmt::format(" (figure {})", n) : "";
+}
+
+std::vector<std::size_t> methods_of(const Findings& f, const std::vector<std::size_t>& rows) {
+  std::vector<std::size_t> out;
+  for (std::size_t i : rows) out.push_back(f.rows[i].method);
+  return out;
+}
+
+std::string stable_answer(const Page& page) {
+  const Findings& f = page.findings;
+  const ReportConfig& c = page.data.config;
+  std::string md = fmt::format("- **Which method is stable?** On the sheet's spring at its step dt = {} (damping {}) ", c.large_dt, c.damping());
+  md += f.unstable_large.empty() ? "every method is stable"
+        : f.stable_large.empty() ? "no method is stable"
+                                 : fmt::format("every method is stable but {}", method_list(methods_of(f, f.unstable_large)));
+  md += fmt::format("; without damping, at dt = {}, ", c.small_dt);
+  md += f.unstable_undamped.empty() ? "every one is."
+                                    : fmt::format("{} {} not: {} energy grows.", method_list(methods_of(f, f.unstable_undamped)),
+                                                  f.unstable_undamped.size() == 1 ? "is" : "are",
+                                                  f.unstable_undamped.size() == 1 ? "its" : "their");
+  if (!f.always_stable.empty())
+    md += fmt::format(" Stable at every step tried: {}.", method_list(methods_of(f, f.always_stable)));
+  return md + fmt::format(" Each method's largest stable step dt* is in the summary table{}.\n", see(page, "regions"));
+}
+
+std::string order_answer(const Page& page) {
+  const Findings& f = page.findings;
+  const ReportConfig& c = page.data.config;
+  std::string md = "- **Is stability correlated with the order?** ";
+  if (f.spearman_n >= 3)
+    md += fmt::format("{}: over the {} numerical methods, Spearman's rank correlation between the order and dt* (damping {}) is "
+                      "{:.2f}, {}.",
+                      std::abs(f.spearman) < 0.3 ? "Not as a rule" : "Only loosely", f.spearman_n, c.damping(), f.spearman,
+                      correlation_words(f.spearman));
+  std::vector<std::string> ways;
+  for (Trend t : {Trend::Rises, Trend::Falls, Trend::StaysInfinite, Trend::Mixed, Trend::StaysTheSame}) {
+    std::vector<std::string> fams;
+    for (const FamilyTrend& ft : family_trends(page.data, c.damping()))
+      if (ft.trend == t) fams.emplace_back(to_string(ft.family));
+    if (!fams.empty()) ways.push_back(fmt::format("{} in {}", to_text(t), and_list(fams)));
+  }
+  if (!ways.empty())
+    md += fmt::format(" Within a family, where the methods differ in order alone, dt* {}{}: how a method is built sets its "
+                      "stability more than its order does.",
+                      and_list(ways), see(page, "regions"));
+  return md + "\n";
+}
+
+std::string energy_answer(const Page& page) {
+  const std::vector<EnergyBehaviour> e = energy_behaviour(page.data);
+  if (e.empty()) return {};
+  const ReportConfig& c = page.data.config;
+  std::vector<std::size_t> bounded, drifting, damped, blown;
+  for (const EnergyBehaviour& b : e)
+    (b.kind == EnergyKind::Bounded ? bounded : b.kind == EnergyKind::Drifts ? drifting : b.kind == EnergyKind::Damped ? damped : blown)
+        .push_back(b.method);
+  std::string md = fmt::format("- **Is the energy kept?** Undamped over t = {:g} at dt = {}: ", c.energy_t_end, c.large_dt);
+  std::vector<std::string> parts;
+  if (!bounded.empty()) parts.push_back(fmt::format("E/E0 stays bounded for {}", method_list(bounded)));
+  if (!drifting.empty()) parts.push_back(fmt::format("it drifts for {}", method_list(drifting)));
+  if (!damped.empty()) parts.push_back(fmt::format("the method damps it out for {}", method_list(damped)));
+  if (!blown.empty()) parts.push_back(fmt::format("it blows up for {}", method_list(blown)));
+  md += and_list(parts);
+  std::vector<std::size_t> symplectic;
+  for (std::size_t m : bounded)
+    if (method_info(m).symplectic) symplectic.push_back(m);
+  if (!symplectic.empty())
+    md += fmt::format("; of the bounded ones {} {} symplectic", method_list(symplectic), symplectic.size() == 1 ? "is" : "are");
+  return md + fmt::format("{}.\n", see(page, "energy"));
+}
+
+std::string stiff_answer(const Page& page) {
+  std::vector<std::size_t> keep, unstable;
+  std::vector<std::string> falls, rises, strays;
+  for (const StiffClaim& s : stiff_claims(page.data.stiff_order)) {
+    if (s.verdict == StiffVerdict::Keeps) keep.push_back(s.method);
+    else if (s.verdict == StiffVerdict::Unstable) unstable.push_back(s.method);
+    else if (s.verdict == StiffVerdict::Falls) falls.push_back(fmt::format("`{}` from {} to {}", name(s.method), s.p, s.stiff));
+    else if (s.verdict == StiffVerdict::Rises) rises.push_back(fmt::format("`{}` from {} to {}", name(s.method), s.p, s.stiff));
+    else if (s.verdict == StiffVerdict::Strays)
+      strays.push_back(fmt::format("`{}` keeps {} in both limits but reaches {:.2f} between them", name(s.method), s.p, s.stray_order));
+  }
+  std::vector<std::string> parts;
+  if (!keep.empty()) parts.push_back(fmt::format("{} keep their order at every stiffness", method_list(keep)));
+  if (!falls.empty()) parts.push_back(fmt::format("it falls, as the theory says, for {}", and_list(falls)));
+  if (!rises.empty()) parts.push_back(fmt::format("it rises, to the order of the one-step start, for {}", and_list(rises)));
+  if (!strays.empty()) parts.push_back(and_list(strays));
+  if (!unstable.empty()) parts.push_back(fmt::format("{} lose stability before the stiff limit", method_list(unstable)));
+  if (parts.empty()) return {};
+  std::string md = "- **Does the order hold when stiff?** ";
+  for (std::size_t i = 0; i < parts.size(); ++i) md += (i ? "; " : "") + parts[i];
+  return md + fmt::format("{}.\n", see(page, "stiff_order"));
+}
+
+// At the report's crossover error: the cheapest run on each scene (a tie named as one), and on
+// the stiff scene steplab's cheapest implicit method against CVODE's cheapest set-up.
+std::string cost_answer(const Page& page) {
+  const WorkPrecisionResult& r = page.data.work;
+  const bool timed = page.data.config.timing;
+  const double level = r.config.crossover_error;
+  std::vector<std::string> parts;
+  for (const SceneWork& w : r.scenes) {
+    const LevelWinner win = level_winner(w, level, timed);
+    if (!win.point) continue;
+    parts.push_back(fmt::format("{} the {} the cheapest run to error {:.0e} is {} ({})", parts.empty() ? "On" : "on", scene_name(w.scene), level,
+                                win.tie ? fmt::format("a tie of `{}` and `{}`", win.point->method, win.next) : "`" + win.point->method + "`",
+                                cost_text(timed, win.point->seconds, win.point->force_evaluations)));
+  }
+  if (parts.empty()) return {};
+  std::string md = "- **What does accuracy cost?** " + and_list(parts);
+  if (r.stiff >= 0) {
+    const SceneWork& w = r.scenes[static_cast<std::size_t>(r.stiff)];
+    const std::vector<PeerComparison> against = implicit_against_cvode(r, w, level, timed);
+    const PeerComparison* best = nullptr;
+    for (const PeerComparison& c : against)
+      if (c.steplab && c.run && (!best || point_cost(*c.run, timed) < point_cost(*best->run, timed))) best = &c;
+    if (best)
+      md += fmt::format("; there steplab's cheapest implicit method, `{}`, takes {} steps where CVODE's cheapest set-up (`{}`) "
+                        "takes {}: {:.3g} times its cost",
+                        best->steplab->method, best->steplab->steps, best->peer, best->run->steps,
+                        point_cost(*best->run, timed) / point_cost(*best->steplab, timed));
+  }
+  return md + fmt::format("{}.\n", see(page, "work_precision"));
+}
+
+std::string implicit_answer(const Page& page) {
+  if (!page.data.scaling_map) return {};
+  const ScalingResult& r = *page.data.scaling_map;
+  const ScalingConfig& c = r.config;
+  const std::size_t nk = r.blocks.size() / c.targets.size();
+  std::vector<std::string> parts;
+  for (std::size_t t = 0; t < c.targets.size(); ++t) {
+    int cells = 0, implicit = 0, ties = 0;
+    for (std::size_t k = 0; k < nk; ++k)
+      for (const ScalingCell& m : r.blocks[t * nk + k].cells) {
+        ++cells;
+        if (m.cheapest.empty()) continue;
+        if (tied(m.margin, c.timing)) ++ties;
+        else if (m.cheapest == m.best_implicit) ++implicit;
+      }
+    parts.push_back(fmt::format("at error {}, in {} of {} cells{}", target_text(c, r.blocks[t * nk]), implicit, cells,
+                                ties ? fmt::format(" ({} more are ties)", ties) : ""));
+  }
+  std::string title(scene_kernel(scene_index(c.scene)).title);
+  title[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(title[0])));
+  return fmt::format("- **When does implicit pay?** On the {} grown from N = {} to {} and stiffened {:g} times over, an implicit "
+                     "fixed-step method is clearly the cheapest solver {}{}.\n",
+                     title, scaling_masses(c, c.sizes.front()), scaling_masses(c, c.sizes.back()),
+                     c.stiffnesses.back() / c.stiffnesses.front(), fmt::join(parts, "; "), see(page, "map"));
+}
+
+class Answers : public Section {
+ public:
+  std::string title() const override { return "Answers"; }
+  std::string markdown(Page& page) const override {
+    const ReportData& d = page.data;
+    std::string md = "## " + title() + "\n\n";
+    std::vector<std::size_t> sheet;
+    for (std::string_view n : kSheetMethods)
+      if (const auto m = find_method(n); m && !method_info(*m).exact_flow) sheet.push_back(*m);
+    md += fmt::format("The 2018 exercise sheet asks for {} on a cannon ball and a cube hanging on a damped spring, and two "
+                      "questions: which method is stable, and is stability correlated with the order? The answers below, "
+                      "and the ones a simulation asks next, are computed from this report's measurements; the sections after "
+                      "them show the data.\n\n",
+                      method_list(sheet));
+    if ((d.studies & kFindings) == kFindings) md += stable_answer(page) + order_answer(page) + energy_answer(page);
+    if (d.studies & kStiffOrderStudy) md += stiff_answer(page);
+    if (d.studies & kWorkPrecisionStudy) md += cost_answer(page);
+    if (d.studies & kScalingStudy) md += implicit_answer(page);
+    if (d.config.has_section("advice")) md += "\nWhat to use when closes the report.\n";
+    return md + "\n";
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Section> make_answers_section() { return std::make_unique<Answers>(); }
+
+}  // namespace steplab

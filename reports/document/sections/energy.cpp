@@ -1,0 +1,88 @@
+// Is the energy kept? The undamped spring over a long run at the sheet's large step: E/E0 - 1 on a
+// linear axis, a panel per family, and what it shows (findings.hpp, energy_behaviour): bounded for
+// the symplectic methods, a steady drift for the others, a blow-up where the step is unstable.
+#include <fmt/format.h>
+
+#include "analysis/kernel.hpp"
+#include "reports/document/findings.hpp"
+#include "reports/document/report_text.hpp"
+#include "reports/document/section.hpp"
+
+namespace steplab {
+namespace {
+
+class Energy : public Section {
+ public:
+  std::string title() const override { return "Is the energy kept?"; }
+  unsigned needs() const override { return kStabilityStudy; }
+
+  void write_data(const ReportData& d, const DataDir& dat) const override {
+    for (std::size_t i = 0; i < d.methods.size() && i < d.energy.size(); ++i) {
+      if (d.energy[i].samples.empty()) continue;
+      const double e0 = d.energy[i].samples.front().energy;
+      std::string s = "# t energy_ratio_minus_1\n";
+      for (const auto& p : d.energy[i].samples) s += num(p.t) + " " + num(p.energy / e0 - 1) + "\n";
+      dat.write("energy_" + name(d.methods[i]) + ".dat", s);
+    }
+  }
+
+  // A panel per family of the methods whose energy stays an energy error (not blown up); the
+  // axis spans the largest of their excursions.
+  std::vector<FigureSpec> figures(const ReportData& d) const override {
+    const std::vector<EnergyBehaviour> e = energy_behaviour(d);
+    double reach = 0;
+    for (const EnergyBehaviour& b : e)
+      if (b.kind == EnergyKind::Bounded || b.kind == EnergyKind::Drifts) reach = std::max({reach, b.hi - 1, 1 - b.lo});
+    const auto drawn = [&](std::size_t m) {
+      for (const EnergyBehaviour& b : e)
+        if (b.method == m) return b.kind == EnergyKind::Bounded || b.kind == EnergyKind::Drifts;
+      return false;
+    };
+    std::vector<Panel> panels = family_panels(d.methods, drawn);
+    if (panels.empty()) return {};
+    return {{"energy", fmt::format("reach={}", num(reach > 0 ? 1.1 * reach : 1e-3)), std::move(panels)}};
+  }
+
+  std::string markdown(Page& page) const override {
+    const ReportData& d = page.data;
+    const ReportConfig& c = d.config;
+    const std::vector<EnergyBehaviour> e = energy_behaviour(d);
+    std::string md = "## " + title() + "\n\n";
+    md += fmt::format("The undamped spring has a conserved energy; a method's E/E0 - 1 over a long run at the sheet's step "
+                      "(dt = {}, t = {:g}) is what a long simulation would show. The figure draws it on a linear axis; a run "
+                      "counts as bounded when the largest |E/E0 - 1| over its second half is at most {:g} times that over its "
+                      "first, as drifting when it keeps growing, as damped out when E/E0 falls below 1/{:g} (the method's own "
+                      "damping), as blown up when it passes {:g} or the state diverges.\n\n",
+                      c.large_dt, c.energy_t_end, kBoundedGrowth, kBlownRatio, kBlownRatio);
+    std::vector<std::string> bounded, drifting, damped, blown;
+    for (const EnergyBehaviour& b : e) {
+      const std::string n = fmt::format("`{}`{}", name(b.method), method_info(b.method).symplectic ? " (symplectic)" : "");
+      if (b.kind == EnergyKind::Bounded) bounded.push_back(fmt::format("{} within [{:.4g}, {:.4g}]", n, b.lo, b.hi));
+      else if (b.kind == EnergyKind::Drifts) drifting.push_back(fmt::format("{} to {:+.3g} %", n, 100 * (b.final_ratio - 1)));
+      else if (b.kind == EnergyKind::Damped) damped.push_back(fmt::format("{} (E/E0 {:.3g} at the end)", n, b.final_ratio));
+      else blown.push_back(b.ended >= 0 ? fmt::format("{} (diverged at t = {:g})", n, b.ended) : fmt::format("{} (E/E0 {:.3g} at the end)", n, b.final_ratio));
+    }
+    if (!bounded.empty()) md += fmt::format("- **Bounded**: {}.\n", and_list(bounded));
+    if (!drifting.empty()) md += fmt::format("- **Drifts**, E/E0 - 1 at the end: {}.\n", and_list(drifting));
+    if (!damped.empty()) md += fmt::format("- **Damped out** by the method (left out of the figure): {}.\n", and_list(damped));
+    if (!blown.empty()) md += fmt::format("- **Blows up** (left out of the figure): {}.\n", and_list(blown));
+    std::vector<std::size_t> symplectic_drift;
+    for (const EnergyBehaviour& b : e)
+      if (method_info(b.method).symplectic && b.kind != EnergyKind::Bounded) symplectic_drift.push_back(b.method);
+    md += symplectic_drift.empty()
+              ? "\nEvery symplectic method here keeps its energy bounded, whatever its order: a symplectic step keeps a "
+                "modified energy exactly, which stays within O(dt^p^) of the true one.\n\n"
+              : fmt::format("\nA symplectic method that is not bounded here ({}) is past its stability limit at this step.\n\n",
+                            method_list(symplectic_drift));
+    if (page.has("energy"))
+      md += page.figure("energy", fmt::format("E/E0 - 1 of the undamped spring at dt = {} over t = {:g}, a panel per family "
+                                              "(linear axis)", c.large_dt, c.energy_t_end));
+    return md;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Section> make_energy_section() { return std::make_unique<Energy>(); }
+
+}  // namespace steplab

@@ -1,0 +1,158 @@
+// The cost, collision and advice sentences of the report, re-derived from their data (classes 9 ..
+// 12 and 15 of claims_test.cpp, which runs them on each changed configuration), and the winner of
+// an error level on a made-up scene.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "analysis/peers.hpp"
+#include "claims.hpp"
+#include "reports/data/study_output.hpp"
+#include "reports/document/findings.hpp"
+
+namespace steplab::claims {
+
+// 9: the cheapest run at each error level on each scene, by time and by force evaluations, a tie
+// where the runner-up is within the noise, a dagger where the winning run is at its sweep's edge.
+void cost_claims(const ReportData& d, const std::string& md) {
+  const WorkPrecisionResult& r = d.work;
+  for (const bool timed : {d.config.timing, false}) {
+    for (const double level : r.config.error_levels)
+      for (const SceneWork& w : r.scenes) {
+        std::map<std::string, const WorkPoint*> best;  // each solver's cheapest run reaching the level
+        const auto cost = [&](const WorkPoint& p) { return timed ? p.seconds : double(p.force_evaluations); };
+        for (const WorkPoint& p : w.points)
+          if (p.status == RunStatus::Ok && p.error <= level && (!best.count(p.method) || cost(p) < cost(*best[p.method]))) best[p.method] = &p;
+        if (best.empty()) continue;
+        std::vector<const WorkPoint*> sorted;
+        for (const auto& [solver, p] : best) sorted.push_back(p);
+        std::stable_sort(sorted.begin(), sorted.end(), [&](auto a, auto b) { return cost(*a) < cost(*b); });
+        const WorkPoint& win = *sorted.front();
+        const bool tie = sorted.size() > 1 && (timed ? cost(*sorted[1]) / cost(win) < 1.2 : cost(*sorted[1]) == cost(win));
+        double edge = 0;
+        for (const WorkPoint& p : w.points)
+          if (p.method == win.method) edge = std::max(edge, p.setting);
+        const std::string cell = fmt::format("`{}` {}{}{}", win.method, timed ? cost_text(true, win.seconds, 0) : std::to_string(win.force_evaluations),
+                                             tie ? fmt::format(" (tie: `{}`)", sorted[1]->method) : "", win.setting == edge ? " $\\dagger$" : "");
+        const std::string row = line_with(md, fmt::format("| {:.0e} |", level));
+        EXPECT_NE(row.find("| " + cell + " |"), std::string::npos) << cell << "\n" << row;
+      }
+    if (!d.config.timing) break;  // untimed, both columns are the force evaluations'
+  }
+}
+
+// 10: the stiff scene's peer table: each CVODE set-up against steplab's cheapest implicit method,
+// the ratio of their costs.
+void peer_claims(const ReportData& d, const std::string& md) {
+  const WorkPrecisionResult& r = d.work;
+  if (r.stiff < 0) return;
+  const SceneWork& w = r.scenes[static_cast<std::size_t>(r.stiff)];
+  const bool timed = d.config.timing;
+  const auto cost = [&](const WorkPoint& p) { return timed ? p.seconds : double(p.force_evaluations); };
+  const auto cheapest = [&](const std::string& solver, double level) {
+    const WorkPoint* b = nullptr;
+    for (const WorkPoint& p : w.points)
+      if (p.method == solver && p.status == RunStatus::Ok && p.error <= level && (!b || cost(p) < cost(*b))) b = &p;
+    return b;
+  };
+  double lo = INFINITY, hi = 0;  // a CVODE step's cost over one of steplab's
+  for (const double level : {r.config.crossover_error, r.config.error_levels.back()}) {
+    const WorkPoint* mine = nullptr;
+    for (std::size_t m : r.config.methods)
+      if (method_info(m).implicit)
+        if (const WorkPoint* p = cheapest(nm(m), level); p && (!mine || cost(*p) < cost(*mine))) mine = p;
+    for (const std::string& a : r.config.adaptive) {
+      const WorkPoint* peer = find_peer(a)->is_cvode() ? cheapest(a, level) : nullptr;
+      if (!mine || !peer) continue;
+      lo = std::min(lo, cost(*peer) / peer->steps / (cost(*mine) / mine->steps));
+      hi = std::max(hi, cost(*peer) / peer->steps / (cost(*mine) / mine->steps));
+      EXPECT_NE(md.find(fmt::format("| `{}`: ", a)), std::string::npos) << a;
+      EXPECT_NE(md.find(fmt::format("| {:.3g} | {:.3g} | {:.3g} |", cost(*peer) / cost(*mine),
+                                    double(peer->force_evaluations) / double(mine->force_evaluations), double(peer->steps) / double(mine->steps))),
+                std::string::npos) << a << " at " << level;
+    }
+  }
+  if (hi > 0) {
+    EXPECT_NE(md.find(fmt::format("A step of CVODE's costs {:.2g} .. {:.2g} times one of steplab's method", lo, hi)), std::string::npos) << md;
+  }
+}
+
+// 11: the crossover: the smallest stiffness ratio from which on the cheapest implicit run beats
+// every explicit one.
+void crossover_claim(const ReportData& d, const std::string& md) {
+  const WorkPrecisionResult& r = d.work;
+  const bool timed = d.config.timing;
+  double crossover = -1;
+  for (std::size_t i = r.stiffness.size(); i-- > 0;) {
+    const StiffnessRow& s = r.stiffness[i];
+    const bool cheaper = !s.best_implicit.empty() &&
+                         (s.best_explicit.empty() || (timed ? s.implicit_seconds < s.explicit_seconds : s.implicit_forces < s.explicit_forces));
+    if (!cheaper) break;
+    crossover = s.ratio;
+  }
+  if (crossover > 0) EXPECT_NE(md.find(fmt::format("from stiffness ratio k2 / k1 = {:g} on", crossover)), std::string::npos) << md;
+  else EXPECT_NE(md.find("- No stiffness ratio of the sweep"), std::string::npos);
+}
+
+// 12: the bounce's orders: named only where the bound is at most +-0.5 wide.
+void bounce_claims(const ReportData& d, const std::string& md) {
+  Names found;
+  std::size_t loose = 0;
+  for (const ConvergenceFit& f : d.convergence_on(d.config.rebound.scene).fits) {
+    if (exact(f.method) || !f.fit.fitted) continue;
+    if (f.fit.bound_hi - f.fit.bound_lo > 1) ++loose;
+    else found.insert(nm(f.method));
+  }
+  const std::string line = line_with(md, "Against the exact bounce");
+  EXPECT_EQ(names(line, "Against the exact bounce"), found) << line;
+  if (loose) {
+    EXPECT_NE(line.find(fmt::format("the other {} bounds are wider than +-0.5", loose)), std::string::npos) << line;
+  }
+}
+
+// 15: the contact advice: the methods within 1 % of the bounce's energy at the largest step.
+void contact_claim(const ReportData& d, const std::string& md) {
+  const double dt = *std::max_element(d.collision.config.dts.begin(), d.collision.config.dts.end());
+  Names kept;
+  for (const CollisionRun& r : d.collision.bounce)
+    if (r.dt == dt && r.status == RunStatus::Ok && !r.bounces.empty() && std::abs(r.bounces.back().energy_ratio - 1) <= 0.01)
+      kept.insert(nm(r.method));
+  const std::string line = line_with(md, "- **Contact with a penalty ground**");
+  if (kept.empty()) EXPECT_TRUE(line.empty()) << line;
+  else EXPECT_EQ(names_until(line, "within 1 % with", {"; "}), kept) << line;
+}
+
+}  // namespace steplab::claims
+
+namespace steplab {
+namespace {
+
+// level_winner on a scene made up here: a tie within the timing's noise, an edge of the sweep.
+TEST(Claims, ATieIsNoWinAndAnEdgeIsMarked) {
+  SceneWork w{*find_scene("spring"), {}, {}, {}};
+  const auto point = [](std::string m, double setting, double error, double seconds, long long forces) {
+    WorkPoint p;
+    p.method = std::move(m), p.setting = setting, p.error = error, p.seconds = seconds, p.force_evaluations = forces;
+    return p;
+  };
+  w.points = {point("rk4", 0.1, 1e-5, 1.0e-6, 400), point("rk4", 0.05, 1e-7, 2.0e-6, 800),
+              point("dopri5", 1e-4, 1e-5, 1.1e-6, 300), point("bdf2", 0.01, 1e-5, 3e-6, 300)};
+  LevelWinner win = level_winner(w, 1e-4, true);
+  ASSERT_TRUE(win.point);
+  EXPECT_EQ(win.point->method, "rk4");
+  EXPECT_TRUE(win.tie);  // dopri5 within x1.1
+  EXPECT_EQ(win.next, "dopri5");
+  EXPECT_TRUE(win.at_edge);  // rk4's largest step
+  win = level_winner(w, 1e-6, true);
+  EXPECT_FALSE(win.tie);      // rk4 alone reaches it
+  EXPECT_FALSE(win.at_edge);  // at dt 0.05, below its sweep's largest
+  win = level_winner(w, 1e-4, false);  // by force evaluations: dopri5 and bdf2 equal, a tie
+  EXPECT_TRUE(win.tie);
+}
+
+}  // namespace
+}  // namespace steplab
