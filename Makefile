@@ -63,6 +63,9 @@ bench-debian-cvode:
 MAP_METHODS = rk4,symplectic_euler,implicit_euler,implicit_midpoint,gauss_legendre4,radau_iia5,bdf2
 performance: bench
 	@mkdir -p $(BUILD)/performance
+	@# the headline rows again, right after: how far a figure moves from run to run
+	@$(BUILD)/steplab_bench --benchmark_filter='$(BENCH_QUICK)' --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
+	  --benchmark_out=$(BUILD)/performance/bench-repeat.json --benchmark_out_format=json >/dev/null
 	@$(BUILD)/steplab study scaling --sizes 1024 --error 1e-4 --json $(BUILD)/performance/scaling-rope.json >/dev/null
 	@$(BUILD)/steplab study scaling --scene softbody --error 1e-4 --json $(BUILD)/performance/scaling-softbody.json >/dev/null
 	@$(BUILD)/steplab study work-precision --json $(BUILD)/performance/work-precision.json >/dev/null
@@ -71,7 +74,7 @@ performance: bench
 	  --max-steps 500000 --methods $(MAP_METHODS),cvode_bdf_max2_band --json $(BUILD)/performance/scaling-map-rope.json >/dev/null
 	@$(BUILD)/steplab study scaling --scene softbody --sizes 8,16,24,32 --stiffness 10,100,1000,10000 --error 1e-4,1% \
 	  --max-steps 500000 --methods $(MAP_METHODS),cvode_bdf_max2_klu --json $(BUILD)/performance/scaling-map-softbody.json >/dev/null
-	@tools/performance-md --bench $(BUILD)/bench.json --studies $(BUILD)/performance --out docs/performance.md
+	@tools/performance-md --bench $(BUILD)/bench.json --repeat $(BUILD)/performance/bench-repeat.json --studies $(BUILD)/performance --out docs/performance.md
 
 # The suite under AddressSanitizer and UndefinedBehaviorSanitizer, in its own build folder.
 # Without -Werror: under the sanitizers GCC 12 reports -Wmaybe-uninitialized inside libstdc++
