@@ -37,7 +37,7 @@ report: deps
 # batches of 10 000 steps (KeepRunningBatch) or whole runs, so that loop's cost is negligible
 # beside them (the finite_check rows, a step at a time, compare two loops that pay it alike).
 BENCH_DEBUG_NOTE = (Google Benchmark's 'Library was built as DEBUG' warning concerns Debian's build of its timing loop, not steplab's -O3 code: the Makefile says why it does not matter)
-BENCH_QUICK = ^((step|odeint|hand)/spring/|rope_size/(rk4|implicit_euler)/4096$$|throughput|cvode_rope/)
+BENCH_QUICK = ^((step|odeint|hand)/spring/|(hand/)?rope_size/(rk4|explicit_euler|implicit_euler)/4096$$|throughput|cvode_rope/)
 bench: build
 	@echo "make bench: every row, 5 repetitions, about 13 minutes (make bench-quick: the headline rows, about a minute)"
 	@echo "$(BENCH_DEBUG_NOTE)"
@@ -88,14 +88,15 @@ performance: bench
 #   section by ReportChoice and ReportScenes, a work-precision study by WorkPrecision.CountsWhat...
 # - the same bytes for one and two threads (Determinism, StabilityJson.SameForOneAndTwoThreads):
 #   every study still runs here, split in parts and merged (Shards).
-# - the allocation counts on the rope and the soft body as they grow (Allocation.PerStepCount...):
-#   every method still steps every scene here (Allocation.NoneInAnyStep...).
+# - the allocation counts on the rope and the soft body of 64 and 4096 masses (Allocation.NoneInAStepOn...):
+#   every method still steps every fixed-size scene here (Allocation.NoneInAnyStep...), and four
+#   methods the rope through both its force interfaces (ScratchScenes).
 # - package.plugin and readme.walkthrough (projects that instantiate the same templates on a new
 #   method and scene; package.consumer still builds and links one against the sanitized package).
 # - ReportSubsets (a whole report for each method alone and for pairs: ReportChoice's sections
 #   and ReportSheet's whole report run here), ReportPages (the default report's page count and
 #   figure text: the hand-in's are checked here).
-SANITIZE_SKIP ?= readme\.walkthrough|ReportPages|ReportGrowth|ReportSubsets|ReportChoice\.(AChosenMethodHasTheFullReportsNumbers|ACrossoverNeedsBothKinds)|ReportInterrupted|ReportUpToDate|package\.plugin|ReportFindings|WorkPrecision\.(Rk4Accuracy|BdfSteps|AdaptiveErrors|ImplicitPays)|Determinism\.SameBytes|StabilityJson\.SameForOneAndTwoThreads|Allocation\.PerStepCount|ReportSheet\.NumbersAreTheFullReports
+SANITIZE_SKIP ?= readme\.walkthrough|ReportPages|ReportGrowth|ReportSubsets|ReportChoice\.(AChosenMethodHasTheFullReportsNumbers|ACrossoverNeedsBothKinds)|ReportInterrupted|ReportUpToDate|package\.plugin|ReportFindings|WorkPrecision\.(Rk4Accuracy|BdfSteps|AdaptiveErrors|ImplicitPays)|Determinism\.SameBytes|StabilityJson\.SameForOneAndTwoThreads|Allocation\.NoneInAStepOn|ReportSheet\.NumbersAreTheFullReports
 test-sanitize: deps
 	@tools/install-deps test
 	@cmake -S . -B $(BUILD)-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSTEPLAB_SANITIZE=ON -DSTEPLAB_BUILD_BENCH=OFF -DSTEPLAB_WERROR=OFF >/dev/null

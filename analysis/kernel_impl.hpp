@@ -37,21 +37,45 @@ template <Scene S> struct Counted : S {
   explicit Counted(std::span<const double> p) : S(p) {}
   mutable long long forces = 0, jacobian_calls = 0, newton = 0, factorisations = 0, solves = 0;
   void counted_iteration(const SolveCounts& did) const { ++newton, factorisations += did.factorisations, solves += did.solves; }
-  Vec<S::dim> force(const Vec<S::dim>& x, const Vec<S::dim>& v) const requires AutonomousForce<S> {
+  // Each form the scene has (core/scene.hpp), counted; a reference where the scene gives one.
+  using Ref = Eigen::Ref<const Eigen::VectorXd>;
+  Vec<S::dim> force(const Vec<S::dim>& x, const Vec<S::dim>& v) const requires ForceByValue<S> {
     ++forces;
     return S::force(x, v);
   }
-  Jacobians<S::dim> jacobians(const Vec<S::dim>& x, const Vec<S::dim>& v) const requires(AutonomousForce<S> && HasJacobians<S>) {
+  void force(Ref x, Ref v, Eigen::Ref<Eigen::VectorXd> f) const requires ForceInto<S> {
+    ++forces;
+    S::force(x, v, f);
+  }
+  void acceleration(Ref x, Ref v, Eigen::Ref<Eigen::VectorXd> a) const requires AccelerationInto<S> {
+    ++forces;
+    S::acceleration(x, v, a);
+  }
+  decltype(auto) jacobians(const Vec<S::dim>& x, const Vec<S::dim>& v) const
+    requires(!Driven<S> && requires(const S& s) { s.jacobians(x, v); }) {
     ++jacobian_calls;
     return S::jacobians(x, v);
   }
-  Vec<S::dim> force(double t, const Vec<S::dim>& x, const Vec<S::dim>& v) const requires Driven<S> {
+  void jacobians(Ref x, Ref v, Jacobians<S::dim>& j) const requires(!Driven<S> && JacobiansInto<S>) {
+    ++jacobian_calls;
+    S::jacobians(x, v, j);
+  }
+  Vec<S::dim> force(double t, const Vec<S::dim>& x, const Vec<S::dim>& v) const requires DrivenByValue<S> {
     ++forces;
     return S::force(t, x, v);
   }
-  Jacobians<S::dim> jacobians(double t, const Vec<S::dim>& x, const Vec<S::dim>& v) const requires(Driven<S> && HasJacobians<S>) {
+  void force(double t, Ref x, Ref v, Eigen::Ref<Eigen::VectorXd> f) const requires DrivenInto<S> {
+    ++forces;
+    S::force(t, x, v, f);
+  }
+  decltype(auto) jacobians(double t, const Vec<S::dim>& x, const Vec<S::dim>& v) const
+    requires(Driven<S> && requires(const S& s) { s.jacobians(t, x, v); }) {
     ++jacobian_calls;
     return S::jacobians(t, x, v);
+  }
+  void jacobians(double t, Ref x, Ref v, Jacobians<S::dim>& j) const requires(Driven<S> && JacobiansInto<S>) {
+    ++jacobian_calls;
+    S::jacobians(t, x, v, j);
   }
 };
 
@@ -304,7 +328,7 @@ template <Scene S> struct SceneCode {
 template <Scene S> struct MadeCode {
   static const S& of(const void* s) { return *static_cast<const S*>(s); }
   static std::shared_ptr<const void> make(Params p) { return std::make_shared<const S>(p); }
-  static Eigen::VectorXd force(const void* s, const Eigen::VectorXd& x, const Eigen::VectorXd& v) { return of(s).force(x, v); }
+  static Eigen::VectorXd force(const void* s, const Eigen::VectorXd& x, const Eigen::VectorXd& v) { return force_value(of(s), 0.0, x, v); }
   static Jacobians<Eigen::Dynamic> jacobians(const void* s, const Eigen::VectorXd& x, const Eigen::VectorXd& v) {
     if constexpr (HasJacobians<S>) return of(s).jacobians(x, v);
     else throw std::logic_error("jacobians: the scene declares none");  // peer_scenes keeps the CVODE peers off it

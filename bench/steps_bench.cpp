@@ -33,6 +33,9 @@ void register_odeint_implicit_euler();
 // peers_bench.cpp: steplab's CVODE peer against plain C on the rope, and their ratios
 void register_peers();
 std::string peer_ratio_lines(const std::map<std::string, double>& ns);
+// rope_floor_bench.cpp: the hand-written vectorised loops on the rope, and steplab's ratios to them
+void register_rope_floor();
+std::string rope_floor_lines(const std::map<std::string, double>& ns);
 // throughput_bench.cpp: registers the throughput rows; returns their trajectories and trajectory-steps per iteration
 std::pair<int, long long> register_throughput();
 
@@ -46,13 +49,14 @@ constexpr int kRestart = 10'000;
 // ---------------- steplab ----------------
 
 // Steps of method m on scene s (with parameter values p), timed through the kernel table: the
-// kernel steps `run` at a time in place, from the initial state (a multistep method with a fresh
-// memory, so at kRestart its start-up steps are 2 in 10 000 at most); an iteration is one step.
+// kernel makes the scene and steps `runs` runs of `run` steps in place, each from the initial
+// state (a multistep method with a fresh memory, so at kRestart its start-up steps are 2 in
+// 10 000 at most); an iteration is one step.
 benchmark::internal::Benchmark* register_step(const std::string& name, std::size_t m, std::size_t s, std::vector<double> p,
-                                              double dt = kDt, int run = kRestart) {
-  return benchmark::RegisterBenchmark(name.c_str(), [m, s, p = std::move(p), dt, run](benchmark::State& st) {
+                                              double dt = kDt, int run = kRestart, int runs = 1) {
+  return benchmark::RegisterBenchmark(name.c_str(), [m, s, p = std::move(p), dt, run, runs](benchmark::State& st) {
     const PairKernel& k = pair_kernel(m, s);
-    while (st.KeepRunningBatch(run)) k.time_steps(p, dt, run, run);
+    while (st.KeepRunningBatch(static_cast<benchmark::IterationCount>(run) * runs)) k.time_steps(p, dt, static_cast<long long>(run) * runs, run);
     st.counters["steps_per_second"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
   });
 }
@@ -92,22 +96,23 @@ void register_steplab() {
   // One step against the number of masses N, RK4 beside the implicit methods' sparse solves:
   // the rope at dt = 0.2 / omega_max (omega_max ~ 2 sqrt(K/M) N), runs of 100 steps; the soft
   // body (a 2-D grid, whose sparse factors fill in as the rope's do not) at dt 1e-4, every method
-  // stable, runs of 200 steps. Each run from the start makes the scene (the rope's modes: under
-  // 1 % of its run) and factorises each kept iteration matrix once (core/sparse.hpp).
+  // stable, runs of 200 steps. The scene is made once every 10 runs (making the rope of 4096
+  // masses, its modes and sine transform, costs about as much as 100 steps of explicit Euler on
+  // it), and each kept iteration matrix factorised once a scene (core/sparse.hpp).
   const std::size_t rope = scene_index("rope"), soft = scene_index("softbody");
-  for (const char* name : {"rk4", "implicit_euler", "implicit_midpoint", "bdf2", "gauss_legendre4", "radau_iia5"})
+  for (const char* name : {"explicit_euler", "rk4", "implicit_euler", "implicit_midpoint", "bdf2", "gauss_legendre4", "radau_iia5"})
     for (int n : {64, 256, 1024, 4096, 16384}) {
       std::vector<double> p = default_param_values(rope);
       p[0] = n;
       register_step("rope_size/" + std::string(name) + "/" + std::to_string(n), *find_method(name), rope, p,
-                    0.2 / (2 * std::sqrt(p[2] / p[1]) * n), 100)
+                    0.2 / (2 * std::sqrt(p[2] / p[1]) * n), 100, 10)
           ->Unit(benchmark::kMicrosecond);
     }
   for (const char* name : {"rk4", "implicit_euler", "gauss_legendre4", "radau_iia5"})
     for (int side : {8, 16, 32, 64}) {
       std::vector<double> p = default_param_values(soft);
       p[0] = side;
-      register_step("softbody_size/" + std::string(name) + "/" + std::to_string(side * side), *find_method(name), soft, p, 1e-4, 200)
+      register_step("softbody_size/" + std::string(name) + "/" + std::to_string(side * side), *find_method(name), soft, p, 1e-4, 200, 10)
           ->Unit(benchmark::kMicrosecond);
     }
 }
@@ -373,6 +378,7 @@ int main(int argc, char** argv) {
   argc = kept;
   register_steplab();
   register_hand_written();
+  register_rope_floor();
   register_odeint_all();
   throughput_work = register_throughput();
   register_peers();
@@ -402,7 +408,7 @@ int main(int argc, char** argv) {
                                                                              : benchmark::ConsoleReporter::OO_Tabular);
 #pragma GCC diagnostic pop
   benchmark::Shutdown();
-  const std::string table = ratio_table(ns_per_step) + "\n" + peer_ratio_lines(ns_per_step);
+  const std::string table = ratio_table(ns_per_step) + "\n" + rope_floor_lines(ns_per_step) + peer_ratio_lines(ns_per_step);
   const std::string rule = "Time per step, the median of the repetitions; every ratio is steplab's time over the other's (below 1: "
                            "steplab is faster).\n\n";
   if (format == "console" && !ns_per_step.empty()) {  // json and csv on stdout stay machine-readable

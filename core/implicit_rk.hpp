@@ -103,7 +103,7 @@ StepStatus implicit_rk_step_sparse(const S& s, State<S::dim>& y, double t0, doub
     for (int i = 0; i < Stages; ++i) {
       X[i] = y.x;
       for (int j = 0; j < Stages; ++j) X[i] += (h * t.a[i][j]) * V[j];
-      F[i] = force_at(s, t0 + t.c(i) * h, X[i], V[i]);
+      force_into(s, t0 + t.c(i) * h, X[i], V[i], F[i]);
     }
     double f_norm = 0, r_sq = 0, mv_sq = 0;
     for (int i = 0; i < Stages; ++i) {
@@ -129,7 +129,7 @@ StepStatus implicit_rk_step_sparse(const S& s, State<S::dim>& y, double t0, doub
       std::array<const SparseMat*, Stages> dx, dv;
       for (int i = 0; i < Stages; ++i) {
         Jacobians<Eigen::Dynamic>& own = ws.stage_jacobians[i];
-        own = jacobians_at(s, t0 + t.c(i) * h, X[i], V[i]);
+        if (const Jacobians<Eigen::Dynamic>& got = jacobians_for_run(s, t0 + t.c(i) * h, X[i], V[i], own); &got != &own) own = got;
         dx[i] = &own.dx, dv[i] = &own.dv;
         if (it == 0) force_terms += own.dx.norm() * X[i].norm() + own.dv.norm() * V[i].norm();
       }
@@ -137,7 +137,7 @@ StepStatus implicit_rk_step_sparse(const S& s, State<S::dim>& y, double t0, doub
       n = solve_coupled_stages({&t.a[0][0], Stages * Stages}, Stages, h, dx, dv, m, {r.data(), Stages}, {dV.data(), Stages});
     } else {
       constexpr int last = Stages - 1;
-      fresh = refresh_if_slow(kept, s, t0 + t.c(last) * h, X[last], V[last], it, r_norm, r_last);
+      fresh = refresh_if_slow(kept, ws.jacobians, s, t0 + t.c(last) * h, X[last], V[last], it, r_norm, r_last);
       if (it == 0)
         for (int i = 0; i < Stages; ++i) force_terms += kept.force_terms(X[i], V[i]);
       if (r_sq == 0) break;  // already solved (at rest in equilibrium)

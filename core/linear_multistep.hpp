@@ -21,9 +21,10 @@
 namespace steplab {
 
 // Sum_j c[j] e_j over e_0 = `now` and the memory's entries e_1 .. e_K.
-template <auto C, int D, int K, class T> State<D, T> combination(const State<D, T>& now, const History<D, K, T>& mem) {
+// Held in a step's temporaries (core/scratch.hpp); `now` a State or such temporaries.
+template <auto C, int D, int K, class T, class Now> TempState<D, T> combination(const Now& now, const History<D, K, T>& mem) {
   static_assert(C.size() == K + 1);
-  State<D, T> out{C[0] * now.x, C[0] * now.v};
+  TempState<D, T> out{Temp<D, T>(C[0] * now.x), Temp<D, T>(C[0] * now.v)};
   for (int j = 1; j <= K; ++j) {
     out.x += C[j] * mem.past[j - 1].x;
     out.v += C[j] * mem.past[j - 1].v;
@@ -45,13 +46,13 @@ template <auto B> struct AdamsBashforthMethod {
   // still starting, the Adams-Bashforth sum where it is not, each only where some lane needs it.
   template <class S, class T>
   static StepStatus step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h, History<S::dim, history, T>& mem) {
-    const State<S::dim, T> f = derivative(s, t, y);
+    const TempState<S::dim, T> f = derivative(s, t, y);
     const auto starting = mem.count < double(history);
     if (all(starting)) {
       mem.push(f);
       return Starter::step(s, y, t, h);
     }
-    const State<S::dim, T> sum = combination<B>(f, mem);
+    const TempState<S::dim, T> sum = combination<B>(f, mem);
     if (any(starting)) {  // some lanes of a pack (one run is all or none)
       State<S::dim, T> started = y;
       Starter::step(s, started, t, h);
@@ -78,13 +79,13 @@ template <auto A, double Beta> struct BdfMethod {
   // Also on packs: Gauss-Legendre where a lane is still starting, the BDF step where it is not.
   template <class S, class T>
   static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h, History<S::dim, history, T>& mem) {
-    const State<S::dim, T> now = y;
+    const TempState<S::dim, T> now{Temp<S::dim, T>(y.x), Temp<S::dim, T>(y.v)};
     const auto starting = mem.count < double(history);
     if (all(starting)) {
       mem.push(now);
       return Starter::step(s, y, t, h);
     }
-    const State<S::dim, T> w = combination<A>(now, mem);
+    const TempState<S::dim, T> w = combination<A>(now, mem);
     mem.push(now);
     if (!any(starting)) {
       const Status<T> st = solve_implicit(s, t + h, w.x, Beta * h, w.v, Beta * h, y.v);

@@ -159,10 +159,10 @@ template <class S> constexpr bool kSymmetricJacobians = requires { requires S::s
 // iteration matrices where none are yet, or where iteration `it` reduced the residual by less
 // than kRefreshRate (r_norm against the last iteration's r_last). True where they were refreshed.
 template <Scene S>
-bool refresh_if_slow(IterationMatrices& kept, const S& s, double t, const Eigen::VectorXd& x, const Eigen::VectorXd& v, int it,
-                     double r_norm, double r_last) {
+bool refresh_if_slow(IterationMatrices& kept, Jacobians<Eigen::Dynamic>& evaluated, const S& s, double t, Eigen::Ref<const Eigen::VectorXd> x,
+                     Eigen::Ref<const Eigen::VectorXd> v, int it, double r_norm, double r_last) {
   if (kept.has_jacobians() && !(it > 0 && r_norm > kRefreshRate * r_last)) return false;
-  const Jacobians<Eigen::Dynamic>& jac = jacobians_at(s, t, x, v);  // a reference where the scene keeps its own (the rope)
+  const Jacobians<Eigen::Dynamic>& jac = jacobians_for_run(s, t, x, v, evaluated);  // the rope's own; the soft body's into `evaluated`
   kept.keep(jac.dx, jac.dv, s.mass(), kSymmetricJacobians<S>);
   return true;
 }
@@ -175,17 +175,17 @@ bool refresh_if_slow(IterationMatrices& kept, const S& s, double t, const Eigen:
 // the Jacobians' norms in it the kept ones'. A linear scene's kept J is exact: one update, as
 // full Newton.
 template <Scene S>
-StepStatus solve_implicit_sparse(const S& s, double t, const Eigen::VectorXd& x0, double cx, const Eigen::VectorXd& w, double c,
-                                 Eigen::VectorXd& u) {
+StepStatus solve_implicit_sparse(const S& s, double t, Eigen::Ref<const Eigen::VectorXd> x0, double cx, Eigen::Ref<const Eigen::VectorXd> w,
+                                 double c, Eigen::Ref<Eigen::VectorXd> u) {
   NewtonWorkspace& ws = newton_workspace();
   IterationMatrices& kept = ws.matrices;
   const Eigen::VectorXd& m = s.mass();
-  Eigen::VectorXd &x = ws.x, &r = ws.r;
+  Eigen::VectorXd &x = ws.x, &r = ws.r, &f = ws.f;
   u = w;
   double force_terms = 0, r_last = 0;
   for (int it = 0;; ++it) {
     x = x0 + cx * u;
-    const Eigen::VectorXd f = force_at(s, t, x, u);
+    force_into(s, t, x, u, f);
     r = m.cwiseProduct(u - w) - c * f;
     const double r_norm = r.norm();
     if (it > 0) {
@@ -193,7 +193,7 @@ StepStatus solve_implicit_sparse(const S& s, double t, const Eigen::VectorXd& x0
       if (r_norm <= NewtonSettings::tolerance * scale) return StepStatus::Ok;
     }
     if (it == NewtonSettings::max_iterations || !all_finite(r)) return StepStatus::NoConvergence;
-    refresh_if_slow(kept, s, t, x, u, it, r_norm, r_last);
+    refresh_if_slow(kept, ws.jacobians, s, t, x, u, it, r_norm, r_last);
     if (it == 0) force_terms = kept.force_terms(x, u);
     if (all_zero(r)) return StepStatus::Ok;  // already solved (e.g. at rest in equilibrium)
     const SolveCounts n = kept.solve(c, c * cx, r, ws.du);
@@ -238,9 +238,12 @@ template <class S, class T>
   }
 }
 
-template <class S, class T>
-[[gnu::always_inline]] inline Status<T> solve_implicit(const S& s, Time<T> t, const std::type_identity_t<Vec<S::dim, T>>& x0, Time<T> cx,
-                                                       const std::type_identity_t<Vec<S::dim, T>>& w, Time<T> c, Vec<S::dim, T>& u) {
+// T is the scalar of u (a pack's, or double): the times and coefficients are of that type, a
+// whole 0.0 included. On a run-time size x0, w and u may be any vectors (the run's, or a step's
+// borrowed ones: core/scratch.hpp), taken by reference.
+template <class S, class X0, class W, class U, class T = typename U::Scalar>
+[[gnu::always_inline]] inline Status<T> solve_implicit(const S& s, std::type_identity_t<T> t, const X0& x0, std::type_identity_t<T> cx,
+                                                       const W& w, std::type_identity_t<T> c, U& u) {
   if constexpr (S::dim == Eigen::Dynamic) return solve_implicit_sparse(s, t, x0, cx, w, c, u);
   else return solve_implicit_dense<S, T>(s, t, x0, cx, w, c, u);
 }

@@ -6,10 +6,13 @@
 //   mass()                the diagonal of M, one entry per coordinate
 //   inverse_mass()        its reciprocal, stored (a step multiplies by it)
 //   force(x, v)           F(x, v), an autonomous scene's; or force(t, x, v), a driven one's
-//                         (Driven): every method evaluates it at each of its stages' own times
+//                         (Driven): every method evaluates it at each of its stages' own times.
+//                         A scene of run-time size writes it into the run's vector instead,
+//                         force(x, v, f) (ForceInto): a step then allocates nothing
 //   jacobians(x, v)       dF/dx and dF/dv, optional (HasJacobians): the implicit methods and the
 //                         CVODE peers solve with them; a scene without them runs the explicit
-//                         methods and the explicit peers only. jacobians(t, x, v) for a driven scene
+//                         methods and the explicit peers only. jacobians(t, x, v) for a driven scene;
+//                         jacobians(x, v, j) into the run's j on a run-time size (JacobiansInto)
 //   velocity_dependent()  whether F depends on v (damping); F must be affine in v
 //   energy(x, v)          the energy whose ratio to its start value the studies track
 //   initial()             the start state
@@ -26,6 +29,9 @@
 //   flow(y, h)                    an exact solution (HasExact): convergence against it, the
 //                                 scaling study's target
 //   affine_flow = true            that flow is affine in the state (HasAffineFlow)
+//   exact_along(h)                its exact motion along a run of fixed step h, cheaper a step
+//                                 than the flow afresh (HasExactAlong, core/exact_tracker.hpp)
+//   advance(y, h)                 the flow in place: the exact method's step without allocating
 //   penetration(x)                ground contact (HasContact): the collision study
 //   size_param = "<name>"         run-time size (dim = Eigen::Dynamic), refined by that count
 //                                 parameter (ParamSpec::is_count): the scaling study
@@ -52,8 +58,10 @@
 #include <concepts>
 #include <span>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
+#include "core/scratch.hpp"
 #include "core/state.hpp"
 
 namespace steplab {
@@ -69,19 +77,46 @@ struct ParamSpec {
   double max_count = 0;
 };
 
-// The force of an autonomous scene, F(x, v), or of a driven one, F(t, x, v).
+// The force of an autonomous scene, F(x, v), or of a driven one, F(t, x, v): returned by value,
+// or, on a scene of run-time size, written into the caller's vector f (sized; storage the run
+// owns, made once: force(x, v, f), force(t, x, v, f)), so that a step allocates nothing. A scene
+// of run-time size that returns its force by value still runs; only its steps allocate.
 template <class S>
-concept AutonomousForce = requires(const S& s, const Vec<S::dim>& x, const Vec<S::dim>& v) {
+concept ForceByValue = requires(const S& s, const Vec<S::dim>& x, const Vec<S::dim>& v) {
   { s.force(x, v) } -> std::convertible_to<Vec<S::dim>>;
 };
 template <class S>
-concept Driven = requires(const S& s, double t, const Vec<S::dim>& x, const Vec<S::dim>& v) {
+concept ForceInto = S::dim == Eigen::Dynamic && requires(const S& s, const Vec<S::dim>& x, const Vec<S::dim>& v, Vec<S::dim>& f) {
+  s.force(x, v, f);
+};
+template <class S>
+concept DrivenByValue = requires(const S& s, double t, const Vec<S::dim>& x, const Vec<S::dim>& v) {
   { s.force(t, x, v) } -> std::convertible_to<Vec<S::dim>>;
 };
-// Its Jacobians dF/dx and dF/dv, with the force's arguments: what an implicit method's Newton
-// iteration solves with. Without them only the explicit methods run on the scene.
 template <class S>
-concept HasJacobians = requires(const S& s, double t, const Vec<S::dim>& x, const Vec<S::dim>& v) {
+concept DrivenInto = S::dim == Eigen::Dynamic && requires(const S& s, double t, const Vec<S::dim>& x, const Vec<S::dim>& v, Vec<S::dim>& f) {
+  s.force(t, x, v, f);
+};
+// Such a scene may also give M^-1 F into a in the same pass as F, acceleration(x, v, a): the
+// values of F times 1/m, a pass over the state fewer (the rope).
+template <class S>
+concept AccelerationInto = ForceInto<S> && requires(const S& s, const Vec<S::dim>& x, const Vec<S::dim>& v, Vec<S::dim>& a) {
+  s.acceleration(x, v, a);
+};
+template <class S> concept AutonomousForce = ForceByValue<S> || ForceInto<S>;
+template <class S> concept Driven = DrivenByValue<S> || DrivenInto<S>;
+// Its Jacobians dF/dx and dF/dv, with the force's arguments: what an implicit method's Newton
+// iteration solves with. Without them only the explicit methods run on the scene. Returned (by
+// value, or a reference to ones the scene keeps: the rope's are constant), or, on a scene of
+// run-time size, written into the caller's (jacobians(x, v, j): j holds the scene's pattern after
+// the first call, whose values the later ones overwrite).
+template <class S>
+concept JacobiansInto = S::dim == Eigen::Dynamic && requires(const S& s, double t, const Vec<S::dim>& x, const Vec<S::dim>& v,
+                                                             Jacobians<S::dim>& j) {
+  requires(Driven<S> && requires { s.jacobians(t, x, v, j); }) || (!Driven<S> && requires { s.jacobians(x, v, j); });
+};
+template <class S>
+concept HasJacobians = JacobiansInto<S> || requires(const S& s, double t, const Vec<S::dim>& x, const Vec<S::dim>& v) {
   requires(Driven<S> && requires { { s.jacobians(t, x, v) } -> std::convertible_to<Jacobians<S::dim>>; }) ||
               (!Driven<S> && requires { { s.jacobians(x, v) } -> std::convertible_to<Jacobians<S::dim>>; });
 };
@@ -133,94 +168,21 @@ template <HasExact S> State<S::dim> exact(const S& s, double t) {
 template <class S>
 concept HasAffineFlow = HasExact<S> && requires { requires S::affine_flow; };
 
-// The exact state along a run, step by step: a closed form exact_at(t) where the scene has one
-// (no accumulated round-off), else the flow map applied to the previous exact state (a scene
-// with events, like the bounce, then finds each event once).
-//
-// A run of fixed step h (h > 0: at(t) is then called at t = h, 2h, 3h, ... in turn) on a scene
-// with an affine flow steps the exact state instead: c and Phi once from the flow (c = flow(0, h),
-// column i of Phi = flow(e_i, h) - c), then y <- c + Phi y, a matrix-vector product a step, and
-// every kResync-th step the closed form again, so that round-off accumulates over kResync steps
-// at most (a few ulps of |y| each). The spring's closed form costs exp, sin and cos: about 250
-// instructions a step, five times explicit Euler's step with its run loop (callgrind).
-template <HasExact S> class ExactTracker {
-  static constexpr int D = S::dim;
-  using Block = Eigen::Matrix<double, D, D>;
-
- public:
-  // Whether it can step the affine map (given h > 0); else at(t) is the closed form or the flow.
-  static constexpr bool kCanStep = D != Eigen::Dynamic && HasAffineFlow<S> && requires(const S& s) { s.exact_at(0.0); };
-  static constexpr int kResync = 32;
-
-  explicit ExactTracker(const S& s, double h = 0) : s_(s), y_(s.initial()) {
-    if constexpr (kCanStep) {
-      if (!(h > 0)) return;
-      c_ = s.flow({Vec<D>::Zero(), Vec<D>::Zero()}, h);
-      // Phi's columns from steps of size a, a power of two of the size of the states: a column's
-      // error is then a few ulps of the flow's values over a, a few ulps of 1, where unit steps
-      // would make it a few ulps of |y| (the spring 2000 below its anchor: y <- c + Phi y off by
-      // 1e-9 a step, eps |y|^2).
-      const double size = std::max({1.0, c_.x.cwiseAbs().maxCoeff(), c_.v.cwiseAbs().maxCoeff(),
-                                    y_.x.cwiseAbs().maxCoeff(), y_.v.cwiseAbs().maxCoeff()});
-      const double a = std::exp2(std::ceil(std::log2(size)));
-      for (int i = 0; i < D; ++i) {
-        const State<D> from_x = s.flow({a * Vec<D>::Unit(i), Vec<D>::Zero()}, h);
-        const State<D> from_v = s.flow({Vec<D>::Zero(), a * Vec<D>::Unit(i)}, h);
-        xx_.col(i) = (from_x.x - c_.x) / a, vx_.col(i) = (from_x.v - c_.v) / a;
-        xv_.col(i) = (from_v.x - c_.x) / a, vv_.col(i) = (from_v.v - c_.v) / a;
-      }
-      until_closed_form_ = kResync;
-    }
-  }
-
-  // The fixed step's affine map, where it steps (core/batch.hpp copies it into a pack's lanes).
-  bool stepping() const { return until_closed_form_ != 0; }
-  const State<D>& offset() const { return c_; }
-  const Block& xx() const { return xx_; }
-  const Block& xv() const { return xv_; }
-  const Block& vx() const { return vx_; }
-  const Block& vv() const { return vv_; }
-
-  // Inline where it steps the affine map (a run's hot path); the closed form or the flow, called
-  // once every kResync steps there, out of line.
-  [[gnu::always_inline]] inline const State<D>& at(double t) {
-    if constexpr (kCanStep) {
-      if (until_closed_form_ > 1) {
-        --until_closed_form_;
-        const Vec<D> x = c_.x + xx_ * y_.x + xv_ * y_.v;
-        y_.v = c_.v + vx_ * y_.x + vv_ * y_.v;
-        y_.x = x;
-        return y_;
-      }
-      if (until_closed_form_ == 1) until_closed_form_ = kResync;  // the closed form now, then kResync - 1 steps again
-    }
-    return from_scene(t);
-  }
-
- private:
-  [[gnu::noinline]] const State<D>& from_scene(double t) {
-    if constexpr (requires { s_.exact_at(t); }) y_ = s_.exact_at(t);
-    else y_ = s_.flow(y_, t - t_);
-    t_ = t;
-    return y_;
-  }
-
-  const S& s_;
-  State<D> y_;
-  double t_ = 0;
-  // the fixed step's affine map, in blocks: x <- c.x + xx x + xv v, v <- c.v + vx x + vv v
-  int until_closed_form_ = 0;  // 1 + the steps left before the closed form again; 0: not stepping
-  static Block zero_block() {
-    if constexpr (D == Eigen::Dynamic) return {};
-    else return Block::Zero();
-  }
-  State<D> c_ = zero_state<D>();
-  Block xx_ = zero_block(), xv_ = zero_block(), vx_ = zero_block(), vv_ = zero_block();
-};
-
 // Acceleration a = M^{-1} F(x, v), written F * (1/m) with 1/m stored by the scene: no division
 // in a step (its latency is ~3x a multiplication's, and each step waits on the last). Differs
 // from F / m by at most an ulp.
+// F(t, x, v) written into f, whichever way the scene gives it (f resized to the state's size
+// where it is a vector of its own; a borrowed one, ScratchVec, has it).
+template <class S, class Tm, class X, class V, class F>
+[[gnu::always_inline]] inline void force_into(const S& s, Tm t, const X& x, const V& v, F& f) {
+  if constexpr (DrivenInto<S>) f.resize(x.size()), s.force(t, x, v, f);
+  else if constexpr (ForceInto<S>) f.resize(x.size()), s.force(x, v, f);
+  else if constexpr (DrivenByValue<S>) f = s.force(t, x, v);
+  else f = s.force(x, v);
+}
+
+// F(t, x, v) as a value: the scene's own on a fixed size (as it returns it), a vector of the
+// run's scratch pool (core/scratch.hpp) on a run-time size.
 // x and v are vectors (or Eigen expressions of them) of doubles for one run, of packs where S is
 // the scene of a pack of runs (Packable below).
 // Always inlined: left out of line (GCC's stack-frame growth limit, on the falling triangle) it was
@@ -229,9 +191,24 @@ template <HasExact S> class ExactTracker {
 // (nor is it computed, once inlined).
 template <class S, class Tm, class X, class V>
 [[gnu::always_inline]] inline auto force_at(const S& s, Tm t, const X& x, const V& v) {
-  if constexpr (Driven<S>) return s.force(t, x, v);
-  else return s.force(x, v);
+  if constexpr (S::dim == Eigen::Dynamic) {
+    ScratchVec f(x.size());
+    force_into(s, t, x, v, f);
+    return f;
+  } else if constexpr (Driven<S>) {
+    return s.force(t, x, v);
+  } else {
+    return s.force(x, v);
+  }
 }
+
+// F as a vector of its own (outside a step: the peers' right-hand sides).
+template <class S, class X, class V> Eigen::VectorXd force_value(const S& s, double t, const X& x, const V& v) {
+  Eigen::VectorXd f(x.size());
+  force_into(s, t, x, v, f);
+  return f;
+}
+
 // A fixed-size scene without Jacobians (HasJacobians) is asked for them by one step only: velocity
 // Verlet's closing kick where the force is damped, solved at fixed x. There F is affine in v, so
 // dF/dv from differences of the force in v is exact up to round-off (a unit step in each velocity);
@@ -262,12 +239,52 @@ template <class S, class Tm, class X, class V>
   else if constexpr (requires { s.jacobians(x, v); }) return s.jacobians(x, v);
   else return differenced_jacobians(s, t, x, v);
 }
-// Written out, not through force_at: one inlined layer less keeps GCC inlining the Eigen
-// assignments of a step that calls it several times (RK4 on the spring).
+// The Jacobians for a run on a scene of run-time size: written into the run's `kept` where the
+// scene writes them (JacobiansInto), else as the scene gives them (a reference to its own, or a
+// value, which `kept` then holds).
 template <class S, class Tm, class X, class V>
-[[gnu::always_inline]] inline Vec<S::dim, typename X::Scalar> acceleration(const S& s, Tm t, const X& x, const V& v) {
-  if constexpr (Driven<S>) return s.force(t, x, v).cwiseProduct(s.inverse_mass());
-  else return s.force(x, v).cwiseProduct(s.inverse_mass());
+const Jacobians<Eigen::Dynamic>& jacobians_for_run(const S& s, Tm t, const X& x, const V& v, Jacobians<Eigen::Dynamic>& kept) {
+  if constexpr (DrivenInto<S> && JacobiansInto<S>) {
+    s.jacobians(t, x, v, kept);
+    return kept;
+  } else if constexpr (JacobiansInto<S>) {
+    s.jacobians(x, v, kept);
+    return kept;
+  } else if constexpr (std::is_lvalue_reference_v<decltype(jacobians_at(s, t, x, v))>) {
+    return jacobians_at(s, t, x, v);
+  } else {
+    kept = jacobians_at(s, t, x, v);
+    return kept;
+  }
+}
+// Written out, not through force_at: one inlined layer less keeps GCC inlining the Eigen
+// assignments of a step that calls it several times (RK4 on the spring). On a run-time size a
+// vector of the run's scratch pool, F * (1/m) in place.
+template <class S, class Tm, class X, class V>
+[[gnu::always_inline]] inline Temp<S::dim, typename X::Scalar> acceleration(const S& s, Tm t, const X& x, const V& v) {
+  if constexpr (AccelerationInto<S>) {
+    ScratchVec a(x.size());
+    s.acceleration(x, v, a);
+    return a;
+  } else if constexpr (S::dim == Eigen::Dynamic) {
+    ScratchVec a(x.size());
+    force_into(s, t, x, v, a);
+    a.array() *= s.inverse_mass().array();
+    return a;
+  } else if constexpr (Driven<S>) {
+    return s.force(t, x, v).cwiseProduct(s.inverse_mass());
+  } else {
+    return s.force(x, v).cwiseProduct(s.inverse_mass());
+  }
+}
+
+// The interface before driven scenes, acceleration(s, x, v), as a plug-in method may still call
+// it: the same on an autonomous scene; on a driven one the stage's time is required.
+template <class S, class X, class V>
+[[gnu::always_inline]] inline auto acceleration(const S& s, const X& x, const V& v) {
+  static_assert(!Driven<S>, "acceleration(s, x, v): a driven scene's force depends on time; call acceleration(s, t, x, v) "
+                            "with the stage's time (core/scene.hpp)");
+  return acceleration(s, typename X::Scalar(0.0), x, v);
 }
 
 // A scene whose runs can be stepped W at a time (core/batch.hpp) is a template over its scalar,

@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/exact_tracker.hpp"
 #include "core/stepper.hpp"
 
 namespace steplab {
@@ -129,6 +130,15 @@ template <class T> struct ErrorSums {
     error_final = select(take, err, error_final);
     error_v_final = select(take, (y.v - exact.v).norm(), error_v_final);
   }
+  // One run's step against exact positions alone (HasExactAlong: the velocities are read once, at
+  // the end, into error_v_final): the same sums as add.
+  template <class X, class E> void add_positions(const X& x, const E& exact_x) {
+    using std::max;
+    const T err = (x - exact_x).norm();
+    error_max = max(error_max, err);
+    err_sq_sum = err_sq_sum + err * err;
+    error_final = err;
+  }
 };
 
 // The least-squares slope of ln E against t, accumulated with Welford's update: a point (t, l =
@@ -206,6 +216,16 @@ template <class T> struct Stepped {
   T t;
 };
 
+template <class Stp, int D, class T> [[gnu::always_inline]] inline State<D, T>& step_copy(Stp& stepper, const State<D, T>& y, State<D, T>& local) {
+  if constexpr (D == Eigen::Dynamic) {
+    stepper.work.next = y;
+    return stepper.work.next;
+  } else {
+    local = y;
+    return local;
+  }
+}
+
 template <class Stp, class Sc, int D, class T, class I, class After>
 [[gnu::always_inline]] inline Stepped<T> take_step(Stp& stepper, const Sc& scene, State<D, T>& y, State<D, T>& last, I& i,
                                                    const T& h, const MaskOf<T>& active, RunTally<T>& tally, const T& e0,
@@ -213,7 +233,10 @@ template <class Stp, class Sc, int D, class T, class I, class After>
                                                    After&& after) {
   using Mask = MaskOf<T>;
   const T t_prev = (i - 1.0) * h, t = i * h;
-  State<D, T> next = y;
+  // The step is taken on a copy, so that one run keeps its last finite state: on the stack for a
+  // fixed size, in the run's workspace for a run-time one (sized in its first step).
+  State<D, T> local;
+  State<D, T>& next = step_copy(stepper, y, local);
   const Mask failed = active && Mask(steplab::failed(stepper.step(scene, next, t_prev, h)));
   const Mask live = all_finite(next) && active && !failed;
   if constexpr (std::same_as<Mask, bool>) {
@@ -275,7 +298,9 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
     if (i_ > spec_.steps) return false;
     const Stepped<double> s = take_step(stepper_, scene_, y_, y_, i_, spec_.dt, true, tally_, e0_, e0_ != 0, true, spec_.energy_rate,
                                         [&](const State<D>& y, bool, double t, double e) __attribute__((always_inline)) {
-                                          if constexpr (HasExact<S>) {
+                                          if constexpr (HasExactAlong<S>) {
+                                            if (spec_.errors) errors_.add_positions(y.x, tracker_.at(t));
+                                          } else if constexpr (HasExact<S>) {
                                             if (spec_.errors) errors_.add(y, tracker_.at(t), true);
                                           }
                                           keep(i_, t, y, e);
@@ -303,6 +328,8 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
     r_.steps = i_ - 1;
     r_.t_final = r_.steps * spec_.dt;
     r_.final = y_;
+    if constexpr (HasExactAlong<S>)
+      if (spec_.errors && r_.steps > 0) errors_.error_v_final = (y_.v - tracker_.velocities()).norm();
     finish_run(r_, HasExact<S> && spec_.errors, errors_, tally_, spec_.energy_rate);
     // The last finite state is always kept, also when the run ended early.
     if (plan_.size() > 0 && (r_.samples.empty() || r_.samples.back().t != r_.t_final))
@@ -311,7 +338,8 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
 
  private:
   static auto make_tracker(const S& scene, const RunSpec& spec) {
-    if constexpr (HasExact<S>) return ExactTracker<S>(scene, spec.errors ? spec.dt : 0);  // steps of dt
+    if constexpr (HasExactAlong<S>) return scene.exact_along(spec.errors ? spec.dt : 0);  // steps of dt
+    else if constexpr (HasExact<S>) return ExactTracker<S>(scene, spec.errors ? spec.dt : 0);
     else return 0;
   }
   void keep(long long i, double t, const State<D>& s, double e) {

@@ -80,7 +80,7 @@ class IterationMatrices {
   void keep(const SparseMat& dx, const SparseMat& dv, const Eigen::VectorXd& mass, bool symmetric);
   // |dF/dx| |x| + |dF/dv| |v| with the kept Jacobians (Frobenius norms): the size of the force's
   // terms in Newton's stopping test (core/method.hpp).
-  double force_terms(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const { return dx_norm_ * x.norm() + dv_norm_ * v.norm(); }
+  double force_terms(Eigen::Ref<const Eigen::VectorXd> x, Eigen::Ref<const Eigen::VectorXd> v) const { return dx_norm_ * x.norm() + dv_norm_ * v.norm(); }
 
   // z = E(a, b)^-1 r, factorising E(a, b) first where it is not kept.
   SolveCounts solve(double a, double b, const Eigen::VectorXd& r, Eigen::VectorXd& z);
@@ -109,7 +109,8 @@ SolveCounts solve_coupled_stages(std::span<const double> a, int s, double h, std
 // first step a run's Newton iterations allocate nothing.
 struct NewtonWorkspace {
   IterationMatrices matrices;
-  Eigen::VectorXd x, r, du;  // one stage's
+  Eigen::VectorXd x, r, du, f;  // one stage's
+  Jacobians<Eigen::Dynamic> jacobians;  // as last evaluated, where the scene writes them (JacobiansInto)
   std::array<Eigen::VectorXd, 4> stage_x, stage_v, stage_f, stage_r, stage_dv;  // s stages' (s <= 4)
   std::array<Jacobians<Eigen::Dynamic>, 4> stage_jacobians;  // full Newton's, a stage each (the fallback)
   const void* transform_of = nullptr;  // the Butcher matrix `transform` was made from

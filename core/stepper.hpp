@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
 
 #include "core/method.hpp"
 
@@ -28,10 +29,17 @@ template <int D, int K, class T = double> struct History {
   // Zeroed (Eigen leaves a vector uninitialised): never read before count says so, but the
   // compiler cannot see that through a method's start-up branch.
   History() { past.fill(zero_state<D, T>()); }
-  void push(const State<D, T>& s) {
+  template <class St> void push(const St& s) {
     using std::min;
-    for (int i = K - 1; i > 0; --i) past[i] = past[i - 1];
-    past[0] = s;
+    if constexpr (D == Eigen::Dynamic) {
+      if (past[0].x.size() != s.x.size())  // the first push sizes every entry (not read before count says)
+        for (State<D, T>& p : past) p.x.resize(s.x.size()), p.v.resize(s.v.size());
+      for (int i = K - 1; i > 0; --i) std::swap(past[i], past[i - 1]);  // the vectors, not their values: no copy, no allocation
+      past[0].x = s.x, past[0].v = s.v;                                   // into the oldest entry's storage
+    } else {
+      for (int i = K - 1; i > 0; --i) past[i] = past[i - 1];
+      past[0] = State<D, T>{s.x, s.v};
+    }
     count = min(count + 1.0, T(double(K)));
   }
 };
@@ -51,9 +59,17 @@ template <int D> struct RunWorkspace {
   struct Use {};
   Use use() { return {}; }
 };
+// On a run-time size also the run's scratch pool (core/scratch.hpp: a step's temporaries) and the
+// state a step is taken on (core/simulate.hpp, take_step): a run allocates in its first step only.
 template <> struct RunWorkspace<Eigen::Dynamic> {
   NewtonWorkspace newton;
-  UseWorkspace use() { return UseWorkspace(newton); }
+  ScratchPool scratch;
+  State<Eigen::Dynamic> next;
+  struct Use {
+    UseWorkspace newton;
+    UseScratch scratch;
+  };
+  Use use() { return {UseWorkspace(newton), UseScratch(scratch)}; }
 };
 
 // S: a scene, or the scene of a pack of runs with T its pack (step is then there only where M's
@@ -80,12 +96,16 @@ template <Multistep M, class S, class T> struct Stepper<M, S, T> {
     [[maybe_unused]] const auto in_use = work.use();
     return M::step(s, y, t, h, memory);
   }
-  void forget() { memory = {}; }
+  void forget() {
+    if constexpr (S::dim == Eigen::Dynamic) memory.count = 0;  // its vectors kept: a restart allocates nothing
+    else memory = {};
+  }
 };
 
 // The derivative of the first-order system at time t, f(t, y) = (v, a(t, x, v)), stored as a State.
-template <class S, class T> State<S::dim, T> derivative(const S& s, Time<T> t, const State<S::dim, T>& y) {
-  return {y.v, acceleration(s, t, y.x, y.v)};
+// Its vectors are a step's temporaries (core/scratch.hpp).
+template <class S, class T> TempState<S::dim, T> derivative(const S& s, Time<T> t, const State<S::dim, T>& y) {
+  return {Temp<S::dim, T>(y.v), acceleration(s, t, y.x, y.v)};
 }
 
 }  // namespace steplab

@@ -13,6 +13,7 @@ struct Analytic {
   // exact flow starts there.
   template <HasExact S> static StepStatus step(const S& s, State<S::dim>& y, double t, double h) {
     if constexpr (Driven<S>) y = s.exact_at(t + h);
+    else if constexpr (requires { s.advance(y, h); }) s.advance(y, h);  // the flow in place (the rope: no allocation)
     else y = s.flow(y, h);
     return StepStatus::Ok;
   }

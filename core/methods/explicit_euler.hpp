@@ -11,7 +11,7 @@ struct ExplicitEuler {
   static constexpr MethodInfo info{.name = "explicit_euler", .order = 1, .family = Family::ExplicitRungeKutta,
                                    .summary = "x += h v, v += h a(x, v), both from the old state", .first_of = Family::AdamsBashforth};
   template <class S, class T> static StepStatus step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
-    const Vec<S::dim, T> a = acceleration(s, t, y.x, y.v);
+    const Temp<S::dim, T> a = acceleration(s, t, y.x, y.v);
     y.x += h * y.v;
     y.v += h * a;
     return StepStatus::Ok;

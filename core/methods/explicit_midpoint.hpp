@@ -11,8 +11,8 @@ struct ExplicitMidpoint {
   static constexpr MethodInfo info{.name = "explicit_midpoint", .order = 2, .family = Family::ExplicitRungeKutta,
                                    .summary = "y_(n+1) = y_n + h f(y_n + h/2 f(y_n)), y = (x, v), f = (v, a)"};
   template <class S, class T> static StepStatus step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
-    const Vec<S::dim, T> xm = y.x + 0.5 * h * y.v;
-    const Vec<S::dim, T> vm = y.v + 0.5 * h * acceleration(s, t, y.x, y.v);
+    const Temp<S::dim, T> xm = y.x + 0.5 * h * y.v;
+    const Temp<S::dim, T> vm = y.v + 0.5 * h * acceleration(s, t, y.x, y.v);
     y.x += h * vm;
     y.v += h * acceleration(s, t + 0.5 * h, xm, vm);
     return StepStatus::Ok;

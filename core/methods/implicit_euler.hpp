@@ -15,7 +15,7 @@ struct ImplicitEuler {
   static constexpr int solve_stages = 1;  // core/method.hpp
   static constexpr ButcherTableau<1> tableau{{{{1.0}}}, {1.0}};  // c = 1: stiffly accurate
   template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
-    Vec<S::dim, T> v1;
+    Temp<S::dim, T> v1 = temp_like<S::dim, T>(y.v);
     const Status<T> status = solve_implicit(s, t + h, y.x, h, y.v, h, v1);
     y.x += h * v1;
     y.v = v1;

@@ -15,7 +15,7 @@ struct ImplicitMidpoint {
   static constexpr int solve_stages = 1;  // core/method.hpp
   static constexpr ButcherTableau<1> tableau{{{{0.5}}}, {1.0}};  // c = 1/2
   template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
-    Vec<S::dim, T> vm;
+    Temp<S::dim, T> vm = temp_like<S::dim, T>(y.v);
     const Status<T> status = solve_implicit(s, t + 0.5 * h, y.x, 0.5 * h, y.v, 0.5 * h, vm);
     y.x += h * vm;
     y.v = 2 * vm - y.v;

@@ -17,7 +17,7 @@ struct VelocityVerlet {
                                    .summary = "v += h/2 a(x, v); x += h v; v += h/2 a(x, v) at the new x (implicit in v where the force is damped)"};
   static constexpr int solve_stages = 1;  // the implicit kick (core/method.hpp)
   template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
-    using V = Vec<S::dim, T>;
+    using V = Temp<S::dim, T>;  // a step's temporaries (core/scratch.hpp)
     const V a0 = acceleration(s, t, y.x, y.v);
     y.x += h * y.v + (0.5 * h * h) * a0;
     const V kicked = y.v + (0.5 * h) * a0;
@@ -29,7 +29,7 @@ struct VelocityVerlet {
     if (all(implicit)) return solve_implicit(s, t + h, y.x, 0.0, kicked, 0.5 * h, y.v);
     const V explicit_kick = kicked + (0.5 * h) * acceleration(s, t + h, y.x, y.v);  // a pack: each lane its kick
     const Status<T> st = solve_implicit(s, t + h, y.x, 0.0, kicked, 0.5 * h, y.v);
-    y.v = select(implicit, y.v, explicit_kick);
+    y.v = select(implicit, y.v, Vec<S::dim, T>(explicit_kick));
     return status_of(implicit && failed(st));
   }
 };

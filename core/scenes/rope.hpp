@@ -41,6 +41,10 @@ class SineTransform {
   SineTransform& operator=(const SineTransform&) = delete;
   Eigen::VectorXd synthesis(const Eigen::VectorXd& q) const;
   Eigen::VectorXd analysis(const Eigen::VectorXd& u) const;
+  // The synthesis into u, its work arrays borrowed from the scratch pool (core/scratch.hpp): no
+  // allocation after the first call on a thread.
+  void synthesis(Eigen::Ref<const Eigen::VectorXd> q, Eigen::Ref<Eigen::VectorXd> u) const;
+  void analysis(Eigen::Ref<const Eigen::VectorXd> u, Eigen::Ref<Eigen::VectorXd> q) const;
 
  private:
   int n_;
@@ -129,18 +133,22 @@ struct Rope {
   const Eigen::VectorXd& mass() const { return m_all; }
   const Eigen::VectorXd& inverse_mass() const { return inv_m_all; }
 
-  Eigen::VectorXd force(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const {
-    Eigen::VectorXd f(n);
-    double above = k * ((0 - x[0]) - l) + d * (0 - v[0]);  // T_1
-    for (int i = 0; i < n; ++i) {
-      const double below = i + 1 < n ? k * ((x[i] - x[i + 1]) - l) + d * (v[i] - v[i + 1]) : 0;
-      f[i] = (above - below) - c * v[i] - weight;
-      above = below;
-    }
-    return f;
+  // F into the run's f: the tensions first, f_i = T_(i+1) (f_0 = T_1, from the anchor), then
+  // f_i = (T_(i+1) - T_(i+2)) - c v_i - m g (T_(N+1) = 0). Two loops without a recurrence between
+  // their iterations, so that both vectorise; the operations and their order are the same as
+  // carrying each tension on to the next mass, so the values are the same to the bit.
+  // The parameters are copied to locals: a store through f could otherwise alias them, and the
+  // compiler would reload them every iteration instead of vectorising.
+  void force(Eigen::Ref<const Eigen::VectorXd> x, Eigen::Ref<const Eigen::VectorXd> v, Eigen::Ref<Eigen::VectorXd> f) const {
+    forces<false>(x.data(), v.data(), f.data());
+  }
+  // M^-1 F into a, 1/m applied in the second loop (core/scene.hpp, AccelerationInto): the values
+  // of F times 1/m, one pass over the state fewer.
+  void acceleration(Eigen::Ref<const Eigen::VectorXd> x, Eigen::Ref<const Eigen::VectorXd> v, Eigen::Ref<Eigen::VectorXd> a) const {
+    forces<true>(x.data(), v.data(), a.data());
   }
 
-  const Jacobians<Eigen::Dynamic>& jacobians(const Eigen::VectorXd&, const Eigen::VectorXd&) const { return jac; }
+  const Jacobians<Eigen::Dynamic>& jacobians(Eigen::Ref<const Eigen::VectorXd>, Eigen::Ref<const Eigen::VectorXd>) const { return jac; }
 
   bool velocity_dependent() const { return c != 0 || d != 0; }
 
@@ -163,11 +171,59 @@ struct Rope {
   }
 
   State<Eigen::Dynamic> exact_at(double t) const { return modal_flow(q0, Eigen::VectorXd::Zero(n), t); }
+
+  // The exact motion along a run of fixed step h (core/exact_tracker.hpp, HasExactAlong): each
+  // mode's oscillator stepped over h by its own 2 x 2 map,
+  //   (q_j, p_j) <- (a_j q_j + b_j p_j,  c_j q_j + d_j p_j),
+  // whose columns are the oscillator's motion over h from (1, 0) and from (0, 1)
+  // (damped_oscillation): O(N) a step, where the closed form costs an exp, a sin and a cos a
+  // mode. Every kResync steps the closed form again, so that the recurrence's round-off
+  // accumulates over kResync steps at most (a few ulps of |q| each). The positions eq + S q by one
+  // sine transform a step; the velocities S p only when asked (a run's end).
+  class ExactAlong {
+   public:
+    static constexpr int kResync = 256;
+    ExactAlong(const Rope& rope, double h);
+    const Eigen::VectorXd& at(double t);  // t = h, 2h, 3h, ... in turn
+    const Eigen::VectorXd& velocities();  // at the last t
+   private:
+    const Rope* r_;
+    Eigen::VectorXd q_, p_, a_, b_, c_, d_, x_, v_;
+    int until_closed_form_ = 1;  // 1 + the steps left before the closed form again
+  };
+  ExactAlong exact_along(double h) const { return ExactAlong(*this, h); }
   State<Eigen::Dynamic> flow(const State<Eigen::Dynamic>& y, double t) const {
     return modal_flow(sine->analysis(y.x - eq), sine->analysis(y.v), t);
   }
+  // The same flow in place, in the scratch pool's vectors (the exact method's step: no allocation).
+  void advance(State<Eigen::Dynamic>& y, double t) const {
+    ScratchVec q(n), p(n);
+    sine->analysis(ScratchVec(y.x - eq), q);
+    sine->analysis(y.v, p);
+    for (int j = 1; j <= n; ++j) {
+      const auto [u, du] = damped_oscillation(q[j - 1], p[j - 1], alpha(j), beta2(j), t);
+      q[j - 1] = u, p[j - 1] = du;
+    }
+    sine->synthesis(q, y.x);
+    y.x += eq;
+    sine->synthesis(p, y.v);
+  }
 
  private:
+  template <bool TimesInverseMass>
+  void forces(const double* __restrict xs, const double* __restrict vs, double* __restrict fs) const {
+    const double ks = k, ls = l, ds = d, cs = c, w = weight, im = inv_m;
+    const int ns = n;
+    fs[0] = ks * ((0 - xs[0]) - ls) + ds * (0 - vs[0]);
+    for (int i = 1; i < ns; ++i) fs[i] = ks * ((xs[i - 1] - xs[i]) - ls) + ds * (vs[i - 1] - vs[i]);
+    for (int i = 0; i + 1 < ns; ++i) {
+      const double f = (fs[i] - fs[i + 1]) - cs * vs[i] - w;
+      fs[i] = TimesInverseMass ? f * im : f;
+    }
+    const double last = (fs[ns - 1] - 0) - cs * vs[ns - 1] - w;
+    fs[ns - 1] = TimesInverseMass ? last * im : last;
+  }
+
   State<Eigen::Dynamic> modal_flow(const Eigen::VectorXd& q, const Eigen::VectorXd& p, double t) const {
     Eigen::VectorXd qt(n), pt(n);
     for (int j = 1; j <= n; ++j) {
@@ -177,6 +233,44 @@ struct Rope {
     return {eq + sine->synthesis(qt), sine->synthesis(pt)};
   }
 };
+
+inline Rope::ExactAlong::ExactAlong(const Rope& rope, double h) : r_(&rope), q_(rope.n), p_(rope.n), x_(rope.n), v_(rope.n) {
+  if (!(h > 0)) return;
+  a_.resize(rope.n), b_.resize(rope.n), c_.resize(rope.n), d_.resize(rope.n);
+  for (int j = 1; j <= rope.n; ++j) {
+    const Oscillation from_q = damped_oscillation(1, 0, rope.alpha(j), rope.beta2(j), h);
+    const Oscillation from_p = damped_oscillation(0, 1, rope.alpha(j), rope.beta2(j), h);
+    a_[j - 1] = from_q.u, c_[j - 1] = from_q.du, b_[j - 1] = from_p.u, d_[j - 1] = from_p.du;
+  }
+}
+
+inline const Eigen::VectorXd& Rope::ExactAlong::at(double t) {
+  const int n = r_->n;
+  if (until_closed_form_ > 1) {
+    --until_closed_form_;
+    double *__restrict q = q_.data(), *__restrict p = p_.data();
+    const double *__restrict a = a_.data(), *__restrict b = b_.data(), *__restrict c = c_.data(), *__restrict d = d_.data();
+    for (int j = 0; j < n; ++j) {
+      const double qj = q[j], pj = p[j];
+      q[j] = a[j] * qj + b[j] * pj;
+      p[j] = c[j] * qj + d[j] * pj;
+    }
+  } else {
+    until_closed_form_ = kResync;
+    for (int j = 1; j <= n; ++j) {
+      const auto [u, du] = damped_oscillation(r_->q0[j - 1], 0, r_->alpha(j), r_->beta2(j), t);
+      q_[j - 1] = u, p_[j - 1] = du;
+    }
+  }
+  r_->sine->synthesis(q_, x_);
+  x_ += r_->eq;
+  return x_;
+}
+
+inline const Eigen::VectorXd& Rope::ExactAlong::velocities() {
+  r_->sine->synthesis(p_, v_);
+  return v_;
+}
 
 }  // namespace steplab
 
@@ -206,19 +300,31 @@ SineTransform::~SineTransform() {
 }
 
 Eigen::VectorXd SineTransform::synthesis(const Eigen::VectorXd& q) const {
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(2 * n_), y(2 * n_);
+  Eigen::VectorXd u(n_);
+  synthesis(q, u);
+  return u;
+}
+
+void SineTransform::synthesis(Eigen::Ref<const Eigen::VectorXd> q, Eigen::Ref<Eigen::VectorXd> u) const {
+  ScratchVec x(2 * n_), y(2 * n_);
+  x.setZero();
   for (int j = 0; j < n_; ++j) x[2 * j] = 0.5 * q[j];
   fftw_execute_r2r(static_cast<fftw_plan>(plan_), x.data(), y.data());
-  return y.head(n_);
+  u = y.head(n_);
 }
 
 Eigen::VectorXd SineTransform::analysis(const Eigen::VectorXd& u) const {
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(2 * n_), y(2 * n_);
+  Eigen::VectorXd q(n_);
+  analysis(u, q);
+  return q;
+}
+
+void SineTransform::analysis(Eigen::Ref<const Eigen::VectorXd> u, Eigen::Ref<Eigen::VectorXd> q) const {
+  ScratchVec x(2 * n_), y(2 * n_);
+  x.tail(n_).setZero();
   x.head(n_) = u;
   fftw_execute_r2r(static_cast<fftw_plan>(plan_), x.data(), y.data());
-  Eigen::VectorXd q(n_);
   for (int j = 0; j < n_; ++j) q[j] = 2 * y[2 * j] / (2 * n_ + 1);
-  return q;
 }
 
 }  // namespace steplab

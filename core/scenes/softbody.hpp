@@ -98,23 +98,30 @@ struct SoftBody {
   const Eigen::VectorXd& mass() const { return m_all; }
   const Eigen::VectorXd& inverse_mass() const { return inv_m_all; }
 
-  Eigen::VectorXd force(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const {
-    Eigen::VectorXd f(2 * masses);
+  // F into the run's f.
+  void force(Eigen::Ref<const Eigen::VectorXd> x, Eigen::Ref<const Eigen::VectorXd> v, Eigen::Ref<Eigen::VectorXd> f) const {
     for (int i = 0; i < masses; ++i) f[2 * i] = 0, f[2 * i + 1] = -m * g + ground.force(x[2 * i + 1], v[2 * i + 1]);
     for (const Spring& s : springs) {
       const Eigen::Vector2d fi = spring.force(x.segment<2>(2 * s.i) - x.segment<2>(2 * s.j), v.segment<2>(2 * s.i) - v.segment<2>(2 * s.j), s.rest);
       f.segment<2>(2 * s.i) += fi;
       f.segment<2>(2 * s.j) -= fi;
     }
-    return f;
   }
 
   // Sparse, on the pattern made once (entries that are zero, as the ground's off contact, are
   // kept: the Newton solver's ordering and symbolic factorisation are made once per run): the
-  // ground on each y diagonal, then each spring's blocks added in spring order.
+  // ground on each y diagonal, then each spring's blocks added in spring order. Into the run's
+  // jac, which takes the pattern on its first call; by value for a caller outside a run.
   Jacobians<Eigen::Dynamic> jacobians(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const {
-    Jacobians<Eigen::Dynamic> jac{pattern, pattern};
+    Jacobians<Eigen::Dynamic> jac;
+    jacobians(x, v, jac);
+    return jac;
+  }
+  void jacobians(Eigen::Ref<const Eigen::VectorXd> x, Eigen::Ref<const Eigen::VectorXd> v, Jacobians<Eigen::Dynamic>& jac) const {
+    if (jac.dx.nonZeros() != pattern.nonZeros() || jac.dx.rows() != pattern.rows()) jac = {pattern, pattern};
     double *fx = jac.dx.valuePtr(), *fv = jac.dv.valuePtr();
+    std::fill(fx, fx + pattern.nonZeros(), 0.0);
+    std::fill(fv, fv + pattern.nonZeros(), 0.0);
     for (int i = 0; i < masses; ++i) {
       const double y = x[2 * i + 1];
       fx[y_slots[i]] = ground.dforce_dy(y), fv[y_slots[i]] = ground.dforce_dv(y);
@@ -129,7 +136,6 @@ struct SoftBody {
       add(fx, &spring_slots[16 * q], dd);
       add(fv, &spring_slots[16 * q], dv);
     }
-    return jac;
   }
 
   bool velocity_dependent() const { return gamma != 0 || ground.c != 0; }

@@ -72,7 +72,7 @@ TEST(SoftBody, ForceIsMinusTheGradientOfItsEnergy) {
   const SoftBody s = body(4, 0.0, 0.0);
   const State<Eigen::Dynamic> y = stirred(s);
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(y.x.size());
-  const Eigen::VectorXd f = s.force(y.x, zero);
+  const Eigen::VectorXd f = force_value(s, 0.0, y.x, zero);
   const double h = 1e-6;
   for (int i = 0; i < y.x.size(); ++i) {
     Eigen::VectorXd up = y.x, down = y.x;
@@ -93,8 +93,8 @@ TEST(SoftBody, JacobiansMatchFiniteDifferences) {
   for (int c = 0; c < y.x.size(); ++c) {
     Eigen::VectorXd xu = y.x, xd = y.x, vu = y.v, vd = y.v;
     xu[c] += h, xd[c] -= h, vu[c] += h, vd[c] -= h;
-    const Eigen::VectorXd fdx = (s.force(xu, y.v) - s.force(xd, y.v)) / (2 * h);
-    const Eigen::VectorXd fdv = (s.force(y.x, vu) - s.force(y.x, vd)) / (2 * h);
+    const Eigen::VectorXd fdx = (force_value(s, 0.0, xu, y.v) - force_value(s, 0.0, xd, y.v)) / (2 * h);
+    const Eigen::VectorXd fdv = (force_value(s, 0.0, y.x, vu) - force_value(s, 0.0, y.x, vd)) / (2 * h);
     for (int r = 0; r < y.x.size(); ++r) {
       EXPECT_NEAR(dx(r, c), fdx[r], 1e-7 * scale) << r << ", " << c;
       EXPECT_NEAR(dv(r, c), fdv[r], 1e-7 * scale) << r << ", " << c;
