@@ -170,7 +170,13 @@ struct Rope {
     return {x, Eigen::VectorXd::Zero(n)};
   }
 
-  State<Eigen::Dynamic> exact_at(double t) const { return modal_flow(q0, Eigen::VectorXd::Zero(n), t); }
+  State<Eigen::Dynamic> exact_at(double t) const {
+    Eigen::VectorXd q = q0, p = Eigen::VectorXd::Zero(n);
+    State<Eigen::Dynamic> y{Eigen::VectorXd(n), Eigen::VectorXd(n)};
+    move_modes(q, p, t);
+    synthesise(q, p, y);
+    return y;
+  }
 
   // The exact motion along a run of fixed step h (core/exact_tracker.hpp, HasExactAlong): each
   // mode's oscillator stepped over h by its own 2 x 2 map,
@@ -193,20 +199,17 @@ struct Rope {
   };
   ExactAlong exact_along(double h) const { return ExactAlong(*this, h); }
   State<Eigen::Dynamic> flow(const State<Eigen::Dynamic>& y, double t) const {
-    return modal_flow(sine->analysis(y.x - eq), sine->analysis(y.v), t);
+    State<Eigen::Dynamic> out = y;
+    advance(out, t);
+    return out;
   }
   // The same flow in place, in the scratch pool's vectors (the exact method's step: no allocation).
   void advance(State<Eigen::Dynamic>& y, double t) const {
     ScratchVec q(n), p(n);
     sine->analysis(ScratchVec(y.x - eq), q);
     sine->analysis(y.v, p);
-    for (int j = 1; j <= n; ++j) {
-      const auto [u, du] = damped_oscillation(q[j - 1], p[j - 1], alpha(j), beta2(j), t);
-      q[j - 1] = u, p[j - 1] = du;
-    }
-    sine->synthesis(q, y.x);
-    y.x += eq;
-    sine->synthesis(p, y.v);
+    move_modes(q, p, t);
+    synthesise(q, p, y);
   }
 
  private:
@@ -224,13 +227,18 @@ struct Rope {
     fs[ns - 1] = TimesInverseMass ? last * im : last;
   }
 
-  State<Eigen::Dynamic> modal_flow(const Eigen::VectorXd& q, const Eigen::VectorXd& p, double t) const {
-    Eigen::VectorXd qt(n), pt(n);
+  // Each mode j moved over t from (q_j, p_j), in place (its oscillator's closed form).
+  void move_modes(Eigen::Ref<Eigen::VectorXd> q, Eigen::Ref<Eigen::VectorXd> p, double t) const {
     for (int j = 1; j <= n; ++j) {
       const auto [u, du] = damped_oscillation(q[j - 1], p[j - 1], alpha(j), beta2(j), t);
-      qt[j - 1] = u, pt[j - 1] = du;
+      q[j - 1] = u, p[j - 1] = du;
     }
-    return {eq + sine->synthesis(qt), sine->synthesis(pt)};
+  }
+  // The state of modal coordinates (q, p): x = eq + S q, v = S p, into y (sized).
+  void synthesise(Eigen::Ref<const Eigen::VectorXd> q, Eigen::Ref<const Eigen::VectorXd> p, State<Eigen::Dynamic>& y) const {
+    sine->synthesis(q, y.x);
+    y.x += eq;
+    sine->synthesis(p, y.v);
   }
 };
 
@@ -257,10 +265,8 @@ inline const Eigen::VectorXd& Rope::ExactAlong::at(double t) {
     }
   } else {
     until_closed_form_ = kResync;
-    for (int j = 1; j <= n; ++j) {
-      const auto [u, du] = damped_oscillation(r_->q0[j - 1], 0, r_->alpha(j), r_->beta2(j), t);
-      q_[j - 1] = u, p_[j - 1] = du;
-    }
+    q_ = r_->q0, p_.setZero();
+    r_->move_modes(q_, p_, t);
   }
   r_->sine->synthesis(q_, x_);
   x_ += r_->eq;
