@@ -36,6 +36,10 @@ std::string peer_ratio_lines(const std::map<std::string, double>& ns);
 // rope_floor_bench.cpp: the hand-written vectorised loops on the rope, and steplab's ratios to them
 void register_rope_floor();
 std::string rope_floor_lines(const std::map<std::string, double>& ns);
+// machine.cpp: what the times were measured on
+std::string cpu_model();
+double load_average();
+std::string machine_line();
 // throughput_bench.cpp: registers the throughput rows; returns their trajectories and trajectory-steps per iteration
 std::pair<int, long long> register_throughput();
 
@@ -285,25 +289,6 @@ template <class Reporter, class... Args> std::map<std::string, double> run_colle
   return reporter.ns_per_step;
 }
 
-// The CPU's model name (Google Benchmark's context gives its cores and clock only), and the load
-// average over the last minute: what the times were measured on, and beside what else.
-std::string cpu_model() {
-  std::ifstream info("/proc/cpuinfo");
-  for (std::string line; std::getline(info, line);)
-    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-  return "unknown CPU";
-}
-double load_average() {
-  double load = -1;
-  std::ifstream("/proc/loadavg") >> load;
-  return load;
-}
-std::string machine_line() {
-  char out[300];
-  std::snprintf(out, sizeof out, "Measured on %s (%ld cores); load average over the last minute %.2f at the end.",
-                cpu_model().c_str(), sysconf(_SC_NPROCESSORS_ONLN), load_average());
-  return out;
-}
 
 // The value of --flag=value among the arguments (the last one given), or `fallback`.
 std::string flag_value(int argc, char** argv, const std::string& flag, const std::string& fallback) {
