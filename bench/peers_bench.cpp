@@ -10,9 +10,9 @@
 #include <map>
 #include <string>
 
-#include "analysis/kernel.hpp"
-#include "analysis/peers.hpp"
-#include "analysis/sized_peers.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/peers/peers.hpp"
+#include "analysis/peers/sized_peers.hpp"
 #include "cvode_rope.h"
 
 namespace {

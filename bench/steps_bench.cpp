@@ -23,7 +23,7 @@
 
 #include <boost/numeric/odeint.hpp>
 
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "core/methods/explicit_euler.hpp"
 #include "core/methods/rk4.hpp"
 #include "core/scenes/falling.hpp"

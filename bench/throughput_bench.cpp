@@ -2,7 +2,7 @@
 //
 //   throughput/spring/explicit_euler           a study's path: kLanes runs of explicit Euler on
 //                                              the default spring through the kernel table
-//                                              (analysis/kernel.hpp, run_all), in packs of the
+//                                              (analysis/kernel/kernel.hpp, run_all), in packs of the
 //                                              CPU's best width, each kSteps steps, with the run
 //                                              loop's checks (non-finite state, energy ratio)
 //   throughput_w<N>/...                        the same at pack width N (1: one run at a time)
@@ -21,7 +21,7 @@
 #include <span>
 #include <string>
 
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 
 namespace {
 

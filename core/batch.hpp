@@ -15,7 +15,7 @@
 //   Hentschel et al., EGPGV 2015). The loop ends when no lane has a run.
 //
 // Samples and observers are not kept here: a batch is for the studies' summary runs (run_all,
-// analysis/kernel.hpp, runs a spec that asks for samples one at a time).
+// analysis/kernel/kernel.hpp, runs a spec that asks for samples one at a time).
 #pragma once
 
 #include <array>

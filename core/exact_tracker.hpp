@@ -96,10 +96,14 @@ template <HasExact S> class ExactTracker {
 
 // A scene of run-time size whose exact motion is cheaper to follow step by step than to evaluate
 // afresh offers `exact_along(h)`: an object whose at(t), called at t = h, 2h, 3h, ... in turn,
-// gives the exact positions, and velocities() the velocities at the last of those times (the
-// rope: its modes stepped one by one, core/scenes/rope.hpp). A run then reads the velocities once,
-// at its end.
+// gives the exact positions, jump() makes the next at(t) take any t, and velocities() the
+// velocities at the last of those times (the rope: its modes stepped one by one,
+// core/scenes/rope.hpp). A run then reads the velocities once, at its end; and since the positions
+// still cost a transform, it may read them every few steps (RunSpec::error_stride), h apart.
 template <class S>
-concept HasExactAlong = HasExact<S> && requires(const S& s, double h) { s.exact_along(h); };
+concept HasExactAlong = HasExact<S> && requires(const S& s, double h) {
+  s.exact_along(h);
+  s.exact_along(h).jump();
+};
 
 }  // namespace steplab

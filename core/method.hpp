@@ -47,7 +47,7 @@ inline constexpr std::string_view to_string(Family f) {
   return "?";
 }
 
-// What a method claims; `steplab check --method NAME` measures each claim (analysis/check.hpp).
+// What a method claims; `steplab check --method NAME` measures each claim (analysis/studies/check.hpp).
 // A row names the flags that hold: {.name = "rk4", .order = 4, .family = ..., .summary = "..."}.
 struct MethodInfo {
   std::string_view name;
@@ -64,7 +64,7 @@ struct MethodInfo {
 // An implicit Runge-Kutta method declares its Butcher tableau, `static constexpr
 // ButcherTableau<s> tableau`, whether its step is written from it (core/implicit_rk.hpp) or by
 // hand (implicit Euler, implicit midpoint): the order-reduction study reads its stage order and
-// R(infinity) from it (analysis/order_reduction.hpp).
+// R(infinity) from it (analysis/studies/order_reduction.hpp).
 template <int Stages> struct ButcherTableau {
   std::array<std::array<double, Stages>, Stages> a;
   std::array<double, Stages> b;
@@ -142,7 +142,7 @@ template <class T> struct NewtonLanes {
   Status<T> status() const { return status_of(failed); }
 };
 
-// A scene that counts (analysis/kernel_impl.hpp, Counted) is told of each Newton iteration, with
+// A scene that counts (analysis/kernel/kernel_impl.hpp, Counted) is told of each Newton iteration, with
 // the factorisations and linear solves it made; for any other scene this is nothing at all. Full
 // Newton on a fixed size (count_newton_update): one factorisation and one solve each.
 template <class S> [[gnu::always_inline]] inline void count_iteration(const S& s, const SolveCounts& n) {

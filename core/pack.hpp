@@ -5,7 +5,7 @@
 // (multibody/mpm/simd_scalar.h) is the model.
 //
 // The lanes are one GCC vector (`vector_size`) of the register width of the instruction set the
-// batched run loop is compiled for (core/batch.hpp, analysis/kernel_impl.hpp): 2 on SSE2, 4 on
+// batched run loop is compiled for (core/batch.hpp, analysis/kernel/kernel_impl.hpp): 2 on SSE2, 4 on
 // AVX2, 8 on AVX-512. A vector wider than the target's registers is lowered through memory
 // (3-4x slower). One pack is stepped at a time, not two interleaved: the loop is bound by its
 // instruction count, not by its latency, so a second chain of a step in flight gained nothing

@@ -25,7 +25,7 @@
 // JSON writers and the validation all read; a scene is built from the values in that order.
 //
 // What else a scene offers the studies it declares in its own file, and the studies ask for
-// that, never for a scene's name (the kernel table hands it on: analysis/kernel.hpp SceneKernel):
+// that, never for a scene's name (the kernel table hands it on: analysis/kernel/kernel.hpp SceneKernel):
 //   flow(y, h)                    an exact solution (HasExact): convergence against it, the
 //                                 scaling study's target
 //   affine_flow = true            that flow is affine in the state (HasAffineFlow)
@@ -40,7 +40,7 @@
 //                                 the predicted largest stable step dt* of every method
 //                                 (study stability, study scaling)
 //   jacobian_bandwidth = b        dF/dx and dF/dv vanish farther than b from the diagonal (the
-//                                 peers then use a banded solver, analysis/sized_peers.cpp)
+//                                 peers then use a banded solver, analysis/peers/sized_peers.cpp)
 //   stiffness_param, damping_param = "<name>"   which parameters are its stiffness and damping
 //   stiff_limit_scene = "<scene>", stiff_limit(params)   what it tends to as its stiffness
 //                                 parameter grows without bound: that scene and its parameter
@@ -213,7 +213,7 @@ template <class S, class X, class V> Eigen::VectorXd force_value(const S& s, dou
 // Verlet's closing kick where the force is damped, solved at fixed x. There F is affine in v, so
 // dF/dv from differences of the force in v is exact up to round-off (a unit step in each velocity);
 // dF/dx, which only scales that solve's stopping test, from central differences. (The implicit
-// methods do not run on such a scene: analysis/kernel_impl.hpp, applies.)
+// methods do not run on such a scene: analysis/kernel/kernel_impl.hpp, applies.)
 template <class S, class Tm, class X, class V>
 Jacobians<S::dim, typename X::Scalar> differenced_jacobians(const S& s, Tm t, const X& x, const V& v) {
   using T = typename X::Scalar;

@@ -42,6 +42,9 @@ struct RunSpec {
   long long max_samples = 0;   // 0: no samples; otherwise at most this many (>= 2)
   bool energy_rate = false;    // fit the growth rate of ln E
   bool errors = true;          // compare with the exact solution where there is one
+  // On a scene whose exact positions cost a transform (HasExactAlong: the rope), the error is
+  // read at every error_stride-th step and at the last (1: every step). Elsewhere every step.
+  long long error_stride = 1;
   // Stop early once E/E0 leaves [stop_below, stop_above] (0 and inf: never). Above counts as
   // Diverged (the energy blew up); below ends the run as Ok (it has decayed, clearly stable,
   // before round-off flattens ln E).
@@ -64,13 +67,14 @@ template <int D> struct RunResult {
   State<D> final = zero_state<D>();
   bool has_exact = false;
   double error_final = 0, error_max = 0, error_rms = 0, error_v_final = 0;
+  long long error_reads = 0;    // the steps the errors were read at (the max and RMS are over these)
   double energy0 = 0, energy_ratio_final = 1, energy_ratio_max = 1;
   double energy_rate = std::numeric_limits<double>::quiet_NaN();  // d ln E / dt, least squares
   std::vector<Sample<D>> samples;
 };
 
 // A run's result with its states as vectors of run-time size: what a kernel compiled for one
-// method and scene hands to the studies (analysis/kernel.hpp), which are not templates.
+// method and scene hands to the studies (analysis/kernel/kernel.hpp), which are not templates.
 using AnyResult = RunResult<Eigen::Dynamic>;
 
 // The same result with its states as vectors of size To (Eigen::Dynamic: run-time size; a fixed
@@ -81,6 +85,7 @@ template <int To, int From> RunResult<To> resized(RunResult<From>&& r) {
   a.final = {r.final.x, r.final.v};
   a.has_exact = r.has_exact;
   a.error_final = r.error_final, a.error_max = r.error_max, a.error_rms = r.error_rms, a.error_v_final = r.error_v_final;
+  a.error_reads = r.error_reads;
   a.energy0 = r.energy0, a.energy_ratio_final = r.energy_ratio_final, a.energy_ratio_max = r.energy_ratio_max;
   a.energy_rate = r.energy_rate;
   a.samples.reserve(r.samples.size());
@@ -258,10 +263,12 @@ template <class Stp, class Sc, int D, class T, class I, class After>
 // The run's summary once r.steps and r.energy0 are set: the errors, has_exact, the RMS error,
 // the energy ratios (NaN where E0 = 0: a ratio to nothing) and, if fitted, the growth rate.
 template <int D>
-void finish_run(RunResult<D>& r, bool has_exact, const ErrorSums<double>& e, const RunTally<double>& tally, bool energy_rate) {
+void finish_run(RunResult<D>& r, bool has_exact, const ErrorSums<double>& e, const RunTally<double>& tally, bool energy_rate,
+                long long reads = -1) {
   r.has_exact = has_exact;
   r.error_max = e.error_max, r.error_final = e.error_final, r.error_v_final = e.error_v_final;
-  if (r.steps > 0) r.error_rms = std::sqrt(e.err_sq_sum / static_cast<double>(r.steps));
+  r.error_reads = has_exact ? (reads < 0 ? r.steps : reads) : 0;
+  if (r.error_reads > 0) r.error_rms = std::sqrt(e.err_sq_sum / static_cast<double>(r.error_reads));
   double ratio = tally.ratio, ratio_max = tally.ratio_max;
   if (r.energy0 == 0) ratio = ratio_max = std::numeric_limits<double>::quiet_NaN();
   r.energy_ratio_final = ratio;
@@ -299,7 +306,7 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
     const Stepped<double> s = take_step(stepper_, scene_, y_, y_, i_, spec_.dt, true, tally_, e0_, e0_ != 0, true, spec_.energy_rate,
                                         [&](const State<D>& y, bool, double t, double e) __attribute__((always_inline)) {
                                           if constexpr (HasExactAlong<S>) {
-                                            if (spec_.errors) errors_.add_positions(y.x, tracker_.at(t));
+                                            if (spec_.errors && i_ % stride_ == 0) read_error(y, i_, t);
                                           } else if constexpr (HasExact<S>) {
                                             if (spec_.errors) errors_.add(y, tracker_.at(t), true);
                                           }
@@ -328,9 +335,13 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
     r_.steps = i_ - 1;
     r_.t_final = r_.steps * spec_.dt;
     r_.final = y_;
-    if constexpr (HasExactAlong<S>)
-      if (spec_.errors && r_.steps > 0) errors_.error_v_final = (y_.v - tracker_.velocities()).norm();
-    finish_run(r_, HasExact<S> && spec_.errors, errors_, tally_, spec_.energy_rate);
+    if constexpr (HasExactAlong<S>) {
+      if (spec_.errors && r_.steps > 0) {
+        if (last_read_ != r_.steps) tracker_.jump(), read_error(y_, r_.steps, r_.t_final);
+        errors_.error_v_final = (y_.v - tracker_.velocities()).norm();
+      }
+    }
+    finish_run(r_, HasExact<S> && spec_.errors, errors_, tally_, spec_.energy_rate, HasExactAlong<S> ? reads_ : -1);
     // The last finite state is always kept, also when the run ended early.
     if (plan_.size() > 0 && (r_.samples.empty() || r_.samples.back().t != r_.t_final))
       r_.samples.push_back({r_.t_final, y_.x, y_.v, scene_.energy(y_.x, y_.v)});
@@ -338,9 +349,15 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
 
  private:
   static auto make_tracker(const S& scene, const RunSpec& spec) {
-    if constexpr (HasExactAlong<S>) return scene.exact_along(spec.errors ? spec.dt : 0);  // steps of dt
+    if constexpr (HasExactAlong<S>) return scene.exact_along(spec.errors ? spec.dt * stride_of(spec) : 0);  // reads apart
     else if constexpr (HasExact<S>) return ExactTracker<S>(scene, spec.errors ? spec.dt : 0);
     else return 0;
+  }
+  static long long stride_of(const RunSpec& spec) { return HasExactAlong<S> ? std::max(1LL, spec.error_stride) : 1; }
+  // The position error at step i (time t) against the tracker's exact positions there.
+  void read_error(const State<D>& y, long long i, double t) {
+    errors_.add_positions(y.x, tracker_.at(t));
+    last_read_ = i, ++reads_;
   }
   void keep(long long i, double t, const State<D>& s, double e) {
     if (i == next_sample_ && sample_k_ < plan_.size()) {
@@ -359,6 +376,8 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
   RunTally<double> tally_;
   ErrorSums<double> errors_;
   long long i_ = 1, next_sample_ = 0, sample_k_ = 0;  // i_: the next step, 1-based
+  const long long stride_ = stride_of(spec_);
+  long long last_read_ = 0, reads_ = 0;  // the step the error was last read at; how many reads
   [[no_unique_address]] decltype(make_tracker(std::declval<const S&>(), RunSpec{})) tracker_;
   [[no_unique_address]] Stepper<M, S> stepper_;  // a multistep method's memory; nothing for a one-step method
 };

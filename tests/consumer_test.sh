@@ -10,7 +10,7 @@ shift 2
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cmake --install "$build" --prefix "$tmp/prefix" >/dev/null
-for f in include/steplab/core/methods/rk4.hpp include/steplab/analysis/kernel.hpp include/steplab/reports/cli/cli.hpp bin/steplab \
+for f in include/steplab/core/methods/rk4.hpp include/steplab/analysis/kernel/kernel.hpp include/steplab/reports/cli/cli.hpp bin/steplab \
          lib/cmake/steplab/steplabConfig.cmake lib/cmake/steplab/steplabConfigVersion.cmake lib/cmake/steplab/steplabTools.cmake; do
   [[ -e $tmp/prefix/$f ]] || { echo "not installed: $f"; exit 1; }
 done

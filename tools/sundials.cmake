@@ -1,4 +1,4 @@
-# SUNDIALS CVODE, the stiff peer of the studies (analysis/peers.hpp), built as its maintainers
+# SUNDIALS CVODE, the stiff peer of the studies (analysis/peers/peers.hpp), built as its maintainers
 # build it: CMAKE_BUILD_TYPE=Release. Debian's libsundials-dev is compiled without optimisation
 # (its debian/rules sets CMAKE_C_FLAGS=-fcommon, which replaces the packaging's -O2), which made
 # every CVODE run about three times slower than SUNDIALS' own build (docs/performance.md).

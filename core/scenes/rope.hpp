@@ -27,12 +27,15 @@
 
 namespace steplab {
 
-// u_n = sum_{j=1}^N q_j sin(n theta_j) (synthesis) and q_j = 4/(2N+1) sum_{n=1}^N u_n sin(n theta_j)
-// (analysis), n, j = 1 .. N, each one FFTW RODFT00 (DST-I) of size 2N,
-//   Y_k = 2 sum_{i=0}^{2N-1} X_i sin(pi (i+1)(k+1) / (2N+1)):
-// synthesis: X_{2j-2} = q_j / 2, other X zero, u_n = Y_{n-1}; analysis: X_{n-1} = u_n, the rest
-// zero, q_j = 2 Y_{2j-2} / (2N+1). The plan is made once per rope (FFTW's planner is not
-// thread-safe: serialised) and executed on each call's own arrays (which is).
+// u_n = sum_{j=1}^N q_j sin(n theta_j) (synthesis) and q_j = 4/M sum_{n=1}^N u_n sin(n theta_j)
+// (analysis), n, j = 1 .. N, theta_j = (2j - 1) pi / M, M = 2N + 1 (a DST-VII). Each is one real
+// FFT of the odd length M (FFTW r2c, X_p = sum_{n=0}^{M-1} z_n e^{-2 pi i n p / M}), by
+//   sin(n (M - 2p) pi / M) = -(-1)^n sin(2 pi n p / M),   2j - 1 = M - 2p,  p = N + 1 - j:
+// analysis: z_n = (-1)^{n+1} u_n (n = 1 .. N, the rest zero), q_j = -(4/M) Im X_{N+1-j};
+// synthesis: z_p = q_{N+1-p} (p = 1 .. N, the rest zero), u_n = (-1)^n Im X_n.
+// (The DST-I of size 2N that holds the same sums has a DFT of length 2M behind it: twice the
+// work.) The plan is made once per rope (FFTW's planner is not thread-safe: serialised) and
+// executed on each call's own arrays (which is).
 class SineTransform {
  public:
   explicit SineTransform(int n);
@@ -178,7 +181,7 @@ struct Rope {
     return y;
   }
 
-  // The exact motion along a run of fixed step h (core/exact_tracker.hpp, HasExactAlong): each
+  // The exact motion along a run, read every h (core/exact_tracker.hpp, HasExactAlong): each
   // mode's oscillator stepped over h by its own 2 x 2 map,
   //   (q_j, p_j) <- (a_j q_j + b_j p_j,  c_j q_j + d_j p_j),
   // whose columns are the oscillator's motion over h from (1, 0) and from (0, 1)
@@ -191,6 +194,7 @@ struct Rope {
     static constexpr int kResync = 256;
     ExactAlong(const Rope& rope, double h);
     const Eigen::VectorXd& at(double t);  // t = h, 2h, 3h, ... in turn
+    void jump() { until_closed_form_ = 1; }  // the next at(t) at any t, by the closed form
     const Eigen::VectorXd& velocities();  // at the last t
    private:
     const Rope* r_;
@@ -295,9 +299,10 @@ std::mutex& fftw_planner() {
 }  // namespace
 
 SineTransform::SineTransform(int n) : n_(n) {
-  std::vector<double> in(2 * n), out(2 * n);
+  const int m = 2 * n + 1;
+  std::vector<double> in(m), out(2 * (n + 1));
   const std::lock_guard lock(fftw_planner());
-  plan_ = fftw_plan_r2r_1d(2 * n, in.data(), out.data(), FFTW_RODFT00, FFTW_ESTIMATE | FFTW_UNALIGNED);
+  plan_ = fftw_plan_dft_r2c_1d(m, in.data(), reinterpret_cast<fftw_complex*>(out.data()), FFTW_ESTIMATE | FFTW_UNALIGNED);
 }
 
 SineTransform::~SineTransform() {
@@ -312,11 +317,13 @@ Eigen::VectorXd SineTransform::synthesis(const Eigen::VectorXd& q) const {
 }
 
 void SineTransform::synthesis(Eigen::Ref<const Eigen::VectorXd> q, Eigen::Ref<Eigen::VectorXd> u) const {
-  ScratchVec x(2 * n_), y(2 * n_);
-  x.setZero();
-  for (int j = 0; j < n_; ++j) x[2 * j] = 0.5 * q[j];
-  fftw_execute_r2r(static_cast<fftw_plan>(plan_), x.data(), y.data());
-  u = y.head(n_);
+  const int n = n_;
+  ScratchVec z(2 * n + 1), x(2 * (n + 1));
+  z[0] = 0;
+  for (int p = 1; p <= n; ++p) z[p] = q[n - p];
+  z.tail(n).setZero();
+  fftw_execute_dft_r2c(static_cast<fftw_plan>(plan_), z.data(), reinterpret_cast<fftw_complex*>(x.data()));
+  for (int k = 1; k <= n; ++k) u[k - 1] = (k % 2 == 0 ? 1.0 : -1.0) * x[2 * k + 1];
 }
 
 Eigen::VectorXd SineTransform::analysis(const Eigen::VectorXd& u) const {
@@ -326,11 +333,14 @@ Eigen::VectorXd SineTransform::analysis(const Eigen::VectorXd& u) const {
 }
 
 void SineTransform::analysis(Eigen::Ref<const Eigen::VectorXd> u, Eigen::Ref<Eigen::VectorXd> q) const {
-  ScratchVec x(2 * n_), y(2 * n_);
-  x.tail(n_).setZero();
-  x.head(n_) = u;
-  fftw_execute_r2r(static_cast<fftw_plan>(plan_), x.data(), y.data());
-  for (int j = 0; j < n_; ++j) q[j] = 2 * y[2 * j] / (2 * n_ + 1);
+  const int n = n_;
+  ScratchVec z(2 * n + 1), x(2 * (n + 1));
+  z[0] = 0;
+  for (int k = 1; k <= n; ++k) z[k] = (k % 2 == 1 ? 1.0 : -1.0) * u[k - 1];
+  z.tail(n).setZero();
+  fftw_execute_dft_r2c(static_cast<fftw_plan>(plan_), z.data(), reinterpret_cast<fftw_complex*>(x.data()));
+  const double scale = -4.0 / (2 * n + 1);
+  for (int j = 1; j <= n; ++j) q[j - 1] = scale * x[2 * (n + 1 - j) + 1];
 }
 
 }  // namespace steplab

@@ -1,5 +1,5 @@
 // `steplab check --method NAME`: one line per claim of the method's row, with the figures and
-// PASS or FAIL (analysis/check.hpp says what is measured and why each tolerance). Exit status 0
+// PASS or FAIL (analysis/studies/check.hpp says what is measured and why each tolerance). Exit status 0
 // when every claim holds, 1 when one fails, 2 for bad input.
 #include "reports/cli/check_command.hpp"
 
@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "reports/cli/commands.hpp"
 #include "reports/data/inputs.hpp"
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/check.hpp"
+#include "analysis/studies/check.hpp"
 
 namespace steplab {
 

@@ -14,14 +14,14 @@
 #include <fmt/format.h>
 
 #include "reports/cli/commands.hpp"
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/cli/parts.hpp"
 #include "reports/data/schemas.hpp"
 #include "reports/data/study_output.hpp"
-#include "analysis/parallel.hpp"
-#include "analysis/local_error.hpp"
-#include "analysis/defaults.hpp"
+#include "analysis/kernel/parallel.hpp"
+#include "analysis/studies/local_error.hpp"
+#include "analysis/studies/defaults.hpp"
 #include "reports/document/section.hpp"
 
 namespace steplab {
@@ -31,7 +31,7 @@ namespace {
 //   steplab -testcase spring1d -method euler -step 0.01 -damp 0.1 -mass 1 -stiff 10 [-length 1]
 constexpr std::array<std::string_view, 7> legacy_flags{"-testcase", "-method", "-step", "-damp",
                                                        "-mass",     "-stiff",  "-length"};
-// Its test cases: its scenes (analysis/defaults.hpp; the first is where it starts and where the
+// Its test cases: its scenes (analysis/studies/defaults.hpp; the first is where it starts and where the
 // two measurements run) and two measurements.
 constexpr std::array<std::string_view, 2> legacy_measurements{"error_measurement", "stability_measurement"};
 std::string legacy_testcases() {
@@ -41,7 +41,7 @@ std::string legacy_testcases() {
   return out;
 }
 
-// The collision study's scenes: the rebound scene and the contact body (analysis/defaults.hpp).
+// The collision study's scenes: the rebound scene and the contact body (analysis/studies/defaults.hpp).
 bool collision_scene(const SceneKernel& s) { return s.name == kReboundScene || s.name == kContactBodyScene; }
 
 // Its defaults: step 0.003, mass 0.1, stiffness 10, damping 0.01, rest length 1.
@@ -109,7 +109,7 @@ std::string_view value_kind(std::string_view command, std::string_view option) {
   for (const auto& [name, kind] : by_command)
     if (name.substr(0, name.find(' ')) == command && name.substr(name.find(' ') + 1) == option) return kind;
   static constexpr std::pair<std::string_view, std::string_view> kinds[] = {
-      {"--samples", "WHOLE"},         {"--points", "WHOLE"},          {"--threads", "WHOLE"},
+      {"--samples", "WHOLE"},         {"--error-every", "WHOLE"},     {"--points", "WHOLE"},          {"--threads", "WHOLE"},
       {"--lanes", "auto|1|2|4|8"},    {"--shard", "i/N"},             {"--frames", "WHOLE"},
       {"--max-steps", "WHOLE"},       {"--map-dt-points", "WHOLE"},   {"--map-damping-points", "WHOLE"},
       {"--methods", "NAME,..."},      {"--dts", "NUMBER,..."},        {"--threshold-dampings", "NUMBER,..."},
@@ -247,6 +247,9 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   run_cmd->add_option("--t-end", run.t_end, "simulated time; t_end / dt steps, rounded up")->capture_default_str();
   run_cmd->add_option("--samples", run.samples, "at most this many rows, evenly decimated, last step kept (default 10001, "
                                                  "fewer on a large scene: at most 10^6 numbers in all)");
+  run_cmd->add_option("--error-every", run.error_every,
+                      "with --json, on a scene whose exact positions cost a transform (the rope): read the error every this "
+                      "many steps and at the last (default: steps / 100, at least 1; 1: every step)");
   run_cmd->add_option("--json", run.json, fmt::format("write JSON (schema {}) to this file instead of CSV", schema::run));
 
   CLI::App* study = app.add_subcommand("study", "a study over many runs; prints a table, --json writes its data");

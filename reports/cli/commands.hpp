@@ -8,9 +8,9 @@
 #include <string_view>
 #include <vector>
 
-#include "analysis/parallel.hpp"
-#include "analysis/peers.hpp"
-#include "analysis/shard.hpp"
+#include "analysis/kernel/parallel.hpp"
+#include "analysis/peers/peers.hpp"
+#include "analysis/kernel/shard.hpp"
 #include "reports/cli/scene_args.hpp"
 
 namespace steplab {
@@ -21,7 +21,7 @@ struct Context {
   std::vector<std::string> invocation;  // the command line as typed, for a shard's part to name
   bool dry_run = false;                 // check the input and stop, running nothing (the fuzzer)
   ProgressHook progress = nullptr;      // shown as a study's tasks finish
-  WorkLog log;                          // a shard's results, or a merge's parts (analysis/shard.hpp)
+  WorkLog log;                          // a shard's results, or a merge's parts (analysis/kernel/shard.hpp)
   // A study's workers: `threads`, the progress, the log.
   Workers workers(unsigned threads) { return {threads, progress, &log}; }
   // Called by each command once its input is checked: true in a dry run (stop); otherwise
@@ -41,6 +41,7 @@ struct RunArgs {
   std::string rtol, atol;  // dopri5 only; empty: SciPy's defaults 1e-3 and 1e-6
   std::string t_end = "10";
   std::string samples;  // empty: default_samples (run_command.cpp)
+  std::string error_every;  // empty: the steps / 100, at least 1 (run_command.cpp)
   std::string json;  // write JSON here instead of CSV on stdout
 };
 
@@ -74,7 +75,7 @@ std::size_t resolve_method(std::string_view name);
 std::vector<std::size_t> resolve_methods(const std::string& list, bool with_analytic,
                                          std::optional<std::size_t> scene = std::nullopt);
 // --methods of a study with peers: the table's numerical methods and the adaptive solvers
-// `available` on its scene (dopri5 and the peers, analysis/peers.hpp). The adaptive ones named are
+// `available` on its scene (dopri5 and the peers, analysis/peers/peers.hpp). The adaptive ones named are
 // run, or every available one where none is named (none with --no-peers). A peer not built into
 // this steplab, or not running on `scene`, is a UsageError. `table`: the peers (a test's own).
 struct Solvers {

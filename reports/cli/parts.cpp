@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "analysis/shard.hpp"
+#include "analysis/kernel/shard.hpp"
 #include "reports/cli/cli.hpp"
 #include "reports/cli/commands.hpp"
 #include "reports/data/inputs.hpp"

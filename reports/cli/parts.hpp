@@ -1,6 +1,6 @@
 // `--shard i/N` on every study, and `steplab merge PART.json... --json OUT`.
 //
-// A shard runs the i-th of N equal parts of each of the study's task lists (analysis/shard.hpp)
+// A shard runs the i-th of N equal parts of each of the study's task lists (analysis/kernel/shard.hpp)
 // and writes them as a part (schema steplab.part/1):
 //   {"schema", "command": the study's command line without --shard, --json, --threads and
 //    --lanes, "shard": [i, N], "calls": [{"tasks": n, "results": {"<task>": "<hex bytes>", ...}}]}

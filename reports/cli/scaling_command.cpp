@@ -1,14 +1,14 @@
 // `study scaling`: the rope of N masses or the soft body of n x n masses refined and stiffened,
-// every method and the peers in each cell, at each target (analysis/scaling.hpp); a table per
+// every method and the peers in each cell, at each target (analysis/studies/scaling.hpp); a table per
 // (target, stiffness) and the map on stdout, --json the data (schema::scaling).
 #include <cmath>
 #include <cstdio>
 
 #include <fmt/format.h>
 
-#include "analysis/defaults.hpp"
-#include "analysis/kernel.hpp"
-#include "analysis/scaling.hpp"
+#include "analysis/studies/defaults.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/scaling.hpp"
 #include "reports/cli/commands.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/data/output.hpp"
@@ -22,7 +22,7 @@ namespace steplab {
 CLI::App* add_scaling_command(CLI::App* study, ScalingArgs& a) {
   CLI::App* cmd = study->add_subcommand("scaling", "rope of N masses or soft body of n x n: cost of a step and of a run at a "
                                                    "given error, largest stable step, against N; fitted exponents, crossover");
-  a.scene.scene = std::string(kDefaultSizedScene);  // any scene that scales() (analysis/scaling.hpp)
+  a.scene.scene = std::string(kDefaultSizedScene);  // any scene that scales() (analysis/studies/scaling.hpp)
   a.scene.add_to(cmd, scales);
   cmd->add_option("--methods", a.methods, "comma-separated methods and adaptive solvers (dopri5, odeint_dopri5, cvode_adams_band, "
                                           "cvode_bdf_band, cvode_bdf_max2_band on the rope, cvode_adams_klu, cvode_bdf_klu, "
@@ -45,162 +45,6 @@ CLI::App* add_scaling_command(CLI::App* study, ScalingArgs& a) {
   add_shard_option(cmd, a.shard);
   cmd->add_option("--json", a.json, fmt::format("write JSON (schema {}) to this file", schema::scaling));
   return cmd;
-}
-
-Json scaling_json(const ScalingResult& r) {
-  const ScalingConfig& c = r.config;
-  Json j;
-  j["schema"] = schema::scaling;
-  const std::size_t scene = scene_index(c.scene);
-  const SceneKernel& s = scene_kernel(scene);
-  const std::string size_key = param_key(s.params[s.size_param]);  // masses (rope), grid (soft body)
-  const auto num = [](double x) { return std::isnan(x) ? Json(nullptr) : threshold_json(x); };
-  j["scene"] = c.scene;
-  Json p = scene_params_json(scene, c.params);
-  p.erase(size_key);
-  if (s.stiffness_param >= 0) p.erase(param_key(s.params[s.stiffness_param]));
-  p["sizes"] = c.sizes;
-  Json stiffnesses = Json::array();
-  for (double k : scaling_stiffnesses(c)) stiffnesses.push_back(num(k));
-  p["stiffnesses"] = std::move(stiffnesses);
-  Json targets = Json::array();
-  for (const ErrorTarget& t : c.targets) targets.push_back({{"value", t.value}, {"of_extent", t.of_extent}});
-  p["targets"] = std::move(targets);
-  p["frames"] = c.frames;
-  p["t_end"] = c.t_end;
-  p["max_steps"] = c.max_steps;
-  p["timing"] = c.timing;
-  j["params"] = std::move(p);
-  j["peer_builds"] = peer_builds_json();
-  Json rows = Json::array();
-  for (const ScalingRow& w : r.rows) {
-    Json row = {{"solver", w.solver}, {"target", w.target}, {"stiffness", num(w.stiffness)}, {"implicit", w.implicit},
-                {"adaptive", w.adaptive}, {size_key, w.n}, {"dt_stable", num(w.dt_stable)}, {w.adaptive ? "tolerance" : "dt", num(w.dt)},
-                {"error", w.reached() ? Json(w.error) : Json(nullptr)}, {"counts", counts_json(w.counts())},
-                {"seconds", w.reached() && c.timing ? Json(w.seconds) : Json(nullptr)}, {"search_runs", w.runs}};
-    if (!w.adaptive) row["dt_capped_at_stable"] = w.capped;
-    row["masses"] = w.masses;
-    rows.push_back(std::move(row));
-  }
-  j["rows"] = std::move(rows);
-  const auto exponent = [&](const Exponent& e) {
-    return Json{{"exponent", num(e.value)}, {"ci95", e.fitted() ? Json::array({e.lo, e.hi}) : Json(nullptr)},
-                {"sizes", e.sizes}, {"decades", e.decades}, {"early", e.early}};
-  };
-  Json fits = Json::array();
-  for (const ScalingFit& f : r.fits)
-    fits.push_back({{"solver", f.solver}, {"target", f.target}, {"stiffness", num(f.stiffness)}, {"step", exponent(f.step)},
-                    {"run", exponent(f.run)}, {"stable_step", exponent(f.stable)}});
-  j["exponents"] = std::move(fits);
-  const auto name = [](const std::string& x) { return x.empty() ? Json(nullptr) : Json(x); };
-  Json blocks = Json::array();
-  for (const ScalingBlock& b : r.blocks) {
-    Json map = Json::array();
-    for (const ScalingCell& m : b.cells)
-      map.push_back({{size_key, m.n}, {"masses", m.masses}, {"cheapest", name(m.cheapest)}, {"next", name(m.next)},
-                     {"margin", num(m.margin)}, {"best_implicit", name(m.best_implicit)}, {"best_explicit", name(m.best_explicit)},
-                     {"best_cvode", name(m.best_cvode)}, {"explicit_over_implicit", num(m.explicit_over_implicit)},
-                     {"cvode_over_implicit", num(m.cvode_over_implicit)}, {"motion", m.motion}});
-    blocks.push_back({{"target", b.target}, {"error", b.error}, {"stiffness", num(b.stiffness)},
-                      {"crossover", b.crossover == 0 ? Json(nullptr)
-                                                     : Json({{size_key, b.crossover}, {"masses", scaling_masses(c, b.crossover)},
-                                                             {"method", b.crossover_method}})},
-                      {"map", std::move(map)}});
-  }
-  j["blocks"] = std::move(blocks);
-  return j;
-}
-
-std::string exponent_text(const Exponent& e) {
-  if (!e.fitted()) return "-";
-  return fmt::format("{:.2f} [{:.2f}, {:.2f}]{}", e.value, e.lo, e.hi, e.early ? "*" : "");
-}
-
-std::string exponent_rule_text() {
-  return fmt::format("- not fitted: fewer than {} sizes, or less than {:g} decades of N, where the quantity is known; "
-                     "* the sizes begin below the asymptotic regime (a step's cost grows by less than N^{:g} from the "
-                     "smallest size to the next: fixed overheads still dominate)",
-                     kFitSizes, kFitDecades, kAsymptoticSlope);
-}
-
-std::string stiffness_text(const ScalingConfig& c, double k) {
-  const SceneKernel& s = scene_kernel(scene_index(c.scene));
-  return std::isnan(k) ? std::string() : fmt::format(", {} {:g}", s.params[s.stiffness_param].name, k);
-}
-
-namespace {
-
-// One (target, stiffness): its rows, exponents and crossover.
-std::string block_table(const ScalingResult& r, std::size_t b) {
-  const ScalingConfig& c = r.config;
-  const ScalingBlock& block = r.blocks[b];
-  const char* unit = c.timing ? "run [s]" : "evals x N";
-  const SceneKernel& scene = scene_kernel(scene_index(c.scene));
-  std::string out = fmt::format("{}{}, error {} (largest over the coordinates and {} frames to t = {:g}, against the {}); cost by {}\n\n"
-                                "{:<20} {:>7} {:>11} {:>12} {:>10} {:>9} {:>6} {:>9} {:>7} {:>7} {:>8} {:>12} {:>12}\n",
-                                scene.title, stiffness_text(c, block.stiffness), target_text(c, block),
-                                c.frames, c.t_end, scene.has_exact ? "exact solution" : "reference solution",
-                                c.timing ? "run time" : "force evaluations x N", "solver", "N", "dt*", "dt / tol", "error",
-                                "steps", "rej", "forces", "jacs", "LUs", "Newton", unit, "per step");
-  bool capped = false;
-  for (std::size_t s = 0; s < r.solvers(); ++s)
-    for (const ScalingRow& w : r.rows_of(b * r.solvers() + s)) {
-      const double cost = scaling_cost(c, w);
-      const auto count = [&](long long x) { return w.reached() ? std::to_string(x) : std::string("-"); };
-      capped = capped || (w.reached() && w.capped);
-      out += fmt::format("{:<20} {:>7} {:>11} {:>12} {:>10} {:>9} {:>6} {:>9} {:>7} {:>7} {:>8} {:>12} {:>12}\n", w.solver, w.masses,
-                         std::isnan(w.dt_stable) ? "-" : threshold_text(w.dt_stable),
-                         w.reached() ? fmt::format("{:.4g}{}", w.dt, w.capped ? "^" : "") : "not reached",
-                         w.reached() ? fmt::format("{:.2e}", w.error) : "-", count(w.steps), count(w.rejected), count(w.forces),
-                         count(w.jacobians), count(w.factorisations), count(w.newton),
-                         w.reached() ? fmt::format("{:.4g}", cost) : "-", w.reached() && w.steps > 0 ? fmt::format("{:.4g}", cost / w.steps) : "-");
-    }
-  if (capped)
-    out += "^ the step search stopped at its cap, 0.95 dt*: dt* predicted from the exact modes, which no adaptive solver is told\n";
-  out += fmt::format("\nExponents p of cost ~ N^p, q of dt* ~ N^q (least squares over the sizes reached, 95 % intervals)\n"
-                     "{:<18} {:>20} {:>20} {:>20}\n", "solver", "one step", "whole run", "dt*");
-  for (std::size_t s = 0; s < r.solvers(); ++s) {
-    const ScalingFit& f = r.fits[b * r.solvers() + s];
-    out += fmt::format("{:<18} {:>20} {:>20} {:>20}\n", f.solver, exponent_text(f.step), exponent_text(f.run), exponent_text(f.stable));
-  }
-  out += exponent_rule_text() + "\n";
-  out += block.crossover == 0 ? std::string("\nNo size here at which an implicit method's run is cheaper than every explicit one's.\n")
-                              : fmt::format("\nFrom N = {} on the sizes here, {} is cheaper than every explicit method.\n",
-                                            scaling_masses(c, block.crossover), block.crossover_method);
-  return out;
-}
-
-std::string ratio_text(double x) { return std::isnan(x) ? "-" : fmt::format("{:.3g}", x); }
-
-}  // namespace
-
-std::string scaling_map_table(const ScalingResult& r) {
-  const ScalingConfig& c = r.config;
-  std::string out;
-  const std::size_t nk = r.blocks.size() / c.targets.size();
-  for (std::size_t t = 0; t < c.targets.size(); ++t) {
-    out += fmt::format("\nThe map at error {}: per cell the cheapest solver x its margin over the next; the cheapest implicit "
-                       "fixed-step method's cost against the best explicit solver's and the best CVODE's (> 1: implicit cheaper); "
-                       "the body's motion (largest displacement from rest; ! below the target: a run at rest meets it)\n"
-                       "{:>10} {:>7}  {:<32} {:<26} {:>8} {:>8} {:>10}\n",
-                       target_text(c, r.blocks[t * nk]), "stiffness", "N", "cheapest x margin",
-                       "best implicit", "vs expl", "vs CVODE", "motion");
-    for (std::size_t k = 0; k < nk; ++k) {
-      const ScalingBlock& b = r.blocks[t * nk + k];
-      for (const ScalingCell& m : b.cells)
-        out += fmt::format("{:>10} {:>7}  {:<32} {:<26} {:>8} {:>8} {:>10}\n", std::isnan(b.stiffness) ? "-" : fmt::format("{:g}", b.stiffness),
-                           m.masses, m.cheapest.empty() ? "none reached" : fmt::format("{} x {}", m.cheapest, ratio_text(m.margin)),
-                           m.best_implicit.empty() ? "-" : m.best_implicit, ratio_text(m.explicit_over_implicit), ratio_text(m.cvode_over_implicit),
-                           fmt::format("{:.2e}{}", m.motion, m.motion < b.error ? "!" : ""));
-    }
-  }
-  return out;
-}
-
-std::string scaling_table(const ScalingResult& r) {
-  std::string out;
-  for (std::size_t b = 0; b < r.blocks.size(); ++b) out += (b ? "\n" : "") + block_table(r, b);
-  return out + scaling_map_table(r);
 }
 
 // --error's list: each a positive number, or a percentage of the body's extent ("1%").

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "reports/data/inputs.hpp"
 
 namespace steplab {

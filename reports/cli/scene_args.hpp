@@ -10,8 +10,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "analysis/defaults.hpp"
-#include "analysis/kernel.hpp"
+#include "analysis/studies/defaults.hpp"
+#include "analysis/kernel/kernel.hpp"
 
 namespace steplab {
 

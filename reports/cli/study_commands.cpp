@@ -6,9 +6,9 @@
 
 #include <fmt/format.h>
 
-#include "analysis/convergence.hpp"
-#include "analysis/kernel.hpp"
-#include "analysis/peers.hpp"
+#include "analysis/studies/convergence.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/peers/peers.hpp"
 #include "reports/cli/commands.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/data/output.hpp"
@@ -174,7 +174,7 @@ int convergence_command(ConvergenceArgs& a, Context& ctx) {
 
 }  // namespace steplab
 
-#include "analysis/stability.hpp"
+#include "analysis/studies/stability.hpp"
 
 namespace steplab {
 namespace {
@@ -238,11 +238,11 @@ int damping_command(StabilityArgs& a, Context& ctx) {
 
 namespace {
 
-// The spring's study (thresholds over dampings, the map: analysis/stability.hpp) on the spring;
+// The spring's study (thresholds over dampings, the map: analysis/studies/stability.hpp) on the spring;
 // the modes' study on any other scene that declares its modes (core/scene.hpp).
 bool modes_study(const SceneKernel& s) { return s.modes != nullptr; }
 
-// A scene's thresholds: predicted from its modes, measured on the whole scene (analysis/mode_stability.hpp).
+// A scene's thresholds: predicted from its modes, measured on the whole scene (analysis/studies/mode_stability.hpp).
 int mode_stability_command(StabilityArgs& a, Context& ctx) {
   for (const char* spring_only : {"--threshold-dampings", "--map-dt-points", "--map-damping-points", "--map-dt-min", "--map-dt-max"})
     if (a.scene.app->count(spring_only) > 0)
@@ -303,7 +303,7 @@ int amplitude_command(const std::vector<double>& spring_params, double step, con
 
 }  // namespace steplab
 
-#include "analysis/collision.hpp"
+#include "analysis/studies/collision.hpp"
 
 namespace steplab {
 

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "reports/data/study_output.hpp"
 #include "reports/data/schemas.hpp"
 
@@ -27,7 +27,7 @@ Json mode_stability_json(const ModeStabilityConfig& c, const std::vector<ModeThr
 }
 
 // Beyond this relative difference a measured dt* and its prediction are marked as disagreeing: the
-// threshold search resolves dt* to far better than that (analysis/mode_stability.hpp).
+// threshold search resolves dt* to far better than that (analysis/studies/mode_stability.hpp).
 constexpr double kModeAgreement = 0.01;
 
 std::string mode_thresholds_table(std::string_view scene, const std::vector<ModeThresholdRow>& rows) {

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/counts.hpp"
+#include "analysis/kernel/counts.hpp"
 #include "core/simulate.hpp"
 #include "reports/data/schemas.hpp"
 
@@ -35,7 +35,7 @@ inline Json params_json(std::span<const ParamSpec> spec, std::span<const double>
   return p;
 }
 
-// A run's counts (analysis/counts.hpp) by their JSON names, the same in every document.
+// A run's counts (analysis/kernel/counts.hpp) by their JSON names, the same in every document.
 inline Json counts_json(const Counts& n) {
   return {{"steps", n.steps},           {"rejected_steps", n.rejected},  {"force_evaluations", n.forces},
           {"jacobian_evaluations", n.jacobians}, {"factorisations", n.factorisations}, {"linear_solves", n.solves},
@@ -54,7 +54,7 @@ Json run_json(std::string_view scene, std::string_view method, Json params, cons
   j["steps"] = r.steps;
   j["final"] = {{"t", r.t_final}, {"x", vec_json<D>(r.final.x)}, {"v", vec_json<D>(r.final.v)}};
   j["error"] = r.has_exact ? Json{{"final", r.error_final}, {"max", r.error_max}, {"rms", r.error_rms},
-                                  {"velocity_final", r.error_v_final}}
+                                  {"velocity_final", r.error_v_final}, {"reads", r.error_reads}}
                            : Json(nullptr);
   j["energy_ratio"] = {{"final", r.energy_ratio_final}, {"max", r.energy_ratio_max}};
   Json samples = Json::array();

@@ -4,8 +4,8 @@
 
 #include <fmt/format.h>
 
-#include "analysis/kernel.hpp"
-#include "analysis/peers.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/peers/peers.hpp"
 #include "core/scenes/spring.hpp"
 #include "reports/data/run_json.hpp"
 #include "reports/data/schemas.hpp"
@@ -211,7 +211,7 @@ Json stability_json(const std::vector<double>& params, const std::vector<Thresho
                     const std::vector<SweepRow>& sweep, const StabilityMap* map) {
   Json j;
   j["schema"] = schema::stability;
-  j["scene"] = Spring::name;  // the study of the damped spring's linear regime (analysis/stability.hpp)
+  j["scene"] = Spring::name;  // the study of the damped spring's linear regime (analysis/studies/stability.hpp)
   Json p = scene_params_json(scene_index(Spring::name), params);
   p["stable_rate_tolerance"] = kStableRate;
   p["rate_steps"] = kRateSteps;

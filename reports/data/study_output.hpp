@@ -5,15 +5,15 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/convergence.hpp"
-#include "analysis/order_reduction.hpp"
+#include "analysis/studies/convergence.hpp"
+#include "analysis/studies/order_reduction.hpp"
 
 namespace steplab {
 
 using Json = nlohmann::ordered_json;
 
 Json scene_params_json(std::size_t scene, const std::vector<double>& values);
-// The library builds the peers ran on (analysis/peers.hpp, peer_builds): [{library, version,
+// The library builds the peers ran on (analysis/peers/peers.hpp, peer_builds): [{library, version,
 // optimised, flags}], in every study's JSON that has peers.
 Json peer_builds_json();
 
@@ -29,14 +29,14 @@ std::string order_reduction_table(const OrderReduction& r);
 
 }  // namespace steplab
 
-#include "analysis/local_error.hpp"
+#include "analysis/studies/local_error.hpp"
 
 namespace steplab {
 // The old framework's error_measurement tables, %.5e.
 std::string local_error_tables(const LocalErrorResult& r);
 }  // namespace steplab
 
-#include "analysis/stability.hpp"
+#include "analysis/studies/stability.hpp"
 
 namespace steplab {
 // schema::stability; a study fills the parts it computed, the others are empty.
@@ -51,7 +51,7 @@ Json threshold_json(double x);
 std::string threshold_text(double x);
 }  // namespace steplab
 
-#include "analysis/mode_stability.hpp"
+#include "analysis/studies/mode_stability.hpp"
 
 namespace steplab {
 // `study stability` on a scene with modes (reports/data/mode_output.cpp): schema::mode_stability.
@@ -59,10 +59,10 @@ Json mode_stability_json(const ModeStabilityConfig& c, const std::vector<ModeThr
 std::string mode_thresholds_table(std::string_view scene, const std::vector<ModeThresholdRow>& rows);
 }  // namespace steplab
 
-#include "analysis/scaling.hpp"
+#include "analysis/studies/scaling.hpp"
 
 namespace steplab {
-// `study scaling` (reports/cli/scaling_command.cpp): schema steplab.scaling/3.
+// `study scaling` (reports/data/scaling_output.cpp): schema steplab.scaling/3.
 Json scaling_json(const ScalingResult& r);
 std::string scaling_table(const ScalingResult& r);
 // The map alone: per target, stiffness and size the cheapest solver and its margins.
@@ -75,16 +75,19 @@ std::string exponent_text(const Exponent& e);
 std::string exponent_rule_text();
 }  // namespace steplab
 
-#include "analysis/collision.hpp"
+#include "analysis/studies/collision.hpp"
 
 namespace steplab {
 Json collision_json(const CollisionResult& r);   // schema steplab.collision/1
 std::string collision_table(const CollisionResult& r);
 }  // namespace steplab
 
-#include "analysis/work_precision.hpp"
+#include "analysis/studies/work_precision.hpp"
 
 namespace steplab {
 Json work_precision_json(const WorkPrecisionResult& r);   // schema steplab.work_precision/1
 std::string work_precision_table(const WorkPrecisionResult& r);
+// "427 steps, 1708 forces": a run's counts (analysis/kernel/counts.hpp), with the rejected steps,
+// Jacobians and factorisations where it has them.
+std::string counts_text(const Counts& n);
 }  // namespace steplab

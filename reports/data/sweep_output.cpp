@@ -1,9 +1,9 @@
-// Order against stiffness (analysis/order_reduction.hpp): its JSON and its table.
+// Order against stiffness (analysis/studies/order_reduction.hpp): its JSON and its table.
 #include <cmath>
 
 #include <fmt/format.h>
 
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "reports/data/study_output.hpp"
 #include "reports/data/schemas.hpp"
 
@@ -71,7 +71,7 @@ Json order_reduction_json(const OrderReduction& r) {
   j["scene"] = scene_name(s.studies.front().config.scene);
   j["param"] = param_name(s);
   j["values"] = s.values;
-  j["driven"] = r.driven;  // false: an autonomous scene, the stiff limit not checked (analysis/order_reduction.hpp)
+  j["driven"] = r.driven;  // false: an autonomous scene, the stiff limit not checked (analysis/studies/order_reduction.hpp)
   j["stiff_rate"] = r.rates;  // |lambda| of the stiffest mode's slower eigenvalue, per value
   j["tolerance"] = {{"non_stiff", kNonStiffTolerance}, {"stiff", kStiffTolerance}};
   Json methods = Json::array();
@@ -128,7 +128,7 @@ std::string order_reduction_table(const OrderReduction& r) {
     for (const ConvergenceResult& st : s.studies) out += fmt::format(" {:>9}", order_cell(st.fits[m]));
     out += "\n";
   }
-  out += fmt::format("\np: the classical order; stiff: the theory's order as h|lambda| grows (analysis/order_reduction.hpp). "
+  out += fmt::format("\np: the classical order; stiff: the theory's order as h|lambda| grows (analysis/studies/order_reduction.hpp). "
                      "A limit holds when the order at the first (last) value is within {} ({}) of the theory and its bound "
                      "contains it, in that limit's regime (h|lambda_max| <= {} at the largest step; h|lambda| >= {} at the "
                      "smallest). The transition: the order kept up to h|lambda| = a, the stiff order from b (at the fit's "

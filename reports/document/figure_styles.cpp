@@ -5,9 +5,9 @@
 
 #include <fmt/format.h>
 
-#include "analysis/work_precision.hpp"
-#include "analysis/kernel.hpp"
-#include "analysis/peers.hpp"
+#include "analysis/studies/work_precision.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/peers/peers.hpp"
 #include "reports/document/report_text.hpp"
 
 namespace steplab {
@@ -78,7 +78,7 @@ std::string styles_gp() {
     if (!names.empty()) names += ' ';
     names += name(m);
   }
-  // the adaptive solvers (analysis/peers.hpp): steplab's dopri5 black, odeint's grey, and CVODE's
+  // the adaptive solvers (analysis/peers/peers.hpp): steplab's dopri5 black, odeint's grey, and CVODE's
   // three set-ups in colours the families leave free, Adams sky blue, BDF indigo, BDF of orders
   // 1-2 olive (Paul Tol's), whatever the linear solver (one figure has one of each); each with a
   // point and a dash of its own

@@ -5,8 +5,8 @@
 
 #include <fmt/format.h>
 
-#include "analysis/kernel.hpp"
-#include "analysis/peers.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/peers/peers.hpp"
 #include "reports/document/report_text.hpp"
 
 namespace steplab {
@@ -26,7 +26,7 @@ std::string_view to_text(Trend t) {
 
 Trend trend(const std::vector<double>& dt) {
   if (std::all_of(dt.begin(), dt.end(), [](double x) { return std::isinf(x); })) return Trend::StaysInfinite;
-  // Two measured dt* closer than the threshold search resolves them (analysis/stability.hpp) are equal.
+  // Two measured dt* closer than the threshold search resolves them (analysis/studies/stability.hpp) are equal.
   const auto same = [](double a, double b) { return a == b || std::abs(a - b) <= kSameThreshold * std::max(a, b); };
   bool up = false, down = false;
   for (std::size_t i = 0; i + 1 < dt.size(); ++i)

@@ -83,7 +83,7 @@ struct StiffClaim {
   std::string_view starter = {};  // a multistep method's one-step start
 };
 // An order is kept where it is within this of the theory's (the non-stiff limit's tolerance, 0.05:
-// analysis/order_reduction.hpp) or its bound contains it.
+// analysis/studies/order_reduction.hpp) or its bound contains it.
 std::vector<StiffClaim> stiff_claims(const OrderReduction& r);
 
 // What accuracy costs (the work-precision study): a run's cost, by run time or, untimed, by force

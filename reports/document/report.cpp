@@ -24,8 +24,8 @@
 
 #include <fmt/format.h>
 
-#include "analysis/parallel.hpp"
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/parallel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "reports/document/figure_styles.hpp"
 #include "reports/document/gnuplot_scripts.hpp"
 #include "reports/data/output.hpp"

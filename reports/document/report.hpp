@@ -13,12 +13,12 @@
 #include <string>
 #include <vector>
 
-#include "analysis/collision.hpp"
-#include "analysis/convergence.hpp"
-#include "analysis/order_reduction.hpp"
-#include "analysis/scaling.hpp"
-#include "analysis/stability.hpp"
-#include "analysis/work_precision.hpp"
+#include "analysis/studies/collision.hpp"
+#include "analysis/studies/convergence.hpp"
+#include "analysis/studies/order_reduction.hpp"
+#include "analysis/studies/scaling.hpp"
+#include "analysis/studies/stability.hpp"
+#include "analysis/studies/work_precision.hpp"
 #include "reports/document/report_config.hpp"
 
 namespace steplab {

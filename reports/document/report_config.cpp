@@ -8,9 +8,9 @@
 
 #include <fmt/format.h>
 
-#include "analysis/defaults.hpp"
-#include "analysis/kernel.hpp"
-#include "analysis/scaling.hpp"
+#include "analysis/studies/defaults.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/scaling.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/data/run_json.hpp"
 #include "reports/data/study_output.hpp"

@@ -12,7 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/defaults.hpp"
+#include "analysis/studies/defaults.hpp"
 
 namespace steplab {
 
@@ -45,7 +45,7 @@ struct ReportConfig {
   // covered scene that is not one of the report's own (a user's: against its exact solution or,
   // without one, a reference solution) and not of run-time size, in the table's order.
   std::vector<std::size_t> convergence_scenes() const;
-  // The report's scenes (analysis/defaults.hpp): the sheet's damped spring (the stability study's
+  // The report's scenes (analysis/studies/defaults.hpp): the sheet's damped spring (the stability study's
   // oscillator) and cannon ball, and the collision study's rebound scene and contact body. The
   // config file keys each by its scene's name.
   ReportScene oscillator, projectile, rebound, body;
@@ -96,7 +96,7 @@ inline constexpr long long kReportMapSteps = 200'000;
 
 ReportConfig default_report_config();
 // The exercise's hand-in (`steplab report --sheet`): the sheet's four methods and the analytic
-// solution (analysis/defaults.hpp) on its two scenes, in the hand-in's sections.
+// solution (analysis/studies/defaults.hpp) on its two scenes, in the hand-in's sections.
 ReportConfig sheet_report_config();
 nlohmann::ordered_json report_config_json(const ReportConfig& c);
 // `base` overridden by the keys of `user`; UsageError("config: ...") for anything wrong.

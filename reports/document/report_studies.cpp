@@ -6,9 +6,9 @@
 
 #include <fmt/format.h>
 
-#include "analysis/parallel.hpp"
-#include "analysis/kernel.hpp"
-#include "analysis/peers.hpp"
+#include "analysis/kernel/parallel.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/peers/peers.hpp"
 #include "core/scenes/spring.hpp"
 #include "reports/document/report.hpp"
 
@@ -52,13 +52,13 @@ template <int D> RunResult<D> figure_run(std::size_t method, std::size_t scene, 
   return to_fixed<D>(pair_kernel(method, scene).run(params, spec));
 }
 
-// The scaling study of a scene of the report's sizes (analysis/scaling.hpp): the scene's defaults,
+// The scaling study of a scene of the report's sizes (analysis/studies/scaling.hpp): the scene's defaults,
 // as `study scaling --scene ...` has them, at the report's error, on the methods that run on it.
 ScalingConfig scaling_config_for(const ReportData& d, const ReportSizes& s) {
   ScalingConfig c = scaling_config(scene_name(s.scene));
   c.sizes = s.sizes;
   c.targets = {{d.config.scaling_error, false}};
-  c.timing_seconds = kTimingSeconds;  // the report's timing budget per run (analysis/convergence.hpp)
+  c.timing_seconds = kTimingSeconds;  // the report's timing budget per run (analysis/studies/convergence.hpp)
   c.t_end = d.config.scaling_t_end;
   for (std::size_t m : d.numerical_methods())
     if (applies(m, s.scene)) c.methods.push_back(m);  // a scene without Jacobians: the explicit methods
@@ -114,7 +114,7 @@ ReportData run_report_studies(const ReportConfig& c, unsigned studies, ProgressH
   if (studies & kConvergenceStudy)
     for (std::size_t s : c.convergence_scenes()) d.convergence.push_back(convergence_study(convergence_config(d, s)));
 
-  // The stability study is the damped spring's (analysis/stability.hpp): the oscillator is one.
+  // The stability study is the damped spring's (analysis/studies/stability.hpp): the oscillator is one.
   const Spring spring(c.oscillator.params);
   StabilityConfig sc;
   sc.params = c.oscillator.params;

@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
-#include "analysis/kernel.hpp"
-#include "analysis/peers.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/peers/peers.hpp"
 
 namespace steplab {
 
@@ -119,14 +119,6 @@ std::vector<std::size_t> family_members(const std::vector<std::size_t>& methods,
 bool family_order_less(std::size_t a, std::size_t b) {
   const MethodInfo &x = method_info(a), &y = method_info(b);
   return std::tuple(x.family, x.order, a) < std::tuple(y.family, y.order, b);
-}
-
-std::string counts_text(const Counts& n) {
-  std::string t = fmt::format("{} steps, {} forces", n.steps, n.forces);
-  if (n.rejected > 0) t += fmt::format(", {} rejected", n.rejected);
-  if (n.jacobians > 0) t += fmt::format(", {} Jacobians", n.jacobians);
-  if (n.factorisations > 0) t += fmt::format(", {} factorisations", n.factorisations);
-  return t;
 }
 
 std::string cvode_build_text() {

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "analysis/convergence.hpp"
-#include "analysis/counts.hpp"
+#include "analysis/studies/convergence.hpp"
+#include "analysis/kernel/counts.hpp"
 #include "core/method.hpp"
 #include "reports/document/report.hpp"
 
@@ -29,9 +29,6 @@ std::string words(const std::vector<double>& v);          // gnuplot word list: 
 std::string join(const std::vector<double>& v);           // CLI list: "a,b,c"
 std::string join(const std::vector<int>& v);
 std::string method_words(const std::vector<std::size_t>& methods);
-// "427 steps, 1708 forces": a run's counts (analysis/counts.hpp), with the rejected steps,
-// Jacobians and factorisations where it has them.
-std::string counts_text(const Counts& n);
 // "6.4.1, built optimised": the CVODE the peers ran on (its flags are in the studies' JSON).
 std::string cvode_build_text();
 

@@ -1,4 +1,4 @@
-// steplab check (analysis/check.hpp): every row of the table holds its claims; rows made wrong
+// steplab check (analysis/studies/check.hpp): every row of the table holds its claims; rows made wrong
 // here (a first-order method declared second order, a non-symplectic one declared symplectic, ...)
 // fail exactly the claim that is wrong; the energy drift matches |R(i omega h)| from theory.
 #include <gtest/gtest.h>
@@ -6,8 +6,8 @@
 #include <cmath>
 #include <string>
 
-#include "analysis/check.hpp"
-#include "analysis/kernel.hpp"
+#include "analysis/studies/check.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "reports/cli/check_command.hpp"
 
 namespace steplab {

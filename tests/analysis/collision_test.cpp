@@ -1,11 +1,11 @@
-// Tests of analysis/collision.cpp and of the convergence study against the exact bounce.
+// Tests of analysis/studies/collision.cpp and of the convergence study against the exact bounce.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "analysis/collision.hpp"
-#include "analysis/convergence.hpp"
-#include "analysis/kernel.hpp"
+#include "analysis/studies/collision.hpp"
+#include "analysis/studies/convergence.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "core/scenes/bounce.hpp"
 #include "core/scenes/falling.hpp"
 

@@ -1,10 +1,10 @@
-// Tests of analysis/convergence.cpp: the default studies on the spring and the cannon ball.
+// Tests of analysis/studies/convergence.cpp: the default studies on the spring and the cannon ball.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "analysis/convergence.hpp"
-#include "analysis/kernel.hpp"
+#include "analysis/studies/convergence.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "core/scenes/spring.hpp"
 #include "reports/data/study_output.hpp"
 #include "tests/analysis/declared_order.hpp"

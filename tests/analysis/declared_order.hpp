@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "analysis/convergence.hpp"
-#include "analysis/kernel.hpp"
+#include "analysis/studies/convergence.hpp"
+#include "analysis/kernel/kernel.hpp"
 
 namespace steplab {
 

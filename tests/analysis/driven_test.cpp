@@ -7,8 +7,8 @@
 
 #include <cmath>
 
-#include "analysis/convergence.hpp"
-#include "analysis/kernel.hpp"
+#include "analysis/studies/convergence.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "core/scenes/target.hpp"
 #include "tests/analysis/declared_order.hpp"
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "analysis/fit.hpp"
+#include "analysis/fits/fit.hpp"
 
 namespace steplab {
 namespace {

@@ -1,4 +1,4 @@
-// The rope's stability thresholds from its modes (analysis/mode_stability.hpp) against the published stability
+// The rope's stability thresholds from its modes (analysis/studies/mode_stability.hpp) against the published stability
 // limits on the imaginary axis: undamped, dt* = C / omega_max with C = 2 (symplectic Euler,
 // velocity Verlet: Stoermer-Verlet's |omega h| < 2), 2 sqrt 2 (RK4), sqrt 3 (RK3), 1.5735
 // (Yoshida's fourth-order composition: 2 / |1 - 2^{1/3}|^{...}, Hairer-Lubich-Wanner II.4),
@@ -9,8 +9,8 @@
 #include <cmath>
 #include <string>
 
-#include "analysis/kernel.hpp"
-#include "analysis/mode_stability.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/mode_stability.hpp"
 #include "core/scenes/rope.hpp"
 
 namespace steplab {

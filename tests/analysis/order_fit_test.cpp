@@ -1,4 +1,4 @@
-// Unit tests for analysis/order_fit.cpp: synthetic error tables of known slope.
+// Unit tests for analysis/fits/order_fit.cpp: synthetic error tables of known slope.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "analysis/order_fit.hpp"
+#include "analysis/fits/order_fit.hpp"
 
 namespace steplab {
 namespace {

@@ -1,4 +1,4 @@
-// Order reduction (analysis/order_reduction.hpp): the theory read from each method's tableau,
+// Order reduction (analysis/studies/order_reduction.hpp): the theory read from each method's tableau,
 // checked against the values worked by hand from the tableaux in Hairer & Wanner II (IV.5, IV.15),
 // and the order measured on the stiffened target (core/scenes/target.hpp, whose exact solution is
 // sin t at every stiffness) held to that theory in both limits.
@@ -7,9 +7,9 @@
 #include <cmath>
 #include <string>
 
-#include "analysis/defaults.hpp"
-#include "analysis/kernel.hpp"
-#include "analysis/order_reduction.hpp"
+#include "analysis/studies/defaults.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/order_reduction.hpp"
 
 namespace steplab {
 namespace {
@@ -57,7 +57,7 @@ TEST(OrderReductionTheory, MultistepAndExplicit) {
     EXPECT_EQ(theory(m).stiff, -1) << m;
 }
 
-// The report's sweep (analysis/defaults.hpp): stiffness 1e-2 .. 1e12 on the target, steps 0.2 ..
+// The report's sweep (analysis/studies/defaults.hpp): stiffness 1e-2 .. 1e12 on the target, steps 0.2 ..
 // 0.01. Each implicit method's order at the first value within 0.05 of its classical order and at
 // the last within 0.15 of the theory's stiff order, each bound containing it (the bars).
 OrderReduction report_sweep(const std::vector<double>& params_override = {}) {

@@ -10,9 +10,9 @@
 #include <cmath>
 #include <limits>
 
-#include "analysis/convergence.hpp"
-#include "analysis/kernel.hpp"
-#include "analysis/stability.hpp"
+#include "analysis/studies/convergence.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/stability.hpp"
 
 namespace steplab {
 namespace {

@@ -1,13 +1,13 @@
-// Unit tests for analysis/peers.cpp, analysis/sized_peers.cpp and the counts of steplab's own runs
-// (analysis/counts.hpp): the peers are the build and the set-up they claim, steplab's CVODE peer
+// Unit tests for analysis/peers/peers.cpp, analysis/peers/sized_peers.cpp and the counts of steplab's own runs
+// (analysis/kernel/counts.hpp): the peers are the build and the set-up they claim, steplab's CVODE peer
 // is CVODE called as plain C would call it, and the counts are what the methods' formulas say.
 #include <gtest/gtest.h>
 
 #include <vector>
 
-#include "analysis/kernel.hpp"
-#include "analysis/peers.hpp"
-#include "analysis/sized_peers.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/peers/peers.hpp"
+#include "analysis/peers/sized_peers.hpp"
 #include "bench/cvode_rope.h"
 #include "core/scenes/chain.hpp"
 #include "reports/cli/commands.hpp"

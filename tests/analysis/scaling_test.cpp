@@ -1,4 +1,4 @@
-// The scaling study on the rope (analysis/scaling.hpp): every reached row meets the target error
+// The scaling study on the rope (analysis/studies/scaling.hpp): every reached row meets the target error
 // over the whole motion against the exact solution (checked here again by a run of its own and by
 // the peers' frames), implicit steps cost O(N) force evaluations times a constant, explicit
 // methods' stable steps shrink as 1/N, the stiffness axis and the map read their rows as stated,
@@ -14,9 +14,9 @@
 #include <utility>
 #include <vector>
 
-#include "analysis/kernel.hpp"
-#include "analysis/sized_peers.hpp"
-#include "analysis/scaling.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/peers/sized_peers.hpp"
+#include "analysis/studies/scaling.hpp"
 #include "core/scenes/rope.hpp"
 
 namespace steplab {
@@ -248,7 +248,7 @@ TEST(Scaling, SameRowsForOneAndTwoThreads) {
 namespace steplab {
 namespace {
 
-// The exponent rule (analysis/scaling.hpp): a power law y = 3 N^1.5 is recovered exactly over
+// The exponent rule (analysis/studies/scaling.hpp): a power law y = 3 N^1.5 is recovered exactly over
 // 16 .. 1024 masses (1.8 decades, 4 sizes), its interval closing on it (zero residual); two sizes,
 // or three spanning 1.2 decades (8, 32, 128), are not fitted whatever their values; a value not
 // known (NaN, 0) is left out and counts for neither rule.

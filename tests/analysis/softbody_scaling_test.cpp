@@ -1,5 +1,5 @@
-// The scaling study on the soft body (analysis/scaling.hpp, its modes in core/scenes/softbody.hpp,
-// analysis/sized_peers.hpp): its fastest mode against a dense symmetric eigensolver, omega_max
+// The scaling study on the soft body (analysis/studies/scaling.hpp, its modes in core/scenes/softbody.hpp,
+// analysis/peers/sized_peers.hpp): its fastest mode against a dense symmetric eigensolver, omega_max
 // growing as n, the predicted dt* against runs, the peers against the reference solution, and
 // rows that meet the target against a run of their own.
 #include <gtest/gtest.h>
@@ -8,11 +8,11 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "analysis/convergence.hpp"
-#include "analysis/kernel.hpp"
-#include "analysis/scaling.hpp"
-#include "analysis/sized_peers.hpp"
-#include "analysis/mode_stability.hpp"
+#include "analysis/studies/convergence.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/scaling.hpp"
+#include "analysis/peers/sized_peers.hpp"
+#include "analysis/studies/mode_stability.hpp"
 #include "core/scenes/softbody.hpp"
 
 namespace steplab {

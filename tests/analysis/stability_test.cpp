@@ -1,4 +1,4 @@
-// Tests of analysis/stability.cpp on the default spring (m = 1, k = 5, gamma = 0.1, L = 5).
+// Tests of analysis/studies/stability.cpp on the default spring (m = 1, k = 5, gamma = 0.1, L = 5).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -6,8 +6,8 @@
 #include <limits>
 #include <vector>
 
-#include "analysis/stability.hpp"
-#include "analysis/kernel.hpp"
+#include "analysis/studies/stability.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "core/scenes/spring.hpp"
 #include "reports/data/study_output.hpp"
 

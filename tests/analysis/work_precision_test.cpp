@@ -1,13 +1,13 @@
-// The work-precision study (analysis/work_precision.hpp), costed by evaluations (timing off, so
+// The work-precision study (analysis/studies/work_precision.hpp), costed by evaluations (timing off, so
 // that the figures are exact and the same on every machine).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
 
-#include "analysis/fixed_peers.hpp"
-#include "analysis/work_precision.hpp"
-#include "analysis/kernel.hpp"
+#include "analysis/peers/fixed_peers.hpp"
+#include "analysis/studies/work_precision.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "core/scenes/chain.hpp"
 #include "reports/data/study_output.hpp"
 

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include <steplab/analysis/convergence.hpp>
-#include <steplab/analysis/kernel.hpp>
+#include <steplab/analysis/studies/convergence.hpp>
+#include <steplab/analysis/kernel/kernel.hpp>
 
 int main() {
   using namespace steplab;

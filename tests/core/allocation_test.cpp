@@ -1,5 +1,5 @@
 // No heap allocation in a stepping loop: counts calls of the global operator new while whole
-// runs of every method on every scene execute, through the kernel table (analysis/kernel.hpp).
+// runs of every method on every scene execute, through the kernel table (analysis/kernel/kernel.hpp).
 // A run allocates the same whatever its number of steps: its sample buffer, reserved before the
 // loop, and the result it hands back.
 #include <gtest/gtest.h>
@@ -11,7 +11,7 @@
 #include <functional>
 #include <new>
 
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 
 namespace {
 std::atomic<long> g_allocations{0};

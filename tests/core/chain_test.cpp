@@ -9,9 +9,9 @@
 
 #include <boost/numeric/odeint.hpp>
 
-#include "analysis/convergence.hpp"
+#include "analysis/studies/convergence.hpp"
 #include "tests/core/chain_ode.hpp"
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "core/scenes/chain.hpp"
 #include "core/simulate.hpp"
 

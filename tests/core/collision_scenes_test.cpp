@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "core/scenes/bounce.hpp"
 #include "core/scenes/falling.hpp"
 

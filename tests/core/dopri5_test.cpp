@@ -9,7 +9,7 @@
 #include <boost/numeric/odeint.hpp>
 
 #include "core/dopri5.hpp"
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "core/scenes/chain.hpp"
 #include "core/scenes/spring.hpp"
 #include "tests/core/chain_ode.hpp"

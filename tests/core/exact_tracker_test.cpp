@@ -9,7 +9,7 @@
 #include <cmath>
 #include <limits>
 
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "core/methods/rk4.hpp"
 #include "core/scenes/chain.hpp"
 #include "core/scenes/spring.hpp"

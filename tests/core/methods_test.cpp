@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "core/methods/adams_bashforth2.hpp"
 #include "core/methods/adams_bashforth3.hpp"
 #include "core/methods/analytic.hpp"

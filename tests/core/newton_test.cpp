@@ -8,7 +8,7 @@
 
 #include <Eigen/Dense>
 
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "core/methods/gauss_legendre4.hpp"
 #include "core/methods/radau_iia5.hpp"
 #include "core/sparse.hpp"

@@ -8,7 +8,7 @@
 
 #include <boost/numeric/odeint.hpp>
 
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "core/methods/adams_bashforth2.hpp"
 #include "core/methods/adams_bashforth3.hpp"
 #include "core/methods/explicit_euler.hpp"

@@ -11,9 +11,11 @@
 #include <Eigen/Eigenvalues>
 #include <unsupported/Eigen/MatrixFunctions>
 
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "core/scenes/rope.hpp"
 #include "core/scenes/spring.hpp"
+#include "core/simulate.hpp"
+#include "core/methods/rk4.hpp"
 
 namespace steplab {
 namespace {
@@ -149,6 +151,34 @@ TEST(Rope, ExactAlongARunIsTheClosedForm) {
         EXPECT_LT(r.beta2(n), 0) << "the fastest mode overdamped";
       }
     }
+}
+
+// A run that reads the error every few steps (RunSpec::error_stride; run --error-every) reads it
+// at the multiples of the stride and at the last step, against the closed form there: its max,
+// RMS and final errors are those of the same run's positions at those steps, taken here from an
+// observer and Rope::exact_at (to 1e-12 of the rope's length, 5: the tracker's recurrence against
+// the closed form, as above). A stride of 1 reads every step, as every other scene does.
+TEST(Rope, ErrorsReadEveryFewStepsAreThoseSteps) {
+  const Rope r = rope(64);
+  for (const long long stride : {1LL, 100LL, 7LL}) {
+    RunSpec spec;
+    spec.dt = 1e-3, spec.steps = 1000, spec.error_stride = stride;
+    double max = 0, sq = 0, last = 0;
+    long long reads = 0;
+    const RunResult<Eigen::Dynamic> run = simulate<Rk4>(r, spec, [&](long long i, double t, const State<Eigen::Dynamic>& y) {
+      if (i % stride != 0 && i != spec.steps) return;
+      const double e = (y.x - r.exact_at(t).x).norm();
+      max = std::max(max, e), sq += e * e, last = e, ++reads;
+    });
+    EXPECT_EQ(run.error_reads, stride == 7 ? 143 : 1000 / stride) << stride;
+    EXPECT_EQ(run.error_reads, reads) << stride;
+    const double tol = 1e-12 * 5.0;
+    EXPECT_NEAR(run.error_max, max, tol) << stride;
+    EXPECT_NEAR(run.error_rms, std::sqrt(sq / reads), tol) << stride;
+    EXPECT_NEAR(run.error_final, last, tol) << stride;
+    EXPECT_NEAR(run.error_v_final, (run.final.v - r.exact_at(1.0).v).norm(), tol) << stride;
+    EXPECT_GT(max, 1e3 * tol) << "the errors compared are far above the tolerance";
+  }
 }
 
 }  // namespace

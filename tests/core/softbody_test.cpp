@@ -7,7 +7,7 @@
 #include <array>
 #include <cmath>
 
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "core/scenes/softbody.hpp"
 
 namespace steplab {

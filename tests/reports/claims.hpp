@@ -10,7 +10,7 @@
 #include <set>
 #include <string>
 
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "reports/document/report.hpp"
 
 namespace steplab::claims {

@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "analysis/peers.hpp"
+#include "analysis/peers/peers.hpp"
 #include "claims.hpp"
 #include "reports/data/study_output.hpp"
 #include "reports/document/findings.hpp"

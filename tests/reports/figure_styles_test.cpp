@@ -10,7 +10,7 @@
 #include <tuple>
 
 #include "cli_helpers.hpp"
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "reports/document/figure_styles.hpp"
 #include "reports/document/section.hpp"
 #include "reports/document/report_text.hpp"

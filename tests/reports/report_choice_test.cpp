@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/document/report.hpp"
 #include "reports/document/section.hpp"

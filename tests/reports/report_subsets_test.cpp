@@ -12,7 +12,7 @@
 
 #include <fmt/format.h>
 
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "cli_helpers.hpp"
 #include "reports/document/report.hpp"
 #include "reports/document/report_text.hpp"

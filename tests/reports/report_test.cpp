@@ -10,8 +10,8 @@
 
 #include <fmt/format.h>
 
-#include "analysis/kernel.hpp"
-#include "analysis/scaling.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/scaling.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/data/study_output.hpp"
 #include "reports/document/figure_styles.hpp"

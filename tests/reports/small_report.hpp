@@ -5,7 +5,7 @@
 #include <string_view>
 #include <vector>
 
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "reports/document/report_config.hpp"
 
 namespace steplab {

@@ -1,7 +1,7 @@
 # The fitted order of the largest position error against the stiffness of the stiffened scene (the
 # mass pulled to a moving target), a panel per family, each fit's bound as an error bar; dashed,
 # each method's theory: its order p at the left, its stiff-limit order at the right
-# (analysis/order_reduction.hpp). A method stable only at low stiffness has points only there.
+# (analysis/studies/order_reduction.hpp). A method stable only at low stiffness has points only there.
 # Variables set by steplab report: datadir, outfile, format (png|pdf), kmin and kmax (the x
 # range), the panels npanel, panel1.., ptitle1..; styles.gp: each method's style.
 ncol = npanel <= 3 ? npanel : npanel == 4 ? 2 : 3

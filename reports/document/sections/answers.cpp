@@ -7,9 +7,9 @@
 
 #include <fmt/format.h>
 
-#include "analysis/defaults.hpp"
-#include "analysis/kernel.hpp"
-#include "analysis/peers.hpp"
+#include "analysis/studies/defaults.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/peers/peers.hpp"
 #include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"

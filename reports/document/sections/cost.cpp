@@ -9,8 +9,8 @@
 
 #include <fmt/format.h>
 
-#include "analysis/kernel.hpp"
-#include "analysis/peers.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/peers/peers.hpp"
 #include "reports/data/study_output.hpp"
 #include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"

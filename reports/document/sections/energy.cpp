@@ -3,7 +3,7 @@
 // the symplectic methods, a steady drift for the others, a blow-up where the step is unstable.
 #include <fmt/format.h>
 
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"

@@ -11,8 +11,8 @@
 
 #include <fmt/format.h>
 
-#include "analysis/kernel.hpp"
-#include "analysis/regions.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/regions.hpp"
 #include "core/scenes/spring.hpp"
 #include "reports/document/figure_styles.hpp"
 #include "reports/document/findings.hpp"

@@ -1,5 +1,5 @@
 // As the system grows: every scene of run-time size with modes (by default the rope of N masses
-// and the soft body of n x n masses) refined (analysis/scaling.hpp), every method and the peers;
+// and the soft body of n x n masses) refined (analysis/studies/scaling.hpp), every method and the peers;
 // cost against N (the first scene's figure), the exponents that are findings, the crossover,
 // steplab's cheapest against CVODE; and on the first scene, stiffened as well, the crossover map:
 // which group is cheapest in each cell (size, stiffness), a margin within the noise a tie, at the
@@ -10,8 +10,8 @@
 
 #include <fmt/format.h>
 
-#include "analysis/kernel.hpp"
-#include "analysis/peers.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/peers/peers.hpp"
 #include "reports/data/study_output.hpp"
 #include "reports/document/figure_styles.hpp"
 #include "reports/document/findings.hpp"

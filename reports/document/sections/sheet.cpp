@@ -19,8 +19,8 @@
 
 #include <fmt/format.h>
 
-#include "analysis/defaults.hpp"
-#include "analysis/kernel.hpp"
+#include "analysis/studies/defaults.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "core/scenes/spring.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"

@@ -1,6 +1,6 @@
 // Does the order hold when stiff? The fitted order against the stiffness of the stiffened scene
 // (by default the mass pulled to a moving target, the second-order Prothero-Robinson problem),
-// each method's theory beside it (analysis/order_reduction.hpp): which methods keep their order
+// each method's theory beside it (analysis/studies/order_reduction.hpp): which methods keep their order
 // at every stiffness, which stray between the limits, which fall or rise and to what, and where
 // the transition lies in h |lambda| (findings.hpp, stiff_claims).
 #include <algorithm>
@@ -8,8 +8,8 @@
 
 #include <fmt/format.h>
 
-#include "analysis/kernel.hpp"
-#include "analysis/order_reduction.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/order_reduction.hpp"
 #include "reports/data/study_output.hpp"
 #include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"

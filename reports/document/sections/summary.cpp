@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "analysis/kernel.hpp"
+#include "analysis/kernel/kernel.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
 

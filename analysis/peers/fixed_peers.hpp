@@ -1,0 +1,139 @@
+// The peers (analysis/peers/peers.hpp) on a scene of fixed size S, over its first-order system of 2
+// S::dim entries: Boost.Odeint's controlled dopri5 on a std::array, CVODE with a dense matrix.
+// Instantiated in analysis/peers/peers.cpp (and by the tests that check a peer's Jacobian).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <limits>
+
+#include <boost/numeric/odeint.hpp>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include "analysis/peers/cvode.hpp"
+#include "core/scene.hpp"
+
+namespace steplab {
+
+// odeint's integrate_adaptive for a controlled stepper (integrate/detail/integrate_adaptive.hpp),
+// written out so that the rejected tries are counted: the same steps (on while t_end - t exceeds
+// the machine epsilon, t + dt clipped to t_end, try_step until it succeeds, at most 500 failed
+// tries in a row as its failed_step_checker allows).
+template <class Stepper, class System, class Z, class AfterStep>
+void odeint_adaptive(Stepper&& stepper, System&& system, Z& z, double t_end, double dt, PeerCounts& n, AfterStep&& after_step) {
+  namespace odeint = boost::numeric::odeint;
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  double t = 0;
+  while (t_end - t > eps) {
+    if ((t + dt) - t_end > eps) dt = t_end - t;
+    int fails = 0;
+    while (stepper.try_step(system, z, t, dt) == odeint::fail)
+      if (++n.rejected, ++fails == 500) {
+        n.failed = true;
+        return;
+      }
+    ++n.steps;
+    after_step(z, t);
+  }
+}
+
+// odeint's integrate_times for a controlled stepper (integrate/detail/integrate_times.hpp),
+// written out for the same reason: to each t_k = k t_end / frames in turn, k = 1 .. frames, the
+// step clipped to end there and the unclipped step kept for the next one (dt = max(dt, the
+// clipped step) after a success, the failed try's step after a failure); `at_frame(z, k)` at each.
+template <class Stepper, class System, class Z, class AtFrame>
+void odeint_times(Stepper&& stepper, System&& system, Z& z, double t_end, int frames, double dt, PeerCounts& n,
+                  AtFrame&& at_frame) {
+  namespace odeint = boost::numeric::odeint;
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  double t = 0;
+  for (int k = 1; k <= frames; ++k) {
+    const double tk = k == frames ? t_end : t_end * k / frames;
+    int fails = 0;
+    while (tk - t > eps) {
+      double step = std::min(dt, tk - t);
+      if (stepper.try_step(system, z, t, step) == odeint::success) {
+        ++n.steps, fails = 0;
+        dt = std::max(dt, step);
+      } else {
+        ++n.rejected, dt = step;
+        if (++fails == 500) {
+          n.failed = true;
+          return;
+        }
+      }
+    }
+    at_frame(z, k);
+  }
+}
+
+template <Scene S> struct OdeintDopri5 {
+  static constexpr int D = S::dim;
+  using Z = std::array<double, 2 * D>;
+  static State<D> run(const S& s, double tol, double t_end, PeerCounts& n, double* error_max = nullptr) {
+    const State<D> y0 = s.initial();
+    Z z{};
+    for (int i = 0; i < D; ++i) z[i] = y0.x[i], z[D + i] = y0.v[i];
+    n = {};
+    const auto rhs = [&](const Z& a, Z& da, double t) {
+      ++n.forces;
+      const Vec<D> x = Eigen::Map<const Vec<D>>(a.data()), v = Eigen::Map<const Vec<D>>(a.data() + D);
+      const Vec<D> acc = acceleration(s, t, x, v);
+      for (int i = 0; i < D; ++i) da[i] = v[i], da[D + i] = acc[i];
+    };
+    namespace odeint = boost::numeric::odeint;
+    odeint_adaptive(odeint::make_controlled(tol, tol, odeint::runge_kutta_dopri5<Z>()), rhs, z, t_end, 1e-6 * t_end, n,
+                    [&](const Z& a, double t) {
+                      if (error_max)
+                        *error_max = std::max(*error_max, (Eigen::Map<const Vec<D>>(a.data()) - exact(s, t).x).norm());
+                    });
+    return {Eigen::Map<const Vec<D>>(z.data()), Eigen::Map<const Vec<D>>(z.data() + D)};
+  }
+};
+
+template <Scene S> struct CvodeDense {
+  static constexpr int D = S::dim;
+
+  // z' = f(z): the velocities, then the accelerations.
+  static int rhs(sunrealtype t, N_Vector z, N_Vector dz, void* scene) {
+    const S& s = *static_cast<const S*>(scene);
+    const double* a = N_VGetArrayPointer(z);
+    double* da = N_VGetArrayPointer(dz);
+    const Vec<D> x = Eigen::Map<const Vec<D>>(a), v = Eigen::Map<const Vec<D>>(a + D);
+    const Vec<D> acc = acceleration(s, t, x, v);
+    for (int i = 0; i < D; ++i) da[i] = v[i], da[D + i] = acc[i];
+    return 0;
+  }
+
+  // df/dz = [[0, I], [M^-1 dF/dx, M^-1 dF/dv]] (column-major dense matrix).
+  static int jacobian(sunrealtype t, N_Vector z, N_Vector, SUNMatrix J, void* scene, N_Vector, N_Vector, N_Vector) {
+    const S& s = *static_cast<const S*>(scene);
+    const double* a = N_VGetArrayPointer(z);
+    const Vec<D> x = Eigen::Map<const Vec<D>>(a), v = Eigen::Map<const Vec<D>>(a + D);
+    const Jacobians<D> j = jacobians_at(s, t, x, v);
+    const Vec<D> w = s.inverse_mass();
+    Eigen::Map<Eigen::Matrix<double, 2 * D, 2 * D>> m(SUNDenseMatrix_Data(J));
+    m.setZero();
+    m.template topRightCorner<D, D>().setIdentity();
+    m.template bottomLeftCorner<D, D>() = w.asDiagonal() * j.dx;
+    m.template bottomRightCorner<D, D>() = w.asDiagonal() * j.dv;
+    return 0;
+  }
+
+  static State<D> run(const S& s, const CvodeSettings& settings, double tol, double t_end, PeerCounts& n,
+                      double* error_max = nullptr) {
+    CvodeRun c(2 * D);
+    const State<D> y0 = s.initial();
+    double* a = c.data();
+    for (int i = 0; i < D; ++i) a[i] = y0.x[i], a[D + i] = y0.v[i];
+    c.J = SUNDenseMatrix(2 * D, 2 * D, c.ctx);
+    c.ls = SUNLinSol_Dense(c.z, c.J, c.ctx);
+    cvode_solve(c, rhs, jacobian, &s, settings, tol, t_end, n, [&](double t) {
+      if (error_max) *error_max = std::max(*error_max, (Eigen::Map<const Vec<D>>(a) - exact(s, t).x).norm());
+    });
+    return {Eigen::Map<const Vec<D>>(a), Eigen::Map<const Vec<D>>(a + D)};
+  }
+};
+
+}  // namespace steplab

@@ -1,0 +1,102 @@
+#include "analysis/peers/peers.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <boost/version.hpp>
+#include <sundials/sundials_config.h>
+
+#include "analysis/peers/fixed_peers.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "core/scenes/chain.hpp"
+#include "core/scenes/spring.hpp"
+
+namespace steplab {
+namespace {
+
+// CVODE's user guide: Adams-Moulton for non-stiff problems, BDF for stiff ones; and where the
+// Jacobian has eigenvalues near the imaginary axis (a lightly damped oscillator: every scene
+// here), BDF of orders 3-5 is not stable there, so BDF also with its order capped at 2 (A-stable):
+// CVodeSetMaxOrd. The stability-limit detection CVODE offers for that case (CVodeSetStabLimDet)
+// took more steps on the rope, not fewer, and a setup frequency other than the default 20 changed
+// factorisations, not steps (README, "The peers").
+constexpr CvodeSettings kAdams{.adams = true};
+constexpr CvodeSettings kBdf{.adams = false};
+constexpr CvodeSettings kBdfMax2{.adams = false, .max_order = 2};
+constexpr bool kKlu = STEPLAB_HAVE_KLU;
+
+// A CVODE peer: implicit (Newton), its linear solver and its settings.
+constexpr PeerInfo cvode(std::string_view name, std::string_view solver, PeerScenes scenes, CvodeSettings settings,
+                         bool built = true) {
+  return {name, kCvodeLibrary, solver, scenes, true, built, settings};
+}
+
+constexpr PeerInfo kPeers[] = {
+    {"dopri5", "steplab", "", PeerScenes::Any, false, true, {}},
+    {"odeint_dopri5", "Boost.Odeint", "", PeerScenes::Any, false, true, {}},
+    cvode("cvode_adams_dense", "dense", PeerScenes::FixedSize, kAdams),
+    cvode("cvode_bdf_dense", "dense", PeerScenes::FixedSize, kBdf),
+    cvode("cvode_bdf_max2_dense", "dense", PeerScenes::FixedSize, kBdfMax2),
+    cvode("cvode_adams_band", "band", PeerScenes::Banded, kAdams),
+    cvode("cvode_bdf_band", "band", PeerScenes::Banded, kBdf),
+    cvode("cvode_bdf_max2_band", "band", PeerScenes::Banded, kBdfMax2),
+    cvode("cvode_adams_klu", "KLU", PeerScenes::Sparse, kAdams, kKlu),
+    cvode("cvode_bdf_klu", "KLU", PeerScenes::Sparse, kBdf, kKlu),
+    cvode("cvode_bdf_max2_klu", "KLU", PeerScenes::Sparse, kBdfMax2, kKlu),
+};
+
+}  // namespace
+
+std::span<const PeerInfo> peers() { return kPeers; }
+
+std::string_view cvode_method_words(const PeerInfo& p) {
+  return p.cvode.adams ? "Adams-Moulton" : p.cvode.max_order == 2 ? "BDF of orders 1-2" : "BDF";
+}
+
+const PeerInfo* find_peer(std::string_view name) {
+  const auto it = std::find_if(std::begin(kPeers), std::end(kPeers), [&](const PeerInfo& p) { return p.name == name; });
+  return it == std::end(kPeers) ? nullptr : &*it;
+}
+
+PeerScenes peer_scenes(const SceneKernel& scene) {
+  if (!scene.has_jacobians) return PeerScenes::Explicit;
+  if (scene.dim != Eigen::Dynamic) return PeerScenes::FixedSize;
+  return scene.jacobian_bandwidth >= 0 ? PeerScenes::Banded : PeerScenes::Sparse;
+}
+
+bool peer_runs_on(const PeerInfo& p, PeerScenes scenes) { return p.scenes == PeerScenes::Any || p.scenes == scenes; }
+
+std::vector<const PeerInfo*> peers_on(PeerScenes scenes) {
+  std::vector<const PeerInfo*> out;
+  for (const PeerInfo& p : kPeers)
+    if (p.built && peer_runs_on(p, scenes)) out.push_back(&p);
+  return out;
+}
+
+std::vector<std::string> peer_names(PeerScenes scenes) {
+  std::vector<std::string> out;
+  for (const PeerInfo* p : peers_on(scenes)) out.emplace_back(p->name);
+  return out;
+}
+
+std::vector<PeerBuild> peer_builds() {
+  return {{std::string(kCvodeLibrary), SUNDIALS_VERSION, STEPLAB_CVODE_FLAGS, STEPLAB_CVODE_OPTIMISED != 0},
+          {"Boost.Odeint", BOOST_LIB_VERSION, "header-only, compiled with steplab's own flags", true}};
+}
+
+State<Eigen::Dynamic> run_fixed_peer(const PeerInfo& peer, std::string_view scene, std::span<const double> params, double tol,
+                                     double t_end, PeerCounts& n, double* error_max) {
+  const auto on = [&]<class S>(const S& s) -> State<Eigen::Dynamic> {
+    State<S::dim> end;
+    if (peer.name == "odeint_dopri5") end = OdeintDopri5<S>::run(s, tol, t_end, n, error_max);
+    else if (peer.is_cvode() && peer.linear_solver == "dense")
+      end = CvodeDense<S>::run(s, peer.cvode, tol, t_end, n, error_max);
+    else throw std::logic_error("run_fixed_peer: " + std::string(peer.name) + " does not run on a scene of fixed size");
+    return {end.x, end.v};
+  };
+  if (scene == Spring::name) return on(Spring(params));
+  if (scene == Chain::name) return on(Chain(params));
+  throw std::logic_error("the peers run on the spring and the chain only, not on " + std::string(scene));
+}
+
+}  // namespace steplab

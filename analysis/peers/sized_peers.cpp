@@ -1,0 +1,188 @@
+#include "analysis/peers/sized_peers.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include <boost/numeric/odeint.hpp>
+#include <boost/numeric/odeint/external/eigen/eigen.hpp>
+#include <sunlinsol/sunlinsol_band.h>
+#if STEPLAB_HAVE_KLU
+#include <sunlinsol/sunlinsol_klu.h>
+#endif
+#include <sunmatrix/sunmatrix_band.h>
+#include <sunmatrix/sunmatrix_sparse.h>
+
+#include "analysis/peers/cvode.hpp"
+#include "analysis/peers/fixed_peers.hpp"  // odeint_adaptive
+
+namespace steplab {
+namespace {
+
+// A scene of run-time size as the templates below (and core/scene.hpp's acceleration) ask for it,
+// reached through the kernel table.
+struct MadeScene {
+  static constexpr int dim = Eigen::Dynamic;
+  const MadeSceneCode& code;
+  const void* scene;
+  Eigen::VectorXd force(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const { return code.force(scene, x, v); }
+  Jacobians<Eigen::Dynamic> jacobians(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const { return code.jacobians(scene, x, v); }
+  const Eigen::VectorXd& inverse_mass() const { return code.inverse_mass(scene); }
+  State<Eigen::Dynamic> initial() const { return code.initial(scene); }
+};
+
+// z' = (v, M^-1 F(x, v)), z = (x_1, v_1, x_2, v_2, ...) interleaved.
+int interleaved_rhs(sunrealtype t, N_Vector z, N_Vector dz, void* data) {
+  const MadeScene& s = *static_cast<const MadeScene*>(data);
+  const Eigen::Index d = N_VGetLength(z) / 2;
+  const Eigen::Map<const Eigen::VectorXd, 0, Eigen::InnerStride<2>> x(N_VGetArrayPointer(z), d), v(N_VGetArrayPointer(z) + 1, d);
+  const Eigen::VectorXd a = acceleration(s, t, Eigen::VectorXd(x), Eigen::VectorXd(v));
+  double* out = N_VGetArrayPointer(dz);
+  for (Eigen::Index i = 0; i < d; ++i) out[2 * i] = v[i], out[2 * i + 1] = a[i];
+  return 0;
+}
+
+// Rows and columns interleaved: x_i at 2i, v_i at 2i+1. d(x_i')/d(v_i) = 1; d(v_i')/d(x_j, v_j) =
+// M^-1 dF/dx, M^-1 dF/dv (banded).
+int band_jacobian(sunrealtype, N_Vector z, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector, N_Vector) {
+  const MadeScene& s = *static_cast<const MadeScene*>(data);
+  const Eigen::Index d = N_VGetLength(z) / 2;
+  const Eigen::Map<const Eigen::VectorXd, 0, Eigen::InnerStride<2>> x(N_VGetArrayPointer(z), d), v(N_VGetArrayPointer(z) + 1, d);
+  const Jacobians<Eigen::Dynamic> j = s.jacobians(Eigen::VectorXd(x), Eigen::VectorXd(v));
+  const Eigen::VectorXd& w = s.inverse_mass();
+  SUNMatZero(J);
+  for (Eigen::Index i = 0; i < d; ++i) SM_ELEMENT_B(J, 2 * i, 2 * i + 1) = 1;
+  for (int c = 0; c < j.dx.outerSize(); ++c)
+    for (SparseMat::InnerIterator e(j.dx, c); e; ++e) SM_ELEMENT_B(J, 2 * e.row() + 1, 2 * e.col()) = w[e.row()] * e.value();
+  for (int c = 0; c < j.dv.outerSize(); ++c)
+    for (SparseMat::InnerIterator e(j.dv, c); e; ++e) SM_ELEMENT_B(J, 2 * e.row() + 1, 2 * e.col() + 1) = w[e.row()] * e.value();
+  return 0;
+}
+
+// z' = (v, M^-1 F(x, v)), z = (x, v) in blocks.
+int blocked_rhs(sunrealtype t, N_Vector z, N_Vector dz, void* data) {
+  const MadeScene& s = *static_cast<const MadeScene*>(data);
+  const Eigen::Index d = N_VGetLength(z) / 2;
+  const Eigen::Map<const Eigen::VectorXd> a(N_VGetArrayPointer(z), 2 * d);
+  Eigen::Map<Eigen::VectorXd> da(N_VGetArrayPointer(dz), 2 * d);
+  da.head(d) = a.tail(d);
+  da.tail(d) = acceleration(s, t, Eigen::VectorXd(a.head(d)), Eigen::VectorXd(a.tail(d)));
+  return 0;
+}
+
+// J = [[0, I], [M^-1 dF/dx, M^-1 dF/dv]] in CSR, every stored entry of the scene's Jacobians kept
+// (their pattern does not change: KLU analyses it once).
+int csr_jacobian(sunrealtype, N_Vector z, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector, N_Vector) {
+  const MadeScene& s = *static_cast<const MadeScene*>(data);
+  const Eigen::Index d = N_VGetLength(z) / 2;
+  const Eigen::Map<const Eigen::VectorXd> a(N_VGetArrayPointer(z), 2 * d);
+  const Jacobians<Eigen::Dynamic> j = s.jacobians(Eigen::VectorXd(a.head(d)), Eigen::VectorXd(a.tail(d)));
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> dx = j.dx, dv = j.dv;
+  const Eigen::VectorXd& w = s.inverse_mass();
+  sunindextype* start = SUNSparseMatrix_IndexPointers(J);
+  sunindextype* col = SUNSparseMatrix_IndexValues(J);
+  double* val = SUNSparseMatrix_Data(J);
+  sunindextype k = 0;
+  for (Eigen::Index r = 0; r < d; ++r) start[r] = k, col[k] = d + r, val[k++] = 1;
+  for (Eigen::Index r = 0; r < d; ++r) {
+    start[d + r] = k;
+    for (decltype(dx)::InnerIterator e(dx, r); e; ++e) col[k] = e.col(), val[k++] = w[r] * e.value();
+    for (decltype(dv)::InnerIterator e(dv, r); e; ++e) col[k] = d + e.col(), val[k++] = w[r] * e.value();
+  }
+  start[2 * d] = k;
+  return k <= SUNSparseMatrix_NNZ(J) ? 0 : -1;
+}
+
+State<Eigen::Dynamic> odeint_dopri5(const MadeScene& s, double tol, double t_end, PeerCounts& n, const PeerFrames& frames) {
+  namespace odeint = boost::numeric::odeint;
+  using Z = Eigen::VectorXd;
+  n = {};
+  const State<Eigen::Dynamic> y0 = s.initial();
+  const Eigen::Index d = y0.x.size();
+  Z z(2 * d);
+  z << y0.x, y0.v;
+  const auto rhs = [&](const Z& a, Z& da, double t) {
+    ++n.forces;
+    da.resize(a.size());
+    da.head(d) = a.tail(d);
+    da.tail(d) = acceleration(s, t, Eigen::VectorXd(a.head(d)), Eigen::VectorXd(a.tail(d)));
+  };
+  using Stepper = odeint::runge_kutta_dopri5<Z, double, Z, double, odeint::vector_space_algebra>;
+  if (frames.count > 0)
+    odeint_times(odeint::make_controlled(tol, tol, Stepper()), rhs, z, t_end, frames.count, 1e-6 * t_end, n,
+                 [&](const Z& a, int k) { frames.at(k, a.head(d)); });
+  else
+    odeint_adaptive(odeint::make_controlled(tol, tol, Stepper()), rhs, z, t_end, 1e-6 * t_end, n, [](const Z&, double) {});
+  return {z.head(d), z.tail(d)};
+}
+
+// CVODE to t_end, or through the frames when there are any, `positions()` the run's x (a copy).
+template <class Positions>
+void cvode_frames_or_end(CvodeRun& c, CVRhsFn rhs, CVLsJacFn jac, const MadeScene& s, const CvodeSettings& settings, double tol,
+                         double t_end, PeerCounts& n, const PeerFrames& frames, Positions&& positions) {
+  if (frames.count > 0)
+    cvode_solve_frames(c, rhs, jac, &s, settings, tol, t_end, frames.count, n, [&](int k) { frames.at(k, positions()); });
+  else
+    cvode_solve(c, rhs, jac, &s, settings, tol, t_end, n, [](double) {});
+}
+
+State<Eigen::Dynamic> cvode_band(const MadeScene& s, int bandwidth, const CvodeSettings& settings, double tol, double t_end,
+                                 PeerCounts& n, const PeerFrames& frames) {
+  const State<Eigen::Dynamic> y0 = s.initial();
+  const Eigen::Index d = y0.x.size();
+  CvodeRun c(2 * d);
+  double* a = c.data();
+  for (Eigen::Index i = 0; i < d; ++i) a[2 * i] = y0.x[i], a[2 * i + 1] = y0.v[i];
+  c.J = SUNBandMatrix(2 * d, 2 * bandwidth, 2 * bandwidth + 1, c.ctx);
+  c.ls = SUNLinSol_Band(c.z, c.J, c.ctx);
+  cvode_frames_or_end(c, interleaved_rhs, band_jacobian, s, settings, tol, t_end, n, frames, [&] {
+    return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd, 0, Eigen::InnerStride<2>>(a, d));
+  });
+  State<Eigen::Dynamic> end{Eigen::VectorXd(d), Eigen::VectorXd(d)};
+  for (Eigen::Index i = 0; i < d; ++i) end.x[i] = a[2 * i], end.v[i] = a[2 * i + 1];
+  return end;
+}
+
+#if STEPLAB_HAVE_KLU
+State<Eigen::Dynamic> cvode_klu(const MadeScene& s, const CvodeSettings& settings, double tol, double t_end, PeerCounts& n,
+                                const PeerFrames& frames) {
+  const State<Eigen::Dynamic> y0 = s.initial();
+  const sunindextype d = y0.x.size();
+  CvodeRun c(2 * d);
+  Eigen::Map<Eigen::VectorXd>(c.data(), 2 * d) << y0.x, y0.v;
+  const Jacobians<Eigen::Dynamic> j0 = s.jacobians(y0.x, y0.v);
+  c.J = SUNSparseMatrix(2 * d, 2 * d, d + j0.dx.nonZeros() + j0.dv.nonZeros(), CSR_MAT, c.ctx);
+  c.ls = SUNLinSol_KLU(c.z, c.J, c.ctx);
+  cvode_frames_or_end(c, blocked_rhs, csr_jacobian, s, settings, tol, t_end, n, frames,
+                      [&] { return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(c.data(), d)); });
+  const Eigen::Map<const Eigen::VectorXd> a(c.data(), 2 * d);
+  return {a.head(d), a.tail(d)};
+}
+#endif
+
+[[noreturn]] void not_here(const PeerInfo& peer, const SceneKernel& scene) {
+  throw std::logic_error("run_sized_peer: " + std::string(peer.name) + " does not run on the " + std::string(scene.name));
+}
+
+}  // namespace
+
+State<Eigen::Dynamic> run_sized_peer(const PeerInfo& peer, const SceneKernel& scene, const void* made, double tol, double t_end,
+                                     PeerCounts& n, const PeerFrames& frames) {
+  if (!scene.made || !peer_runs_on(peer, peer_scenes(scene))) not_here(peer, scene);
+  const MadeScene s{*scene.made, made};
+  if (peer.name == "odeint_dopri5") return odeint_dopri5(s, tol, t_end, n, frames);
+  if (peer.linear_solver == "band") return cvode_band(s, scene.jacobian_bandwidth, peer.cvode, tol, t_end, n, frames);
+#if STEPLAB_HAVE_KLU
+  if (peer.linear_solver == "KLU" && peer.built) return cvode_klu(s, peer.cvode, tol, t_end, n, frames);
+#endif
+  not_here(peer, scene);
+}
+
+State<Eigen::Dynamic> run_sized_peer(const PeerInfo& peer, std::size_t scene, std::span<const double> params, double tol,
+                                     double t_end, PeerCounts& n) {
+  const SceneKernel& s = scene_kernel(scene);
+  if (!s.make) throw std::logic_error("run_sized_peer: the " + std::string(s.name) + " is not of run-time size");
+  const std::shared_ptr<const void> made = s.make(params);
+  return run_sized_peer(peer, s, made.get(), tol, t_end, n);
+}
+
+}  // namespace steplab

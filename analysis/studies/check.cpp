@@ -1,0 +1,105 @@
+#include "analysis/studies/check.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "analysis/studies/convergence.hpp"
+#include "analysis/kernel/kernel.hpp"
+#include "core/scenes/cannonball.hpp"
+#include "core/scenes/target.hpp"
+#include "core/scenes/spring.hpp"
+
+namespace steplab {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+template <class S>
+OrderCheck order_check(std::size_t method, const MethodInfo& claims, const Workers& workers, double stiffness = 0) {
+  ConvergenceConfig c;
+  c.scene = scene_index(S::name);
+  c.params = default_param_values(c.scene);
+  if (stiffness > 0) c.params[static_cast<std::size_t>(stiffness_param_index<S>())] = stiffness;
+  c.methods = {method};
+  c.workers = workers;
+  const ConvergenceResult r = convergence_study(c);
+  const ConvergenceRecord& fine = r.records.back();
+  OrderCheck o{S::name, r.fits.front().fit, fine.dt, kInf, fine.dt, fine.error_final, false, false, false};
+  for (const ConvergenceRecord& rec : r.records)  // by decreasing dt
+    if (std::isfinite(rec.error_final)) {
+      o.dt_coarse = rec.dt;
+      o.error_coarse = rec.error_final;
+      break;
+    }
+  o.at_roundoff = fine.error_final <= fine.floor;
+  o.converges = o.at_roundoff || o.error_fine <= kConvergedRatio * o.error_coarse;
+  if (claims.order == 0) o.order_holds = o.fit.exact;  // the exact flow
+  else if (o.fit.exact) o.order_holds = claims.order >= 2;
+  else o.order_holds = o.fit.fitted && std::abs(o.fit.order - claims.order) <= kOrderTolerance;
+  return o;
+}
+
+EnergyCheck energy_check(std::size_t method, const MethodInfo& claims) {
+  const Spring s = linear_spring(default_param_values<Spring>(), 0);
+  EnergyCheck e{kDriftOmegaH / s.omega(), kDriftSteps, kInf, false, false};
+  const RateRun run = measure_rate(method, s, e.h, e.steps);
+  if (run.status == RunStatus::Ok) e.drift = std::isnan(run.rate) ? -kInf : run.rate * e.h * static_cast<double>(e.steps);
+  e.bounded = std::abs(e.drift) <= kDriftBound;
+  e.holds = e.bounded == claims.symplectic;
+  return e;
+}
+
+bool close(double measured, double predicted) {
+  if (std::isinf(measured) || std::isinf(predicted) || predicted == 0) return measured == predicted;
+  return std::abs(measured - predicted) <= kStableAgreement * predicted;
+}
+
+// From rest at equilibrium, kRestSteps steps with the method's own memory and start-up.
+RestCheck rest_check(std::size_t method, const Spring& s) {
+  const double y_eq = s.equilibrium(), h = 0.1 / s.omega();
+  std::array<double, kRestSteps> x{}, v{};
+  const StepStatus st = spring_kernel(method).steps_from(s.values(), y_eq, 0.0, h, kRestSteps, x.data(), v.data());
+  double worst = 0;
+  for (int i = 0; i < kRestSteps; ++i) worst = std::max({worst, std::abs(x[i] - y_eq), std::abs(v[i]) / s.omega()});
+  if (st != StepStatus::Ok) worst = kInf;  // a failed step: no rest
+  const double deviation = std::isnan(worst) ? kInf : worst / std::abs(y_eq);
+  return {h, deviation, deviation <= kRestTolerance};
+}
+
+}  // namespace
+
+bool CheckResult::all_hold() const {
+  bool ok = energy.holds && a_stable_holds && rest.holds;
+  for (const OrderCheck& o : orders) ok = ok && o.order_holds && o.converges;
+  for (const StabilityCheck& st : stability) ok = ok && st.agrees;
+  return ok;
+}
+
+CheckResult check_method(std::size_t method, const MethodInfo& claims, const Workers& workers) {
+  CheckResult r;
+  r.method = method;
+  r.claims = claims;
+  r.orders = {order_check<Spring>(method, claims, workers), order_check<Cannonball>(method, claims, workers),
+              order_check<Target>(method, claims, workers, kTargetStiffness)};
+  r.energy = energy_check(method, claims);
+
+  StabilityConfig c;
+  c.params = default_param_values(scene_index(Spring::name));
+  c.methods = {method};
+  c.threshold_dampings.assign(std::begin(kCheckDampings), std::end(kCheckDampings));
+  c.workers = workers;
+  bool all_infinite = true;
+  for (const ThresholdRow& row : threshold_study(c)) {
+    const StableSet predicted{row.dt_theory, row.again_theory}, measured{row.dt_measured, row.again_measured};
+    r.stability.push_back({row.damping, predicted, measured,
+                           close(measured.dt_star, predicted.dt_star) && close(measured.again, predicted.again)});
+    all_infinite = all_infinite && std::isinf(predicted.dt_star) && std::isinf(measured.dt_star);
+  }
+  r.a_stable_holds = all_infinite == claims.a_stable;
+
+  r.rest = rest_check(method, make_default_scene<Spring>());
+  return r;
+}
+
+}  // namespace steplab

@@ -1,0 +1,56 @@
+// Stability of a scene that declares its modes (core/scene.hpp: modes(), e.g. the rope of N
+// masses, the soft body): dt* predicted from its modes and measured by runs of the whole scene.
+//
+// Prediction. Where the scene is linear and its modes decouple (the rope: mass- and
+// stiffness-proportional damping), every method of the table is invariant under the modal change
+// of coordinates (equal masses: it is orthogonal, the same for x and v), so a step of the scene
+// is independent steps of damped oscillators, mode j one of angular frequency omega_j and damping
+// ratio zeta_j. dt* of the scene = min over the modes of each oscillator's predicted dt*, each
+// from the method's own step matrix (analysis/studies/stability.hpp): no eigensolve of the 2N x 2N
+// system. Undamped, every mode's dt* is C / omega_j for the method's constant C on the imaginary
+// axis, so the scene's is C / omega_max. A scene that is not linear declares the modes of its
+// linearisation (the soft body: its fastest), and the prediction is theirs.
+// Measurement. Runs of the scene itself from its start, h scanned by doubling from
+// 0.02 / omega_max until a run diverges, the edge bisected to 1e-3 relative. A run diverges when
+// E/E0 passes 1e4 or a state is not finite (the unstable mode grows from round-off: e^44 over
+// the run, which `steps` steps reach once the step is ~0.5 % past dt*). Stability here is the
+// verdict "no growth past 1e4 in `steps` steps", not the ln E slope of the spring's study: the
+// energy sits in slow modes whose slope says nothing of the fastest.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "analysis/kernel/parallel.hpp"
+#include "core/scene.hpp"
+
+namespace steplab {
+
+struct ModeStabilityConfig {
+  std::size_t scene = 0;       // a scene with modes (SceneKernel::modes)
+  std::vector<double> params;  // its parameters, table order
+  std::vector<std::size_t> methods;
+  long long steps = 5'000;
+  Workers workers;  // threads (0: all cores), progress, shard log
+};
+
+struct ModeThresholdRow {
+  std::size_t method;
+  double omega_max;     // the fastest mode's angular frequency
+  double dt_theory;     // min over the modes of the predicted dt*
+  int binding_mode;     // the mode j that sets it (1 .. N, slowest first; 0 if none limits it: dt* infinite)
+  double dt_measured;
+};
+
+// The predicted dt* of the unit oscillator (omega 1) with damping 2 zeta: a linear mode of
+// angular frequency omega and damping ratio zeta has dt* = this / omega.
+double unit_oscillator_threshold(std::size_t method, double two_zeta);
+// min over the modes of their dt*; `binding_mode` (if given) receives the mode j that sets it.
+double modes_predicted_threshold(std::size_t method, const std::vector<Mode>& modes, int* binding_mode = nullptr);
+// The largest step at which runs of `steps` steps of the scene do not diverge; `omega_max` sets
+// the scale of the search.
+double measured_threshold(std::size_t method, std::size_t scene, const std::vector<double>& params, double omega_max,
+                          long long steps);
+std::vector<ModeThresholdRow> mode_threshold_study(const ModeStabilityConfig& c);
+
+}  // namespace steplab
