@@ -100,16 +100,18 @@ void register_steplab() {
   // One step against the number of masses N, RK4 beside the implicit methods' sparse solves:
   // the rope at dt = 0.2 / omega_max (omega_max ~ 2 sqrt(K/M) N), runs of 100 steps; the soft
   // body (a 2-D grid, whose sparse factors fill in as the rope's do not) at dt 1e-4, every method
-  // stable, runs of 200 steps. The scene is made once every 10 runs (making the rope of 4096
-  // masses, its modes and sine transform, costs about as much as 100 steps of explicit Euler on
-  // it), and each kept iteration matrix factorised once a scene (core/sparse.hpp).
+  // stable, runs of 200 steps. Making the rope of 4096 masses (its modes and sine transform)
+  // costs about 0.7 ms, 200 steps of explicit Euler on it: the scene is made once every 100 runs
+  // of the explicit methods and every 10 of the implicit ones (each kept iteration matrix
+  // factorised once a scene, core/sparse.hpp), about 1 % of the time stepping either way.
   const std::size_t rope = scene_index("rope"), soft = scene_index("softbody");
   for (const char* name : {"explicit_euler", "rk4", "implicit_euler", "implicit_midpoint", "bdf2", "gauss_legendre4", "radau_iia5"})
     for (int n : {64, 256, 1024, 4096, 16384}) {
       std::vector<double> p = default_param_values(rope);
       p[0] = n;
-      register_step("rope_size/" + std::string(name) + "/" + std::to_string(n), *find_method(name), rope, p,
-                    0.2 / (2 * std::sqrt(p[2] / p[1]) * n), 100, 10)
+      const std::size_t m = *find_method(name);
+      register_step("rope_size/" + std::string(name) + "/" + std::to_string(n), m, rope, p,
+                    0.2 / (2 * std::sqrt(p[2] / p[1]) * n), 100, method_info(m).implicit ? 10 : 100)
           ->Unit(benchmark::kMicrosecond);
     }
   for (const char* name : {"rk4", "implicit_euler", "gauss_legendre4", "radau_iia5"})
