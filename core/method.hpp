@@ -32,7 +32,7 @@ concept MethodType = requires { M::info; };
 
 // The families the report answers "is stability correlated with order?" for, one by one.
 // Explicit Euler and implicit Euler are also the first Adams-Bashforth and BDF methods (`also`).
-enum class Family { ExplicitRungeKutta, Splitting, ImplicitRungeKutta, AdamsBashforth, Bdf, Exact, None };
+enum class Family { ExplicitRungeKutta, Splitting, ImplicitRungeKutta, AdamsBashforth, Bdf, PositionBased, Exact, None };
 
 inline constexpr std::string_view to_string(Family f) {
   switch (f) {
@@ -41,6 +41,7 @@ inline constexpr std::string_view to_string(Family f) {
     case Family::ImplicitRungeKutta: return "implicit Runge-Kutta";
     case Family::AdamsBashforth: return "Adams-Bashforth";
     case Family::Bdf: return "BDF";
+    case Family::PositionBased: return "position-based";
     case Family::Exact: return "exact flow";
     case Family::None: return "none";
   }
@@ -60,6 +61,14 @@ struct MethodInfo {
   std::string_view summary;   // its update in one line (y = (x, v), f = (v, a)), for the report's appendix
   Family first_of = Family::None;  // a second family whose first member the method is (explicit Euler: AB1)
 };
+
+// What a run may set of a method that has settings (`static constexpr bool takes_settings`, its
+// step then step(s, y, t, h, settings)): the Gauss-Seidel sweeps a step of a position-based
+// method (core/methods/xpbd.hpp).
+struct MethodSettings {
+  int sweeps = 1;
+};
+template <class M> concept TakesSettings = requires { M::takes_settings; };
 
 // An implicit Runge-Kutta method declares its Butcher tableau, `static constexpr
 // ButcherTableau<s> tableau`, whether its step is written from it (core/implicit_rk.hpp) or by

@@ -45,6 +45,7 @@ struct RunSpec {
   // On a scene whose exact positions cost a transform (HasExactAlong: the rope), the error is
   // read at every error_stride-th step and at the last (1: every step). Elsewhere every step.
   long long error_stride = 1;
+  MethodSettings settings{};  // a method's that has them (sweeps: core/methods/xpbd.hpp)
   // Stop early once E/E0 leaves [stop_below, stop_above] (0 and inf: never). Above counts as
   // Diverged (the energy blew up); below ends the run as Ok (it has decayed, clearly stable,
   // before round-off flattens ln E).
@@ -290,6 +291,7 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
   Run(const S& scene, const RunSpec& spec, RunResult<D>& out, Observer observe = {})
       : scene_(scene), spec_(spec), observe_(observe), plan_{spec.steps, spec.max_samples}, y_(scene.initial()), r_(out),
         tracker_(make_tracker(scene, spec)) {
+    if constexpr (TakesSettings<M>) stepper_.settings = spec.settings;
     if (plan_.size() > 0) r_.samples.reserve(static_cast<std::size_t>(plan_.size()) + 1);
     e0_ = scene.energy(y_.x, y_.v);
     r_.energy0 = e0_;

@@ -102,6 +102,20 @@ template <Multistep M, class S, class T> struct Stepper<M, S, T> {
   }
 };
 
+// A method with settings (TakesSettings, core/method.hpp): the run's, set by the run loop from
+// its RunSpec (core/simulate.hpp); the defaults elsewhere.
+template <TakesSettings M, class S, class T> struct Stepper<M, S, T> {
+  MethodSettings settings{};
+  [[no_unique_address]] RunWorkspace<S::dim> work;
+  auto step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h)
+    requires requires { M::step(s, y, t, h, settings); }
+  {
+    [[maybe_unused]] const auto in_use = work.use();
+    return M::step(s, y, t, h, settings);
+  }
+  void forget() {}
+};
+
 // The derivative of the first-order system at time t, f(t, y) = (v, a(t, x, v)), stored as a State.
 // Its vectors are a step's temporaries (core/scratch.hpp).
 template <class S, class T> TempState<S::dim, T> derivative(const S& s, Time<T> t, const State<S::dim, T>& y) {

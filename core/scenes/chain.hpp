@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "core/scene.hpp"
+#include "core/springs.hpp"
 #include "core/scenes/spring.hpp"
 
 namespace steplab {
@@ -54,6 +55,14 @@ template <class T> struct ChainT {
   Jacobians<2, T> jacobians(const Vec<2, T>&, const Vec<2, T>&) const { return {-K, -C}; }
   // C != 0: a Mask for a pack
   auto velocity_dependent() const { return C(0, 0) != 0.0 || C(0, 1) != 0.0 || C(1, 1) != 0.0; }
+  // As springs (core/springs.hpp; one run's, T = double), in displacements (rest lengths 0): the
+  // wall's spring and dashpot on m1, C = u1; the stiff one between them, C = u2 - u1.
+  int links() const { return 2; }
+  Link link(int q) const {
+    const double k2 = -K(0, 1), c2 = -C(0, 1);
+    return q == 0 ? Link{0, -1, 0.0, K(0, 0) - k2, C(0, 0) - c2} : Link{1, 0, 0.0, k2, c2};
+  }
+  double external(int, double) const { return 0.0; }
 
   // Kinetic energy plus the springs' potential: 1/2 v^T M v + 1/2 u^T K u.
   T energy(const Vec<2, T>& x, const Vec<2, T>& v) const {

@@ -14,6 +14,7 @@
 #include <span>
 
 #include "core/scene.hpp"
+#include "core/springs.hpp"
 #include "core/scenes/ground.hpp"
 #include "core/scenes/pair_spring.hpp"
 
@@ -23,6 +24,7 @@ namespace steplab {
 template <class T> struct FallingT {
   template <class U> using as = FallingT<U>;
   static constexpr int dim = 6;
+  static constexpr int coords_per_mass = 2;
   static constexpr std::string_view name = "falling";
   // The equation of motion, for the report (the math above is its derivation).
   static constexpr std::string_view equation = "m x_i'' = the two damped springs along the triangle's sides + (0, -m g) + the ground's F_g on each mass below y = -1";
@@ -88,6 +90,11 @@ template <class T> struct FallingT {
   }
 
   auto velocity_dependent() const { return gamma != 0.0 || ground.c != 0.0; }  // a Mask for a pack
+  // As springs (core/springs.hpp; one run's, T = double): the three sides, damped along
+  // themselves; gravity on each y; the ground.
+  int links() const { return 3; }
+  Link link(int q) const { return {springs[q][0], springs[q][1], rest, k, gamma}; }
+  double external(int a, double) const { return a % 2 == 1 ? -m * g : 0.0; }
   // The deepest of the three particles below the ground.
   double penetration(const Vec<6>& x) const {
     double p = ground.penetration(x[1]);  // one run's (T = double)

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "core/scene.hpp"
+#include "core/springs.hpp"
 #include "core/scenes/oscillator.hpp"
 
 namespace steplab {
@@ -116,6 +117,11 @@ struct Rope {
   }
 
   std::array<double, 7> values() const { return {double(n), M, K, L, gamma, Cs, g}; }
+  // As springs (core/springs.hpp): spring i from mass i - 1 above (the anchor for i = 0) to mass
+  // i, C = (y_(i-1) - y_i) - l, its dashpot d; gravity and the absolute damping c outside them.
+  int links() const { return n; }
+  Link link(int i) const { return {i - 1, i, l, k, d}; }
+  double external(int, double v) const { return -c * v - weight; }
   // Mode j's angular frequency (j = 1 .. N; omega(N) the fastest: an explicit method's stable step
   // is C / omega(N)).
   double omega(int j) const { return std::sqrt(k * lambda[j - 1] / m); }

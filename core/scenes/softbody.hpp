@@ -30,6 +30,7 @@
 #include <Eigen/SparseCore>
 
 #include "core/scene.hpp"
+#include "core/springs.hpp"
 #include "core/scenes/ground.hpp"
 #include "core/scenes/pair_spring.hpp"
 
@@ -139,6 +140,11 @@ struct SoftBody {
   }
 
   bool velocity_dependent() const { return gamma != 0 || ground.c != 0; }
+  // As springs (core/springs.hpp): the structural and shear springs, damped along themselves;
+  // gravity on each y; the ground.
+  int links() const { return static_cast<int>(springs.size()); }
+  Link link(int q) const { return {springs[q].i, springs[q].j, springs[q].rest, k, gamma}; }
+  double external(int a, double) const { return a % 2 == 1 ? -m * g : 0.0; }
   // The deepest mass below the ground.
   double penetration(const Eigen::VectorXd& x) const {
     double p = ground.penetration(x[1]);

@@ -1,0 +1,89 @@
+#pragma once
+#include <algorithm>
+
+#include "core/method.hpp"
+#include "core/springs.hpp"
+
+namespace steplab {
+
+// XPBD, extended position-based dynamics (Macklin, Mueller, Chentanez, "XPBD: Position-Based
+// Simulation of Compliant Constrained Dynamics", MIG 2016), on a mass-spring scene's springs
+// (core/springs.hpp): each spring a distance constraint C with compliance alpha = 1/k, its
+// dashpot c the constraint's damping. One step of h (a substep of a frame):
+//   predict       x~ = x_n + h v_n + h^2 M^-1 f_ext(v_n)          (gravity, absolute damping)
+//   lambda_q = 0, then `sweeps` Gauss-Seidel sweeps over the springs (and the ground), each
+//   spring q, with alpha~ = alpha / h^2 and gamma = alpha~ (h^2 c) / h (the paper's (26)):
+//     dlambda = (-C - alpha~ lambda_q - gamma grad C . (x - x_n)) / ((1 + gamma) grad C M^-1 grad C^T + alpha~)
+//     x += M^-1 grad C^T dlambda,   lambda_q += dlambda
+//   velocity      v_(n+1) = (x - x_n) / h
+// Numerator and denominator are multiplied here by k h^2, which leaves dlambda as it is and
+// admits k = 0 (a dashpot alone):
+//     dlambda = (-k h^2 C - lambda_q - c h grad C . (x - x_n)) / ((k h^2 + c h) grad C M^-1 grad C^T + 1).
+// The ground is a one-sided constraint C = y - level on each mass's vertical coordinate, with the
+// ground's compliance 1 / k_g and damping c_g, acting while the mass is below it or lambda > 0,
+// lambda kept >= 0 (it only pushes).
+// Carried to convergence, lambda_q = -h^2 (k C + c dC/dt) at the end of the step: the springs'
+// force at x_(n+1), v_(n+1), and the step is implicit Euler on the springs, with f_ext taken at
+// v_n (tests/core/xpbd_test.cpp). At a fixed number of sweeps it is not: the sweeps stop short of
+// the implicit solve by a factor that depends on h, k and the spring count, which is what the
+// substeps-against-sweeps comparison measures.
+struct Xpbd {
+  static constexpr MethodInfo info{.name = "xpbd", .order = 1, .family = Family::PositionBased,
+                                   .summary = "x~ = x + h v + h^2 M^-1 f_ext; sweeps of Gauss-Seidel over the springs as "
+                                              "constraints of compliance 1/k; v = (x - x_n) / h"};
+  static constexpr bool takes_settings = true;
+
+  template <MassSpring S> static StepStatus step(const S& s, State<S::dim>& y, double, double h, const MethodSettings& set) {
+    constexpr int d = coords_per_mass<S>();
+    decltype(auto) w = s.inverse_mass();  // per coordinate
+    const Temp<S::dim> start = y.x;
+    for (Eigen::Index a = 0; a < y.x.size(); ++a) y.x[a] += h * y.v[a] + h * h * w[a] * s.external(static_cast<int>(a), y.v[a]);
+    const int links = s.links(), masses = static_cast<int>(y.x.size()) / d;
+    ScratchVec lambda(links + (HasGround<S> ? masses : 0));
+    lambda.setZero();
+    for (int sweep = 0; sweep < set.sweeps; ++sweep) {
+      for (int q = 0; q < links; ++q) project<d>(s.link(q), y.x, start, w, h, lambda[q]);
+      if constexpr (HasGround<S>)
+        for (int i = 0; i < masses; ++i) project_ground(s.ground, d * i + d - 1, y.x, start, w, h, lambda[links + i]);
+    }
+    y.v = (y.x - start) / h;
+    return StepStatus::Ok;
+  }
+
+ private:
+  // One spring's correction (see above); a fixed end (-1) has no position to move.
+  template <int d, class X, class St, class W>
+  static void project(const Link& l, X& x, const St& start, const W& w, double h, double& lambda) {
+    const auto at = [](const auto& z, int i, int axis) { return i < 0 ? 0.0 : double(z[d * i + axis]); };
+    double g[2] = {1, 0}, c = 0, moved = 0;  // grad_i C (grad_j C = -grad_i C), C, grad C . (x - x_n)
+    for (int axis = 0; axis < d; ++axis) g[axis] = at(x, l.i, axis) - at(x, l.j, axis);
+    if constexpr (d == 1) {
+      c = g[0] - l.rest, g[0] = 1;
+    } else {
+      const double len = std::hypot(g[0], g[1]);
+      if (len == 0) return;  // coincident ends: no direction
+      c = len - l.rest, g[0] /= len, g[1] /= len;
+    }
+    const double wi = l.i < 0 ? 0.0 : double(w[d * l.i]), wj = l.j < 0 ? 0.0 : double(w[d * l.j]);
+    for (int axis = 0; axis < d; ++axis)
+      moved += g[axis] * ((at(x, l.i, axis) - at(start, l.i, axis)) - (at(x, l.j, axis) - at(start, l.j, axis)));
+    const double kh2 = l.k * h * h, ch = l.c * h;
+    const double dl = (-kh2 * c - lambda - ch * moved) / ((kh2 + ch) * (wi + wj) + 1);
+    lambda += dl;
+    for (int axis = 0; axis < d; ++axis) {
+      if (l.i >= 0) x[d * l.i + axis] += wi * g[axis] * dl;
+      if (l.j >= 0) x[d * l.j + axis] -= wj * g[axis] * dl;
+    }
+  }
+  template <class X, class St, class W>
+  static void project_ground(const Ground& ground, int a, X& x, const St& start, const W& w, double h, double& lambda) {
+    const double c = x[a] - Ground::level;
+    if (c >= 0 && lambda <= 0) return;
+    const double kh2 = ground.k * h * h, ch = ground.c * h;
+    const double dl = std::max((-kh2 * c - lambda - ch * (x[a] - start[a])) / ((kh2 + ch) * double(w[a]) + 1), -lambda);
+    lambda += dl;
+    x[a] += double(w[a]) * dl;
+  }
+};
+
+}  // namespace steplab

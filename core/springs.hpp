@@ -1,0 +1,82 @@
+// What a mass-spring scene offers the methods that work on its springs rather than on its force
+// (the position-based XPBD and PBD, Baraff and Witkin's large steps): its springs one by one, the
+// forces that are not springs, and its ground. The same physical model as the scene's force(),
+// written as parts; tests/core/springs_test.cpp holds the parts' sum to force() on every scene
+// that offers them.
+//
+// A spring q joins masses i and j (j or i = -1: a point fixed at the origin), with rest length L,
+// stiffness k and a dashpot c along itself. With p_i the position of mass i (p_-1 = 0), its
+// constraint C and the force on mass i (on j the opposite) are
+//   one coordinate a mass:   C = (p_i - p_j) - L,   grad_i C = 1,        the line spring, signed
+//   two coordinates a mass:  C = |p_i - p_j| - L,   grad_i C = n = (p_i - p_j) / |p_i - p_j|
+//   F_i = -(k C + c dC/dt) grad_i C,   dC/dt = grad_i C . (v_i - v_j)
+// (in one coordinate the signed form: the spring scene's -k (|y| - L) sign(y) is -k (-y - L) (-1)
+// below its anchor, where it hangs; the chain's springs have L = 0 in its displacements). A spring
+// with coincident ends in two coordinates has no direction: no force.
+//
+// The rest, per coordinate and affine in that coordinate's velocity: external(a, v_a) (gravity,
+// absolute damping); and a ground (core/scenes/ground.hpp) under the vertical coordinate of each
+// mass where the scene has one (`ground`).
+#pragma once
+
+#include <cmath>
+#include <concepts>
+
+#include "core/scene.hpp"
+#include "core/scenes/ground.hpp"
+
+namespace steplab {
+
+struct Link {
+  int i, j;     // the masses it joins; -1: a point fixed at the origin
+  double rest;  // L
+  double k;     // stiffness
+  double c;     // dashpot along the spring
+};
+
+// A scene of masses joined by springs: links() of them, link(q) for q = 0 .. links() - 1, and
+// external(a, v) the force on coordinate a that is neither a spring nor the ground.
+template <class S>
+concept MassSpring = Scene<S> && requires(const S& s, int q, double v) {
+  { s.links() } -> std::convertible_to<int>;
+  { s.link(q) } -> std::same_as<Link>;
+  { s.external(q, v) } -> std::convertible_to<double>;
+};
+
+// A mass-spring scene with a ground under its masses' vertical coordinates.
+template <class S>
+concept HasGround = MassSpring<S> && requires(const S& s) {
+  { s.ground } -> std::convertible_to<Ground>;
+};
+
+// The force of the parts above, into f (sized as x): what the scene's force() is, written from
+// its springs. For the tests, and the reference a method that works on the springs is held to.
+template <MassSpring S, class X, class V, class F> void force_from_links(const S& s, const X& x, const V& v, F& f) {
+  constexpr int d = coords_per_mass<S>();
+  const int masses = static_cast<int>(x.size()) / d;
+  for (int a = 0; a < static_cast<int>(x.size()); ++a) f[a] = s.external(a, v[a]);
+  if constexpr (HasGround<S>)
+    for (int i = 0; i < masses; ++i) f[d * i + d - 1] += s.ground.force(x[d * i + d - 1], v[d * i + d - 1]);
+  const auto at = [&](const auto& z, int i, int axis) { return i < 0 ? 0.0 : double(z[d * i + axis]); };
+  for (int q = 0; q < s.links(); ++q) {
+    const Link l = s.link(q);
+    double g[2] = {1, 0}, c = 0, w = 0;  // grad_i C, C, dC/dt
+    if constexpr (d == 1) {
+      c = (at(x, l.i, 0) - at(x, l.j, 0)) - l.rest;
+      w = at(v, l.i, 0) - at(v, l.j, 0);
+    } else {
+      const double dx = at(x, l.i, 0) - at(x, l.j, 0), dy = at(x, l.i, 1) - at(x, l.j, 1), len = std::hypot(dx, dy);
+      if (len == 0) continue;
+      g[0] = dx / len, g[1] = dy / len;
+      c = len - l.rest;
+      w = g[0] * (at(v, l.i, 0) - at(v, l.j, 0)) + g[1] * (at(v, l.i, 1) - at(v, l.j, 1));
+    }
+    const double t = -(l.k * c + l.c * w);
+    for (int axis = 0; axis < d; ++axis) {
+      if (l.i >= 0) f[d * l.i + axis] += t * g[axis];
+      if (l.j >= 0) f[d * l.j + axis] -= t * g[axis];
+    }
+  }
+}
+
+}  // namespace steplab
