@@ -33,8 +33,9 @@ void register_odeint_implicit_euler();
 // peers_bench.cpp: steplab's CVODE peer against plain C on the rope, and their ratios
 void register_peers();
 std::string peer_ratio_lines(const std::map<std::string, double>& ns);
-// rope_floor_bench.cpp: the hand-written vectorised loops on the rope, and steplab's ratios to them
-void register_rope_floor();
+// sized_bench.cpp: a step against the size of the rope and the soft body, the hand-written
+// vectorised loops on the rope, and steplab's ratios to them
+void register_sized();
 std::string rope_floor_lines(const std::map<std::string, double>& ns);
 // machine.cpp: what the times were measured on
 std::string cpu_model();
@@ -42,6 +43,19 @@ double load_average();
 std::string machine_line();
 // throughput_bench.cpp: registers the throughput rows; returns their trajectories and trajectory-steps per iteration
 std::pair<int, long long> register_throughput();
+
+// Steps of method m on scene s (with parameter values p), timed through the kernel table: the
+// kernel makes the scene and steps `runs` runs of `run` steps in place, each from the initial
+// state (a multistep method with a fresh memory, so at kRestart its start-up steps are 2 in
+// 10 000 at most); an iteration is one step.
+benchmark::internal::Benchmark* register_step(const std::string& name, std::size_t m, std::size_t s, std::vector<double> p, double dt,
+                                              int run, int runs) {
+  return benchmark::RegisterBenchmark(name.c_str(), [m, s, p = std::move(p), dt, run, runs](benchmark::State& st) {
+    const steplab::PairKernel& k = steplab::pair_kernel(m, s);
+    while (st.KeepRunningBatch(static_cast<benchmark::IterationCount>(run) * runs)) k.time_steps(p, dt, static_cast<long long>(run) * runs, run);
+    st.counters["steps_per_second"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
+  });
+}
 
 namespace {
 
@@ -51,19 +65,6 @@ constexpr double kDt = 0.001;
 constexpr int kRestart = 10'000;
 
 // ---------------- steplab ----------------
-
-// Steps of method m on scene s (with parameter values p), timed through the kernel table: the
-// kernel makes the scene and steps `runs` runs of `run` steps in place, each from the initial
-// state (a multistep method with a fresh memory, so at kRestart its start-up steps are 2 in
-// 10 000 at most); an iteration is one step.
-benchmark::internal::Benchmark* register_step(const std::string& name, std::size_t m, std::size_t s, std::vector<double> p,
-                                              double dt = kDt, int run = kRestart, int runs = 1) {
-  return benchmark::RegisterBenchmark(name.c_str(), [m, s, p = std::move(p), dt, run, runs](benchmark::State& st) {
-    const PairKernel& k = pair_kernel(m, s);
-    while (st.KeepRunningBatch(static_cast<benchmark::IterationCount>(run) * runs)) k.time_steps(p, dt, static_cast<long long>(run) * runs, run);
-    st.counters["steps_per_second"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
-  });
-}
 
 // The cost of detecting a blow-up: the same stepping loop with and without the check that run()
 // makes after every step (all_finite on x and v).
@@ -92,35 +93,12 @@ void register_steplab() {
   // the undamped spring: odeint's velocity_verlet and symplectic_euler take x'' = a(x) only
   const std::size_t spring = scene_index("spring");
   for (const char* m : {"velocity_verlet", "symplectic_euler"})
-    register_step(std::string("step/spring_undamped/") + m, *find_method(m), spring, {1.0, 5.0, 0.0, 5.0, 9.81});
+    register_step(std::string("step/spring_undamped/") + m, *find_method(m), spring, {1.0, 5.0, 0.0, 5.0, 9.81}, kDt, kRestart, 1);
   for (std::size_t s = 0; s < scene_count(); ++s)
     for (std::size_t m = 0; m < method_count(); ++m)
       if (applies(m, s))
-        register_step("step/" + std::string(scene_name(s)) + "/" + std::string(method_info(m).name), m, s, default_param_values(s));
-  // One step against the number of masses N, RK4 beside the implicit methods' sparse solves:
-  // the rope at dt = 0.2 / omega_max (omega_max ~ 2 sqrt(K/M) N), runs of 100 steps; the soft
-  // body (a 2-D grid, whose sparse factors fill in as the rope's do not) at dt 1e-4, every method
-  // stable, runs of 200 steps. Making the rope of 4096 masses (its modes and sine transform)
-  // costs about 0.7 ms, 200 steps of explicit Euler on it: the scene is made once every 100 runs
-  // of the explicit methods and every 10 of the implicit ones (each kept iteration matrix
-  // factorised once a scene, core/sparse.hpp), about 1 % of the time stepping either way.
-  const std::size_t rope = scene_index("rope"), soft = scene_index("softbody");
-  for (const char* name : {"explicit_euler", "rk4", "implicit_euler", "implicit_midpoint", "bdf2", "gauss_legendre4", "radau_iia5"})
-    for (int n : {64, 256, 1024, 4096, 16384}) {
-      std::vector<double> p = default_param_values(rope);
-      p[0] = n;
-      const std::size_t m = *find_method(name);
-      register_step("rope_size/" + std::string(name) + "/" + std::to_string(n), m, rope, p,
-                    0.2 / (2 * std::sqrt(p[2] / p[1]) * n), 100, method_info(m).implicit ? 10 : 100)
-          ->Unit(benchmark::kMicrosecond);
-    }
-  for (const char* name : {"rk4", "implicit_euler", "gauss_legendre4", "radau_iia5"})
-    for (int side : {8, 16, 32, 64}) {
-      std::vector<double> p = default_param_values(soft);
-      p[0] = side;
-      register_step("softbody_size/" + std::string(name) + "/" + std::to_string(side * side), *find_method(name), soft, p, 1e-4, 200, 10)
-          ->Unit(benchmark::kMicrosecond);
-    }
+        register_step("step/" + std::string(scene_name(s)) + "/" + std::string(method_info(m).name), m, s, default_param_values(s), kDt,
+                      kRestart, 1);
 }
 
 // ---------------- the default spring, written by hand ----------------
@@ -365,7 +343,7 @@ int main(int argc, char** argv) {
   argc = kept;
   register_steplab();
   register_hand_written();
-  register_rope_floor();
+  register_sized();
   register_odeint_all();
   throughput_work = register_throughput();
   register_peers();

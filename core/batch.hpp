@@ -234,7 +234,7 @@ template <class M, Packable S, class T> class BatchRunner {
     r.final.x.resize(D), r.final.v.resize(D);
     for (int j = 0; j < D; ++j) r.final.x[j] = y_.x[j][l], r.final.v[j] = y_.v[j][l];
     r.energy0 = e0_[l];
-    finish_run(r, HasExact<S> && spec.errors, lane(exact_.sums, l), lane(tally_, l), spec.energy_rate);
+    finish_run(r, HasExact<S> && spec.errors, lane(exact_.sums, l), lane(tally_, l), spec.energy_rate, r.steps);  // read every step
   }
 
   // Loads the next run of the batch into lane l (as a Run starts one), finishing at once a run of

@@ -261,14 +261,15 @@ template <class Stp, class Sc, int D, class T, class I, class After>
   return {live, failed, t};
 }
 
-// The run's summary once r.steps and r.energy0 are set: the errors, has_exact, the RMS error,
-// the energy ratios (NaN where E0 = 0: a ratio to nothing) and, if fitted, the growth rate.
+// The run's summary once r.steps and r.energy0 are set: the errors, has_exact, the RMS error over
+// the `reads` steps the errors were read at, the energy ratios (NaN where E0 = 0: a ratio to
+// nothing) and, if fitted, the growth rate.
 template <int D>
 void finish_run(RunResult<D>& r, bool has_exact, const ErrorSums<double>& e, const RunTally<double>& tally, bool energy_rate,
-                long long reads = -1) {
+                long long reads) {
   r.has_exact = has_exact;
   r.error_max = e.error_max, r.error_final = e.error_final, r.error_v_final = e.error_v_final;
-  r.error_reads = has_exact ? (reads < 0 ? r.steps : reads) : 0;
+  r.error_reads = has_exact ? reads : 0;
   if (r.error_reads > 0) r.error_rms = std::sqrt(e.err_sq_sum / static_cast<double>(r.error_reads));
   double ratio = tally.ratio, ratio_max = tally.ratio_max;
   if (r.energy0 == 0) ratio = ratio_max = std::numeric_limits<double>::quiet_NaN();
@@ -308,7 +309,7 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
     const Stepped<double> s = take_step(stepper_, scene_, y_, y_, i_, spec_.dt, true, tally_, e0_, e0_ != 0, true, spec_.energy_rate,
                                         [&](const State<D>& y, bool, double t, double e) __attribute__((always_inline)) {
                                           if constexpr (HasExactAlong<S>) {
-                                            if (spec_.errors && i_ % stride_ == 0) read_error(y, i_, t);
+                                            if (spec_.errors && i_ % stride_ == 0) errors_.add_positions(y.x, tracker_.at(t));
                                           } else if constexpr (HasExact<S>) {
                                             if (spec_.errors) errors_.add(y, tracker_.at(t), true);
                                           }
@@ -337,13 +338,16 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
     r_.steps = i_ - 1;
     r_.t_final = r_.steps * spec_.dt;
     r_.final = y_;
+    // Read at the multiples of the stride up to the last step, and at the last if it is not one.
+    long long reads = r_.steps;
     if constexpr (HasExactAlong<S>) {
+      reads = r_.steps / stride_ + (r_.steps % stride_ != 0);
       if (spec_.errors && r_.steps > 0) {
-        if (last_read_ != r_.steps) tracker_.jump(), read_error(y_, r_.steps, r_.t_final);
+        if (r_.steps % stride_ != 0) tracker_.jump(), errors_.add_positions(y_.x, tracker_.at(r_.t_final));
         errors_.error_v_final = (y_.v - tracker_.velocities()).norm();
       }
     }
-    finish_run(r_, HasExact<S> && spec_.errors, errors_, tally_, spec_.energy_rate, HasExactAlong<S> ? reads_ : -1);
+    finish_run(r_, HasExact<S> && spec_.errors, errors_, tally_, spec_.energy_rate, reads);
     // The last finite state is always kept, also when the run ended early.
     if (plan_.size() > 0 && (r_.samples.empty() || r_.samples.back().t != r_.t_final))
       r_.samples.push_back({r_.t_final, y_.x, y_.v, scene_.energy(y_.x, y_.v)});
@@ -356,11 +360,6 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
     else return 0;
   }
   static long long stride_of(const RunSpec& spec) { return HasExactAlong<S> ? std::max(1LL, spec.error_stride) : 1; }
-  // The position error at step i (time t) against the tracker's exact positions there.
-  void read_error(const State<D>& y, long long i, double t) {
-    errors_.add_positions(y.x, tracker_.at(t));
-    last_read_ = i, ++reads_;
-  }
   void keep(long long i, double t, const State<D>& s, double e) {
     if (i == next_sample_ && sample_k_ < plan_.size()) {
       r_.samples.push_back({t, s.x, s.v, e});
@@ -378,8 +377,7 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
   RunTally<double> tally_;
   ErrorSums<double> errors_;
   long long i_ = 1, next_sample_ = 0, sample_k_ = 0;  // i_: the next step, 1-based
-  const long long stride_ = stride_of(spec_);
-  long long last_read_ = 0, reads_ = 0;  // the step the error was last read at; how many reads
+  const long long stride_ = stride_of(spec_);  // the steps between the error's reads (HasExactAlong)
   [[no_unique_address]] decltype(make_tracker(std::declval<const S&>(), RunSpec{})) tracker_;
   [[no_unique_address]] Stepper<M, S> stepper_;  // a multistep method's memory; nothing for a one-step method
 };

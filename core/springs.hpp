@@ -49,6 +49,36 @@ concept HasGround = MassSpring<S> && requires(const S& s) {
   { s.ground } -> std::convertible_to<Ground>;
 };
 
+// A spring's geometry at positions x, shared by whatever works on the springs: C and grad_i C
+// (grad_j C = -grad_i C), as above, with d coordinates a mass.
+struct LinkAt {
+  double c = 0;             // C
+  double g[2] = {1, 0};     // grad_i C
+  bool has_direction = true;  // false: two coordinates and coincident ends (no force)
+};
+// z at coordinate `axis` of mass i, for a vector z of the state's layout; 0 at a fixed point.
+template <int d, class Z> double at_end(const Z& z, int i, int axis) { return i < 0 ? 0.0 : double(z[d * i + axis]); }
+template <int d, class X> LinkAt link_at(const Link& l, const X& x) {
+  LinkAt out;
+  if constexpr (d == 1) {
+    out.c = (at_end<d>(x, l.i, 0) - at_end<d>(x, l.j, 0)) - l.rest;
+  } else {
+    const double dx = at_end<d>(x, l.i, 0) - at_end<d>(x, l.j, 0), dy = at_end<d>(x, l.i, 1) - at_end<d>(x, l.j, 1);
+    const double len = std::hypot(dx, dy);
+    if (len == 0) return {0, {0, 0}, false};
+    out.c = len - l.rest, out.g[0] = dx / len, out.g[1] = dy / len;
+  }
+  return out;
+}
+// grad C . ((z_i - z0_i) - (z_j - z0_j)): with z = v, z0 = 0, dC/dt; with z = x, z0 = x_n, how far
+// the step has moved C's ends along grad C.
+template <int d, class Z, class Z0> double along(const Link& l, const LinkAt& at, const Z& z, const Z0& z0) {
+  double sum = 0;
+  for (int axis = 0; axis < d; ++axis)
+    sum += at.g[axis] * ((at_end<d>(z, l.i, axis) - at_end<d>(z0, l.i, axis)) - (at_end<d>(z, l.j, axis) - at_end<d>(z0, l.j, axis)));
+  return sum;
+}
+
 // The force of the parts above, into f (sized as x): what the scene's force() is, written from
 // its springs. For the tests, and the reference a method that works on the springs is held to.
 template <MassSpring S, class X, class V, class F> void force_from_links(const S& s, const X& x, const V& v, F& f) {
@@ -57,24 +87,15 @@ template <MassSpring S, class X, class V, class F> void force_from_links(const S
   for (int a = 0; a < static_cast<int>(x.size()); ++a) f[a] = s.external(a, v[a]);
   if constexpr (HasGround<S>)
     for (int i = 0; i < masses; ++i) f[d * i + d - 1] += s.ground.force(x[d * i + d - 1], v[d * i + d - 1]);
-  const auto at = [&](const auto& z, int i, int axis) { return i < 0 ? 0.0 : double(z[d * i + axis]); };
+  const auto zero = V::Zero(v.size());
   for (int q = 0; q < s.links(); ++q) {
     const Link l = s.link(q);
-    double g[2] = {1, 0}, c = 0, w = 0;  // grad_i C, C, dC/dt
-    if constexpr (d == 1) {
-      c = (at(x, l.i, 0) - at(x, l.j, 0)) - l.rest;
-      w = at(v, l.i, 0) - at(v, l.j, 0);
-    } else {
-      const double dx = at(x, l.i, 0) - at(x, l.j, 0), dy = at(x, l.i, 1) - at(x, l.j, 1), len = std::hypot(dx, dy);
-      if (len == 0) continue;
-      g[0] = dx / len, g[1] = dy / len;
-      c = len - l.rest;
-      w = g[0] * (at(v, l.i, 0) - at(v, l.j, 0)) + g[1] * (at(v, l.i, 1) - at(v, l.j, 1));
-    }
-    const double t = -(l.k * c + l.c * w);
+    const LinkAt at = link_at<d>(l, x);
+    if (!at.has_direction) continue;
+    const double t = -(l.k * at.c + l.c * along<d>(l, at, v, zero));
     for (int axis = 0; axis < d; ++axis) {
-      if (l.i >= 0) f[d * l.i + axis] += t * g[axis];
-      if (l.j >= 0) f[d * l.j + axis] -= t * g[axis];
+      if (l.i >= 0) f[d * l.i + axis] += t * at.g[axis];
+      if (l.j >= 0) f[d * l.j + axis] -= t * at.g[axis];
     }
   }
 }

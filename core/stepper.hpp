@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <type_traits>
 #include <utility>
 
 #include "core/method.hpp"
@@ -76,13 +77,20 @@ template <> struct RunWorkspace<Eigen::Dynamic> {
 // step is written over the scalar: core/batch.hpp's PackedStep asks).
 // forget(): back to a run's start (a multistep method's memory emptied) on the same scene and
 // step, the workspace kept (what holds for the scene and step still holds).
+// A method with settings (TakesSettings, core/method.hpp) has the run's here, set by the run loop
+// from its RunSpec (core/simulate.hpp), the defaults elsewhere; any other method nothing.
+struct NoSettings {};
+template <class M> using SettingsOf = std::conditional_t<TakesSettings<M>, MethodSettings, NoSettings>;
+
 template <class M, class S, class T = double> struct Stepper {
+  [[no_unique_address]] SettingsOf<M> settings{};
   [[no_unique_address]] RunWorkspace<S::dim> work;
   auto step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h)
-    requires requires { M::step(s, y, t, h); }
+    requires requires { M::step(s, y, t, h); } || requires { M::step(s, y, t, h, settings); }
   {
     [[maybe_unused]] const auto in_use = work.use();
-    return M::step(s, y, t, h);
+    if constexpr (TakesSettings<M>) return M::step(s, y, t, h, settings);
+    else return M::step(s, y, t, h);
   }
   void forget() {}
 };
@@ -100,20 +108,6 @@ template <Multistep M, class S, class T> struct Stepper<M, S, T> {
     if constexpr (S::dim == Eigen::Dynamic) memory.count = 0;  // its vectors kept: a restart allocates nothing
     else memory = {};
   }
-};
-
-// A method with settings (TakesSettings, core/method.hpp): the run's, set by the run loop from
-// its RunSpec (core/simulate.hpp); the defaults elsewhere.
-template <TakesSettings M, class S, class T> struct Stepper<M, S, T> {
-  MethodSettings settings{};
-  [[no_unique_address]] RunWorkspace<S::dim> work;
-  auto step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h)
-    requires requires { M::step(s, y, t, h, settings); }
-  {
-    [[maybe_unused]] const auto in_use = work.use();
-    return M::step(s, y, t, h, settings);
-  }
-  void forget() {}
 };
 
 // The derivative of the first-order system at time t, f(t, y) = (v, a(t, x, v)), stored as a State.

@@ -51,36 +51,30 @@ struct Xpbd {
   }
 
  private:
+  // dlambda of a constraint of stiffness k and damping c at C, having moved `moved` along grad C
+  // this step, with grad C M^-1 grad C^T = `inverse_mass` (the formula above, times k h^2).
+  static double correction(double k, double c, double h, double constraint, double lambda, double moved, double inverse_mass) {
+    const double kh2 = k * h * h, ch = c * h;
+    return (-kh2 * constraint - lambda - ch * moved) / ((kh2 + ch) * inverse_mass + 1);
+  }
   // One spring's correction (see above); a fixed end (-1) has no position to move.
   template <int d, class X, class St, class W>
   static void project(const Link& l, X& x, const St& start, const W& w, double h, double& lambda) {
-    const auto at = [](const auto& z, int i, int axis) { return i < 0 ? 0.0 : double(z[d * i + axis]); };
-    double g[2] = {1, 0}, c = 0, moved = 0;  // grad_i C (grad_j C = -grad_i C), C, grad C . (x - x_n)
-    for (int axis = 0; axis < d; ++axis) g[axis] = at(x, l.i, axis) - at(x, l.j, axis);
-    if constexpr (d == 1) {
-      c = g[0] - l.rest, g[0] = 1;
-    } else {
-      const double len = std::hypot(g[0], g[1]);
-      if (len == 0) return;  // coincident ends: no direction
-      c = len - l.rest, g[0] /= len, g[1] /= len;
-    }
-    const double wi = l.i < 0 ? 0.0 : double(w[d * l.i]), wj = l.j < 0 ? 0.0 : double(w[d * l.j]);
-    for (int axis = 0; axis < d; ++axis)
-      moved += g[axis] * ((at(x, l.i, axis) - at(start, l.i, axis)) - (at(x, l.j, axis) - at(start, l.j, axis)));
-    const double kh2 = l.k * h * h, ch = l.c * h;
-    const double dl = (-kh2 * c - lambda - ch * moved) / ((kh2 + ch) * (wi + wj) + 1);
+    const LinkAt at = link_at<d>(l, x);
+    if (!at.has_direction) return;
+    const double wi = at_end<d>(w, l.i, 0), wj = at_end<d>(w, l.j, 0);
+    const double dl = correction(l.k, l.c, h, at.c, lambda, along<d>(l, at, x, start), wi + wj);
     lambda += dl;
     for (int axis = 0; axis < d; ++axis) {
-      if (l.i >= 0) x[d * l.i + axis] += wi * g[axis] * dl;
-      if (l.j >= 0) x[d * l.j + axis] -= wj * g[axis] * dl;
+      if (l.i >= 0) x[d * l.i + axis] += wi * at.g[axis] * dl;
+      if (l.j >= 0) x[d * l.j + axis] -= wj * at.g[axis] * dl;
     }
   }
   template <class X, class St, class W>
   static void project_ground(const Ground& ground, int a, X& x, const St& start, const W& w, double h, double& lambda) {
     const double c = x[a] - Ground::level;
     if (c >= 0 && lambda <= 0) return;
-    const double kh2 = ground.k * h * h, ch = ground.c * h;
-    const double dl = std::max((-kh2 * c - lambda - ch * (x[a] - start[a])) / ((kh2 + ch) * double(w[a]) + 1), -lambda);
+    const double dl = std::max(correction(ground.k, ground.c, h, c, lambda, x[a] - start[a], double(w[a])), -lambda);  // lambda >= 0
     lambda += dl;
     x[a] += double(w[a]) * dl;
   }

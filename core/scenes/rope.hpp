@@ -51,6 +51,9 @@ class SineTransform {
   void analysis(Eigen::Ref<const Eigen::VectorXd> u, Eigen::Ref<Eigen::VectorXd> q) const;
 
  private:
+  // z_0 = 0, z_k = fill(k) for k = 1 .. N, the rest zero, through the real FFT of length M;
+  // read(k, Im X_k) for k = 1 .. N. Its arrays borrowed from the scratch pool.
+  template <class Fill, class Read> void odd_fft(Fill fill, Read read) const;
   int n_;
   void* plan_;
 };
@@ -192,9 +195,9 @@ struct Rope {
   //   (q_j, p_j) <- (a_j q_j + b_j p_j,  c_j q_j + d_j p_j),
   // whose columns are the oscillator's motion over h from (1, 0) and from (0, 1)
   // (damped_oscillation): O(N) a step, where the closed form costs an exp, a sin and a cos a
-  // mode. Every kResync steps the closed form again, so that the recurrence's round-off
+  // mode. Every kResync reads the closed form again, so that the recurrence's round-off
   // accumulates over kResync steps at most (a few ulps of |q| each). The positions eq + S q by one
-  // sine transform a step; the velocities S p only when asked (a run's end).
+  // sine transform a read; the velocities S p only when asked (a run's end).
   class ExactAlong {
    public:
     static constexpr int kResync = 256;
@@ -244,10 +247,14 @@ struct Rope {
       q[j - 1] = u, p[j - 1] = du;
     }
   }
+  // The positions of modal coordinates q, x = eq + S q, into x (sized).
+  void positions(Eigen::Ref<const Eigen::VectorXd> q, Eigen::Ref<Eigen::VectorXd> x) const {
+    sine->synthesis(q, x);
+    x += eq;
+  }
   // The state of modal coordinates (q, p): x = eq + S q, v = S p, into y (sized).
   void synthesise(Eigen::Ref<const Eigen::VectorXd> q, Eigen::Ref<const Eigen::VectorXd> p, State<Eigen::Dynamic>& y) const {
-    sine->synthesis(q, y.x);
-    y.x += eq;
+    positions(q, y.x);
     sine->synthesis(p, y.v);
   }
 };
@@ -278,8 +285,7 @@ inline const Eigen::VectorXd& Rope::ExactAlong::at(double t) {
     q_ = r_->q0, p_.setZero();
     r_->move_modes(q_, p_, t);
   }
-  r_->sine->synthesis(q_, x_);
-  x_ += r_->eq;
+  r_->positions(q_, x_);
   return x_;
 }
 
@@ -322,14 +328,19 @@ Eigen::VectorXd SineTransform::synthesis(const Eigen::VectorXd& q) const {
   return u;
 }
 
-void SineTransform::synthesis(Eigen::Ref<const Eigen::VectorXd> q, Eigen::Ref<Eigen::VectorXd> u) const {
+template <class Fill, class Read> void SineTransform::odd_fft(Fill fill, Read read) const {
   const int n = n_;
   ScratchVec z(2 * n + 1), x(2 * (n + 1));
   z[0] = 0;
-  for (int p = 1; p <= n; ++p) z[p] = q[n - p];
+  for (int k = 1; k <= n; ++k) z[k] = fill(k);
   z.tail(n).setZero();
   fftw_execute_dft_r2c(static_cast<fftw_plan>(plan_), z.data(), reinterpret_cast<fftw_complex*>(x.data()));
-  for (int k = 1; k <= n; ++k) u[k - 1] = (k % 2 == 0 ? 1.0 : -1.0) * x[2 * k + 1];
+  for (int k = 1; k <= n; ++k) read(k, x[2 * k + 1]);
+}
+
+void SineTransform::synthesis(Eigen::Ref<const Eigen::VectorXd> q, Eigen::Ref<Eigen::VectorXd> u) const {
+  odd_fft([&](int p) { return q[n_ - p]; },                                        // z_p = q_(N+1-p)
+          [&](int k, double im) { u[k - 1] = (k % 2 == 0 ? 1.0 : -1.0) * im; });  // u_k = (-1)^k Im X_k
 }
 
 Eigen::VectorXd SineTransform::analysis(const Eigen::VectorXd& u) const {
@@ -339,14 +350,9 @@ Eigen::VectorXd SineTransform::analysis(const Eigen::VectorXd& u) const {
 }
 
 void SineTransform::analysis(Eigen::Ref<const Eigen::VectorXd> u, Eigen::Ref<Eigen::VectorXd> q) const {
-  const int n = n_;
-  ScratchVec z(2 * n + 1), x(2 * (n + 1));
-  z[0] = 0;
-  for (int k = 1; k <= n; ++k) z[k] = (k % 2 == 1 ? 1.0 : -1.0) * u[k - 1];
-  z.tail(n).setZero();
-  fftw_execute_dft_r2c(static_cast<fftw_plan>(plan_), z.data(), reinterpret_cast<fftw_complex*>(x.data()));
-  const double scale = -4.0 / (2 * n + 1);
-  for (int j = 1; j <= n; ++j) q[j - 1] = scale * x[2 * (n + 1 - j) + 1];
+  const double scale = -4.0 / (2 * n_ + 1);
+  odd_fft([&](int k) { return (k % 2 == 1 ? 1.0 : -1.0) * u[k - 1]; },  // z_k = (-1)^(k+1) u_k
+          [&](int k, double im) { q[n_ - k] = scale * im; });          // q_(N+1-k) = -(4/M) Im X_k
 }
 
 }  // namespace steplab

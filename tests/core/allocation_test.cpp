@@ -97,27 +97,37 @@ TEST(Allocation, NoneInAnyStepOfAnyMethodOnAnyScene) {
 // write their forces and Jacobians into them, the rope's exact motion is stepped mode by mode in
 // vectors made once. Every method, plain and counted, on ropes and soft bodies of 64 and 4096
 // masses: operator new and malloc both counted (each once: operator new above takes the real malloc).
-long allocations_per_sized_run(std::size_t m, std::size_t s, double size, double dt, long long steps, bool counted) {
-  RunSpec spec;
-  spec.dt = dt;
-  spec.steps = steps;
-  std::vector<double> p = default_param_values(s);
-  p[0] = size;
-  Counts counts;
+
+// The allocations a run of `steps` steps makes, run(steps).
+long allocations_of(const std::function<void(long long)>& run, long long steps) {
   const long before = g_allocations.load() + g_mallocs.load();
-  const AnyResult r = counted ? pair_kernel(m, s).run_counted(p, spec, counts) : pair_kernel(m, s).run(p, spec);
-  EXPECT_EQ(r.steps, steps);
+  run(steps);
   return g_allocations.load() + g_mallocs.load() - before;
 }
 
 // The allocations of `steps` more steps: a run of 2 x steps less a run of `steps` (what a run
 // makes once, its workspace among it, cancels), each after a short run of the same size (what is
 // made once per size and process, as the rope's FFTW plans, is made by then).
+long allocations_of_steps(const std::function<void(long long)>& run, long long steps) {
+  allocations_of(run, 10);
+  const long longer = allocations_of(run, 2 * steps);
+  allocations_of(run, 10);
+  return longer - allocations_of(run, steps);
+}
+
+// Method m on scene s of the given size through the kernel table, plain or counted.
 long allocations_of_steps(std::size_t m, std::size_t s, double size, double dt, long long steps, bool counted) {
-  allocations_per_sized_run(m, s, size, dt, 10, counted);
-  const long longer = allocations_per_sized_run(m, s, size, dt, 2 * steps, counted);
-  allocations_per_sized_run(m, s, size, dt, 10, counted);
-  return longer - allocations_per_sized_run(m, s, size, dt, steps, counted);
+  std::vector<double> p = default_param_values(s);
+  p[0] = size;
+  return allocations_of_steps(
+      [&](long long n) {
+        RunSpec spec;
+        spec.dt = dt, spec.steps = n;
+        Counts counts;
+        const AnyResult r = counted ? pair_kernel(m, s).run_counted(p, spec, counts) : pair_kernel(m, s).run(p, spec);
+        EXPECT_EQ(r.steps, n);
+      },
+      steps);
 }
 
 void expect_none_in_steps(const char* scene, std::array<double, 2> sizes, const std::function<double(double)>& dt) {
@@ -144,27 +154,25 @@ TEST(Allocation, NoneInAStepOnTheSoftBody) {
 }
 
 // XPBD (core/methods/xpbd.hpp; not in the kernel table yet), 3 sweeps a step, by simulate.
-template <class S> long xpbd_allocations(const S& scene, double dt, long long steps) {
-  RunSpec spec;
-  spec.dt = dt, spec.steps = steps, spec.settings.sweeps = 3;
-  const long before = g_allocations.load() + g_mallocs.load();
-  simulate<Xpbd>(scene, spec);
-  return g_allocations.load() + g_mallocs.load() - before;
+template <class S> long xpbd_allocations_of_steps(const S& scene, double dt) {
+  return allocations_of_steps(
+      [&](long long n) {
+        RunSpec spec;
+        spec.dt = dt, spec.steps = n, spec.settings.sweeps = 3;
+        simulate<Xpbd>(scene, spec);
+      },
+      20);
 }
 TEST(Allocation, NoneInAnXpbdStep) {
   for (const double size : {64.0, 4096.0}) {
     std::vector<double> p = default_param_values<Rope>();
     p[0] = size;
-    const Rope rope(p);
-    xpbd_allocations(rope, 0.04 / size, 10);
-    EXPECT_EQ(xpbd_allocations(rope, 0.04 / size, 40) - xpbd_allocations(rope, 0.04 / size, 20), 0) << "rope " << size;
+    EXPECT_EQ(xpbd_allocations_of_steps(Rope(p), 0.04 / size), 0) << "rope " << size;
   }
   for (const double side : {8.0, 64.0}) {
     std::vector<double> p = default_param_values<SoftBody>();
     p[0] = side;
-    const SoftBody soft(p);
-    xpbd_allocations(soft, 1e-4, 10);
-    EXPECT_EQ(xpbd_allocations(soft, 1e-4, 40) - xpbd_allocations(soft, 1e-4, 20), 0) << "soft body " << side;
+    EXPECT_EQ(xpbd_allocations_of_steps(SoftBody(p), 1e-4), 0) << "soft body " << side;
   }
 }
 

@@ -1,7 +1,8 @@
-// The floor under a step on the rope of N masses: RK4 and explicit Euler written by hand over
-// plain arrays, the force with the spring tensions computed first (core/scenes/rope.hpp), so that
-// every loop vectorises: hand/rope_size/<method>/<N>, beside steplab's rope_size/<method>/<N>
-// (steps_bench.cpp), at the same step, in runs of the same length from the same start.
+// A step against the size of the scene: steplab's on the rope of N masses (rope_size/<method>/<N>)
+// and the soft body of n x n (softbody_size/<method>/<n^2>), through the kernel table; and the
+// floor under the rope's: RK4 and explicit Euler written by hand over plain arrays, the force with
+// the spring tensions computed first (core/scenes/rope.hpp), so that every loop vectorises
+// (hand/rope_size/<method>/<N>), at the same step, in runs of the same length from the same start.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -9,6 +10,8 @@
 #include <map>
 #include <string>
 #include <vector>
+
+#include "analysis/kernel/kernel.hpp"
 
 namespace {
 
@@ -61,8 +64,37 @@ constexpr int kSizes[] = {1024, 4096, 16384};
 
 }  // namespace
 
-// At dt = 0.2 / omega_max (omega_max ~ 2 sqrt(K/M) N) and runs of 100 steps, as steps_bench.cpp.
-void register_rope_floor() {
+// steps_bench.cpp: `runs` runs of `run` steps of method m on scene s through the kernel table.
+benchmark::internal::Benchmark* register_step(const std::string& name, std::size_t m, std::size_t s, std::vector<double> p, double dt,
+                                              int run, int runs);
+
+void register_sized() {
+  using namespace steplab;
+  // One step against the number of masses N, RK4 beside the implicit methods' sparse solves:
+  // the rope at dt = 0.2 / omega_max (omega_max ~ 2 sqrt(K/M) N), runs of 100 steps; the soft
+  // body (a 2-D grid, whose sparse factors fill in as the rope's do not) at dt 1e-4, every method
+  // stable, runs of 200 steps. Making the rope of 4096 masses (its modes and sine transform)
+  // costs about 0.7 ms, 200 steps of explicit Euler on it: the scene is made once every 100 runs
+  // of the explicit methods and every 10 of the implicit ones (each kept iteration matrix
+  // factorised once a scene, core/sparse.hpp), about 1 % of the time stepping either way.
+  const std::size_t rope = scene_index("rope"), soft = scene_index("softbody");
+  for (const char* name : {"explicit_euler", "rk4", "implicit_euler", "implicit_midpoint", "bdf2", "gauss_legendre4", "radau_iia5"})
+    for (int n : {64, 256, 1024, 4096, 16384}) {
+      std::vector<double> p = default_param_values(rope);
+      p[0] = n;
+      const std::size_t m = *find_method(name);
+      register_step("rope_size/" + std::string(name) + "/" + std::to_string(n), m, rope, p,
+                    0.2 / (2 * std::sqrt(p[2] / p[1]) * n), 100, method_info(m).implicit ? 10 : 100)
+          ->Unit(benchmark::kMicrosecond);
+    }
+  for (const char* name : {"rk4", "implicit_euler", "gauss_legendre4", "radau_iia5"})
+    for (int side : {8, 16, 32, 64}) {
+      std::vector<double> p = default_param_values(soft);
+      p[0] = side;
+      register_step("softbody_size/" + std::string(name) + "/" + std::to_string(side * side), *find_method(name), soft, p, 1e-4, 200, 10)
+          ->Unit(benchmark::kMicrosecond);
+    }
+  // The hand-written floor, at the rope's step, in runs of 100 steps.
   for (const int n : kSizes)
     for (const bool rk4 : {true, false}) {
       const std::string name = std::string("hand/rope_size/") + (rk4 ? "rk4/" : "explicit_euler/") + std::to_string(n);
