@@ -87,7 +87,18 @@ void register_sized() {
                     0.2 / (2 * std::sqrt(p[2] / p[1]) * n), 100, method_info(m).implicit ? 10 : 100)
           ->Unit(benchmark::kMicrosecond);
     }
-  for (const char* name : {"rk4", "implicit_euler", "gauss_legendre4", "radau_iia5"})
+  // XPBD's step of one sweep (a projection per spring) beside symplectic Euler's (a force
+  // evaluation) on the rope of 1024 masses, at the same step.
+  for (const char* name : {"symplectic_euler", "xpbd"}) {
+    std::vector<double> p = default_param_values(rope);
+    p[0] = 1024;
+    register_step("rope_size/" + std::string(name) + "/1024", *find_method(name), rope, p, 0.2 / (2 * std::sqrt(p[2] / p[1]) * 1024),
+                  100, 100)
+        ->Unit(benchmark::kMicrosecond);
+  }
+  // Baraff-Witkin's matrix-free CG (at most 100 iterations to 1e-8) beside the sparse LU of the
+  // implicit methods, against the soft body's size.
+  for (const char* name : {"rk4", "implicit_euler", "gauss_legendre4", "radau_iia5", "baraff_witkin"})
     for (int side : {8, 16, 32, 64}) {
       std::vector<double> p = default_param_values(soft);
       p[0] = side;

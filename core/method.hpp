@@ -58,15 +58,21 @@ struct MethodInfo {
   bool implicit = false;      // solves a nonlinear system each step
   bool a_stable = false;      // stable for every h lambda with Re <= 0: every step on a damped spring
   bool exact_flow = false;    // the analytic solution: needs a scene with an exact flow
+  bool on_springs = false;    // works on the scene's springs (core/springs.hpp): needs a mass-spring scene
+  bool converges = true;      // to the scene's motion as h -> 0 (PBD does not: its stiffness is set per step)
   std::string_view summary;   // its update in one line (y = (x, v), f = (v, a)), for the report's appendix
   Family first_of = Family::None;  // a second family whose first member the method is (explicit Euler: AB1)
 };
 
 // What a run may set of a method that has settings (`static constexpr bool takes_settings`, its
 // step then step(s, y, t, h, settings)): the Gauss-Seidel sweeps a step of a position-based
-// method (core/methods/xpbd.hpp).
+// method (core/methods/xpbd.hpp, pbd.hpp), the conjugate-gradient iterations of Baraff and
+// Witkin's step (core/methods/baraff_witkin.hpp): at most cg_iterations, stopping once the
+// residual is below cg_tolerance times the right-hand side.
 struct MethodSettings {
   int sweeps = 1;
+  int cg_iterations = 100;
+  double cg_tolerance = 1e-8;
 };
 template <class M> concept TakesSettings = requires { M::takes_settings; };
 

@@ -12,5 +12,6 @@ set(STEPLAB_METHODS
     rk3 yoshida4 gauss_legendre4                                      # families: one-step
     adams_bashforth2 adams_bashforth3 bdf2 bdf3                       # families: multistep
     radau_iia5                                                        # stiff systems
+    xpbd pbd baraff_witkin                                            # the course's next: on springs
     analytic)
 set(STEPLAB_SCENES cannonball spring falling bounce chain rope softbody target)

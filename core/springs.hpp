@@ -21,8 +21,10 @@
 
 #include <cmath>
 #include <concepts>
+#include <stdexcept>
 
 #include "core/scene.hpp"
+#include "core/scratch.hpp"
 #include "core/scenes/ground.hpp"
 
 namespace steplab {
@@ -70,6 +72,28 @@ template <int d, class X> LinkAt link_at(const Link& l, const X& x) {
   }
   return out;
 }
+// `per` numbers for each spring (or mass) that a step keeps: on the stack for a fixed-size scene of
+// D coordinates, which has at most D springs and D masses (only the first n are used), from the
+// run's scratch pool (core/scratch.hpp) otherwise. Either way a step allocates nothing.
+template <int D, int per> struct SpringNumbers {
+  using type = Eigen::Matrix<double, per * D, 1>;
+};
+template <int per> struct SpringNumbers<Eigen::Dynamic, per> {
+  using type = ScratchVec;
+};
+template <int D, int per> typename SpringNumbers<D, per>::type spring_numbers(Eigen::Index n) {
+  if constexpr (D == Eigen::Dynamic) {
+    return ScratchVec(n);
+  } else {
+    if (n > per * D) throw std::logic_error("spring_numbers: a fixed-size scene with more springs than coordinates");
+    return SpringNumbers<D, per>::type::Zero();
+  }
+}
+
+// A vector of zeros of any length, for `along` below (z0 = 0: dC/dt).
+struct Zeros {
+  double operator[](Eigen::Index) const { return 0.0; }
+};
 // grad C . ((z_i - z0_i) - (z_j - z0_j)): with z = v, z0 = 0, dC/dt; with z = x, z0 = x_n, how far
 // the step has moved C's ends along grad C.
 template <int d, class Z, class Z0> double along(const Link& l, const LinkAt& at, const Z& z, const Z0& z0) {
@@ -87,7 +111,7 @@ template <MassSpring S, class X, class V, class F> void force_from_links(const S
   for (int a = 0; a < static_cast<int>(x.size()); ++a) f[a] = s.external(a, v[a]);
   if constexpr (HasGround<S>)
     for (int i = 0; i < masses; ++i) f[d * i + d - 1] += s.ground.force(x[d * i + d - 1], v[d * i + d - 1]);
-  const auto zero = V::Zero(v.size());
+  const Zeros zero;
   for (int q = 0; q < s.links(); ++q) {
     const Link l = s.link(q);
     const LinkAt at = link_at<d>(l, x);

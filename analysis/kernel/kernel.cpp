@@ -26,6 +26,12 @@ std::string why_not(std::size_t m, std::size_t s) {
   if (applies(m, s)) return {};
   const SceneKernel& scene = scene_kernel(s);
   if (method_info(m).exact_flow) return "needs a scene with an exact solution; " + std::string(scene.name) + " has none";
+  if (method_info(m).on_springs) {
+    std::string with;
+    for (std::size_t i = 0; i < scene_count(); ++i)
+      if (applies(m, i)) with += (with.empty() ? "" : ", ") + std::string(scene_name(i));
+    return "works on a scene's springs (core/springs.hpp); " + std::string(scene.name) + " is not made of springs; accepted: " + with;
+  }
   return std::string(method_info(m).implicit ? "is implicit" : "solves an implicit stage (its damped kick)") +
          " and needs the scene's Jacobians dF/dx and dF/dv; " + std::string(scene.name) +
          " declares no jacobians(x, v) (core/scene.hpp), so the explicit methods run on it";

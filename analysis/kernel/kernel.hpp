@@ -120,6 +120,14 @@ struct MadeSceneCode {
 };
 
 // One scene, whatever the method.
+// A mass-spring scene's springs at given states (core/springs.hpp): how many, and at each state
+// the largest relative elongation C / L of a spring with a rest length (0 when none is stretched)
+// and the scene's energy. For the frame-budget study (analysis/studies/frames.hpp).
+struct SpringMeasures {
+  int springs = 0;
+  std::vector<double> stretch, energy;
+};
+
 struct SceneKernel {
   std::string_view name;
   std::string_view title;  // the scene in a few words, for a table's heading (its name if it gives none)
@@ -152,6 +160,7 @@ struct SceneKernel {
   AnyAdaptiveResult (*dopri5)(Params, const AdaptiveSpec&);
   // dopri5's run repeated and timed, the scene made once (PairKernel::timings).
   std::vector<double> (*dopri5_timings)(Params, const AdaptiveSpec&, std::size_t repeats, double seconds);
+  SpringMeasures (*spring_measures)(Params, std::span<const AnyState>) = nullptr;  // mass-spring scenes only
 };
 
 struct KernelTable {
@@ -185,6 +194,17 @@ std::vector<AnyResult> run_all(const PairKernel& k, std::span<const BatchRun> ru
 const PairKernel& pair_kernel(std::size_t m, std::size_t s);
 bool applies(std::size_t m, std::size_t s);
 std::string why_not(std::size_t m, std::size_t s);
+
+// The methods a study of the ODE takes when none are named: every numerical one but those on
+// springs (XPBD, PBD, Baraff-Witkin), which the frame-budget study measures (study frames) and
+// the others take by name.
+inline bool in_ode_studies(std::size_t m) { return !method_info(m).exact_flow && !method_info(m).on_springs; }
+inline std::vector<std::size_t> ode_methods() {
+  std::vector<std::size_t> out;
+  for (std::size_t m = 0; m < method_count(); ++m)
+    if (in_ode_studies(m)) out.push_back(m);
+  return out;
+}
 
 // Index of a method by its name or an old alias; of a scene by its name or its old name.
 std::optional<std::size_t> find_method(std::string_view name);

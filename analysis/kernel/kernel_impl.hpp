@@ -18,15 +18,18 @@
 #include "core/batch.hpp"
 #include "core/dopri5.hpp"
 #include "core/simulate.hpp"
+#include "core/springs.hpp"
 #include "core/stepper.hpp"
 
 namespace steplab {
 
 // Whether method M can run on scene S: the exact flow needs a scene that has one, an implicit
 // method the scene's Jacobians, and so does a method with an implicit stage (velocity Verlet's
-// damped kick) on a scene of run-time size (a fixed-size one differences its force: core/scene.hpp).
+// damped kick) on a scene of run-time size (a fixed-size one differences its force: core/scene.hpp),
+// a method on the springs a scene made of them (core/springs.hpp).
 template <class M, class S> constexpr bool applies() {
   if constexpr (M::info.exact_flow) return HasExact<S>;
+  else if constexpr (M::info.on_springs) return MassSpring<S>;
   else if constexpr (M::info.implicit || (solve_stages<M>() > 0 && S::dim == Eigen::Dynamic)) return HasJacobians<S>;
   else return true;
 }
@@ -80,7 +83,9 @@ template <Scene S> struct Counted : S {
 };
 
 // u'' = -k u - c u' with m = 1, for any real k and c (negative ones make a growing test mode):
-// the test equation of the stability regions (analysis/studies/regions.hpp).
+// the test equation of the stability regions (analysis/studies/regions.hpp). Also a mass-spring
+// scene (core/springs.hpp), for the methods on springs: one spring of stiffness k and dashpot c
+// to a fixed point, rest length 0.
 struct LinearTest {
   static constexpr int dim = 1;
   static constexpr std::string_view name = "linear_test";
@@ -94,6 +99,9 @@ struct LinearTest {
   bool velocity_dependent() const { return c != 0; }
   double energy(const Vec<1>& x, const Vec<1>& v) const { return 0.5 * (v[0] * v[0] + k * x[0] * x[0]); }
   State<1> initial() const { return {Vec<1>::Ones(), Vec<1>::Zero()}; }
+  int links() const { return 1; }
+  Link link(int) const { return {0, -1, 0.0, k, c}; }
+  double external(int, double) const { return 0.0; }
 };
 
 // The per-step record of an observed run (Observed in analysis/kernel/kernel.hpp). A bounce: the mass
@@ -324,6 +332,22 @@ template <Scene S> struct SceneCode {
   }
 };
 
+template <MassSpring S> SpringMeasures spring_measures(Params p, std::span<const AnyState> states) {
+  constexpr int d = coords_per_mass<S>();
+  const S s(p);
+  SpringMeasures out;
+  out.springs = s.links();
+  for (const AnyState& y : states) {
+    const Vec<S::dim> x = y.x, v = y.v;
+    double stretch = 0;
+    for (int q = 0; q < s.links(); ++q)
+      if (const Link l = s.link(q); l.rest > 0) stretch = std::max(stretch, link_at<d>(l, x).c / l.rest);
+    out.stretch.push_back(stretch);
+    out.energy.push_back(s.energy(x, v));
+  }
+  return out;
+}
+
 // A scene of run-time size as MadeSceneCode (analysis/kernel/kernel.hpp) reaches it.
 template <Scene S> struct MadeCode {
   static const S& of(const void* s) { return *static_cast<const S*>(s); }
@@ -363,6 +387,7 @@ template <Scene S> constexpr SceneKernel make_scene() {
   if constexpr (HasModes<S>) k.modes = [](Params p) { return S(p).modes(); };
   if constexpr (HasStiffLimit<S>) k.stiff_limit_scene = S::stiff_limit_scene, k.stiff_limit = [](Params p) { return S::stiff_limit(p); };
   if constexpr (S::dim == Eigen::Dynamic) k.make = &MadeCode<S>::make, k.made = &MadeCode<S>::code;
+  if constexpr (MassSpring<S>) k.spring_measures = &spring_measures<S>;
   return k;
 }
 

@@ -92,7 +92,7 @@ struct RestCheck {
 struct CheckResult {
   std::size_t method;
   MethodInfo claims;
-  std::vector<OrderCheck> orders;  // spring, cannonball, target
+  std::vector<OrderCheck> orders;  // spring, cannonball, target: those the method runs on
   EnergyCheck energy;
   std::vector<StabilityCheck> stability;  // one per kCheckDampings
   bool a_stable_holds;  // A-stable as claimed: dt* infinite everywhere; not: finite somewhere

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace steplab {
@@ -46,6 +47,15 @@ struct StiffOrderDefaults {
   double dt_max = 0.2, dt_min = 0.01, t_end = 10;
   int points = 9;
 };
+
+// The frame-budget study's scene (analysis/studies/frames.hpp) and what it changes of the scene's
+// defaults: the rope of 32 masses at total stiffness 5000, stiff at a frame of 1/60 s (its fastest
+// mode omega h ~ 80 there), the rope "Small steps in physics simulation" measures on; and the
+// methods it compares: the three on springs, and the ODE methods a simulator would otherwise use.
+inline constexpr std::string_view kFramesScene = "rope";
+inline constexpr std::array<std::pair<std::string_view, double>, 2> kFramesParams{{{"masses", 32}, {"stiffness", 5000}}};
+inline constexpr std::array<std::string_view, 6> kFramesMethods{"xpbd", "pbd", "baraff_witkin", "symplectic_euler",
+                                                                "implicit_euler", "rk4"};
 
 // The old framework's -testcase values that name a scene (its others name a measurement on the
 // first), and the one it starts from.

@@ -77,10 +77,10 @@ template <class T> struct SpringT {
 
   auto velocity_dependent() const { return gamma != 0.0; }  // a Mask for a pack of springs
   // As springs (core/springs.hpp; one run's, T = double): the spring from the anchor above the
-  // cube, C = (0 - y) - L; gravity and gamma outside it.
+  // cube, C = (0 - y) - L, with gamma its dashpot (dC/dt = -v: the force -gamma v); gravity outside it.
   int links() const { return 1; }
-  Link link(int) const { return {-1, 0, L, k, 0.0}; }
-  double external(int, double v) const { return -gamma * v - weight; }
+  Link link(int) const { return {-1, 0, L, k, gamma}; }
+  double external(int, double) const { return -weight; }
 
   // Oscillation energy about the equilibrium: E = 1/2 m v^2 + 1/2 k (y - y_eq)^2.
   // It is not zero at the rest start (y = -L): E(0) = (m g)^2 / (2 k).

@@ -21,6 +21,12 @@ std::string dt_text(double dt) {
 }
 
 void order_lines(std::vector<ClaimLine>& out, const OrderCheck& o, const MethodInfo& claims) {
+  if (!claims.converges) {  // no order claimed (PBD): that it does not converge is the claim
+    out.push_back({!o.converges, fmt::format("does not converge on the {}: error {:.3g} at dt {:.3g}, {:.3g} at dt {:.3g} "
+                                             "(converging means <= {} x)",
+                                             o.scene, o.error_coarse, o.dt_coarse, o.error_fine, o.dt_fine, kConvergedRatio)});
+    return;
+  }
   std::string text;
   if (claims.order == 0)
     text = fmt::format("exact flow on the {}: {}", o.scene,
@@ -54,6 +60,7 @@ void stability_lines(std::vector<ClaimLine>& out, const CheckResult& r) {
   for (const StabilityCheck& s : r.stability)
     pairs += fmt::format("{}{} at damping {}", pairs.empty() ? "" : ", ", dt_text(s.measured.dt_star), s.damping);
   out.push_back({r.a_stable_holds, fmt::format("{}: dt* on the spring {}", r.claims.a_stable ? "A-stable" : "not A-stable", pairs)});
+  if (!r.claims.converges) return;  // its rest is not the scene's equilibrium: no linear prediction there
   for (const StabilityCheck& s : r.stability) {
     std::string again;
     if (std::isfinite(s.predicted.again) || std::isfinite(s.measured.again))
@@ -71,8 +78,9 @@ std::vector<ClaimLine> check_lines(const CheckResult& r) {
   for (const OrderCheck& o : r.orders) order_lines(out, o, r.claims);
   out.push_back(energy_line(r.energy, r.claims));
   stability_lines(out, r);
-  out.push_back({r.rest.holds, fmt::format("rest at equilibrium stays there: {} steps of h = {:.3g} move it by {:.2g} "
+  out.push_back({r.rest.holds, fmt::format("rest at equilibrium {}: {} steps of h = {:.3g} move it by {:.2g} "
                                            "of |y_eq| (<= {})",
+                                           r.claims.converges ? "stays there" : "is not its rest (it leaves)",
                                            kRestSteps, r.rest.h, r.rest.deviation, kRestTolerance)});
   return out;
 }

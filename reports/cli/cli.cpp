@@ -116,7 +116,8 @@ std::string_view value_kind(std::string_view command, std::string_view option) {
       {"--dampings", "NUMBER,..."},   {"--stiffnesses", "NUMBER,..."}, {"--method", "NAME"},
       {"--scene", "NAME"},            {"--testcase", "NAME"},         {"--json", "FILE"},
       {"--config", "FILE"},           {"--out", "FOLDER"},            {"--scenes", "NAME,..."},
-      {"--sweep", "NAME=NUMBER,..."}, {"--sections", "NAME,..."}};
+      {"--sweep", "NAME=NUMBER,..."}, {"--sections", "NAME,..."},     {"--sweeps", "WHOLE"},
+      {"--cg-iterations", "WHOLE"},   {"--budget", "WHOLE"}};
   for (const auto& [name, kind] : kinds)
     if (name == option) return kind;
   return "NUMBER";  // steps, times, ranges and every scene parameter
@@ -250,6 +251,7 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   run_cmd->add_option("--error-every", run.error_every,
                       "with --json, on a scene whose exact positions cost a transform (the rope): read the error every this "
                       "many steps and at the last (default: steps / 100, at least 1; 1: every step)");
+  run.settings.add_to(run_cmd);
   run_cmd->add_option("--json", run.json, fmt::format("write JSON (schema {}) to this file instead of CSV", schema::run));
 
   CLI::App* study = app.add_subcommand("study", "a study over many runs; prints a table, --json writes its data");
@@ -310,6 +312,8 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
 
   ScalingArgs scaling;
   CLI::App* scaling_cmd = add_scaling_command(study, scaling);
+  FramesArgs frames;
+  CLI::App* frames_cmd = add_frames_command(study, frames);
 
   ReportArgs rep;
   CLI::App* rep_cmd = app.add_subcommand("report", "run every study and write report.md, report.pdf, figures/ and data/ into one folder");
@@ -352,6 +356,7 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
     if (coll_cmd->parsed()) return collision_command(coll, ctx);
     if (wp_cmd->parsed()) return work_precision_command(wp, ctx);
     if (scaling_cmd->parsed()) return scaling_command(scaling, ctx);
+    if (frames_cmd->parsed()) return frames_command(frames, ctx);
     if (rep_cmd->parsed()) {
       rep.methods_given = rep_methods->count() > 0, rep.scenes_given = rep_scenes->count() > 0,
       rep.sections_given = rep_sections->count() > 0;

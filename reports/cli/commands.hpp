@@ -34,8 +34,20 @@ struct Context {
 // the study it replays.
 int dispatch(const std::vector<std::string>& args, Context& ctx);
 
+// A method's settings as typed: the sweeps a step of XPBD and PBD, the CG iterations and
+// tolerance of Baraff-Witkin (core/method.hpp, MethodSettings). For `run` and `study frames`
+// (reports/cli/frames_command.cpp).
+struct SettingsArgs {
+  std::string sweeps, cg_iterations, cg_tolerance;  // empty: the defaults
+  void add_to(CLI::App* app);
+  // The settings, each checked; UsageError for a value out of range, or for a setting given that
+  // `method` does not take (with a method: run's --method).
+  MethodSettings resolve(std::optional<std::size_t> method) const;
+};
+
 struct RunArgs {
   SceneArgs scene;
+  SettingsArgs settings;
   std::string method = "explicit_euler";
   std::string dt;  // empty: 0.01 (dopri5 refuses a --dt given)
   std::string rtol, atol;  // dopri5 only; empty: SciPy's defaults 1e-3 and 1e-6
@@ -128,6 +140,19 @@ struct CollisionArgs {
 };
 
 int collision_command(CollisionArgs& args, Context& ctx);
+
+// `study frames` (reports/cli/frames_command.cpp): a mass-spring scene at a frame rate, each
+// method at substeps x sweeps (or CG iterations) = budget (analysis/studies/frames.hpp).
+struct FramesArgs {
+  SceneArgs scene;  // add_frames_command makes the rope the default, with the study's 32 masses and stiffness 5000
+  std::string methods;  // empty: analysis/studies/defaults.hpp, kFramesMethods
+  std::string fps = "60", t_end = "2", budget = "30";
+  std::string threads = "0";
+  bool no_timing = false, no_orders = false;
+  std::string json;
+};
+CLI::App* add_frames_command(CLI::App* study, FramesArgs& args);
+int frames_command(FramesArgs& args, Context& ctx);
 
 // `study scaling` (reports/cli/scaling_command.cpp): cost against the number of masses of the rope or the soft body.
 struct ScalingArgs {

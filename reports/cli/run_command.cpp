@@ -83,6 +83,8 @@ Json adaptive_json(const AdaptiveStats& s) {
 int run_dopri5(RunArgs& a, const Context& ctx) {
   const std::size_t scene = a.scene.scene_index();
   if (!a.dt.empty()) throw UsageError("--dt does not apply to dopri5, which chooses its own steps; give --rtol and --atol");
+  if (!a.settings.sweeps.empty() || !a.settings.cg_iterations.empty() || !a.settings.cg_tolerance.empty())
+    throw UsageError("--sweeps, --cg-iterations and --cg-tolerance apply to the methods on springs; dopri5 takes none");
   const std::vector<double> params = a.scene.values(scene);
   AdaptiveSpec spec;
   spec.tol = read_tolerance(a.rtol, a.atol);
@@ -119,6 +121,7 @@ int run_command(RunArgs& a, Context& ctx) {
   if (!applies(method, scene)) throw UsageError(fmt::format("--method {} {}", a.method, why_not(method, scene)));
   const std::vector<double> params = a.scene.values(scene);
   RunSpec spec;
+  spec.settings = a.settings.resolve(method);
   spec.dt = a.dt.empty() ? 0.01 : parse_number("--dt", a.dt, Bound::Positive);
   const double t_end = parse_number("--t-end", a.t_end, Bound::NonNegative);
   spec.steps = step_count(t_end, spec.dt);
@@ -151,6 +154,9 @@ int run_command(RunArgs& a, Context& ctx) {
     Json p = params_json(s.params, params);
     p["dt"] = spec.dt;
     p["t_end"] = t_end;
+    if (method_info(method).family == Family::PositionBased) p["sweeps"] = spec.settings.sweeps;
+    if (method_info(method).on_springs && method_info(method).family != Family::PositionBased)
+      p["cg_iterations"] = spec.settings.cg_iterations, p["cg_tolerance"] = spec.settings.cg_tolerance;
     Json j = run_json(s.name, name, std::move(p), r);
     j["counts"] = counted ? counts_json(counts) : Json(nullptr);
     write_atomic(a.json, j.dump(1) + "\n");

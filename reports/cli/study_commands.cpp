@@ -22,7 +22,7 @@ std::vector<std::size_t> resolve_methods(const std::string& list, bool with_anal
   std::vector<std::size_t> out;
   if (list.empty()) {
     for (std::size_t i = 0; i < method_count(); ++i)
-      if ((with_analytic || !method_info(i).exact_flow) && (!scene || applies(i, *scene))) out.push_back(i);
+      if ((in_ode_studies(i) || (with_analytic && method_info(i).exact_flow)) && (!scene || applies(i, *scene))) out.push_back(i);
     return out;
   }
   for (const std::string& name : split_list(list)) {

@@ -91,3 +91,12 @@ std::string work_precision_table(const WorkPrecisionResult& r);
 // Jacobians and factorisations where it has them.
 std::string counts_text(const Counts& n);
 }  // namespace steplab
+
+#include "analysis/studies/frames.hpp"
+
+namespace steplab {
+Json frames_json(const FramesResult& r);  // schema steplab.frames/1 (reports/data/frames_output.cpp)
+std::string frames_table(const FramesResult& r);
+// "30 x 1 sweep", "5 x 6 CG", "10 substeps": a set-up's substeps a frame and its settings.
+std::string frame_setup_text(const FrameSetup& s);
+}  // namespace steplab

@@ -1,6 +1,7 @@
 #include "reports/document/figure_styles.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -22,6 +23,7 @@ std::string_view family_hue(Family f) {
     case Family::ImplicitRungeKutta: return "#009E73";  // bluish green
     case Family::AdamsBashforth: return "#CC79A7";      // reddish purple
     case Family::Bdf: return "#E69F00";                 // orange
+    case Family::PositionBased: return "#882255";       // wine (Paul Tol's; Okabe-Ito's last, yellow, is unreadable on white)
     default: return "#000000";
   }
 }
@@ -55,13 +57,28 @@ MethodStyle method_style(std::size_t method) {
   // by order: filled circle, square, triangle, diamond, triangle down; solid, dashed, dash-dot,
   // dotted, dash-dot-dot
   constexpr int points[] = {7, 7, 5, 9, 13, 11}, dashes[] = {1, 1, 2, 4, 3, 5};
-  const int o = std::clamp(info.order, 0, 5);
-  // A method added beside a built-in one of the same family and order (steplab_add_executable)
-  // gets the open point (gnuplot's filled point - 1) and the next order's dash.
+  // order 0 is the exact flow's; a method that claims none (PBD) is styled as a first-order one
+  const auto order_of = [](const MethodInfo& i) { return std::clamp(i.exact_flow ? 0 : std::max(i.order, 1), 0, 5); };
+  const int o = order_of(info);
+  // A method after another of the same family and order (Baraff-Witkin beside implicit Euler, PBD
+  // beside XPBD, a plug-in's: steplab_add_executable) gets the open point (gnuplot's filled
+  // point - 1) and the first dash no other member of its family has by its order.
   bool shares = false;
-  for (std::size_t m = 0; m < method; ++m)
-    shares = shares || (method_info(m).family == info.family && std::clamp(method_info(m).order, 0, 5) == o);
-  if (shares) return {shade(family_hue(info.family), std::max(o, 1)), points[o] - 1, dashes[(o + 1) % 6]};
+  std::array<bool, 7> used{};
+  for (std::size_t m = 0; m < method_count(); ++m)
+    if (m != method && method_info(m).family == info.family) {
+      used[static_cast<std::size_t>(dashes[order_of(method_info(m))])] = true;
+      shares = shares || (m < method && order_of(method_info(m)) == o);
+    }
+  if (shares) {
+    int dash = 6;
+    for (int d : {1, 2, 4, 3, 5, 6})
+      if (!used[static_cast<std::size_t>(d)]) {
+        dash = d;
+        break;
+      }
+    return {shade(family_hue(info.family), std::max(o, 1)), points[o] - 1, dash};
+  }
   return {shade(family_hue(info.family), std::max(o, 1)), points[o], dashes[o]};
 }
 

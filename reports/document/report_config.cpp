@@ -104,6 +104,14 @@ std::vector<std::size_t> chosen(const std::vector<std::string>& names, const std
 
 void choose_methods(ReportConfig& c, const std::vector<std::string>& names, const std::string& what) {
   c.methods = chosen(names, what, find_method, method_names());
+  for (std::size_t m : c.methods)
+    if (method_info(m).on_springs) {
+      std::vector<std::string_view> ode;
+      for (std::size_t o : ode_methods()) ode.push_back(method_info(o).name);
+      throw UsageError(fmt::format("{}: '{}' works on a scene's springs; the report measures the methods on springs together, at a "
+                                   "frame budget (its section 'frames'); accepted: {}",
+                                   what, method_info(m).name, fmt::join(ode, ", ")));
+    }
   if (std::all_of(c.methods.begin(), c.methods.end(), [](std::size_t m) { return method_info(m).exact_flow; }))
     throw UsageError(fmt::format("{} has no numerical method; accepted: at least one of {}", what, method_names()));
 }
@@ -163,7 +171,8 @@ double ReportConfig::damping() const {
 
 ReportConfig default_report_config() {
   ReportConfig c;
-  for (std::size_t m = 0; m < method_count(); ++m) c.methods.push_back(m);
+  for (std::size_t m = 0; m < method_count(); ++m)
+    if (!method_info(m).on_springs) c.methods.push_back(m);  // those: the frame-budget section
   c.sections = full_report_sections();
   for (const auto& [role, name] : {std::pair{&c.oscillator, kSheetOscillator}, {&c.projectile, kSheetProjectile},
                                    {&c.rebound, kReboundScene}, {&c.body, kContactBodyScene}}) {

@@ -23,18 +23,23 @@ TEST_P(EveryRow, HoldsEveryClaim) {
   const std::size_t m = GetParam();
   const CheckResult r = check_method(m, method_info(m), Workers{2});
   EXPECT_TRUE(r.all_hold()) << check_text(r);
-  ASSERT_EQ(r.orders.size(), 3u);
+  const bool on_springs = method_info(m).on_springs;  // the spring alone: neither the cannon ball nor the target
+  ASSERT_EQ(r.orders.size(), on_springs ? 1u : 3u);
   if (method_info(m).order > 0) {  // the spring's order is fitted, within 0.01 for every row
     EXPECT_TRUE(r.orders[0].fit.fitted);
     EXPECT_NEAR(r.orders[0].fit.order, method_info(m).order, 0.01) << method_info(m).name;
     // the driven target's too: each stage's force at its own time (within the claim's 0.1)
-    EXPECT_EQ(r.orders[2].scene, "target");
-    EXPECT_TRUE(r.orders[2].fit.fitted);
-    EXPECT_NEAR(r.orders[2].fit.order, method_info(m).order, kOrderTolerance) << method_info(m).name;
+    if (!on_springs) {
+      EXPECT_EQ(r.orders[2].scene, "target");
+      EXPECT_TRUE(r.orders[2].fit.fitted);
+      EXPECT_NEAR(r.orders[2].fit.order, method_info(m).order, kOrderTolerance) << method_info(m).name;
+    }
   }
   EXPECT_EQ(r.stability.size(), std::size(kCheckDampings));
   const auto lines = check_lines(r);
-  EXPECT_EQ(lines.size(), 2 * r.orders.size() + 2 + r.stability.size() + 1);
+  if (method_info(m).converges) EXPECT_EQ(lines.size(), 2 * r.orders.size() + 2 + r.stability.size() + 1);
+  else EXPECT_EQ(lines.size(), r.orders.size() + 2 + 1);  // PBD: no order, no dt* prediction
+
 }
 
 INSTANTIATE_TEST_SUITE_P(Table, EveryRow, ::testing::Range<std::size_t>(0, method_count()),

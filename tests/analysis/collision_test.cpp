@@ -15,7 +15,7 @@ namespace {
 std::vector<std::size_t> numerical_methods() {
   std::vector<std::size_t> m;
   for (std::size_t i = 0; i < method_count(); ++i)
-    if (!method_info(i).exact_flow) m.push_back(i);
+    if (in_ode_studies(i)) m.push_back(i);
   return m;
 }
 

@@ -17,7 +17,7 @@ ConvergenceConfig defaults(std::string_view scene) {
   c.scene = *find_scene(scene);
   c.params = default_param_values(c.scene);
   for (std::size_t m = 0; m < method_count(); ++m)
-    if (!method_info(m).exact_flow) c.methods.push_back(m);
+    if (in_ode_studies(m)) c.methods.push_back(m);
   return c;
 }
 

@@ -24,7 +24,7 @@ ConvergenceConfig on_target(double stiffness) {
   c.params[static_cast<std::size_t>(stiffness_param_index<Target>())] = stiffness;
   c.fit_error = ErrorKind::Max;
   for (std::size_t m = 0; m < method_count(); ++m)
-    if (!method_info(m).exact_flow) c.methods.push_back(m);
+    if (in_ode_studies(m)) c.methods.push_back(m);
   return c;
 }
 

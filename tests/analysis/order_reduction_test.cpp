@@ -65,7 +65,7 @@ OrderReduction report_sweep(const std::vector<double>& params_override = {}) {
   const std::size_t scene = *find_scene(kStiffenedScene);
   std::vector<std::size_t> methods;
   for (std::size_t m = 0; m < method_count(); ++m)
-    if (!method_info(m).exact_flow) methods.push_back(m);
+    if (in_ode_studies(m)) methods.push_back(m);
   return order_reduction(
       stiff_order_config(scene, params_override.empty() ? default_param_values(scene) : params_override, d, methods),
       d.stiffnesses);

@@ -105,7 +105,9 @@ TEST(Packs, EveryFixedSizeSceneIsPackedWhereTheSolvesAllow) {
     const std::vector<std::string_view> unpacked = unpacked_on(name);
     for (std::size_t m = 0; m < method_count(); ++m) {
       if (!applies(m, scene)) continue;
-      const bool expected = packed_scene && std::ranges::find(unpacked, method_info(m).name) == unpacked.end();
+      // the methods on springs step one run at a time: their sweeps and CG are written for one run's springs
+      const bool expected = packed_scene && !method_info(m).on_springs &&
+                            std::ranges::find(unpacked, method_info(m).name) == unpacked.end();
       EXPECT_EQ(pair_kernel(m, scene).run_batch != nullptr, expected) << method_info(m).name << " on " << name;
     }
   }

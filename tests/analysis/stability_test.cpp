@@ -19,7 +19,7 @@ std::vector<double> spring_params(double gamma) { return {1.0, 5.0, gamma, 5.0, 
 std::vector<std::size_t> numerical_methods() {
   std::vector<std::size_t> m;
   for (std::size_t i = 0; i < method_count(); ++i)
-    if (!method_info(i).exact_flow) m.push_back(i);
+    if (in_ode_studies(i)) m.push_back(i);
   return m;
 }
 

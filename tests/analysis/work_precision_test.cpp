@@ -18,7 +18,7 @@ const WorkPrecisionResult& study() {
   static const WorkPrecisionResult r = [] {
     WorkPrecisionConfig c;
     for (std::size_t m = 0; m < method_count(); ++m)
-      if (!method_info(m).exact_flow) c.methods.push_back(m);
+      if (in_ode_studies(m)) c.methods.push_back(m);
     c.timing = false;
     c.workers.threads = 2;
     return work_precision_study(c);

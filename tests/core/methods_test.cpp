@@ -255,7 +255,7 @@ TEST(Newton, ReportsNoConvergence) {
 }
 
 TEST(MethodTable, NamesAliasesAndFlags) {
-  EXPECT_EQ(method_count(), 16u);
+  EXPECT_EQ(method_count(), 19u);
   EXPECT_EQ(find_method("euler"), find_method("explicit_euler"));
   EXPECT_EQ(find_method("midpoint"), find_method("explicit_midpoint"));
   EXPECT_EQ(find_method("backwards_euler"), find_method("implicit_euler"));
@@ -270,12 +270,20 @@ TEST(MethodTable, NamesAliasesAndFlags) {
     // the exact flow) or the root condition there (BDF2); BDF3 is A(86 degrees)-stable only
     const bool a_stable = info.name == "implicit_euler" || info.name == "implicit_midpoint" ||
                           info.name == "gauss_legendre4" || info.name == "radau_iia5" || info.name == "bdf2" ||
-                          info.name == "analytic";
+                          info.name == "analytic" ||
+                          // on one spring a sweep solves the constraint, CG the 1 x 1 system: implicit Euler
+                          info.name == "xpbd" || info.name == "baraff_witkin";
     EXPECT_EQ(info.implicit, implicit) << info.name;
     EXPECT_EQ(info.symplectic, symplectic) << info.name;
     EXPECT_EQ(info.a_stable, a_stable) << info.name;
   }
   EXPECT_EQ(method_info(*find_method("rk4")).order, 4);
+  // the methods on springs: XPBD and Baraff-Witkin first order, PBD no order (it does not converge)
+  for (const char* n : {"xpbd", "pbd", "baraff_witkin"}) EXPECT_TRUE(method_info(*find_method(n)).on_springs) << n;
+  EXPECT_EQ(method_info(*find_method("xpbd")).order, 1);
+  EXPECT_EQ(method_info(*find_method("baraff_witkin")).order, 1);
+  EXPECT_FALSE(method_info(*find_method("pbd")).converges);
+  EXPECT_EQ(method_info(*find_method("pbd")).family, Family::PositionBased);
   // every family spans several orders; explicit and implicit Euler open Adams-Bashforth and BDF
   EXPECT_EQ(method_info(*find_method("explicit_euler")).first_of, Family::AdamsBashforth);
   EXPECT_EQ(method_info(*find_method("implicit_euler")).first_of, Family::Bdf);

@@ -39,7 +39,8 @@ INSTANTIATE_TEST_SUITE_P(
                       "study convergence --scene falling --dt-min 1e-3",
                       "study damping --dts 0.05",
                       "study stability --map-dt-points 12 --map-damping-points 8 --threshold-dampings 0,1",
-                      "study collision --dts 0.002,0.004 --t-end 3"));
+                      "study collision --dts 0.002,0.004 --t-end 3",
+                      "study frames --no-timing --budget 6 --t-end 0.5"));
 
 }  // namespace
 }  // namespace steplab

@@ -118,8 +118,9 @@ TEST(ReportChoice, NamesInTheReportsOrderAndRefused) {
   EXPECT_EQ(c.methods, (std::vector<std::size_t>{method("explicit_euler"), method("rk4")}));
   EXPECT_EQ(default_report_config().sections, full_report_sections());
   EXPECT_EQ(default_report_config().covered, default_report_config().own_scenes());
-  EXPECT_EQ(default_report_config().methods.size(), method_count());
-  for (const std::vector<std::string>& bad : std::vector<std::vector<std::string>>{{}, {"rk4", "rk4"}, {"heun"}, {"analytic"}})
+  EXPECT_EQ(default_report_config().methods.size(), ode_methods().size() + 1);  // and the exact flow
+  for (const std::vector<std::string>& bad :
+       std::vector<std::vector<std::string>>{{}, {"rk4", "rk4"}, {"heun"}, {"analytic"}, {"xpbd"}, {"rk4", "baraff_witkin"}})
     EXPECT_THROW(choose_methods(c, bad, "methods"), UsageError);
   EXPECT_THROW(choose_sections(c, {"appendix"}, "sections"), UsageError);
   const ReportConfig back = report_config_from_json(report_config_json(chosen({"rk4"}, {"summary"})));

@@ -181,15 +181,15 @@ TEST(ReportSheet, HandInIsAtMostFivePages) {
     }
 }
 
-// The default report within its budget (docs/design.md, "A report section"): at most 16 pages
-// (20 once the frame-budget and long-time sections land), no figure text under 8 pt at print size
+// The default report within its budget (docs/design.md, "A report section"): at most 18 pages
+// with the frame-budget section (20 once the long-time section lands), no figure text under 8 pt at print size
 // (a figure is 16 cm wide, inserted unscaled), every figure's file numbered as the report numbers it.
 TEST(ReportPages, DefaultWithinItsBudget) {
   TempDir dir;
   const Result r = run_steplab("report --out " + dir.path("report"));
   ASSERT_EQ(r.status, 0) << r.err;
   ASSERT_EQ(std::system(("pdfinfo " + dir.path("report/report.pdf") + " > " + dir.path("info.txt")).c_str()), 0);
-  EXPECT_LE(number_after(slurp(dir.path("info.txt")), "Pages:"), 16);
+  EXPECT_LE(number_after(slurp(dir.path("info.txt")), "Pages:"), 18);
   const std::string md = slurp(dir.path("report/report.md"));
   int figures = 0;
   for (const auto& e : std::filesystem::directory_iterator(dir.path("report/figures"))) {

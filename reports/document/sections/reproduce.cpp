@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "reports/document/report_text.hpp"
+#include "analysis/studies/defaults.hpp"
 #include "reports/document/section.hpp"
 
 namespace steplab {
@@ -60,6 +61,8 @@ class Reproduce : public Section {
         if (c.covers(s.scene))
           md += wrapped(fmt::format("build/steplab study scaling --scene {} --sizes {} --error {} --t-end {}{}{}", scene_name(s.scene),
                                     join(s.sizes), c.scaling_error, c.scaling_t_end, c.timing ? "" : " --no-timing", numerical));
+    if (c.has_section("frames") && c.covers(scene_index(kFramesScene)))
+      md += wrapped(fmt::format("build/steplab study frames{}", c.timing ? "" : " --no-timing"));  // its defaults: analysis/studies/defaults.hpp
     md += "```\n\n";
     md += "(with the scene parameters above as `--mass`, `--stiffness`, ... where they differ from the defaults). The data of "
           "every study is in `data/`.\n\n";

@@ -20,6 +20,7 @@
   X(cost, true)                    \
   X(collision, true)               \
   X(growth, true)                  \
+  X(frames, true)                  \
   X(advice, true)                  \
   X(physics, true)                 \
   X(reproduce, true)

@@ -1,0 +1,192 @@
+#include "analysis/studies/frames.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "analysis/fits/fit.hpp"
+#include "analysis/studies/defaults.hpp"
+
+namespace steplab {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The order rows: substeps doubled from 128 to 1024 a frame, where the default rope's fastest mode
+// is resolved (omega h from about 0.6 down to 0.08: an order is a limit as h -> 0, and at fewer
+// substeps the stiff modes' damping, not the step's error, sets the error), at settings that
+// either hold the sweeps fixed (one) or carry the solve to convergence (XPBD's sweeps: at these
+// steps k h^2 / m <= 0.2 and Gauss-Seidel gains about a digit every few sweeps; Baraff-Witkin's
+// CG to 1e-12).
+constexpr int kOrderSubsteps[] = {128, 256, 512, 1024};
+constexpr int kConvergedSweeps = 50;
+
+struct Reference {
+  std::vector<AnyState> frames;
+  SpringMeasures measures;
+};
+
+long long frame_count(const FramesConfig& c) { return std::llround(c.t_end * c.fps); }
+
+RunSpec frame_spec(const FramesConfig& c, const FrameSetup& s, bool samples) {
+  RunSpec spec;
+  spec.dt = 1 / (c.fps * s.substeps);
+  spec.steps = frame_count(c) * s.substeps;
+  spec.max_samples = samples ? frame_count(c) + 1 : 0;  // one at each frame (SamplePlan: every substeps-th step)
+  spec.errors = false;
+  spec.settings = s.settings;
+  return spec;
+}
+
+std::vector<AnyState> frames_of(const AnyResult& r) {
+  std::vector<AnyState> out;
+  for (const auto& s : r.samples) out.push_back({s.x, s.v});
+  return out;
+}
+
+Reference reference(const FramesConfig& c) {
+  const SceneKernel& sk = scene_kernel(c.scene);
+  Reference ref;
+  if (sk.exact) {
+    for (long long k = 0; k <= frame_count(c); ++k) ref.frames.push_back(sk.exact(c.params, static_cast<double>(k) / c.fps));
+  } else {
+    const std::size_t rk4 = *find_method("rk4");
+    ref.frames = frames_of(pair_kernel(rk4, c.scene).run(c.params, frame_spec(c, {rk4, c.reference_substeps, {}}, true)));
+  }
+  ref.measures = sk.spring_measures(c.params, ref.frames);
+  return ref;
+}
+
+FrameRun measure(const FramesConfig& c, const Reference& ref, const FrameSetup& s) {
+  const PairKernel& k = pair_kernel(s.method, c.scene);
+  const RunSpec spec = frame_spec(c, s, true);
+  FrameRun out;
+  out.setup = s;
+  const AnyResult r = k.run_counted ? k.run_counted(c.params, spec, out.counts) : k.run(c.params, spec);
+  if (!k.run_counted) out.counts.steps = r.steps;
+  out.status = r.status;
+  const std::vector<AnyState> frames = frames_of(r);
+  bool finite = r.status == RunStatus::Ok && frames.size() == ref.frames.size();
+  for (std::size_t f = 0; finite && f < frames.size(); ++f) {
+    const double e = (frames[f].x - ref.frames[f].x).cwiseAbs().maxCoeff();
+    finite = std::isfinite(e);
+    out.error = std::max(out.error, e);
+  }
+  out.stable = finite;
+  const int springs = ref.measures.springs;
+  const MethodInfo& info = method_info(s.method);
+  if (info.family == Family::PositionBased) out.projections = out.counts.steps * s.settings.sweeps * springs;
+  const Counts& n = out.counts;
+  out.spring_visits = static_cast<double>(out.projections + (n.forces + n.jacobians + n.factorisations + n.solves) * springs) /
+                      static_cast<double>(frame_count(c));
+  if (!out.stable) {
+    out.error = out.stretch = out.energy_lost = kNaN;
+    return out;
+  }
+  const SpringMeasures m = scene_kernel(c.scene).spring_measures(c.params, frames);
+  out.stretch = -std::numeric_limits<double>::infinity();
+  for (std::size_t f = 0; f < frames.size(); ++f) out.stretch = std::max(out.stretch, m.stretch[f] - ref.measures.stretch[f]);
+  out.energy_lost = (ref.measures.energy.back() - m.energy.back()) / c.t_end;
+  return out;
+}
+
+std::vector<FamilyFront> fronts(const std::vector<FrameRun>& runs, bool timed) {
+  std::vector<FamilyFront> out;
+  for (Family f : {Family::ExplicitRungeKutta, Family::Splitting, Family::ImplicitRungeKutta, Family::AdamsBashforth, Family::Bdf,
+                   Family::PositionBased}) {
+    std::vector<std::size_t> members;
+    for (std::size_t i = 0; i < runs.size(); ++i)
+      if (method_info(runs[i].setup.method).family == f && runs[i].stable) members.push_back(i);
+    if (members.empty()) continue;
+    std::stable_sort(members.begin(), members.end(),
+                     [&](std::size_t a, std::size_t b) { return frame_cost(runs[a], timed) < frame_cost(runs[b], timed); });
+    FamilyFront front{f, {}};
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t i : members)
+      if (runs[i].error < best) best = runs[i].error, front.runs.push_back(i);
+    out.push_back(std::move(front));
+  }
+  return out;
+}
+
+}  // namespace
+
+FramesConfig default_frames_config() {
+  FramesConfig c;
+  c.scene = scene_index(kFramesScene);
+  c.params = default_param_values(c.scene);
+  for (const auto& [name, value] : kFramesParams)
+    c.params[static_cast<std::size_t>(param_index(scene_kernel(c.scene).params, name))] = value;
+  for (std::string_view m : kFramesMethods) c.methods.push_back(*find_method(m));
+  return c;
+}
+
+std::vector<FrameSetup> frame_setups(const std::vector<std::size_t>& methods, int budget) {
+  std::vector<FrameSetup> out;
+  for (std::size_t m : methods)
+    for (int s = 1; s <= budget; ++s) {
+      if (budget % s != 0) continue;
+      FrameSetup setup{m, s, {}};
+      if (method_info(m).family == Family::PositionBased) setup.settings.sweeps = budget / s;
+      if (method_info(m).on_springs && method_info(m).family != Family::PositionBased) setup.settings.cg_iterations = budget / s;
+      out.push_back(setup);
+    }
+  return out;
+}
+
+double frame_cost(const FrameRun& r, bool timed) { return timed ? r.seconds : r.spring_visits; }
+
+FramesResult frames_study(const FramesConfig& config) {
+  FramesResult out;
+  out.config = config;
+  const Reference ref = reference(config);
+  out.springs = ref.measures.springs;
+  const std::vector<FrameSetup> setups = frame_setups(config.methods, config.budget);
+  out.runs.resize(setups.size());
+  parallel_for(setups.size(), config.workers, [&](std::size_t i) { out.runs[i] = measure(config, ref, setups[i]); });
+  // Timed one at a time, after the runs in parallel: each alone on its core.
+  if (config.timing)
+    for (FrameRun& r : out.runs) {
+      std::vector<double> t = pair_kernel(r.setup.method, config.scene)
+                                  .timings(config.params, frame_spec(config, r.setup, false), 3, config.min_seconds);
+      std::nth_element(t.begin(), t.begin() + static_cast<std::ptrdiff_t>(t.size() / 2), t.end());
+      r.seconds = t[t.size() / 2] / static_cast<double>(frame_count(config));
+    }
+  out.fronts = fronts(out.runs, config.timing);
+
+  if (config.orders) {
+    for (std::size_t m : config.methods) {
+      if (!method_info(m).on_springs) continue;
+      std::vector<MethodSettings> settings(1);  // sweeps 1
+      if (method_info(m).family == Family::PositionBased) {
+        if (method_info(m).converges) settings.emplace_back().sweeps = kConvergedSweeps;
+      } else {
+        settings[0].cg_iterations = 1000, settings[0].cg_tolerance = 1e-12;
+      }
+      for (const MethodSettings& s : settings) {
+        FrameOrder o{{m, 1, s}, {}, {}, kNaN};
+        for (int sub : kOrderSubsteps) o.substeps.push_back(sub);
+        o.errors.resize(o.substeps.size());
+        out.orders.push_back(std::move(o));
+      }
+    }
+    std::vector<std::pair<std::size_t, std::size_t>> cells;
+    for (std::size_t o = 0; o < out.orders.size(); ++o)
+      for (std::size_t k = 0; k < out.orders[o].substeps.size(); ++k) cells.push_back({o, k});
+    parallel_for(cells.size(), config.workers, [&](std::size_t i) {
+      FrameOrder& o = out.orders[cells[i].first];
+      FrameSetup s = o.setup;
+      s.substeps = o.substeps[cells[i].second];
+      o.errors[cells[i].second] = measure(config, ref, s).error;
+    });
+    for (FrameOrder& o : out.orders) {
+      std::vector<double> lh, le;
+      for (std::size_t k = 0; k < o.substeps.size(); ++k)
+        if (std::isfinite(o.errors[k]) && o.errors[k] > 0) lh.push_back(std::log(1 / (config.fps * o.substeps[k]))), le.push_back(std::log(o.errors[k]));
+      if (lh.size() >= 2) o.order = fit_line(lh, le).slope;
+    }
+  }
+  return out;
+}
+
+}  // namespace steplab

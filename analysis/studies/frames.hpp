@@ -1,0 +1,94 @@
+// Frame-budget study: "substeps or sweeps, XPBD or large steps, at what cost a frame?". A
+// mass-spring scene (core/springs.hpp; by default the rope of 32 masses at total stiffness 5000,
+// analysis/studies/defaults.hpp) shown at a frame rate (60 a second) for t_end seconds. Each
+// set-up is a method with its substeps a frame (the step h = 1 / (fps substeps)) and its
+// settings (XPBD's and PBD's sweeps a substep, Baraff-Witkin's CG iterations); the ODE methods at
+// their substeps alone. Per set-up, what a simulation engineer looks at:
+//   error     the largest position error over the frames and the coordinates, against the exact
+//             motion (or, on a scene without one, RK4 at reference_substeps a frame)
+//   stretch   over the frames, the largest relative elongation C / L of a spring less the
+//             reference's at that frame (how much more the material gives than it should)
+//   energy    lost per second against the reference: (E_ref(T) - E(T)) / T (numerical damping)
+//   stable    the run ended with a finite state (RunStatus Ok)
+//   cost      seconds a frame (the median of repeated runs, as every study times) and the work
+//             counted: steps, force evaluations, constraint projections (steps x sweeps x springs),
+//             CG iterations; and `spring visits` a frame, the work in one machine-independent unit:
+//             a projection visits one spring, a force evaluation or a CG product all of them.
+// The equal-cost grid: substeps x sweeps (or CG iterations) = budget for each divisor of it. Per
+// family the front of error against cost a frame (seconds when timed, spring visits otherwise): the
+// set-ups no cheaper one beats. And each method on springs' measured order in h on the same scene
+// (substeps doubled at fixed settings): XPBD with one sweep and carried to convergence, PBD,
+// Baraff-Witkin with its CG converged.
+#pragma once
+
+#include <vector>
+
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/kernel/parallel.hpp"
+
+namespace steplab {
+
+struct FrameSetup {
+  std::size_t method;
+  int substeps = 1;
+  MethodSettings settings{};
+};
+
+struct FrameRun {
+  FrameSetup setup;
+  RunStatus status = RunStatus::Ok;
+  bool stable = false;
+  double error = 0;           // largest over frames and coordinates
+  double stretch = 0;         // largest over frames of (max C / L) - the reference's
+  double energy_lost = 0;     // per second, against the reference
+  Counts counts;              // over the whole run
+  long long projections = 0;  // steps x sweeps x springs (the methods that sweep)
+  double spring_visits = 0;   // a frame
+  double seconds = 0;         // a frame; 0 when not timed
+};
+
+struct FrameOrder {
+  FrameSetup setup;            // its settings; substeps below
+  std::vector<int> substeps;   // doubling
+  std::vector<double> errors;  // at each
+  double order = 0;            // least-squares slope of log error against log h
+};
+
+struct FramesConfig {
+  std::size_t scene = 0;
+  std::vector<double> params;  // table order
+  double fps = 60, t_end = 2;
+  int budget = 30;                  // substeps x sweeps of the equal-cost grid
+  std::vector<std::size_t> methods; // set-ups of these (default_frame_methods)
+  int reference_substeps = 1000;    // RK4's, where the scene has no exact motion
+  bool timing = true;
+  double min_seconds = 0.05;        // of timed runs a set-up
+  bool orders = true;               // the order rows
+  Workers workers;
+};
+
+struct FamilyFront {
+  Family family;
+  std::vector<std::size_t> runs;  // indices into FramesResult::runs, cheapest first
+};
+
+struct FramesResult {
+  FramesConfig config;
+  int springs = 0;
+  std::vector<FrameRun> runs;
+  std::vector<FamilyFront> fronts;
+  std::vector<FrameOrder> orders;
+};
+
+// The default configuration: the rope of 32 masses at total stiffness 5000, XPBD, PBD,
+// Baraff-Witkin, symplectic Euler, implicit Euler and RK4.
+FramesConfig default_frames_config();
+// The set-ups of `methods` at `budget`: for each divisor s of it, s substeps of budget / s sweeps
+// (XPBD, PBD), or of at most budget / s CG iterations (Baraff-Witkin); an ODE method at s substeps.
+std::vector<FrameSetup> frame_setups(const std::vector<std::size_t>& methods, int budget);
+FramesResult frames_study(const FramesConfig& config);
+
+// The cost a front is drawn against: seconds a frame when timed, spring visits a frame otherwise.
+double frame_cost(const FrameRun& r, bool timed);
+
+}  // namespace steplab

@@ -1,0 +1,111 @@
+// `steplab study frames`: a mass-spring scene at a frame rate, each method at substeps x sweeps
+// (or CG iterations) = a budget, its error, stretch, energy lost and cost a frame, and each
+// family's front (analysis/studies/frames.hpp). Table on stdout, JSON (steplab.frames/1) with
+// --json. And the method settings (--sweeps, --cg-iterations, --cg-tolerance) `run` takes.
+#include <cmath>
+#include <cstdio>
+
+#include <fmt/format.h>
+
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/frames.hpp"
+#include "reports/cli/commands.hpp"
+#include "reports/data/inputs.hpp"
+#include "reports/data/output.hpp"
+#include "reports/data/schemas.hpp"
+#include "reports/data/study_output.hpp"
+
+namespace steplab {
+namespace {
+
+bool mass_spring(const SceneKernel& s) { return s.spring_measures != nullptr; }
+
+std::string names_where(bool (*keep)(const MethodInfo&)) {
+  std::string out;
+  for (std::size_t m = 0; m < method_count(); ++m)
+    if (keep(method_info(m))) out += (out.empty() ? "" : ", ") + std::string(method_info(m).name);
+  return out;
+}
+bool sweeps(const MethodInfo& i) { return i.family == Family::PositionBased; }
+bool conjugate_gradients(const MethodInfo& i) { return i.on_springs && i.family != Family::PositionBased; }
+
+}  // namespace
+
+void SettingsArgs::add_to(CLI::App* app) {
+  app->add_option("--sweeps", sweeps, "Gauss-Seidel sweeps a step of " + names_where(&steplab::sweeps) + " (1 .. 1000000; default 1)");
+  app->add_option("--cg-iterations", cg_iterations,
+                  "most conjugate-gradient iterations a step of " + names_where(&conjugate_gradients) + " (1 .. 1000000; default 100)");
+  app->add_option("--cg-tolerance", cg_tolerance,
+                  "CG stops once its residual is below this times the right-hand side's (0 < tol < 1; default 1e-8)");
+}
+
+MethodSettings SettingsArgs::resolve(std::optional<std::size_t> method) const {
+  MethodSettings s;
+  const auto refuse = [&](std::string_view option, bool (*takes)(const MethodInfo&)) {
+    if (method && !takes(method_info(*method)))
+      throw UsageError(fmt::format("{} applies to {}; --method {} takes none", option, names_where(takes), method_info(*method).name));
+  };
+  if (!sweeps.empty()) {
+    refuse("--sweeps", &steplab::sweeps);
+    s.sweeps = static_cast<int>(parse_count("--sweeps", sweeps, 1, 1'000'000));
+  }
+  if (!cg_iterations.empty()) {
+    refuse("--cg-iterations", &conjugate_gradients);
+    s.cg_iterations = static_cast<int>(parse_count("--cg-iterations", cg_iterations, 1, 1'000'000));
+  }
+  if (!cg_tolerance.empty()) {
+    refuse("--cg-tolerance", &conjugate_gradients);
+    s.cg_tolerance = parse_number("--cg-tolerance", cg_tolerance, Bound::Positive);
+    if (s.cg_tolerance >= 1) throw UsageError(fmt::format("--cg-tolerance {} is not below 1; accepted: 0 < tol < 1", cg_tolerance));
+  }
+  return s;
+}
+
+CLI::App* add_frames_command(CLI::App* study, FramesArgs& a) {
+  CLI::App* cmd = study->add_subcommand("frames", "a mass-spring scene at a frame rate: substeps or sweeps, XPBD or large steps, "
+                                                  "at what cost a frame");
+  a.scene.scene = std::string(kFramesScene);
+  a.scene.add_to(cmd, mass_spring);
+  cmd->add_option("--methods", a.methods, "comma-separated methods (default xpbd, pbd, baraff_witkin, symplectic_euler, "
+                                          "implicit_euler, rk4)");
+  cmd->add_option("--fps", a.fps, "frames a second")->capture_default_str();
+  cmd->add_option("--t-end", a.t_end, "simulated time (a whole number of frames)")->capture_default_str();
+  cmd->add_option("--budget", a.budget, "substeps x sweeps (or CG iterations) a frame: every divisor of it as the substeps "
+                                        "(1 .. 10000)")->capture_default_str();
+  cmd->add_option("--threads", a.threads, "worker threads (timings run one at a time)")->capture_default_str();
+  cmd->add_flag("--no-timing", a.no_timing, "cost by spring visits a frame only (reproducible byte for byte)");
+  cmd->add_flag("--no-orders", a.no_orders, "leave out the order in h of the methods on springs");
+  cmd->add_option("--json", a.json, fmt::format("write JSON (schema {}) to this file", schema::frames));
+  return cmd;
+}
+
+int frames_command(FramesArgs& a, Context& ctx) {
+  FramesConfig c = default_frames_config();
+  c.scene = a.scene.scene_index();
+  if (!mass_spring(scene_kernel(c.scene)))
+    throw UsageError(fmt::format("--scene {} is not made of springs; accepted: {}", scene_name(c.scene), scene_list(mass_spring)));
+  // The study's rope (32 masses, stiffness 5000) where the scene is the rope and the user gave neither.
+  if (c.scene == scene_index(kFramesScene))
+    for (const auto& [name, value] : kFramesParams)
+      if (!a.scene.given(name)) a.scene.set(name, fmt::format("{}", value));
+  c.params = a.scene.values(c.scene);
+  if (!a.methods.empty()) c.methods = resolve_methods(a.methods, false, c.scene);
+  else
+    std::erase_if(c.methods, [&](std::size_t m) { return !applies(m, c.scene); });
+  c.fps = parse_number("--fps", a.fps, Bound::Positive);
+  c.t_end = parse_number("--t-end", a.t_end, Bound::Positive);
+  if (const double frames = c.t_end * c.fps; std::abs(frames - std::round(frames)) > 1e-9 * frames || std::round(frames) < 1)
+    throw UsageError(fmt::format("--t-end {} at --fps {} is {} frames; accepted: a whole number of frames, at least 1", a.t_end,
+                                 a.fps, frames));
+  c.budget = static_cast<int>(parse_count("--budget", a.budget, 1, 10'000));
+  c.timing = !a.no_timing;
+  c.orders = !a.no_orders;
+  c.workers = ctx.workers(resolve_thread_count(a.threads));
+  if (ctx.stop_after_validation(a.json)) return 0;
+  const FramesResult r = frames_study(c);
+  std::fputs(frames_table(r).c_str(), stdout);
+  if (!a.json.empty()) write_atomic(a.json, frames_json(r).dump(1) + "\n");
+  return 0;
+}
+
+}  // namespace steplab

@@ -1,0 +1,111 @@
+// The frame-budget study's writers (analysis/studies/frames.hpp): its JSON (steplab.frames/1)
+// and its table.
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/frames.hpp"
+#include "reports/data/run_json.hpp"
+#include "reports/data/schemas.hpp"
+#include "reports/data/study_output.hpp"
+
+namespace steplab {
+namespace {
+
+Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
+
+Json settings_json(const FrameSetup& s) {
+  const MethodInfo& info = method_info(s.method);
+  Json j = Json::object();
+  if (info.family == Family::PositionBased) j["sweeps"] = s.settings.sweeps;
+  if (info.on_springs && info.family != Family::PositionBased)
+    j["cg_iterations"] = s.settings.cg_iterations, j["cg_tolerance"] = s.settings.cg_tolerance;
+  return j;
+}
+
+}  // namespace
+
+std::string frame_setup_text(const FrameSetup& s) {
+  const MethodInfo& info = method_info(s.method);
+  if (info.family == Family::PositionBased) return fmt::format("{} x {} sweep{}", s.substeps, s.settings.sweeps, s.settings.sweeps == 1 ? "" : "s");
+  if (info.on_springs) return fmt::format("{} x {} CG", s.substeps, s.settings.cg_iterations);
+  return fmt::format("{} substep{}", s.substeps, s.substeps == 1 ? "" : "s");
+}
+
+Json frames_json(const FramesResult& r) {
+  const FramesConfig& c = r.config;
+  Json j;
+  j["schema"] = schema::frames;
+  j["scene"] = scene_name(c.scene);
+  j["params"] = scene_params_json(c.scene, c.params);
+  j["fps"] = c.fps, j["t_end"] = c.t_end, j["budget"] = c.budget, j["timing"] = c.timing;
+  j["springs"] = r.springs;
+  j["reference"] = scene_kernel(c.scene).exact ? Json("exact") : Json(fmt::format("rk4 at {} substeps a frame", c.reference_substeps));
+  Json runs = Json::array();
+  for (const FrameRun& run : r.runs) {
+    Json e = {{"method", method_info(run.setup.method).name},
+              {"substeps", run.setup.substeps},
+              {"settings", settings_json(run.setup)},
+              {"status", to_string(run.status)},
+              {"stable", run.stable},
+              {"error_max", finite_or_null(run.error)},
+              {"stretch", finite_or_null(run.stretch)},
+              {"energy_lost_per_s", finite_or_null(run.energy_lost)},
+              {"projections", run.projections},
+              {"spring_visits_per_frame", run.spring_visits},
+              {"seconds_per_frame", c.timing ? Json(run.seconds) : Json(nullptr)}};
+    e.update(counts_json(run.counts));
+    runs.push_back(std::move(e));
+  }
+  j["runs"] = std::move(runs);
+  Json fronts = Json::array();
+  for (const FamilyFront& f : r.fronts) fronts.push_back({{"family", to_string(f.family)}, {"runs", f.runs}});
+  j["fronts"] = std::move(fronts);
+  j["front_cost"] = c.timing ? "seconds_per_frame" : "spring_visits_per_frame";
+  Json orders = Json::array();
+  for (const FrameOrder& o : r.orders) {
+    Json errors = Json::array();
+    for (double e : o.errors) errors.push_back(finite_or_null(e));
+    orders.push_back({{"method", method_info(o.setup.method).name}, {"settings", settings_json(o.setup)},
+                      {"substeps", o.substeps}, {"error_max", std::move(errors)}, {"order", finite_or_null(o.order)}});
+  }
+  j["orders"] = std::move(orders);
+  return j;
+}
+
+std::string frames_table(const FramesResult& r) {
+  const FramesConfig& c = r.config;
+  std::string out = fmt::format("{} ({} springs) at {} frames a second for {} s; error against the {}; budget {} (substeps x "
+                                "sweeps or CG iterations)\n",
+                                scene_name(c.scene), r.springs, c.fps, c.t_end,
+                                scene_kernel(c.scene).exact ? "exact motion" : fmt::format("rk4 at {} substeps a frame", c.reference_substeps),
+                                c.budget);
+  out += fmt::format("{:<18} {:<16} {:>10} {:>10} {:>12} {:>12} {:>12} {:>7}\n", "method", "per frame", "error", "stretch",
+                     "E lost /s", "visits/frame", "us/frame", "front");
+  for (std::size_t i = 0; i < r.runs.size(); ++i) {
+    const FrameRun& run = r.runs[i];
+    bool front = false;
+    for (const FamilyFront& f : r.fronts) front = front || std::find(f.runs.begin(), f.runs.end(), i) != f.runs.end();
+    const auto num = [](double x) { return std::isfinite(x) ? fmt::format("{:.3g}", x) : std::string("-"); };
+    out += fmt::format("{:<18} {:<16} {:>10} {:>10} {:>12} {:>12.4g} {:>12} {:>7}\n", method_info(run.setup.method).name,
+                       frame_setup_text(run.setup), run.stable ? num(run.error) : "unstable", num(run.stretch), num(run.energy_lost),
+                       run.spring_visits, c.timing ? fmt::format("{:.3g}", 1e6 * run.seconds) : "-", front ? "*" : "");
+  }
+  out += fmt::format("front (*): no cheaper set-up of its family has a smaller error (cost: {})\n",
+                     c.timing ? "time a frame" : "spring visits a frame");
+  if (!r.orders.empty()) {
+    out += "\norder in h (substeps a frame doubled, settings fixed):\n";
+    for (const FrameOrder& o : r.orders) {
+      std::string errs;
+      for (std::size_t k = 0; k < o.errors.size(); ++k) errs += fmt::format(" {}:{:.2g}", o.substeps[k], o.errors[k]);
+      FrameSetup s = o.setup;
+      out += fmt::format("{:<14} {:<18} order {:>6.2f} {}\n", method_info(o.setup.method).name,
+                         frame_setup_text(s).substr(frame_setup_text(s).find('x') + 2), o.order, errs);
+    }
+  }
+  return out;
+}
+
+}  // namespace steplab

@@ -1,0 +1,218 @@
+// At a frame budget: "substeps or sweeps, XPBD or large steps, at what cost a frame?" The
+// frame-budget study (analysis/studies/frames.hpp) on its rope, every method on springs at each
+// split of the budget and the ODE methods at the same substeps; the position-based family's
+// answer to the sheet's "is stability correlated with the order?". Every sentence is computed
+// from the study's runs.
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/defaults.hpp"
+#include "analysis/studies/frames.hpp"
+#include "reports/data/study_output.hpp"
+#include "reports/document/report_text.hpp"
+#include "reports/document/section.hpp"
+
+namespace steplab {
+namespace {
+
+std::string g3(double x) { return std::isfinite(x) ? fmt::format("{:.3g}", x) : "-"; }
+
+class Frames : public Section {
+ public:
+  std::string title() const override { return "At a frame budget: substeps or sweeps, XPBD or large steps"; }
+  std::string missing(const ReportConfig& c) const override { return uncovered(c, {scene_index(kFramesScene)}); }
+  void study(const ReportData& d) override {
+    FramesConfig c = default_frames_config();
+    c.timing = d.config.timing;
+    c.workers = d.workers;
+    r_ = frames_study(c);
+  }
+
+  void write_data(const ReportData&, const DataDir& dat) const override {
+    dat.write("frames.json", frames_json(r_).dump(1) + "\n");
+    for (std::size_t m : r_.config.methods) {
+      std::string s = "# substeps sweeps_or_cg seconds_per_frame spring_visits_per_frame error_max stretch energy_lost_per_s\n";
+      for (const FrameRun& run : runs_of(m))
+        if (run.stable)
+          s += fmt::format("{} {} {} {} {} {} {}\n", run.setup.substeps, setting(run.setup), num(run.seconds), num(run.spring_visits),
+                           num(run.error), num(run.stretch), num(run.energy_lost));
+      dat.write(fmt::format("frames_{}.dat", name(m)), s);
+    }
+  }
+
+  std::vector<FigureSpec> figures(const ReportData&) const override {
+    std::vector<std::string> drawn;
+    for (std::size_t m : r_.config.methods)
+      if (std::any_of(r_.runs.begin(), r_.runs.end(), [&](const FrameRun& x) { return x.setup.method == m && x.stable; }))
+        drawn.push_back(name(m));
+    if (drawn.empty()) return {};
+    const bool timed = r_.config.timing;
+    return {{"frames", fmt::format("xcol={}; xname='{}'", timed ? 3 : 4, timed ? "time a frame (s)" : "spring visits a frame"),
+             {{"error against cost a frame", drawn}}}};
+  }
+
+  std::string markdown(Page& page) const override {
+    const FramesConfig& c = r_.config;
+    std::string md = "## " + title() + "\n\n";
+    md += fmt::format(
+        "A simulator shows the {} of {} springs at {} frames a second for {} s and has a budget of {} sweeps (or CG "
+        "iterations) a frame to spend: on one substep of {} sweeps, {} substeps of one sweep, or any split between. Each method on springs runs at "
+        "every split (XPBD and PBD: sweeps a substep; Baraff-Witkin: CG iterations), each ODE method at the same substeps. The "
+        "error is the largest position error over the frames against the {}; the stretch how much more (relative "
+        "elongation) its springs give than the reference's at the same frame.\n\n",
+        scene_name(c.scene), r_.springs, c.fps, c.t_end, c.budget, c.budget, c.budget,
+        scene_kernel(c.scene).exact ? "exact motion" : "reference");
+    md += splits("xpbd") + splits("pbd");
+    md += large_steps();
+    md += stability();
+    md += fronts();
+    if (!page.data.config.timing) md += "The report is not timed: the cost is the spring visits a frame (a projection visits one spring, a force evaluation or a CG product all of them).\n\n";
+    md += page.figure("frames", fmt::format("Error against cost a frame ({}), {} at {} frames a second: each method's splits of "
+                                            "the budget {}, the stable ones",
+                                            c.timing ? "time" : "spring visits", scene_name(c.scene), c.fps, c.budget));
+    md += family_answer();
+    return md;
+  }
+
+ private:
+  FramesResult r_;
+
+  std::vector<FrameRun> runs_of(std::size_t m) const {
+    std::vector<FrameRun> out;
+    for (const FrameRun& x : r_.runs)
+      if (x.setup.method == m) out.push_back(x);
+    return out;
+  }
+  std::vector<FrameRun> runs_of(std::string_view n) const {
+    const auto m = find_method(n);
+    return m && std::find(r_.config.methods.begin(), r_.config.methods.end(), *m) != r_.config.methods.end() ? runs_of(*m)
+                                                                                                          : std::vector<FrameRun>{};
+  }
+  static int setting(const FrameSetup& s) {
+    return method_info(s.method).family == Family::PositionBased ? s.settings.sweeps
+           : method_info(s.method).on_springs                     ? s.settings.cg_iterations
+                                                                  : 0;
+  }
+
+  // Substeps against sweeps for one method: its two ends, and whether the error falls at each split.
+  std::string splits(std::string_view n) const {
+    const std::vector<FrameRun> runs = runs_of(n);  // by substeps, ascending
+    if (runs.size() < 2 || !runs.front().stable || !runs.back().stable) return {};
+    const FrameRun &one = runs.front(), &many = runs.back();
+    bool falls = true;
+    for (std::size_t k = 1; k < runs.size(); ++k) falls = falls && runs[k].stable && runs[k].error < runs[k - 1].error;
+    const double ratio = one.error / many.error;
+    return fmt::format(
+        "- `{}`: {} a frame has error {} and stretch {}; {} has error {} and stretch {}: {} substeps of one sweep are {} "
+        "({:.3g}x){}.\n",
+        n, frame_setup_text(one.setup), g3(one.error), g3(one.stretch), frame_setup_text(many.setup), g3(many.error),
+        g3(many.stretch), many.setup.substeps, ratio > 1 ? "more accurate" : "less accurate", ratio > 1 ? ratio : 1 / ratio,
+        falls ? ", and the error falls at every split in between" : "; the error does not fall at every split");
+  }
+
+  std::string large_steps() const {
+    const std::vector<FrameRun> bw = runs_of("baraff_witkin"), ie = runs_of("implicit_euler");
+    if (bw.empty() || ie.empty() || !bw.front().stable || !ie.front().stable) return {};
+    return fmt::format("- `baraff_witkin` (one Newton step of implicit Euler, solved by CG): {} has error {}, implicit Euler's "
+                       "step at one substep (factorised) {}; with fewer CG iterations on more substeps ({}) the error is {}.\n\n",
+                       frame_setup_text(bw.front().setup), g3(bw.front().error), g3(ie.front().error),
+                       frame_setup_text(bw.back().setup), g3(bw.back().error));
+  }
+
+  std::string stability() const {
+    std::vector<std::size_t> every, some, none;
+    for (std::size_t m : r_.config.methods) {
+      const std::vector<FrameRun> runs = runs_of(m);
+      const auto stable = std::count_if(runs.begin(), runs.end(), [](const FrameRun& x) { return x.stable; });
+      (stable == static_cast<long>(runs.size()) ? every : stable == 0 ? none : some).push_back(m);
+    }
+    std::string md = fmt::format("Stable at every split: {}.", method_list(every));
+    if (!some.empty()) {
+      std::vector<std::string> from;
+      for (std::size_t m : some)
+        for (const FrameRun& x : runs_of(m))
+          if (x.stable) {
+            from.push_back(fmt::format("`{}` from {} substeps", name(m), x.setup.substeps));
+            break;
+          }
+      md += fmt::format(" Stable only with enough substeps: {}.", and_list(from));
+    }
+    if (!none.empty()) md += fmt::format(" Unstable at every split: {}.", method_list(none));
+    return md + "\n\n";
+  }
+
+  // Each family's cheapest stable set-up, and the cheapest set-up of all that reaches the error of
+  // the most accurate position-based one.
+  std::string fronts() const {
+    const bool timed = r_.config.timing;
+    const auto cost = [&](const FrameRun& x) {
+      return timed ? fmt::format("{:.3g} µs a frame", 1e6 * x.seconds) : fmt::format("{:.4g} spring visits a frame", x.spring_visits);
+    };
+    std::string md = "| family | cheapest stable set-up | its error | most accurate on the front | its error |\n|---|---|---|---|---|\n";
+    for (const FamilyFront& f : r_.fronts) {
+      const FrameRun &lo = r_.runs[f.runs.front()], &hi = r_.runs[f.runs.back()];
+      md += fmt::format("| {} | `{}` {}, {} | {} | `{}` {}, {} | {} |\n", to_string(f.family), name(lo.setup.method),
+                        frame_setup_text(lo.setup), cost(lo), g3(lo.error), name(hi.setup.method), frame_setup_text(hi.setup),
+                        cost(hi), g3(hi.error));
+    }
+    double target = INFINITY;
+    for (const FrameRun& x : r_.runs)
+      if (x.stable && method_info(x.setup.method).family == Family::PositionBased) target = std::min(target, x.error);
+    const FrameRun* best = nullptr;
+    for (const FrameRun& x : r_.runs)
+      if (x.stable && x.error <= target && (!best || frame_cost(x, timed) < frame_cost(*best, timed))) best = &x;
+    md += "\n";
+    if (best && std::isfinite(target))
+      md += fmt::format("The cheapest set-up as accurate as the best position-based one (error {}): `{}` {}, {}.\n\n", g3(target),
+                        name(best->setup.method), frame_setup_text(best->setup), cost(*best));
+    return md;
+  }
+
+  // The position-based family (and the large steps) in the families' terms: order in h, stable at
+  // every step tried, energy; and the sheet's question for them.
+  std::string family_answer() const {
+    std::string md = "\nThe methods on springs in the families' terms (order: the slope of the error against h with the substeps "
+                     "doubled from 128 to 1024 a frame, the settings fixed; stable: at every split tried; energy: lost per second "
+                     "against the reference at the last split, negative where it gained):\n\n"
+                     "| method | settings | order in h | stable at every split | energy lost per second |\n|---|---|---|---|---|\n";
+    for (const FrameOrder& o : r_.orders) {
+      const std::vector<FrameRun> runs = runs_of(o.setup.method);
+      const bool every = std::all_of(runs.begin(), runs.end(), [](const FrameRun& x) { return x.stable; });
+      const std::string settings = frame_setup_text(o.setup).substr(frame_setup_text(o.setup).find('x') + 2);
+      const std::string order = std::abs(o.order) < 0.2 ? fmt::format("{:.2f}: does not converge", o.order) : fmt::format("{:.2f}", o.order);
+      md += fmt::format("| `{}` | {} | {} | {} | {} |\n", name(o.setup.method), settings, order, every ? "yes" : "no",
+                        runs.empty() ? "-" : g3(runs.back().energy_lost));
+    }
+    // Stability against order, over the methods of the study: stable at every split or not, with each one's order.
+    std::vector<std::string> stable, unstable;
+    bool stable_solve = true, unstable_explicit = true;  // each stable one solves its springs; each unstable one does not
+    int stable_top = 0, unstable_top = 0;                // the highest order on each side
+    for (std::size_t m : r_.config.methods) {
+      const std::vector<FrameRun> runs = runs_of(m);
+      const bool every = std::all_of(runs.begin(), runs.end(), [](const FrameRun& x) { return x.stable; });
+      const MethodInfo& i = method_info(m);
+      const bool solves = i.implicit || i.on_springs;
+      (every ? stable : unstable).push_back(fmt::format("`{}` ({})", i.name, i.converges ? fmt::format("order {}", i.order) : "no order"));
+      (every ? stable_solve : unstable_explicit) = (every ? stable_solve && solves : unstable_explicit && !solves);
+      (every ? stable_top : unstable_top) = std::max(every ? stable_top : unstable_top, i.order);
+    }
+    md += fmt::format("\nIs stability correlated with the order here? Stable at every split: {}; not: {}.",
+                      stable.empty() ? "none" : and_list(stable), unstable.empty() ? "none" : and_list(unstable));
+    if (!stable.empty() && !unstable.empty() && stable_solve && unstable_explicit)
+      md += fmt::format(" Every stable one solves for its springs at the step's end (a constraint projection or a linear system) "
+                        "and every unstable one evaluates them at known states; {}.",
+                        unstable_top > stable_top ? "the unstable side has the higher orders: stability here follows the solve, "
+                                                    "not the order"
+                                                  : "the order does not separate them either way");
+    return md + "\n\n";
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Section> make_frames_section() { return std::make_unique<Frames>(); }
+
+}  // namespace steplab

@@ -1,0 +1,93 @@
+// The frame-budget study (analysis/studies/frames.hpp) through the kernel table, against the
+// numbers its parts must give: "Small steps" XPBD errors as an independent implementation measured
+// them on this rope (tests/core/xpbd_test.cpp holds the method itself to them), Baraff-Witkin
+// with its CG converged equal to implicit Euler on the linear rope, the explicit methods unstable
+// where the rope's fastest mode is past their limit, and each family's front.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "analysis/studies/frames.hpp"
+
+namespace steplab {
+namespace {
+
+const FramesResult& study() {
+  static const FramesResult r = [] {
+    FramesConfig c = default_frames_config();
+    c.timing = false;
+    c.workers.threads = 2;
+    return frames_study(c);
+  }();
+  return r;
+}
+
+const FrameRun& find(std::string_view method, int substeps) {
+  for (const FrameRun& r : study().runs)
+    if (method_info(r.setup.method).name == method && r.setup.substeps == substeps) return r;
+  throw std::logic_error("no such run");
+}
+
+// The independent implementation's 4.5e-3 (30 x 1) and 7.3e-2 (1 x 30), to 10 %; 16x apart.
+TEST(Frames, SubstepsBeatSweepsAsSmallStepsMeasured) {
+  const FrameRun &small = find("xpbd", 30), &one = find("xpbd", 1);
+  EXPECT_EQ(small.setup.settings.sweeps, 1);
+  EXPECT_EQ(one.setup.settings.sweeps, 30);
+  EXPECT_NEAR(small.error, 4.5e-3, 4.5e-4);
+  EXPECT_NEAR(one.error, 7.3e-2, 7.3e-3);
+  EXPECT_GT(one.error / small.error, 10);
+  EXPECT_GT(one.stretch, small.stretch);  // the unconverged sweeps let the springs give
+  // the same work a frame at every split: 30 sweeps of the 32 springs
+  EXPECT_EQ(small.projections, one.projections);
+  EXPECT_EQ(small.spring_visits, 30.0 * study().springs);
+}
+
+// One substep of Baraff-Witkin with 30 CG iterations is implicit Euler's step on the linear rope:
+// the same error to 1e-5 of it (CG stops at 1e-8 of each step's right-hand side: 2e-6 measured);
+// symplectic Euler and RK4 at one substep a frame are far past their limits (the rope's fastest mode: omega h ~ 80 at 1/60 s), unstable.
+TEST(Frames, LargeStepsAreImplicitEulerAndExplicitStepsBlowUp) {
+  EXPECT_NEAR(find("baraff_witkin", 1).error, find("implicit_euler", 1).error, 1e-5 * find("implicit_euler", 1).error);
+  EXPECT_FALSE(find("symplectic_euler", 1).stable);
+  EXPECT_FALSE(find("rk4", 1).stable);
+  EXPECT_TRUE(find("rk4", 30).stable);  // omega h ~ 2.7 < 2.83
+  for (const FrameRun& r : study().runs)
+    if (method_info(r.setup.method).on_springs) {
+      EXPECT_TRUE(r.stable) << method_info(r.setup.method).name;
+    }
+}
+
+// A front: cost rising, error falling, every member stable and of its family.
+TEST(Frames, FrontsFallInErrorAsTheCostRises) {
+  ASSERT_FALSE(study().fronts.empty());
+  for (const FamilyFront& f : study().fronts) {
+    for (std::size_t k = 0; k < f.runs.size(); ++k) {
+      const FrameRun& r = study().runs[f.runs[k]];
+      EXPECT_EQ(method_info(r.setup.method).family, f.family);
+      EXPECT_TRUE(r.stable);
+      if (k == 0) continue;
+      const FrameRun& before = study().runs[f.runs[k - 1]];
+      EXPECT_GE(frame_cost(r, false), frame_cost(before, false));
+      EXPECT_LT(r.error, before.error);
+    }
+  }
+}
+
+// The orders in h where the rope's modes are resolved: XPBD with one sweep converges at first
+// order (one Gauss-Seidel sweep nearly solves once k h^2 / m is small); PBD does not converge
+// (its springs stiffen towards rods as h shrinks: the error levels off), slope within 0.1 of 0.
+TEST(Frames, XpbdConvergesInHAndPbdDoesNot) {
+  for (const FrameOrder& o : study().orders) {
+    const std::string_view name = method_info(o.setup.method).name;
+    if (name == "xpbd" && o.setup.settings.sweeps == 1) {
+      EXPECT_NEAR(o.order, 1, 0.15);
+    }
+    if (name == "pbd") {
+      EXPECT_NEAR(o.order, 0, 0.1);
+    } else {
+      EXPECT_GT(o.order, 0.5) << name;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace steplab
