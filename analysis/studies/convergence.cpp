@@ -46,6 +46,7 @@ RunSpec convergence_spec(double dt, double t_end, const ConvergenceResult& study
   spec.dt = dt;
   spec.steps = steps_for(t_end, dt);
   spec.errors = !study.uses_reference;
+  spec.settings = study.config.settings;
   return spec;
 }
 
@@ -132,6 +133,7 @@ void time_runs(ConvergenceResult& out) {
     spec.dt = rec.dt;
     spec.steps = rec.steps;
     spec.errors = false;
+    spec.settings = c.settings;
     std::vector<double> times = pair_kernel(rec.method, c.scene).timings(c.params, spec, 3, kTimingSeconds);
     std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
     rec.seconds = times[times.size() / 2];

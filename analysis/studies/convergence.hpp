@@ -28,6 +28,7 @@ struct ConvergenceConfig {
   std::size_t scene = 1;
   std::vector<double> params;         // the scene's parameter values, table order
   std::vector<std::size_t> methods;   // indices into the method table
+  MethodSettings settings{};          // those of the methods that take them (sweeps, CG: core/method.hpp)
   double t_end = 10;
   double dt_max = 0.1, dt_min = 1e-4;
   int points = 16;

@@ -272,6 +272,7 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   conv_cmd->add_option("--threads", conv.threads, "worker threads, 0 = all cores")->capture_default_str();
   add_lanes_option(conv_cmd, conv.lanes);
   add_shard_option(conv_cmd, conv.shard);
+  conv.settings.add_to(conv_cmd);
   conv_cmd->add_flag("--timing", conv.timing, "also time every run (work-precision; not reproducible byte for byte)");
   conv_cmd->add_option("--sweep", conv.sweep, "NAME=V1,V2,...: the study at each value of the scene's parameter NAME "
                       "(increasing), each method's order read against it (e.g. --scene target --sweep stiffness=1,1e2,1e4)");

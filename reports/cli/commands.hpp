@@ -41,8 +41,8 @@ struct SettingsArgs {
   std::string sweeps, cg_iterations, cg_tolerance;  // empty: the defaults
   void add_to(CLI::App* app);
   // The settings, each checked; UsageError for a value out of range, or for a setting given that
-  // `method` does not take (with a method: run's --method).
-  MethodSettings resolve(std::optional<std::size_t> method) const;
+  // none of `methods` takes (run's --method, a study's --methods).
+  MethodSettings resolve(const std::vector<std::size_t>& methods) const;
 };
 
 struct RunArgs {
@@ -65,6 +65,7 @@ namespace steplab {
 
 struct ConvergenceArgs {
   SceneArgs scene;
+  SettingsArgs settings;  // of the methods on springs, for every run of theirs
   std::string methods;  // comma-separated; empty: every numerical method
   std::string dt_max = "0.1", dt_min = "1e-4", points = "16";
   std::string t_end;  // empty: 10, or 1 against a reference solution (contacts make longer runs chaotic)

@@ -2,6 +2,7 @@
 // (or CG iterations) = a budget, its error, stretch, energy lost and cost a frame, and each
 // family's front (analysis/studies/frames.hpp). Table on stdout, JSON (steplab.frames/1) with
 // --json. And the method settings (--sweeps, --cg-iterations, --cg-tolerance) `run` takes.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -39,11 +40,13 @@ void SettingsArgs::add_to(CLI::App* app) {
                   "CG stops once its residual is below this times the right-hand side's (0 < tol < 1; default 1e-8)");
 }
 
-MethodSettings SettingsArgs::resolve(std::optional<std::size_t> method) const {
+MethodSettings SettingsArgs::resolve(const std::vector<std::size_t>& methods) const {
   MethodSettings s;
   const auto refuse = [&](std::string_view option, bool (*takes)(const MethodInfo&)) {
-    if (method && !takes(method_info(*method)))
-      throw UsageError(fmt::format("{} applies to {}; --method {} takes none", option, names_where(takes), method_info(*method).name));
+    if (std::none_of(methods.begin(), methods.end(), [&](std::size_t m) { return takes(method_info(m)); }))
+      throw UsageError(fmt::format("{} applies to {}; {} {} none", option, names_where(takes),
+                                   methods.size() == 1 ? "--method " + std::string(method_info(methods[0]).name) : "--methods",
+                                   methods.size() == 1 ? "takes" : "take"));
   };
   if (!sweeps.empty()) {
     refuse("--sweeps", &steplab::sweeps);

@@ -121,7 +121,7 @@ int run_command(RunArgs& a, Context& ctx) {
   if (!applies(method, scene)) throw UsageError(fmt::format("--method {} {}", a.method, why_not(method, scene)));
   const std::vector<double> params = a.scene.values(scene);
   RunSpec spec;
-  spec.settings = a.settings.resolve(method);
+  spec.settings = a.settings.resolve({method});
   spec.dt = a.dt.empty() ? 0.01 : parse_number("--dt", a.dt, Bound::Positive);
   const double t_end = parse_number("--t-end", a.t_end, Bound::NonNegative);
   spec.steps = step_count(t_end, spec.dt);

@@ -130,6 +130,7 @@ int convergence_command(ConvergenceArgs& a, Context& ctx) {
   c.reference = a.reference || !has_exact;
   c.params = a.scene.values(c.scene);
   c.methods = resolve_methods(a.methods, false, c.scene);
+  c.settings = a.settings.resolve(c.methods);
   c.t_end = a.t_end.empty() ? (c.reference ? 1.0 : 10.0) : parse_number("--t-end", a.t_end, Bound::Positive);
   c.dt_max = parse_number("--dt-max", a.dt_max, Bound::Positive);
   c.dt_min = parse_number("--dt-min", a.dt_min, Bound::Positive);

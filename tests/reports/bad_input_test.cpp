@@ -80,6 +80,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"run --method baraff_witkin --cg-tolerance x", "--cg-tolerance"},
         BadInput{"run --method rk4 --sweeps 3", "--sweeps applies to xpbd, pbd; --method rk4 takes none"},
         BadInput{"run --method xpbd --cg-iterations 3", "--cg-iterations applies to baraff_witkin"},
+        BadInput{"study convergence --methods rk4,bdf2 --sweeps 2", "--sweeps applies to xpbd, pbd; --methods take none"},
+        BadInput{"study convergence --scene rope --methods xpbd --sweeps 0", "--sweeps"},
         BadInput{"run --scene cannonball --method xpbd", "cannonball is not made of springs; accepted: spring, falling, chain, rope, softbody"},
         BadInput{"study frames --scene cannonball", "--scene cannonball"}, BadInput{"study frames --budget 0", "--budget"},
         BadInput{"study frames --budget x", "--budget"}, BadInput{"study frames --fps 0", "--fps"},
