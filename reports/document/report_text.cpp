@@ -19,7 +19,7 @@ std::string num(double x) { return std::isfinite(x) ? fmt::format("{}", x) : "Na
 
 std::string order_text(std::size_t m) {
   const MethodInfo& info = method_info(m);
-  return info.exact_flow ? "exact" : std::to_string(info.order);
+  return info.exact_flow ? "exact" : !info.converges ? "none" : std::to_string(info.order);
 }
 
 std::string fitted_text(const ConvergenceFit& fit) {
