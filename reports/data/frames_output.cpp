@@ -27,10 +27,15 @@ Json settings_json(const FrameSetup& s) {
 
 }  // namespace
 
-std::string frame_setup_text(const FrameSetup& s) {
+std::string frame_settings_text(const FrameSetup& s) {
   const MethodInfo& info = method_info(s.method);
-  if (info.family == Family::PositionBased) return fmt::format("{} x {} sweep{}", s.substeps, s.settings.sweeps, s.settings.sweeps == 1 ? "" : "s");
-  if (info.on_springs) return fmt::format("{} x {} CG", s.substeps, s.settings.cg_iterations);
+  if (info.family == Family::PositionBased) return fmt::format("{} sweep{}", s.settings.sweeps, s.settings.sweeps == 1 ? "" : "s");
+  if (info.on_springs) return fmt::format("{} CG", s.settings.cg_iterations);
+  return {};
+}
+
+std::string frame_setup_text(const FrameSetup& s) {
+  if (method_info(s.method).on_springs) return fmt::format("{} x {}", s.substeps, frame_settings_text(s));
   return fmt::format("{} substep{}", s.substeps, s.substeps == 1 ? "" : "s");
 }
 
@@ -100,9 +105,8 @@ std::string frames_table(const FramesResult& r) {
     for (const FrameOrder& o : r.orders) {
       std::string errs;
       for (std::size_t k = 0; k < o.errors.size(); ++k) errs += fmt::format(" {}:{:.2g}", o.substeps[k], o.errors[k]);
-      FrameSetup s = o.setup;
-      out += fmt::format("{:<14} {:<18} order {:>6.2f} {}\n", method_info(o.setup.method).name,
-                         frame_setup_text(s).substr(frame_setup_text(s).find('x') + 2), o.order, errs);
+      out += fmt::format("{:<14} {:<18} order {:>6.2f} {}\n", method_info(o.setup.method).name, frame_settings_text(o.setup), o.order,
+                         errs);
     }
   }
   return out;

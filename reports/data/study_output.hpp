@@ -99,4 +99,6 @@ Json frames_json(const FramesResult& r);  // schema steplab.frames/1 (reports/da
 std::string frames_table(const FramesResult& r);
 // "30 x 1 sweep", "5 x 6 CG", "10 substeps": a set-up's substeps a frame and its settings.
 std::string frame_setup_text(const FrameSetup& s);
+// "1 sweep", "1000 CG", "": its settings alone.
+std::string frame_settings_text(const FrameSetup& s);
 }  // namespace steplab

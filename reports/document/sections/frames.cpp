@@ -181,7 +181,7 @@ class Frames : public Section {
     for (const FrameOrder& o : r_.orders) {
       const std::vector<FrameRun> runs = runs_of(o.setup.method);
       const bool every = std::all_of(runs.begin(), runs.end(), [](const FrameRun& x) { return x.stable; });
-      const std::string settings = frame_setup_text(o.setup).substr(frame_setup_text(o.setup).find('x') + 2);
+      const std::string settings = frame_settings_text(o.setup);
       const std::string order = std::abs(o.order) < 0.2 ? fmt::format("{:.2f}: does not converge", o.order) : fmt::format("{:.2f}", o.order);
       md += fmt::format("| `{}` | {} | {} | {} | {} |\n", name(o.setup.method), settings, order, every ? "yes" : "no",
                         runs.empty() ? "-" : g3(runs.back().energy_lost));
