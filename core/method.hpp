@@ -64,8 +64,7 @@ struct MethodInfo {
   Family first_of = Family::None;  // a second family whose first member the method is (explicit Euler: AB1)
 };
 
-// What a run may set of a method that has settings (`static constexpr bool takes_settings`, its
-// step then step(s, y, t, h, settings)): the Gauss-Seidel sweeps a step of a position-based
+// What a run may set of a method that has settings (its step then step(s, y, t, h, settings)): the Gauss-Seidel sweeps a step of a position-based
 // method (core/methods/xpbd.hpp, pbd.hpp), the conjugate-gradient iterations of Baraff and
 // Witkin's step (core/methods/baraff_witkin.hpp): at most cg_iterations, stopping once the
 // residual is below cg_tolerance times the right-hand side.
@@ -74,7 +73,11 @@ struct MethodSettings {
   int cg_iterations = 100;
   double cg_tolerance = 1e-8;
 };
-template <class M> concept TakesSettings = requires { M::takes_settings; };
+// Which of them a method reads, from its row: the position-based methods their sweeps, a method
+// on springs that is not position-based (Baraff-Witkin) its CG's; no other method has settings.
+constexpr bool takes_sweeps(const MethodInfo& m) { return m.family == Family::PositionBased; }
+constexpr bool takes_cg(const MethodInfo& m) { return m.on_springs && !takes_sweeps(m); }
+template <class M> concept TakesSettings = takes_sweeps(M::info) || takes_cg(M::info);
 
 // An implicit Runge-Kutta method declares its Butcher tableau, `static constexpr
 // ButcherTableau<s> tableau`, whether its step is written from it (core/implicit_rk.hpp) or by

@@ -75,7 +75,7 @@ FrameRun measure(const FramesConfig& c, const Reference& ref, const FrameSetup& 
   out.stable = finite;
   const int springs = ref.measures.springs;
   const MethodInfo& info = method_info(s.method);
-  if (info.family == Family::PositionBased) out.projections = out.counts.steps * s.settings.sweeps * springs;
+  if (takes_sweeps(info)) out.projections = out.counts.steps * s.settings.sweeps * springs;
   const Counts& n = out.counts;
   out.spring_visits = static_cast<double>(out.projections + (n.forces + n.jacobians + n.factorisations + n.solves) * springs) /
                       static_cast<double>(frame_count(c));
@@ -127,8 +127,8 @@ std::vector<FrameSetup> frame_setups(const std::vector<std::size_t>& methods, in
     for (int s = 1; s <= budget; ++s) {
       if (budget % s != 0) continue;
       FrameSetup setup{m, s, {}};
-      if (method_info(m).family == Family::PositionBased) setup.settings.sweeps = budget / s;
-      if (method_info(m).on_springs && method_info(m).family != Family::PositionBased) setup.settings.cg_iterations = budget / s;
+      if (takes_sweeps(method_info(m))) setup.settings.sweeps = budget / s;
+      if (takes_cg(method_info(m))) setup.settings.cg_iterations = budget / s;
       out.push_back(setup);
     }
   return out;
@@ -158,7 +158,7 @@ FramesResult frames_study(const FramesConfig& config) {
     for (std::size_t m : config.methods) {
       if (!method_info(m).on_springs) continue;
       std::vector<MethodSettings> settings(1);  // sweeps 1
-      if (method_info(m).family == Family::PositionBased) {
+      if (takes_sweeps(method_info(m))) {
         if (method_info(m).converges) settings.emplace_back().sweeps = kConvergedSweeps;
       } else {
         settings[0].cg_iterations = 1000, settings[0].cg_tolerance = 1e-12;

@@ -29,7 +29,6 @@ struct BaraffWitkin {
                                    .a_stable = true, .on_springs = true,
                                    .summary = "implicit Euler linearised: one Newton step (M - h df/dv - h^2 df/dx) dv = h (f + h "
                                               "df/dx v), by preconditioned CG, matrix-free"};
-  static constexpr bool takes_settings = true;
 
   template <MassSpring S> static StepStatus step(const S& s, State<S::dim>& y, double t, double h, const MethodSettings& set) {
     constexpr int d = coords_per_mass<S>();
@@ -44,9 +43,10 @@ struct BaraffWitkin {
       geo[3 * q] = at.g[0], geo[3 * q + 1] = at.g[1], geo[3 * q + 2] = 0;
       if (d == 2 && at.has_direction) geo[3 * q + 2] = (l.k * at.c + l.c * along<d>(l, at, y.v, Zeros{})) / (at.c + l.rest);
     }
-    Temp<S::dim> dfdx = temp_like<S::dim, double>(y.x), dfdv = temp_like<S::dim, double>(y.x);
+    Temp<S::dim> dfdx = temp_like<S::dim, double>(y.x), dfdv = temp_like<S::dim, double>(y.x), mass = temp_like<S::dim, double>(y.x);
     for (Eigen::Index a = 0; a < n; ++a) {
       const int ai = static_cast<int>(a);
+      mass[a] = 1 / w[a];
       dfdv[a] = s.external(ai, 1.0) - s.external(ai, 0.0), dfdx[a] = 0;  // external: affine in v
       if constexpr (HasGround<S>)
         if (a % d == d - 1) dfdx[a] = s.ground.dforce_dy(y.x[a]), dfdv[a] += s.ground.dforce_dv(y.x[a]);
@@ -73,10 +73,10 @@ struct BaraffWitkin {
     // A u = M u - (h^2 df/dx + h df/dv) u; its diagonal, the preconditioner.
     const auto times_a = [&](const auto& u, auto& out) {
       times_jacobians(u, out, -h * h, -h);
-      for (Eigen::Index a = 0; a < n; ++a) out[a] += u[a] / w[a];
+      for (Eigen::Index a = 0; a < n; ++a) out[a] += mass[a] * u[a];
     };
     Temp<S::dim> diag = temp_like<S::dim, double>(y.x);
-    for (Eigen::Index a = 0; a < n; ++a) diag[a] = 1 / w[a] - h * h * dfdx[a] - h * dfdv[a];
+    for (Eigen::Index a = 0; a < n; ++a) diag[a] = mass[a] - h * h * dfdx[a] - h * dfdv[a];
     for (int q = 0; q < links; ++q) {
       const Link l = s.link(q);
       for (int axis = 0; axis < d; ++axis) {

@@ -32,7 +32,6 @@ struct Pbd {
                                    .converges = false,
                                    .summary = "v += h M^-1 f_ext; p = x + h v; sweeps projecting each spring by k' = 1 - (1 - "
                                               "k_s)^(1/sweeps), k_s fixed at a frame of 1/60 s; v = (p - x) / h"};
-  static constexpr bool takes_settings = true;
   static constexpr double kFrame = 1.0 / 60;  // the step k_s is set at
 
   // k_s of a constraint of stiffness k between ends of inverse masses summing to w.
@@ -60,13 +59,18 @@ struct Pbd {
     }
     const Temp<S::dim> start = y.x;
     y.x += h * y.v;
+    // k' of each spring, then of the ground under each mass: the same in every sweep, so a pow each
+    // in the first sweep (where it overlaps the projections' chain) and kept for the others.
+    const int grounds = HasGround<S> ? masses : 0;
+    auto k1 = spring_numbers<S::dim, 2>(links + grounds);
     for (int sweep = 0; sweep < set.sweeps; ++sweep) {
       for (int q = 0; q < links; ++q) {
         const Link l = s.link(q);
         const LinkAt at = link_at<d>(l, y.x);
         const double wi = at_end<d>(w, l.i, 0), wj = at_end<d>(w, l.j, 0);
+        if (sweep == 0) k1[q] = per_sweep(stiffness(l.k, wi + wj), set.sweeps);
         if (!at.has_direction || wi + wj == 0) continue;
-        const double move = -per_sweep(stiffness(l.k, wi + wj), set.sweeps) * at.c / (wi + wj);
+        const double move = -k1[q] * at.c / (wi + wj);
         for (int axis = 0; axis < d; ++axis) {
           if (l.i >= 0) y.x[d * l.i + axis] += wi * move * at.g[axis];
           if (l.j >= 0) y.x[d * l.j + axis] -= wj * move * at.g[axis];
@@ -75,7 +79,8 @@ struct Pbd {
       if constexpr (HasGround<S>)
         for (int i = 0; i < masses; ++i) {
           const int a = d * i + d - 1;
-          if (y.x[a] < Ground::level) y.x[a] -= per_sweep(stiffness(s.ground.k, w[a]), set.sweeps) * (y.x[a] - Ground::level);
+          if (sweep == 0) k1[links + i] = per_sweep(stiffness(s.ground.k, w[a]), set.sweeps);
+          if (y.x[a] < Ground::level) y.x[a] -= k1[links + i] * (y.x[a] - Ground::level);
         }
     }
     y.v = (y.x - start) / h;

@@ -33,7 +33,6 @@ struct Xpbd {
                                    .a_stable = true, .on_springs = true,
                                    .summary = "x~ = x + h v + h^2 M^-1 f_ext; sweeps of Gauss-Seidel over the springs as "
                                               "constraints of compliance 1/k; v = (x - x_n) / h"};
-  static constexpr bool takes_settings = true;
 
   template <MassSpring S> static StepStatus step(const S& s, State<S::dim>& y, double, double h, const MethodSettings& set) {
     constexpr int d = coords_per_mass<S>();

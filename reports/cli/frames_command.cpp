@@ -27,15 +27,13 @@ std::string names_where(bool (*keep)(const MethodInfo&)) {
     if (keep(method_info(m))) out += (out.empty() ? "" : ", ") + std::string(method_info(m).name);
   return out;
 }
-bool sweeps(const MethodInfo& i) { return i.family == Family::PositionBased; }
-bool conjugate_gradients(const MethodInfo& i) { return i.on_springs && i.family != Family::PositionBased; }
 
 }  // namespace
 
 void SettingsArgs::add_to(CLI::App* app) {
-  app->add_option("--sweeps", sweeps, "Gauss-Seidel sweeps a step of " + names_where(&steplab::sweeps) + " (1 .. 1000000; default 1)");
+  app->add_option("--sweeps", sweeps, "Gauss-Seidel sweeps a step of " + names_where(&takes_sweeps) + " (1 .. 1000000; default 1)");
   app->add_option("--cg-iterations", cg_iterations,
-                  "most conjugate-gradient iterations a step of " + names_where(&conjugate_gradients) + " (1 .. 1000000; default 100)");
+                  "most conjugate-gradient iterations a step of " + names_where(&takes_cg) + " (1 .. 1000000; default 100)");
   app->add_option("--cg-tolerance", cg_tolerance,
                   "CG stops once its residual is below this times the right-hand side's (0 < tol < 1; default 1e-8)");
 }
@@ -49,15 +47,15 @@ MethodSettings SettingsArgs::resolve(const std::vector<std::size_t>& methods) co
                                    methods.size() == 1 ? "takes" : "take"));
   };
   if (!sweeps.empty()) {
-    refuse("--sweeps", &steplab::sweeps);
+    refuse("--sweeps", &takes_sweeps);
     s.sweeps = static_cast<int>(parse_count("--sweeps", sweeps, 1, 1'000'000));
   }
   if (!cg_iterations.empty()) {
-    refuse("--cg-iterations", &conjugate_gradients);
+    refuse("--cg-iterations", &takes_cg);
     s.cg_iterations = static_cast<int>(parse_count("--cg-iterations", cg_iterations, 1, 1'000'000));
   }
   if (!cg_tolerance.empty()) {
-    refuse("--cg-tolerance", &conjugate_gradients);
+    refuse("--cg-tolerance", &takes_cg);
     s.cg_tolerance = parse_number("--cg-tolerance", cg_tolerance, Bound::Positive);
     if (s.cg_tolerance >= 1) throw UsageError(fmt::format("--cg-tolerance {} is not below 1; accepted: 0 < tol < 1", cg_tolerance));
   }

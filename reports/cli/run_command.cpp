@@ -154,9 +154,7 @@ int run_command(RunArgs& a, Context& ctx) {
     Json p = params_json(s.params, params);
     p["dt"] = spec.dt;
     p["t_end"] = t_end;
-    if (method_info(method).family == Family::PositionBased) p["sweeps"] = spec.settings.sweeps;
-    if (method_info(method).on_springs && method_info(method).family != Family::PositionBased)
-      p["cg_iterations"] = spec.settings.cg_iterations, p["cg_tolerance"] = spec.settings.cg_tolerance;
+    p.update(settings_json(method_info(method), spec.settings));
     Json j = run_json(s.name, name, std::move(p), r);
     j["counts"] = counted ? counts_json(counts) : Json(nullptr);
     write_atomic(a.json, j.dump(1) + "\n");

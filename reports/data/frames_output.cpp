@@ -16,21 +16,12 @@ namespace {
 
 Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
 
-Json settings_json(const FrameSetup& s) {
-  const MethodInfo& info = method_info(s.method);
-  Json j = Json::object();
-  if (info.family == Family::PositionBased) j["sweeps"] = s.settings.sweeps;
-  if (info.on_springs && info.family != Family::PositionBased)
-    j["cg_iterations"] = s.settings.cg_iterations, j["cg_tolerance"] = s.settings.cg_tolerance;
-  return j;
-}
-
 }  // namespace
 
 std::string frame_settings_text(const FrameSetup& s) {
   const MethodInfo& info = method_info(s.method);
-  if (info.family == Family::PositionBased) return fmt::format("{} sweep{}", s.settings.sweeps, s.settings.sweeps == 1 ? "" : "s");
-  if (info.on_springs) return fmt::format("{} CG", s.settings.cg_iterations);
+  if (takes_sweeps(info)) return fmt::format("{} sweep{}", s.settings.sweeps, s.settings.sweeps == 1 ? "" : "s");
+  if (takes_cg(info)) return fmt::format("{} CG", s.settings.cg_iterations);
   return {};
 }
 
@@ -52,7 +43,7 @@ Json frames_json(const FramesResult& r) {
   for (const FrameRun& run : r.runs) {
     Json e = {{"method", method_info(run.setup.method).name},
               {"substeps", run.setup.substeps},
-              {"settings", settings_json(run.setup)},
+              {"settings", settings_json(method_info(run.setup.method), run.setup.settings)},
               {"status", to_string(run.status)},
               {"stable", run.stable},
               {"error_max", finite_or_null(run.error)},
@@ -73,7 +64,7 @@ Json frames_json(const FramesResult& r) {
   for (const FrameOrder& o : r.orders) {
     Json errors = Json::array();
     for (double e : o.errors) errors.push_back(finite_or_null(e));
-    orders.push_back({{"method", method_info(o.setup.method).name}, {"settings", settings_json(o.setup)},
+    orders.push_back({{"method", method_info(o.setup.method).name}, {"settings", settings_json(method_info(o.setup.method), o.setup.settings)},
                       {"substeps", o.substeps}, {"error_max", std::move(errors)}, {"order", finite_or_null(o.order)}});
   }
   j["orders"] = std::move(orders);

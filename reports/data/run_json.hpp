@@ -42,6 +42,15 @@ inline Json counts_json(const Counts& n) {
           {"newton_iterations", n.newton}};
 }
 
+// The settings a method reads (core/method.hpp: takes_sweeps, takes_cg) by their JSON names; {}
+// for a method without any.
+inline Json settings_json(const MethodInfo& m, const MethodSettings& s) {
+  Json j = Json::object();
+  if (takes_sweeps(m)) j["sweeps"] = s.sweeps;
+  if (takes_cg(m)) j["cg_iterations"] = s.cg_iterations, j["cg_tolerance"] = s.cg_tolerance;
+  return j;
+}
+
 template <int D>
 Json run_json(std::string_view scene, std::string_view method, Json params, const RunResult<D>& r) {
   Json j;

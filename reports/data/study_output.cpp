@@ -42,12 +42,7 @@ Json convergence_json(const ConvergenceResult& r) {
   p["fit_error"] = to_string(c.fit_error);
   p["timing"] = c.timing;
   // the settings of the methods on springs, where one of them ran
-  for (std::size_t m : c.methods) {
-    const MethodInfo& info = method_info(m);
-    if (info.family == Family::PositionBased) p["sweeps"] = c.settings.sweeps;
-    if (info.on_springs && info.family != Family::PositionBased)
-      p["cg_iterations"] = c.settings.cg_iterations, p["cg_tolerance"] = c.settings.cg_tolerance;
-  }
+  for (std::size_t m : c.methods) p.update(settings_json(method_info(m), c.settings));
   j["params"] = std::move(p);
   if (r.uses_reference) {
     const ReferenceSolution& ref = r.reference;

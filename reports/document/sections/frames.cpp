@@ -92,9 +92,7 @@ class Frames : public Section {
                                                                                                           : std::vector<FrameRun>{};
   }
   static int setting(const FrameSetup& s) {
-    return method_info(s.method).family == Family::PositionBased ? s.settings.sweeps
-           : method_info(s.method).on_springs                     ? s.settings.cg_iterations
-                                                                  : 0;
+    return takes_sweeps(method_info(s.method)) ? s.settings.sweeps : takes_cg(method_info(s.method)) ? s.settings.cg_iterations : 0;
   }
 
   // Substeps against sweeps for one method: its two ends, and whether the error falls at each split.
