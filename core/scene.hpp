@@ -66,7 +66,7 @@
 
 namespace steplab {
 
-enum class Bound { Positive, NonNegative, Any };
+enum class Bound { Positive, NonNegative, Fraction, Any };  // Fraction: 0 <= x < 1 (an eccentricity)
 
 struct ParamSpec {
   std::string_view name;  // CLI long option without the dashes, JSON key with '-' -> '_'

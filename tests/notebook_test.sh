@@ -14,7 +14,8 @@ cat > small.json <<'JSON'
 {"convergence": {"points": 4, "dt_min": 0.01}, "work_precision": {"points": 3, "stiffnesses": [5], "timing": false},
  "stability": {"map_dt_points": 4, "map_damping_points": 4}, "collision": {"t_end": 1, "dts": [0.004]},
  "figures": {"energy_t_end": 2, "cannonball_t_end": 2},
- "scaling": {"rope": [4, 8], "softbody": [2], "t_end": 0.5, "map_sizes": [4, 8], "stiffening": [1, 100]}}
+ "scaling": {"rope": [4, 8], "softbody": [2], "t_end": 0.5, "map_sizes": [4, 8], "stiffening": [1, 100]},
+ "long_time": {"periods": 100}}
 JSON
 "$exe" report --config small.json --out report >/dev/null
 command=$(grep -o 'jupyter nbconvert --to html --execute reports/data/explore.ipynb --output-dir build' "$src/README.md")

@@ -4,7 +4,8 @@
 # and a scene without an exact solution (a damped pendulum) into a new project, build it with
 # steplab_add_executable(), and ask the tool about them:
 #   mysteplab check --method heun            exit 0 (every claim holds)
-#   mysteplab check --method heun_claims_3   exit 1 (the order claim fails)
+#   mysteplab check --method heun_claims_3   exit 1 (the order claim fails, and the symplectic one
+#                                            on Kepler's orbit: its energy drifts)
 #   mysteplab check --method heun_frozen_time  exit 1 (its order on the driven target fails alone)
 #   mysteplab study convergence --scene pendulum --methods heun,rk4
 #                                            against the reference solution (no exact one):
@@ -60,10 +61,10 @@ cat > heun_claims_3.hpp <<'EOF'
 #pragma once
 #include "heun.hpp"
 
-// The same step, declared third order: `check` must say no.
+// The same step, declared third order and symplectic: `check` must say no to both.
 struct HeunClaims3 : Heun {
   static constexpr steplab::MethodInfo info{.name = "heun_claims_3", .order = 3, .family = steplab::Family::ExplicitRungeKutta,
-                                            .summary = "Heun's method declared one order too high"};
+                                            .symplectic = true, .summary = "Heun's method declared one order too high, and symplectic"};
 };
 
 STEPLAB_METHOD(HeunClaims3);
@@ -253,8 +254,10 @@ tool=build/mysteplab
 
 "$tool" check --method heun
 status=0
-"$tool" check --method heun_claims_3 || status=$?
+"$tool" check --method heun_claims_3 > claims3.txt || status=$?
 [[ $status -eq 1 ]] || { echo "check --method heun_claims_3 exited $status, not 1"; exit 1; }
+grep -q "^FAIL  order 3 on the spring: fitted" claims3.txt || { cat claims3.txt; exit 1; }
+grep -q "^FAIL  symplectic: on Kepler's orbit over 10000 periods" claims3.txt || { cat claims3.txt; exit 1; }
 # the corrector at the wrong time: every claim holds but the order on the driven target
 status=0
 "$tool" check --method heun_frozen_time > frozen.txt || status=$?

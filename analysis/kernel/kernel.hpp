@@ -60,6 +60,23 @@ struct Observed {
   std::vector<BounceEvent> bounces;
 };
 
+// A long run on a scene with invariants (core/invariants.hpp; analysis/studies/long_time.hpp):
+// steps of dt up to the last of `at`, and at each of those step counts, for each invariant, the
+// largest |I - I0| over the steps so far (every step is read: an oscillating error is caught at
+// its peak), and the position error against the exact solution where the scene has one.
+struct LongRunSpec {
+  double dt = 0.01;
+  std::vector<long long> at;  // ascending step counts
+  MethodSettings settings{};
+};
+struct LongRun {
+  RunStatus status = RunStatus::Ok;
+  long long steps = 0;                        // steps completed with a finite state
+  std::vector<double> invariant0, last;       // each invariant's value at the start and at the last step
+  std::vector<std::vector<double>> largest;   // [invariant][k]: max |I - I0| up to step at[k]
+  std::vector<double> position_error;         // [k]: |x - x_exact| at step at[k]; empty without an exact solution
+};
+
 // One method's code on one scene. A 1-D scene has the step-map entries too (the stability
 // predictions and the local error difference or apply them), others have them null.
 struct PairKernel {
@@ -92,6 +109,8 @@ struct PairKernel {
   // methods that core/batch.hpp's PackedStep admits); null elsewhere. Keeps
   // no samples (run_all gives runs that ask for them to run()).
   void (*run_batch)(std::span<const BatchRun> runs, AnyResult* out, int width) = nullptr;
+  // Scenes with invariants (core/invariants.hpp): the long run (LongRunSpec above).
+  LongRun (*long_run)(Params, const LongRunSpec&) = nullptr;
 };
 
 // One method, whatever the scene.
@@ -161,6 +180,11 @@ struct SceneKernel {
   // dopri5's run repeated and timed, the scene made once (PairKernel::timings).
   std::vector<double> (*dopri5_timings)(Params, const AdaptiveSpec&, std::size_t repeats, double seconds);
   SpringMeasures (*spring_measures)(Params, std::span<const AnyState>) = nullptr;  // mass-spring scenes only
+  // Scenes with invariants (core/invariants.hpp): their names, and the period and extent the
+  // long-time study measures in; empty and null elsewhere.
+  std::span<const std::string_view> invariant_names{};
+  double (*period)(Params) = nullptr;
+  double (*extent)(Params) = nullptr;
 };
 
 struct KernelTable {

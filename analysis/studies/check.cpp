@@ -5,6 +5,8 @@
 #include <limits>
 
 #include "analysis/studies/convergence.hpp"
+#include "analysis/studies/defaults.hpp"
+#include "analysis/studies/long_time.hpp"
 #include "analysis/kernel/kernel.hpp"
 #include "core/scenes/cannonball.hpp"
 #include "core/scenes/target.hpp"
@@ -50,6 +52,31 @@ EnergyCheck energy_check(std::size_t method, const MethodInfo& claims) {
   return e;
 }
 
+OrbitCheck orbit_check(std::size_t method, const MethodInfo& claims, const Workers& workers) {
+  OrbitCheck o;
+  const auto kepler = find_scene(kLongTimeScene);
+  if (!kepler || !applies(method, *kepler)) return o;
+  LongTimeConfig c = default_long_time_config(*kepler);
+  c.methods = {method};
+  c.steps_per_period = {kOrbitStepsPerPeriod};
+  c.periods = kOrbitPeriods;
+  c.workers = workers;
+  const LongTimeRow r = long_time_study(c).rows.front();
+  o.ran = true;
+  const bool ok = r.status == RunStatus::Ok && !r.error.empty() && !r.error[0].empty();
+  if (ok) {
+    const GrowthFit& g = r.growth[0];
+    o.fitted = g.fitted, o.growth = g.exponent, o.lo = g.lo, o.hi = g.hi;
+    o.round_off = r.round_off[0] != 0;
+    o.error = r.error[0].back();
+  } else {
+    o.error = kInf;
+  }
+  o.bounded = ok && (bounded(r.growth[0]) || o.round_off) && o.error < kOrbitKept;
+  o.holds = o.bounded == claims.symplectic;
+  return o;
+}
+
 bool close(double measured, double predicted) {
   if (std::isinf(measured) || std::isinf(predicted) || predicted == 0) return measured == predicted;
   return std::abs(measured - predicted) <= kStableAgreement * predicted;
@@ -70,7 +97,7 @@ RestCheck rest_check(std::size_t method, const Spring& s) {
 }  // namespace
 
 bool CheckResult::all_hold() const {
-  bool ok = energy.holds && a_stable_holds && rest.holds;
+  bool ok = energy.holds && orbit.holds && a_stable_holds && rest.holds;
   // A method that does not converge (PBD) claims no order, and its rest is not the scene's
   // equilibrium, about which dt* is predicted: those are not compared.
   for (const OrderCheck& o : orders) ok = ok && (claims.converges ? o.order_holds && o.converges : !o.converges);
@@ -89,6 +116,7 @@ CheckResult check_method(std::size_t method, const MethodInfo& claims, const Wor
   if (applies(method, scene_index(Target::name)))
     r.orders.push_back(order_check<Target>(method, claims, workers, kTargetStiffness));
   r.energy = energy_check(method, claims);
+  r.orbit = orbit_check(method, claims, workers);
 
   StabilityConfig c;
   c.params = default_param_values(scene_index(Spring::name));

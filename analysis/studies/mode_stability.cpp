@@ -1,9 +1,12 @@
 #include "analysis/studies/mode_stability.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 #include <map>
+
+#include <Eigen/Eigenvalues>
 
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/kernel/shard.hpp"
@@ -39,16 +42,43 @@ double modes_predicted_threshold(std::size_t method, const std::vector<Mode>& mo
   return best;
 }
 
+// The largest growth per step the modes' linearisation predicts at step h: the spectral radius
+// of the method's step matrix on each mode (omega h and 2 zeta omega h on the unit oscillator).
+double predicted_growth(std::size_t method, const std::vector<Mode>& modes, double h) {
+  const MethodKernel& k = method_kernel(method);
+  double rho = 0;
+  std::map<std::pair<double, double>, double> seen;
+  for (const Mode& mode : modes) {
+    const double wh = mode.omega * h;
+    auto [it, fresh] = seen.emplace(std::pair{wh, mode.two_zeta}, 0.0);
+    if (fresh) it->second = k.test_matrix(wh * wh, mode.two_zeta * wh).eigenvalues().cwiseAbs().maxCoeff();
+    rho = std::max(rho, it->second);
+  }
+  return rho;
+}
+
+long long threshold_run_steps(std::size_t method, const std::vector<Mode>& modes, int dim, double h, long long steps) {
+  if (modes.empty()) return steps;
+  const double rho = predicted_growth(method, modes, h);
+  if (!(rho > 1)) return steps;
+  const double needed = std::ceil(kSeedGrowth / std::log(rho));
+  const double most = std::max(static_cast<double>(steps), kMaxThresholdWork / std::max(dim, 1));
+  return static_cast<long long>(std::clamp(needed, static_cast<double>(steps), most));
+}
+
 double measured_threshold(std::size_t method, std::size_t scene, const std::vector<double>& params, double omega_max,
                           long long steps) {
   const PairKernel& k = pair_kernel(method, scene);
+  const SceneKernel& sk = scene_kernel(scene);
+  const std::vector<Mode> modes = sk.modes ? sk.modes(params) : std::vector<Mode>{};
+  const int dim = static_cast<int>(sk.initial(params).x.size());
   RunSpec spec;
-  spec.steps = steps;
   spec.errors = false;
   spec.stop_above = 1e4;
   return stable_set(kMeasureMinWh / omega_max, kMaxWh / omega_max, 2, 1e-3,
                     [&](double h) {
                       spec.dt = h;
+                      spec.steps = threshold_run_steps(method, modes, dim, h, steps);
                       return k.run(params, spec).status != RunStatus::Ok;
                     },
                     false)

@@ -55,6 +55,15 @@ ClaimLine energy_line(const EnergyCheck& e, const MethodInfo& claims) {
                                e.bounded ? "bounded" : "drifts", kDriftBound)};
 }
 
+ClaimLine orbit_line(const OrbitCheck& o, const MethodInfo& claims) {
+  const std::string growth = o.fitted ? fmt::format("grows as t^{:.2f} [{:.2f}, {:.2f}]", o.growth, o.lo, o.hi) : "has no fitted growth";
+  return {o.holds, fmt::format("{}: on Kepler's orbit over {:g} periods of {} steps the energy error {}, largest {}{}: {} "
+                               "(bounded means the interval below 0.5 or round-off, and the orbit kept: error < {})",
+                               claims.symplectic ? "symplectic" : "not symplectic", kOrbitPeriods, kOrbitStepsPerPeriod, growth,
+                               std::isinf(o.error) ? "- it blew up" : fmt::format("{:.3g}", o.error), o.round_off ? " (round-off)" : "",
+                               o.bounded ? "bounded" : "not bounded", kOrbitKept)};
+}
+
 void stability_lines(std::vector<ClaimLine>& out, const CheckResult& r) {
   std::string pairs;
   for (const StabilityCheck& s : r.stability)
@@ -77,6 +86,7 @@ std::vector<ClaimLine> check_lines(const CheckResult& r) {
   std::vector<ClaimLine> out;
   for (const OrderCheck& o : r.orders) order_lines(out, o, r.claims);
   out.push_back(energy_line(r.energy, r.claims));
+  if (r.orbit.ran) out.push_back(orbit_line(r.orbit, r.claims));
   stability_lines(out, r);
   out.push_back({r.rest.holds, fmt::format("rest at equilibrium {}: {} steps of h = {:.3g} move it by {:.2g} "
                                            "of |y_eq| (<= {})",

@@ -315,6 +315,8 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   CLI::App* scaling_cmd = add_scaling_command(study, scaling);
   FramesArgs frames;
   CLI::App* frames_cmd = add_frames_command(study, frames);
+  LongTimeArgs long_time;
+  CLI::App* long_time_cmd = add_long_time_command(study, long_time);
 
   ReportArgs rep;
   CLI::App* rep_cmd = app.add_subcommand("report", "run every study and write report.md, report.pdf, figures/ and data/ into one folder");
@@ -337,7 +339,7 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   add_merge_command(app, merge);
 
   bool progress = false;
-  for (CLI::App* cmd : {conv_cmd, damp_cmd, stab_cmd, wp_cmd, coll_cmd, scaling_cmd, rep_cmd, check_cmd})
+  for (CLI::App* cmd : {conv_cmd, damp_cmd, stab_cmd, wp_cmd, coll_cmd, scaling_cmd, long_time_cmd, rep_cmd, check_cmd})
     cmd->add_flag("--progress", progress, "progress on stderr also where it is not a terminal (a log): runs done, time spent and left");
 
   name_value_kinds(app);
@@ -358,6 +360,7 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
     if (wp_cmd->parsed()) return work_precision_command(wp, ctx);
     if (scaling_cmd->parsed()) return scaling_command(scaling, ctx);
     if (frames_cmd->parsed()) return frames_command(frames, ctx);
+    if (long_time_cmd->parsed()) return long_time_command(long_time, ctx);
     if (rep_cmd->parsed()) {
       rep.methods_given = rep_methods->count() > 0, rep.scenes_given = rep_scenes->count() > 0,
       rep.sections_given = rep_sections->count() > 0;

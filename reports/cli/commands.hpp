@@ -155,6 +155,20 @@ struct FramesArgs {
 CLI::App* add_frames_command(CLI::App* study, FramesArgs& args);
 int frames_command(FramesArgs& args, Context& ctx);
 
+// `study long-time` (reports/cli/long_time_command.cpp): a scene with invariants over many
+// periods, each invariant's error and its growth exponent (analysis/studies/long_time.hpp).
+struct LongTimeArgs {
+  SceneArgs scene;  // add_long_time_command makes Kepler's orbit the default
+  SettingsArgs settings;
+  std::string methods;  // empty: every ODE method that runs on the scene
+  std::string steps_per_period;  // empty: the scene's default (analysis/studies/defaults.hpp)
+  std::string periods = "1e5", samples_per_decade = "8", fit_from = "10";
+  std::string threads = "0";
+  std::string json;
+};
+CLI::App* add_long_time_command(CLI::App* study, LongTimeArgs& args);
+int long_time_command(LongTimeArgs& args, Context& ctx);
+
 // `study scaling` (reports/cli/scaling_command.cpp): cost against the number of masses of the rope or the soft body.
 struct ScalingArgs {
   SceneArgs scene;  // the scene's parameters (--masses, --grid replaced by each size); add_scaling_command makes rope the default

@@ -15,6 +15,7 @@ std::string_view describe(Bound b) {
   switch (b) {
     case Bound::Positive: return "a finite number > 0";
     case Bound::NonNegative: return "a finite number >= 0";
+    case Bound::Fraction: return "a number >= 0 and < 1";
     case Bound::Any: return "a finite number";
   }
   return "a number";
@@ -22,7 +23,7 @@ std::string_view describe(Bound b) {
 
 double check_number(std::string_view what, double value, Bound bound) {
   const bool ok = std::isfinite(value) && (bound != Bound::Positive || value > 0) &&
-                  (bound != Bound::NonNegative || value >= 0);
+                  (bound != Bound::NonNegative || value >= 0) && (bound != Bound::Fraction || (value >= 0 && value < 1));
   if (!ok) throw UsageError(fmt::format("{} = {} is out of range; accepted: {}", what, value, describe(bound)));
   return value;
 }

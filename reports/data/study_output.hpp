@@ -102,3 +102,12 @@ std::string frame_setup_text(const FrameSetup& s);
 // "1 sweep", "1000 CG", "": its settings alone.
 std::string frame_settings_text(const FrameSetup& s);
 }  // namespace steplab
+
+#include "analysis/studies/long_time.hpp"
+
+namespace steplab {
+Json long_time_json(const LongTimeResult& r);  // schema steplab.long_time/1 (reports/data/long_time_output.cpp)
+std::string long_time_table(const LongTimeResult& r);
+// "0.02 [0.01, 0.03]" for a fitted growth exponent, "-" where there were too few samples.
+std::string growth_text(const GrowthFit& g);
+}  // namespace steplab

@@ -26,6 +26,7 @@
 
 #include "analysis/kernel/parallel.hpp"
 #include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/defaults.hpp"
 #include "reports/document/figure_styles.hpp"
 #include "reports/document/gnuplot_scripts.hpp"
 #include "reports/data/output.hpp"
@@ -100,6 +101,10 @@ std::string uncovered_for(const ReportConfig& c, unsigned studies) {
   if (why.empty() && (studies & kCollisionStudy)) why = uncovered(c, {c.rebound.scene, c.body.scene});
   if (why.empty() && (studies & kSceneFigures) && !c.covers(c.oscillator.scene) && !c.covers(c.projectile.scene))
     why = uncovered(c, {c.projectile.scene, c.oscillator.scene});
+  if (why.empty() && (studies & kLongTimeStudy)) {  // the swinging spring at least (the hand-in's); the orbit where covered
+    const auto swing = find_scene(kLongTimeSheetScene);
+    if (swing) why = uncovered(c, {*swing});
+  }
   if (why.empty() && (studies & kConvergenceStudy) && c.convergence_scenes().empty())
     why = "none of the chosen scenes is one it converges on (a scene with an exact solution, or one of yours)";
   return why;

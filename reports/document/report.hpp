@@ -17,6 +17,7 @@
 #include "analysis/studies/convergence.hpp"
 #include "analysis/studies/order_reduction.hpp"
 #include "analysis/studies/scaling.hpp"
+#include "analysis/studies/long_time.hpp"
 #include "analysis/studies/stability.hpp"
 #include "analysis/studies/work_precision.hpp"
 #include "reports/document/report_config.hpp"
@@ -33,6 +34,7 @@ enum ReportStudy : unsigned {
   kSceneFigures = 16,  // cannon, spring
   kStiffOrderStudy = 32,  // does the order hold when stiff: the stiffened scene's sweep
   kScalingStudy = 64,     // as the system grows: every covered scene of run-time size, and the first one's map
+  kLongTimeStudy = 128,   // stable for how long: the orbit and the swinging spring, where covered
   kFindings = kConvergenceStudy | kStabilityStudy,
 };
 
@@ -54,6 +56,10 @@ struct ReportData {
   // first one that declares a stiffness, stiffened as well at the map's sizes (both targets).
   std::vector<ScalingResult> scaling;
   std::optional<ScalingResult> scaling_map;
+  // Stable for how long (analysis/studies/long_time.hpp): Kepler's orbit and the swinging spring
+  // (analysis/studies/defaults.hpp), each where covered, config.long_time_periods long; empty rows
+  // where not run.
+  LongTimeResult long_time_orbit, long_time_swing;
   // figure data
   std::vector<RunResult<2>> cannon;               // [method]: the projectile's path
   std::vector<std::vector<RunResult<1>>> spring;  // [figure dt][method]

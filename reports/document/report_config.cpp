@@ -150,6 +150,8 @@ std::vector<std::size_t> ReportConfig::own_scenes() const {
   for (const ReportScene* s : scenes()) out.push_back(s->scene);
   out.push_back(stiffened.scene);
   for (const ReportSizes& s : scaling) out.push_back(s.scene);
+  for (std::string_view n : {kLongTimeScene, kLongTimeSheetScene})  // the long-time study's (its section's own runs)
+    if (const auto s = find_scene(n)) out.push_back(*s);
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
@@ -190,8 +192,8 @@ ReportConfig default_report_config() {
 ReportConfig sheet_report_config() {
   ReportConfig c = default_report_config();
   choose_methods(c, {kSheetMethods.begin(), kSheetMethods.end()}, "the sheet's methods");
-  choose_scenes(c, {std::string(kSheetOscillator), std::string(kSheetProjectile)}, "the sheet's scenes");
-  c.sections = {"answers", "sheet", "summary", "stable", "order", "energy", "scenes", "convergence", "advice", "reproduce"};
+  choose_scenes(c, {std::string(kSheetOscillator), std::string(kSheetProjectile), std::string(kLongTimeSheetScene)}, "the sheet's scenes");
+  c.sections = {"answers", "sheet", "summary", "stable", "order", "energy", "scenes", "convergence", "long_run", "advice", "reproduce"};
   return c;
 }
 
@@ -211,6 +213,7 @@ Json report_config_json(const ReportConfig& c) {
                     {"map_dt_min", c.map_dt_min},                 {"map_dt_max", c.map_dt_max},
                     {"large_dt", c.large_dt},                     {"small_dt", c.small_dt}};
   j["collision"] = {{"dts", c.collision_dts}, {"t_end", c.collision_t_end}, {"triangle_dt", c.triangle_dt}};
+  j["long_time"] = {{"periods", c.long_time_periods}};
   Json scaling;  // the sizes of each scene by its name, then the measure
   for (const ReportSizes& s : c.scaling) scaling[std::string(scene_name(s.scene))] = s.sizes;
   scaling["error"] = c.scaling_error;
@@ -272,6 +275,10 @@ ReportConfig report_config_from_json(const Json& user, const ReportConfig& base)
   c.triangle_dt = num(co["triangle_dt"], "collision.triangle_dt", Bound::Positive);
   for (double dt : c.collision_dts) step_count(c.collision_t_end, dt);
   step_count(c.collision_t_end, c.triangle_dt);
+  c.long_time_periods = num(j["long_time"]["periods"], "long_time.periods", Bound::Positive);
+  if (c.long_time_periods < 20 || c.long_time_periods > 1e6)
+    throw UsageError(fmt::format("config: long_time.periods {} is out of range; accepted: 20 .. 1e6 (the growth is fitted from 10 periods on)",
+                                 c.long_time_periods));
   const Json& sc = j["scaling"];
   for (ReportSizes& s : c.scaling) {  // each within its size parameter's range
     const SceneKernel& k = scene_kernel(s.scene);

@@ -81,6 +81,8 @@ struct ReportConfig {
   // does the order hold when stiff: the scene swept (its parameters but the stiffness) and the sweep
   ReportScene stiffened;
   StiffOrderDefaults stiff_order;
+  // stable for how long: the orbit and the swinging spring, this many periods (analysis/studies/defaults.hpp)
+  double long_time_periods = kLongTimeReportPeriods;
   // figures
   double cannonball_dt = 0.25, cannonball_t_end = 17.5;
   std::vector<double> spring_figure_dts{0.01, 0.05};

@@ -166,6 +166,16 @@ ReportData run_report_studies(const ReportConfig& c, unsigned studies, ProgressH
         d.scaling.push_back(scaling_study(scaling_config_for(d, s)));
       }
 
+  if (studies & kLongTimeStudy)
+    for (const auto& [result, name] : {std::pair{&d.long_time_orbit, kLongTimeScene}, {&d.long_time_swing, kLongTimeSheetScene}})
+      if (const auto s = find_scene(name); s && c.covers(*s)) {
+        LongTimeConfig lc = default_long_time_config(*s);
+        std::erase_if(lc.methods, [&](std::size_t m) { return std::find(d.methods.begin(), d.methods.end(), m) == d.methods.end(); });
+        lc.periods = c.long_time_periods;
+        lc.workers = d.workers;
+        *result = long_time_study(lc);
+      }
+
   // Figures: the cannon ball's path and the spring's y(t) (kSceneFigures); the undamped energy at
   // the large step and the predicted growth rate against damping on a fine grid (kStabilityStudy).
   if (!(studies & (kSceneFigures | kStabilityStudy))) return d;

@@ -86,6 +86,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"study frames --scene cannonball", "--scene cannonball"}, BadInput{"study frames --budget 0", "--budget"},
         BadInput{"study frames --budget x", "--budget"}, BadInput{"study frames --fps 0", "--fps"},
         BadInput{"study frames --t-end 0.01", "a whole number of frames"},
+        BadInput{"study long-time --scene spring", "--scene spring declares no invariants; accepted: kepler, swing"},
+        BadInput{"study long-time --periods 0.5", "--periods"}, BadInput{"study long-time --periods 1e8", "--periods"},
+        BadInput{"study long-time --steps-per-period 0", "--steps-per-period"},
+        BadInput{"study long-time --scene swing --damping 0.1", "no invariant"},
+        BadInput{"study long-time --fit-from 1e5", "--fit-from"}, BadInput{"study long-time --eccentricity 1", "eccentricity"},
+        BadInput{"study long-time --methods rk5", "did you mean"},
         BadInput{"study frames --scene chain --methods xpbd,radau_iia5,xpbd", "twice"},
         BadInput{"report --methods xpbd --out {dir}/r", "'xpbd' works on a scene's springs"},
         // run: numbers

@@ -35,6 +35,7 @@ inline ReportConfig small_config() {
   sizes_of(c, "softbody") = {2, 3};
   c.scaling_map_sizes = {4, 8};
   c.scaling_stiffening = {1, 1000};
+  c.long_time_periods = 100;
   return c;
 }
 

@@ -11,7 +11,9 @@
 #include "reports/document/figure_styles.hpp"
 #include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"
+#include "reports/data/study_output.hpp"
 #include "reports/document/section.hpp"
+#include "reports/document/sections/long_time.hpp"
 
 namespace steplab {
 namespace {
@@ -29,9 +31,23 @@ std::string long_runs(const ReportData& d) {
   for (const EnergyBehaviour& e : bounded)
     items.push_back(fmt::format("`{}` (order {}{}, E/E0 within [{:.4g}, {:.4g}])", name(e.method), method_info(e.method).order,
                                 method_info(e.method).symplectic ? ", symplectic" : "", e.lo, e.hi));
-  return fmt::format("- **A long run of an undamped system** (energy must not drift): {}, measured over t = {:g} at dt = {}. "
-                     "A method whose energy drifts here will drift further over a longer run.\n",
-                     and_list(items), d.config.energy_t_end, d.config.large_dt);
+  std::string md = fmt::format("- **A long run of an undamped system** (energy must not drift): {}, measured over t = {:g} at dt = {}.",
+                               and_list(items), d.config.energy_t_end, d.config.large_dt);
+  // Over many periods of a nonlinear orbit, where the report ran it: bounded by structure.
+  const LongTimeResult& orbit = d.long_time_orbit;
+  if ((d.studies & kLongTimeStudy) && !orbit.rows.empty()) {
+    const LongTimeSides s = sides(orbit);
+    std::vector<std::string> kept_bounded;
+    for (const LongTimeRow& row : orbit.rows)
+      if (std::find(s.bounded.begin(), s.bounded.end(), row.method) != s.bounded.end())
+        kept_bounded.push_back(fmt::format("`{}` (energy error {:.2g}, growth {})", name(row.method), row.error[0].back(),
+                                           growth_text(row.growth[0])));
+    md += fmt::format(" Over {:g} periods of Kepler's orbit at {} steps a period: {}.", orbit.config.periods,
+                      orbit.config.steps_per_period.front(), kept_bounded.empty() ? "none stays bounded" : and_list(kept_bounded));
+  } else {
+    md += " A method whose energy drifts here will drift further over a longer run.";
+  }
+  return md + "\n";
 }
 
 // Accuracy at a price: the cheapest solver at the loosest and the tightest error level on a scene.

@@ -13,6 +13,7 @@
 #include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
+#include "reports/document/sections/long_time.hpp"
 
 namespace steplab {
 namespace {
@@ -44,6 +45,21 @@ std::string stable_answer(const Page& page) {
   if (!f.always_stable.empty())
     md += fmt::format(" Stable at every step tried: {}.", method_list(methods_of(f, f.always_stable)));
   return md + fmt::format(" Each method's largest stable step dt* is in the summary table{}.\n", see(page, "regions"));
+}
+
+// Stable for how long: the orbit's runs by their energy error, and whether the structure or the order decides.
+std::string long_time_answer(const Page& page) {
+  const LongTimeResult& r = page.data.long_time_orbit;
+  const LongTimeSides s = sides(r);
+  std::string md = fmt::format("- **Stable for how long?** Over {:g} periods of Kepler's orbit the energy error stays bounded with {} and "
+                               "drifts with {}",
+                               r.config.periods, method_list(s.bounded), method_list(s.drifting));
+  if (!s.lost.empty()) md += fmt::format("; {} {} the orbit", method_list(s.lost), s.lost.size() == 1 ? "loses" : "lose");
+  md += ".";
+  if (s.not_by_order)
+    md += fmt::format(" Bounded are the symplectic ones, whatever their order: `{}` (order {}) drifts, `{}` (order {}) does not.",
+                      name(*s.high_drift), method_info(*s.high_drift).order, name(*s.low_bounded), method_info(*s.low_bounded).order);
+  return md + fmt::format(" The growth exponents, the angular momentum and the phase are in \"Stable for how long?\"{}.\n", see(page, "long_time"));
 }
 
 std::string order_answer(const Page& page) {
@@ -190,6 +206,7 @@ class Answers : public Section {
     if (d.studies & kStiffOrderStudy) md += stiff_answer(page);
     if (d.studies & kWorkPrecisionStudy) md += cost_answer(page);
     if (d.studies & kScalingStudy) md += implicit_answer(page);
+    if ((d.studies & kLongTimeStudy) && !d.long_time_orbit.rows.empty()) md += long_time_answer(page);
     if (d.config.has_section("advice")) md += "\nWhat to use when closes the report.\n";
     return md + "\n";
   }

@@ -15,12 +15,14 @@
   X(energy, true)                  \
   X(scenes, false)                 \
   X(convergence, true)             \
+  X(long_run, false)               \
   X(stiff_order, true)             \
   X(stability, true)               \
   X(cost, true)                    \
   X(collision, true)               \
   X(growth, true)                  \
   X(frames, true)                  \
+  X(long_time, true)               \
   X(advice, true)                  \
   X(physics, true)                 \
   X(reproduce, true)

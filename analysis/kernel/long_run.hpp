@@ -1,0 +1,52 @@
+// The long run of method M on a scene with invariants (PairKernel::long_run, analysis/kernel/
+// kernel.hpp), instantiated by the generated translation units alone (kernel_impl.hpp).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "analysis/kernel/kernel.hpp"
+#include "core/invariants.hpp"
+#include "core/stepper.hpp"
+
+namespace steplab {
+
+// Every step's invariants read, their largest distance from the start kept; the state's
+// finiteness checked every step (a blow-up ends the run, its samples after it left out).
+template <class M, HasInvariants S> LongRun long_run(Params p, const LongRunSpec& spec) {
+  const S s(p);
+  constexpr std::size_t ni = S::invariant_names.size();
+  State<S::dim> y = s.initial();
+  const std::array<double, ni> i0 = s.invariants(y.x, y.v);
+  std::array<double, ni> largest{}, now = i0;
+  LongRun out;
+  out.invariant0.assign(i0.begin(), i0.end());
+  out.largest.assign(ni, {});
+  Stepper<M, S> stepper;
+  if constexpr (TakesSettings<M>) stepper.settings = spec.settings;
+  long long k = 0;
+  for (const long long until : spec.at) {
+    for (; k < until; ++k) {
+      if (steplab::failed(stepper.step(s, y, static_cast<double>(k) * spec.dt, spec.dt))) {
+        out.status = RunStatus::NoConvergence;
+        out.last.assign(now.begin(), now.end());
+        return out;
+      }
+      if (!all_finite(y)) {
+        out.status = RunStatus::Diverged;
+        out.last.assign(now.begin(), now.end());
+        return out;
+      }
+      now = s.invariants(y.x, y.v);
+      for (std::size_t i = 0; i < ni; ++i) largest[i] = std::max(largest[i], std::abs(now[i] - i0[i]));
+      out.steps = k + 1;
+    }
+    for (std::size_t i = 0; i < ni; ++i) out.largest[i].push_back(largest[i]);
+    if constexpr (HasExact<S>) out.position_error.push_back((y.x - exact(s, static_cast<double>(until) * spec.dt).x).norm());
+  }
+  out.last.assign(now.begin(), now.end());
+  return out;
+}
+
+}  // namespace steplab

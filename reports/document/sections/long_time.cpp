@@ -1,0 +1,236 @@
+// Stable for how long? The long-time study (analysis/studies/long_time.hpp) on Kepler's orbit and
+// on the sheet's spring swinging in a plane: each method's energy error over many periods, its
+// growth exponent with its interval, the angular momentum and the phase; the families' answer
+// for long times: bounded or drifting is set by the structure (symplectic or not), not by the
+// order. Every sentence is computed from the runs.
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/defaults.hpp"
+#include "analysis/studies/long_time.hpp"
+#include "reports/data/study_output.hpp"
+#include "reports/document/report_text.hpp"
+#include "reports/document/section.hpp"
+#include "reports/document/sections/long_time.hpp"
+
+namespace steplab {
+
+// The data files of a long-time run: lt_<scene>_<method>.dat (t in periods, each invariant's
+// largest relative error up to t, the position error where the scene has an exact solution):
+// shared with the hand-in's paragraph (reports/document/sections/long_run.cpp).
+void write_long_time_data(const LongTimeResult& r, const DataDir& dat) {
+  for (const LongTimeRow& row : r.rows) {
+    std::string s = "# t_periods";
+    for (const std::string& n : r.invariants) s += fmt::format(" {}_error", n.substr(0, n.find(' ')));
+    s += r.has_exact ? " position_error\n" : "\n";
+    for (std::size_t k = 0; k < row.times.size(); ++k) {
+      s += num(row.times[k]);
+      for (const std::vector<double>& e : row.error) s += fmt::format(" {}", num(e[k]));
+      if (r.has_exact) s += fmt::format(" {}", num(row.position_error[k]));
+      s += "\n";
+    }
+    dat.write(fmt::format("lt_{}_{}.dat", scene_name(r.config.scene), name(row.method)), s);
+  }
+}
+
+// Whether the row kept its orbit or swing: finite to the end, energy error below 0.1.
+bool kept(const LongTimeRow& r) { return r.status == RunStatus::Ok && !r.error.empty() && r.error[0].back() < 0.1; }
+
+// What became of a run that lost its orbit: how it ended, or its energy's change at the end.
+std::string fate(const LongTimeRow& r) {
+  if (r.status == RunStatus::Diverged) return fmt::format("blew up after {:.3g} periods", r.ended);
+  if (r.status == RunStatus::NoConvergence) return fmt::format("its Newton iteration gave up after {:.3g} periods", r.ended);
+  const double c = r.change.empty() ? 0 : r.change[0];
+  if (c > 1) return fmt::format("energy error {:.2g} times its start", c);
+  return fmt::format("energy {}{:.3g} % at the end", c > 0 ? "+" : "", 100 * c);
+}
+
+LongTimeSides sides(const LongTimeResult& r) {
+  LongTimeSides out;
+  for (const LongTimeRow& row : r.rows) {
+    if (kept(row) && (bounded(row.growth[0]) || row.round_off[0])) out.bounded.push_back(row.method);
+    else if (kept(row) && drifts(row.growth[0])) out.drifting.push_back(row.method);
+    else out.lost.push_back(row.method);
+  }
+  // the highest order that drifts against the lowest that stays bounded
+  for (std::size_t m : out.drifting)
+    if (!out.high_drift || method_info(m).order > method_info(*out.high_drift).order) out.high_drift = m;
+  for (std::size_t m : out.bounded)
+    if (!out.low_bounded || method_info(m).order < method_info(*out.low_bounded).order) out.low_bounded = m;
+  const auto all = [](const std::vector<std::size_t>& ms, bool symplectic) {
+    return std::all_of(ms.begin(), ms.end(), [&](std::size_t m) { return method_info(m).symplectic == symplectic; });
+  };
+  out.by_structure = !out.bounded.empty() && !out.drifting.empty() && all(out.bounded, true) && all(out.drifting, false);
+  out.not_by_order = out.by_structure && method_info(*out.high_drift).order >= method_info(*out.low_bounded).order;
+  return out;
+}
+
+std::string structure_answer(const LongTimeResult& r) {
+  const LongTimeSides s = sides(r);
+  const auto items = [](const std::vector<std::size_t>& ms) {
+    std::vector<std::string> out;
+    for (std::size_t m : ms)
+      out.push_back(fmt::format("`{}` ({}order {})", name(m), method_info(m).symplectic ? "symplectic, " : "", method_info(m).order));
+    return out.empty() ? std::string("none") : and_list(out);
+  };
+  std::string md = fmt::format("Bounded energy error (growth exponent's interval below 0.5): {}. Drifting (interval above 0.5): {}.",
+                               items(s.bounded), items(s.drifting));
+  std::vector<std::string> lost;
+  for (const LongTimeRow& row : r.rows)
+    if (std::find(s.lost.begin(), s.lost.end(), row.method) != s.lost.end()) lost.push_back(fmt::format("`{}` ({})", name(row.method), fate(row)));
+  if (!lost.empty()) md += fmt::format(" Lost the {} (energy error 0.1 or more, or the run ended): {}.", r.has_exact ? "orbit" : "swing", and_list(lost));
+  if (s.not_by_order)
+    md += fmt::format(" Every bounded one is symplectic and every drifting one is not, whatever the order: `{}` of order {} drifts "
+                      "while `{}` of order {} stays bounded. The structure decides, not the order.",
+                      name(*s.high_drift), method_info(*s.high_drift).order, name(*s.low_bounded), method_info(*s.low_bounded).order);
+  else if (s.by_structure)
+    md += " Every bounded one is symplectic and every drifting one is not.";
+  return md;
+}
+
+namespace {
+
+std::string g3(double x) { return std::isfinite(x) ? fmt::format("{:.2g}", x) : "-"; }
+
+class LongTime : public Section {
+ public:
+  std::string title() const override { return "Stable for how long? Energy, angular momentum and phase over many periods"; }
+  std::string missing(const ReportConfig& c) const override {
+    return uncovered(c, {scene_index(kLongTimeScene), scene_index(kLongTimeSheetScene)});
+  }
+  unsigned needs() const override { return kLongTimeStudy; }
+  void study(const ReportData& d) override { orbit_ = d.long_time_orbit, swing_ = d.long_time_swing; }
+  void write_data(const ReportData&, const DataDir& dat) const override {
+    dat.write(fmt::format("long_time_{}.json", scene_name(orbit_.config.scene)), long_time_json(orbit_).dump(1) + "\n");
+    dat.write(fmt::format("long_time_{}.json", scene_name(swing_.config.scene)), long_time_json(swing_).dump(1) + "\n");
+    write_long_time_data(orbit_, dat);
+    write_long_time_data(swing_, dat);
+  }
+  std::vector<FigureSpec> figures(const ReportData& d) const override {
+    std::vector<Panel> drawn = panels(d.methods);
+    if (drawn.empty()) return {};
+    return {{"long_time", fmt::format("prefix='lt_{}_'; col=2; ylab='largest relative energy error up to t'", scene_name(orbit_.config.scene)),
+             std::move(drawn)}};
+  }
+
+  std::string markdown(Page& page) const override {
+    const LongTimeConfig& c = orbit_.config;
+    std::string md = fmt::format("## {}\n\n", title());
+    md += fmt::format(
+        "The linear spring cannot tell the structures apart: there every A-stable or symplectic method looks alike. A long run of a "
+        "nonlinear system can. Kepler's orbit ({}) and the sheet's spring swinging in a plane ({}) run for {:g} periods at {} steps a "
+        "period with each method; every step's energy (and the orbit's angular momentum) is read, and the largest relative error "
+        "up to t is fitted against t on log-log axes from {:g} periods on: the growth exponent with its 95 % interval (near 0: "
+        "bounded; near 1: a drift linear in t; near 0.5: round-off's random walk).\n\n",
+        params_text(c.scene, c.params), params_text(swing_.config.scene, swing_.config.params), c.periods, c.steps_per_period.front(),
+        c.fit_from);
+    md += fmt::format("- **Kepler's orbit.** {}\n- **The swinging spring.** {}\n", structure_answer(orbit_), structure_answer(swing_));
+    md += angular_momentum() + phase() + crossing() + "\n";
+    if (!panels(page.data.methods).empty())
+      md += page.figure("long_time", fmt::format("Kepler's orbit, {} steps a period: the largest relative energy error up to t (in "
+                                               "periods), a panel per family",
+                                               c.steps_per_period.front()));
+    md += table();
+    return md;
+  }
+
+ private:
+  LongTimeResult orbit_, swing_;
+
+  // A panel per family, of the methods with samples to draw (none where every run ended at once).
+  std::vector<Panel> panels(const std::vector<std::size_t>& methods) const {
+    return family_panels(methods, [&](std::size_t m) {
+      return std::any_of(orbit_.rows.begin(), orbit_.rows.end(), [&](const LongTimeRow& r) { return r.method == m && !r.times.empty(); });
+    });
+  }
+
+  // The first sample from which the growth is fitted (fit_from periods): "early" in a long run.
+  std::size_t early_sample() const {
+    for (const LongTimeRow& row : orbit_.rows)
+      for (std::size_t k = 0; k < row.times.size(); ++k)
+        if (row.times[k] >= orbit_.config.fit_from * (1 - 1e-12)) return k;
+    return 0;
+  }
+
+  // Angular momentum (the orbit's second invariant) kept to round-off, against the symplectic claim.
+  std::string angular_momentum() const {
+    if (orbit_.invariants.size() < 2) return {};
+    std::vector<std::size_t> keep;
+    double others = INFINITY;
+    for (const LongTimeRow& row : orbit_.rows) {
+      if (row.status != RunStatus::Ok || row.error.size() < 2) continue;
+      if (row.round_off[1]) keep.push_back(row.method);
+      else others = std::min(others, row.error[1].back());
+    }
+    return fmt::format("- **Angular momentum** stays within round-off ({:g} u sqrt(steps)) with {}; every other method that kept running "
+                       "changed it by {} or more.\n",
+                       kRoundOff, method_list(keep), g3(others));
+  }
+
+  // The phase: the position error's growth exponent, symplectic methods against the others.
+  std::string phase() const {
+    std::vector<std::string> sym, other;
+    for (const LongTimeRow& row : orbit_.rows)
+      if (row.position_growth.fitted)
+        (method_info(row.method).symplectic ? sym : other)
+            .push_back(fmt::format("`{}` {:.2f}", name(row.method), row.position_growth.exponent));
+    if (sym.empty() && other.empty()) return {};
+    return fmt::format("- **The phase.** The position error's growth exponent (fitted while below a tenth of the orbit's size; theory: "
+                       "1 for symplectic and symmetric methods, 2 otherwise): symplectic {}; the others {}.\n",
+                       sym.empty() ? "none" : and_list(sym), other.empty() ? "none" : and_list(other));
+  }
+
+  // A non-symplectic method ahead early and behind at the end of a symplectic one: the pair
+  // whose order changes most.
+  std::string crossing() const {
+    const LongTimeRow *best_a = nullptr, *best_b = nullptr;
+    double best = 1;
+    const std::size_t early = early_sample();
+    for (const LongTimeRow& a : orbit_.rows)
+      for (const LongTimeRow& b : orbit_.rows) {
+        if (method_info(a.method).symplectic || !method_info(b.method).symplectic || !kept(a) || !kept(b)) continue;
+        if (a.times.size() != b.times.size() || early >= a.times.size() || a.error[0][early] >= b.error[0][early] || a.error[0].back() <= b.error[0].back()) continue;
+        const double swing = (a.error[0].back() / b.error[0].back()) * (b.error[0][early] / a.error[0][early]);
+        if (swing > best) best = swing, best_a = &a, best_b = &b;
+      }
+    if (!best_a) return {};
+    return fmt::format("- **Short runs mislead.** After {:g} periods `{}` (order {}) has the smaller energy error, {} against `{}`'s {} "
+                       "(order {}); after {:g} periods it has the larger, {} against {}.\n",
+                       best_a->times[early], name(best_a->method), method_info(best_a->method).order, g3(best_a->error[0][early]),
+                       name(best_b->method), g3(best_b->error[0][early]), method_info(best_b->method).order, best_a->times.back(),
+                       g3(best_a->error[0].back()), g3(best_b->error[0].back()));
+  }
+
+  std::string table() const {
+    // the rule's dashes set pandoc's column widths: the method names and the intervals whole on a line
+    std::string md = "\n| method | order | sym. | energy growth, orbit | energy error | ang. mom. error | phase growth | out of phase "
+                     "(periods) | energy growth, swing |\n|------------------|---|----|----------------|-------|---------|--------------|---------|"
+                     "----------------|\n";
+    for (const LongTimeRow& row : orbit_.rows) {
+      const MethodInfo& i = method_info(row.method);
+      const LongTimeRow* sw = nullptr;
+      for (const LongTimeRow& s : swing_.rows)
+        if (s.method == row.method) sw = &s;
+      const bool ok = row.status == RunStatus::Ok && !row.error.empty() && !row.error[0].empty();
+      const std::string blew = fmt::format("blew up at {:.3g}", row.ended);
+      md += fmt::format("| `{}` | {} | {} | {} | {} | {} | {} | {} | {} |\n", i.name, i.order, i.symplectic ? "yes" : "no",
+                        ok ? growth_text(row.growth[0]) : blew, ok ? fmt::format("{}{}", g3(row.error[0].back()), row.round_off[0] ? " (R)" : "") : "-",
+                        ok && row.error.size() > 1 ? fmt::format("{}{}", g3(row.error[1].back()), row.round_off[1] ? " (R)" : "") : "-",
+                        growth_text(row.position_growth),
+                        row.out_of_phase > 0 ? fmt::format("{:.3g}{}", row.out_of_phase, row.out_of_phase_extrapolated ? " (extr.)" : "") : "-",
+                        sw && sw->status == RunStatus::Ok ? growth_text(sw->growth[0]) : sw ? fmt::format("blew up at {:.3g}", sw->ended) : "-");
+    }
+    return md + fmt::format("\nGrowth: exponent [95 % interval] from {:g} periods on. Sym.: symplectic. (R): within round-off's level. Out of phase: when the "
+                            "position error reaches the orbit's semi-major axis ({}: extrapolated from the fitted growth past the run).\n\n",
+                            orbit_.config.fit_from, "extr.");
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Section> make_long_time_section() { return std::make_unique<LongTime>(); }
+
+}  // namespace steplab
