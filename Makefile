@@ -99,7 +99,10 @@ performance: bench
 # - Claims with other parameters (without damping, a stiff spring and a large step: the same
 #   findings code as Claims.FollowTheDataWithDefaults, which runs here), and notebook.explore
 #   (pandas reading the studies' JSON back; the studies that write it run here).
-SANITIZE_SKIP ?= readme\.walkthrough|ReportPages|ReportGrowth|ReportSubsets|ReportChoice\.(AChosenMethodHasTheFullReportsNumbers|ACrossoverNeedsBothKinds)|ReportInterrupted|ReportUpToDate|package\.plugin|ReportFindings|WorkPrecision\.(Rk4Accuracy|BdfSteps|AdaptiveErrors|ImplicitPays)|Determinism\.SameBytes|StabilityJson\.SameForOneAndTwoThreads|Allocation\.NoneInAStepOn|ReportSheet\.NumbersAreTheFullReports|Claims\.FollowTheData(WithoutDamping|WithAStiffSpringAndALargeStep)|notebook\.explore
+# - the long-time study's theory tests on the orbit (10^6-10^7 steps each; the same long-run code
+#   runs here in LongTime's swinging-spring tests and in every method's check) and the report's
+#   long-time sentences under two settings (ReportLongTime.HandIn... makes its section here).
+SANITIZE_SKIP ?= readme\.walkthrough|ReportPages|ReportGrowth|LongTime\.Kepler|ReportLongTime\.Follows|ReportSubsets|ReportChoice\.(AChosenMethodHasTheFullReportsNumbers|ACrossoverNeedsBothKinds)|ReportInterrupted|ReportUpToDate|package\.plugin|ReportFindings|WorkPrecision\.(Rk4Accuracy|BdfSteps|AdaptiveErrors|ImplicitPays)|Determinism\.SameBytes|StabilityJson\.SameForOneAndTwoThreads|Allocation\.NoneInAStepOn|ReportSheet\.NumbersAreTheFullReports|Claims\.FollowTheData(WithoutDamping|WithAStiffSpringAndALargeStep)|notebook\.explore
 test-sanitize: deps
 	@tools/install-deps test
 	@cmake -S . -B $(BUILD)-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSTEPLAB_SANITIZE=ON -DSTEPLAB_BUILD_BENCH=OFF -DSTEPLAB_WERROR=OFF >/dev/null
