@@ -66,7 +66,8 @@ struct Swing {
     return 0.5 * m * v.squaredNorm() + spring.energy(x, L) + m * g * (x[1] + l_eq) - 0.5 * k * sag * sag;
   }
   std::array<double, 1> invariants(const Vec<2>& x, const Vec<2>& v) const { return {energy(x, v)}; }
-  double period() const { return 2 * std::numbers::pi / std::sqrt(std::min(g / l_eq, k / m)); }
+  // Without gravity there is no pendulum: the stretch's period alone.
+  double period() const { return 2 * std::numbers::pi / std::sqrt(g > 0 ? std::min(g / l_eq, k / m) : k / m); }
   double extent() const { return l_eq; }
 
   // As springs (core/springs.hpp): the one spring from the fixed anchor, no dashpot along it;

@@ -45,6 +45,20 @@ TEST(Kepler, ExactFlowIsTheOrbit) {
   }
 }
 
+// The swinging spring's scales and energy against its linearisation: at rest at the hanging
+// equilibrium l_eq = L + m g / k its energy is 0; its period the slower of the pendulum's
+// 2 pi sqrt(l_eq / g) and the stretch's 2 pi sqrt(m / k), the stretch's alone without gravity.
+TEST(Swing, EnergyAndPeriodAreTheLinearisations) {
+  std::array<double, 6> p{1, 5, 0, 5, 9.81, 30};
+  const Swing s(p);
+  const double l_eq = 5 + 9.81 / 5;
+  EXPECT_NEAR(s.energy(Vec<2>(0, -l_eq), Vec<2>::Zero()), 0, 1e-12);
+  EXPECT_GT(s.energy(s.initial().x, s.initial().v), 0);
+  EXPECT_NEAR(s.period(), 2 * std::numbers::pi * std::sqrt(l_eq / 9.81), 1e-12);
+  p[4] = 0;
+  EXPECT_NEAR(Swing(p).period(), 2 * std::numbers::pi * std::sqrt(1 / 5.0), 1e-12);
+}
+
 // ark_kepler's setting, measured independently of steplab: at t = 100 (10^4 steps of 0.01) RK4's
 // relative energy error -4.0e-7, its angular momentum's error -3.0e-8 (absolute, as ark_kepler
 // prints it: L0 = 0.8) and its position error 5.0e-5;
