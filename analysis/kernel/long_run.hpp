@@ -25,23 +25,21 @@ template <class M, HasInvariants S> LongRun long_run(Params p, const LongRunSpec
   out.largest.assign(ni, {});
   Stepper<M, S> stepper;
   if constexpr (TakesSettings<M>) stepper.settings = spec.settings;
+  // One step; false where the run ends there (its Newton iteration gave up, or the state is not
+  // finite), with its status set.
+  const auto step = [&](long long k) {
+    if (steplab::failed(stepper.step(s, y, static_cast<double>(k) * spec.dt, spec.dt))) out.status = RunStatus::NoConvergence;
+    else if (!all_finite(y)) out.status = RunStatus::Diverged;
+    return out.status == RunStatus::Ok;
+  };
   long long k = 0;
   for (const long long until : spec.at) {
-    for (; k < until; ++k) {
-      if (steplab::failed(stepper.step(s, y, static_cast<double>(k) * spec.dt, spec.dt))) {
-        out.status = RunStatus::NoConvergence;
-        out.last.assign(now.begin(), now.end());
-        return out;
-      }
-      if (!all_finite(y)) {
-        out.status = RunStatus::Diverged;
-        out.last.assign(now.begin(), now.end());
-        return out;
-      }
+    for (; k < until && step(k); ++k) {
       now = s.invariants(y.x, y.v);
       for (std::size_t i = 0; i < ni; ++i) largest[i] = std::max(largest[i], std::abs(now[i] - i0[i]));
-      out.steps = k + 1;
     }
+    out.steps = k;
+    if (out.status != RunStatus::Ok) break;
     for (std::size_t i = 0; i < ni; ++i) out.largest[i].push_back(largest[i]);
     if constexpr (HasExact<S>) out.position_error.push_back((y.x - exact(s, static_cast<double>(until) * spec.dt).x).norm());
   }

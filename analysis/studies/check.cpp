@@ -63,8 +63,8 @@ OrbitCheck orbit_check(std::size_t method, const MethodInfo& claims, const Worke
   c.workers = workers;
   const LongTimeRow r = long_time_study(c).rows.front();
   o.ran = true;
-  const bool ok = r.status == RunStatus::Ok && !r.error.empty() && !r.error[0].empty();
-  if (ok) {
+  o.bounded = energy_verdict(r, kOrbitKept) == EnergyVerdict::Bounded;
+  if (r.status == RunStatus::Ok && !r.error.empty() && !r.error[0].empty()) {
     const GrowthFit& g = r.growth[0];
     o.fitted = g.fitted, o.growth = g.exponent, o.lo = g.lo, o.hi = g.hi;
     o.round_off = r.round_off[0] != 0;
@@ -72,7 +72,6 @@ OrbitCheck orbit_check(std::size_t method, const MethodInfo& claims, const Worke
   } else {
     o.error = kInf;
   }
-  o.bounded = ok && (bounded(r.growth[0]) || o.round_off) && o.error < kOrbitKept;
   o.holds = o.bounded == claims.symplectic;
   return o;
 }

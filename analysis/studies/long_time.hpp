@@ -89,4 +89,16 @@ LongTimeResult long_time_study(const LongTimeConfig& c);
 inline bool bounded(const GrowthFit& g) { return g.fitted && g.hi < 0.5; }
 inline bool drifts(const GrowthFit& g) { return g.fitted && g.lo > 0.5; }
 
+// A run's energy error (its first invariant's) over the whole run: Lost where the run ended (a
+// blow-up, a Newton iteration that gave up) or the error reached `lost_at` (an orbit that escaped
+// or fell in has an error that stops growing too, which would read as bounded); else Bounded (its
+// growth's interval below 0.5, or within round-off), Drifting (above 0.5) or Unclear (across 0.5).
+// `steplab check`'s symplectic claim and the report's sentences read it alike.
+enum class EnergyVerdict { Bounded, Drifting, Unclear, Lost };
+inline EnergyVerdict energy_verdict(const LongTimeRow& r, double lost_at) {
+  if (r.status != RunStatus::Ok || r.error.empty() || r.error[0].empty() || !(r.error[0].back() < lost_at)) return EnergyVerdict::Lost;
+  if (bounded(r.growth[0]) || r.round_off[0]) return EnergyVerdict::Bounded;
+  return drifts(r.growth[0]) ? EnergyVerdict::Drifting : EnergyVerdict::Unclear;
+}
+
 }  // namespace steplab

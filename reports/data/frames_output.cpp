@@ -12,12 +12,6 @@
 #include "reports/data/study_output.hpp"
 
 namespace steplab {
-namespace {
-
-Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
-
-}  // namespace
-
 std::string frame_settings_text(const FrameSetup& s) {
   const MethodInfo& info = method_info(s.method);
   if (takes_sweeps(info)) return fmt::format("{} sweep{}", s.settings.sweeps, s.settings.sweeps == 1 ? "" : "s");

@@ -19,8 +19,6 @@ Json growth_json(const GrowthFit& g) {
   return {{"exponent", g.exponent}, {"ci95", {g.lo, g.hi}}};
 }
 
-Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
-
 }  // namespace
 
 std::string growth_text(const GrowthFit& g) {

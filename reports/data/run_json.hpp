@@ -2,6 +2,7 @@
 // scripts rely on them, and the README lists them.
 #pragma once
 
+#include <cmath>
 #include <span>
 #include <string_view>
 
@@ -41,6 +42,9 @@ inline Json counts_json(const Counts& n) {
           {"jacobian_evaluations", n.jacobians}, {"factorisations", n.factorisations}, {"linear_solves", n.solves},
           {"newton_iterations", n.newton}};
 }
+
+// A number, or null where it is not finite (a run that blew up).
+inline Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
 
 // The settings a method reads (core/method.hpp: takes_sweeps, takes_cg) by their JSON names; {}
 // for a method without any.

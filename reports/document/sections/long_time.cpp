@@ -36,9 +36,6 @@ void write_long_time_data(const LongTimeResult& r, const DataDir& dat) {
   }
 }
 
-// Whether the row kept its orbit or swing: finite to the end, energy error below 0.1.
-bool kept(const LongTimeRow& r) { return r.status == RunStatus::Ok && !r.error.empty() && r.error[0].back() < 0.1; }
-
 // What became of a run that lost its orbit: how it ended, or its energy's change at the end.
 std::string fate(const LongTimeRow& r) {
   if (r.status == RunStatus::Diverged) return fmt::format("blew up after {:.3g} periods", r.ended);
@@ -50,11 +47,12 @@ std::string fate(const LongTimeRow& r) {
 
 LongTimeSides sides(const LongTimeResult& r) {
   LongTimeSides out;
-  for (const LongTimeRow& row : r.rows) {
-    if (kept(row) && (bounded(row.growth[0]) || row.round_off[0])) out.bounded.push_back(row.method);
-    else if (kept(row) && drifts(row.growth[0])) out.drifting.push_back(row.method);
-    else out.lost.push_back(row.method);
-  }
+  for (const LongTimeRow& row : r.rows) switch (energy_verdict(row, kLostAt)) {
+      case EnergyVerdict::Bounded: out.bounded.push_back(row.method); break;
+      case EnergyVerdict::Drifting: out.drifting.push_back(row.method); break;
+      case EnergyVerdict::Unclear: out.unclear.push_back(row.method); break;
+      case EnergyVerdict::Lost: out.lost.push_back(row.method); break;
+    }
   // the highest order that drifts against the lowest that stays bounded
   for (std::size_t m : out.drifting)
     if (!out.high_drift || method_info(m).order > method_info(*out.high_drift).order) out.high_drift = m;
@@ -78,10 +76,13 @@ std::string structure_answer(const LongTimeResult& r) {
   };
   std::string md = fmt::format("Bounded energy error (growth exponent's interval below 0.5): {}. Drifting (interval above 0.5): {}.",
                                items(s.bounded), items(s.drifting));
+  if (!s.unclear.empty()) md += fmt::format(" Neither (interval across 0.5): {}.", items(s.unclear));
   std::vector<std::string> lost;
   for (const LongTimeRow& row : r.rows)
     if (std::find(s.lost.begin(), s.lost.end(), row.method) != s.lost.end()) lost.push_back(fmt::format("`{}` ({})", name(row.method), fate(row)));
-  if (!lost.empty()) md += fmt::format(" Lost the {} (energy error 0.1 or more, or the run ended): {}.", r.has_exact ? "orbit" : "swing", and_list(lost));
+  if (!lost.empty())
+    md += fmt::format(" Lost the {} (energy error {:g} or more, or the run ended): {}.", r.has_exact ? "orbit" : "swing", kLostAt,
+                      and_list(lost));
   if (s.not_by_order)
     md += fmt::format(" Every bounded one is symplectic and every drifting one is not, whatever the order: `{}` of order {} drifts "
                       "while `{}` of order {} stays bounded. The structure decides, not the order.",
@@ -93,7 +94,7 @@ std::string structure_answer(const LongTimeResult& r) {
 
 namespace {
 
-std::string g3(double x) { return std::isfinite(x) ? fmt::format("{:.2g}", x) : "-"; }
+std::string g2(double x) { return std::isfinite(x) ? fmt::format("{:.2g}", x) : "-"; }
 
 class LongTime : public Section {
  public:
@@ -167,7 +168,7 @@ class LongTime : public Section {
     }
     return fmt::format("- **Angular momentum** stays within round-off ({:g} u sqrt(steps)) with {}; every other method that kept running "
                        "changed it by {} or more.\n",
-                       kRoundOff, method_list(keep), g3(others));
+                       kRoundOff, method_list(keep), g2(others));
   }
 
   // The phase: the position error's growth exponent, symplectic methods against the others.
@@ -191,7 +192,9 @@ class LongTime : public Section {
     const std::size_t early = early_sample();
     for (const LongTimeRow& a : orbit_.rows)
       for (const LongTimeRow& b : orbit_.rows) {
-        if (method_info(a.method).symplectic || !method_info(b.method).symplectic || !kept(a) || !kept(b)) continue;
+        if (method_info(a.method).symplectic || !method_info(b.method).symplectic || energy_verdict(a, kLostAt) == EnergyVerdict::Lost ||
+            energy_verdict(b, kLostAt) == EnergyVerdict::Lost)
+          continue;
         if (a.times.size() != b.times.size() || early >= a.times.size() || a.error[0][early] >= b.error[0][early] || a.error[0].back() <= b.error[0].back()) continue;
         const double swing = (a.error[0].back() / b.error[0].back()) * (b.error[0][early] / a.error[0][early]);
         if (swing > best) best = swing, best_a = &a, best_b = &b;
@@ -199,9 +202,9 @@ class LongTime : public Section {
     if (!best_a) return {};
     return fmt::format("- **Short runs mislead.** After {:g} periods `{}` (order {}) has the smaller energy error, {} against `{}`'s {} "
                        "(order {}); after {:g} periods it has the larger, {} against {}.\n",
-                       best_a->times[early], name(best_a->method), method_info(best_a->method).order, g3(best_a->error[0][early]),
-                       name(best_b->method), g3(best_b->error[0][early]), method_info(best_b->method).order, best_a->times.back(),
-                       g3(best_a->error[0].back()), g3(best_b->error[0].back()));
+                       best_a->times[early], name(best_a->method), method_info(best_a->method).order, g2(best_a->error[0][early]),
+                       name(best_b->method), g2(best_b->error[0][early]), method_info(best_b->method).order, best_a->times.back(),
+                       g2(best_a->error[0].back()), g2(best_b->error[0].back()));
   }
 
   std::string table() const {
@@ -217,8 +220,8 @@ class LongTime : public Section {
       const bool ok = row.status == RunStatus::Ok && !row.error.empty() && !row.error[0].empty();
       const std::string blew = fmt::format("blew up at {:.3g}", row.ended);
       md += fmt::format("| `{}` | {} | {} | {} | {} | {} | {} | {} | {} |\n", i.name, i.order, i.symplectic ? "yes" : "no",
-                        ok ? growth_text(row.growth[0]) : blew, ok ? fmt::format("{}{}", g3(row.error[0].back()), row.round_off[0] ? " (R)" : "") : "-",
-                        ok && row.error.size() > 1 ? fmt::format("{}{}", g3(row.error[1].back()), row.round_off[1] ? " (R)" : "") : "-",
+                        ok ? growth_text(row.growth[0]) : blew, ok ? fmt::format("{}{}", g2(row.error[0].back()), row.round_off[0] ? " (R)" : "") : "-",
+                        ok && row.error.size() > 1 ? fmt::format("{}{}", g2(row.error[1].back()), row.round_off[1] ? " (R)" : "") : "-",
                         growth_text(row.position_growth),
                         row.out_of_phase > 0 ? fmt::format("{:.3g}{}", row.out_of_phase, row.out_of_phase_extrapolated ? " (extr.)" : "") : "-",
                         sw && sw->status == RunStatus::Ok ? growth_text(sw->growth[0]) : sw ? fmt::format("blew up at {:.3g}", sw->ended) : "-");

@@ -14,14 +14,13 @@ namespace steplab {
 // Its runs as data files lt_<scene>_<method>.dat: t in periods, each invariant's largest relative
 // error up to t, the position error where the scene has an exact solution.
 void write_long_time_data(const LongTimeResult& r, const DataDir& dat);
-// Whether a run kept its orbit (or swing): finite to the end, energy error below 0.1.
-bool kept(const LongTimeRow& r);
-// The runs by their energy error: bounded (its growth's interval below 0.5, or round-off), drifting
-// (above 0.5), or the orbit lost; the highest order that drifts and the lowest that stays bounded;
+// The energy error from which the report calls an orbit (or a swing) lost (energy_verdict).
+inline constexpr double kLostAt = 0.1;
+// The runs by their energy error (energy_verdict at kLostAt): bounded, drifting, unclear, lost; the highest order that drifts and the lowest that stays bounded;
 // whether every bounded one is symplectic and every drifting one not (by_structure), and whether
 // the orders overlap across the two sides as well (not_by_order).
 struct LongTimeSides {
-  std::vector<std::size_t> bounded, drifting, lost;
+  std::vector<std::size_t> bounded, drifting, unclear, lost;
   std::optional<std::size_t> high_drift, low_bounded;
   bool by_structure = false, not_by_order = false;
 };
