@@ -71,9 +71,9 @@ performance: bench
 	@$(BUILD)/steplab study work-precision --json $(BUILD)/performance/work-precision.json >/dev/null
 	@# the crossover maps (about an hour): tools/performance-md names these commands
 	@$(BUILD)/steplab study scaling --scene rope --sizes 64,256,1024,4096 --stiffness 5,50,500,5000 --error 1e-4,1% \
-	  --max-steps 500000 --methods $(MAP_METHODS),cvode_bdf_max2_band --json $(BUILD)/performance/scaling-map-rope.json >/dev/null
+	  --max-steps 500000 --methods $(MAP_METHODS),cvode_bdf_max2_band,radau5_band,arkode_ark548_band --json $(BUILD)/performance/scaling-map-rope.json >/dev/null
 	@$(BUILD)/steplab study scaling --scene softbody --sizes 8,16,24,32 --stiffness 10,100,1000,10000 --error 1e-4,1% \
-	  --max-steps 500000 --methods $(MAP_METHODS),cvode_bdf_max2_klu --json $(BUILD)/performance/scaling-map-softbody.json >/dev/null
+	  --max-steps 500000 --methods $(MAP_METHODS),cvode_bdf_max2_klu,radau5_wideband,arkode_ark548_klu --json $(BUILD)/performance/scaling-map-softbody.json >/dev/null
 	@tools/performance-md --bench $(BUILD)/bench.json --repeat $(BUILD)/performance/bench-repeat.json --studies $(BUILD)/performance --out docs/performance.md
 
 # The suite under AddressSanitizer and UndefinedBehaviorSanitizer, in its own build folder.

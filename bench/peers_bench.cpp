@@ -4,6 +4,8 @@
 // included in both, the rope made outside in steplab's). Both rows report CVODE's counts as
 // counters: equal counts show that the two solve the same problem the same way, and the time
 // ratio is what steplab's wrapper (its right side through Eigen, the scene's Jacobians) costs.
+// The same for RADAU5 on the stiff chain against bench/radau5_chain.c: radau5_chain/steplab/<tol>
+// and radau5_chain/plain_c/<tol>, at tol 1e-4 and 1e-8.
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
@@ -14,6 +16,11 @@
 #include "analysis/peers/peers.hpp"
 #include "analysis/peers/sized_peers.hpp"
 #include "cvode_rope.h"
+#if STEPLAB_HAVE_RADAU5
+#include "analysis/peers/fixed_peers.hpp"
+#include "core/scenes/chain.hpp"
+#include "radau5_chain.h"
+#endif
 
 namespace {
 
@@ -23,6 +30,8 @@ using namespace steplab;
 // the peers reaching error 1e-4.
 constexpr int kMasses = 1024;
 constexpr double kTol = 1e-5, kEnd = 2;
+constexpr double kChainTols[] = {1e-4, 1e-8};
+constexpr double kChainEnd = 10;
 
 void counters(benchmark::State& st, long long steps, long long forces, long long jacobians, long long setups) {
   st.counters["steps"] = static_cast<double>(steps);
@@ -52,6 +61,26 @@ void register_peers() {
       counters(st, c.steps, c.rhs, c.jacobians, c.setups);
     })->Unit(benchmark::kMillisecond);
   }
+#if STEPLAB_HAVE_RADAU5
+  for (const double tol : kChainTols) {
+    char name[64];
+    std::snprintf(name, sizeof name, "radau5_chain/steplab/%g", tol);
+    benchmark::RegisterBenchmark(name, [tol](benchmark::State& st) {
+      const std::vector<double> p = default_values(scene_kernel(*find_scene("chain")).params);
+      const Chain chain(p);  // made outside the timed region, as the rope above (its exact flow's eigenvectors)
+      PeerCounts n;
+      for (auto _ : st) benchmark::DoNotOptimize(Radau5Fixed<Chain>::run(chain, tol, kChainEnd, n));
+      counters(st, n.steps, n.forces, n.jacobians, n.factorisations);
+    })->Unit(benchmark::kMicrosecond);
+    std::snprintf(name, sizeof name, "radau5_chain/plain_c/%g", tol);
+    benchmark::RegisterBenchmark(name, [tol](benchmark::State& st) {
+      radau5_chain_counts c{};
+      double z[4];
+      for (auto _ : st) radau5_chain_run(tol, kChainEnd, &c, z), benchmark::DoNotOptimize(z);
+      counters(st, c.accepted, c.rhs, c.jacobians, c.decompositions);
+    })->Unit(benchmark::kMicrosecond);
+  }
+#endif
 }
 
 std::string peer_ratio_lines(const std::map<std::string, double>& t) {
@@ -63,6 +92,17 @@ std::string peer_ratio_lines(const std::map<std::string, double>& t) {
     char line[200];
     std::snprintf(line, sizeof line, "CVODE %s on the rope of %d masses, one run: steplab's peer %.1f ms, plain C %.1f ms, ratio %.3f\n",
                   family, kMasses, a->second, b->second, a->second / b->second);  // the rows' unit: ms
+    out += line;
+  }
+  for (const double tol : kChainTols) {
+    char a_name[64], b_name[64];
+    std::snprintf(a_name, sizeof a_name, "radau5_chain/steplab/%g", tol);
+    std::snprintf(b_name, sizeof b_name, "radau5_chain/plain_c/%g", tol);
+    const auto a = t.find(a_name), b = t.find(b_name);
+    if (a == t.end() || b == t.end()) continue;
+    char line[200];
+    std::snprintf(line, sizeof line, "RADAU5 on the chain at tol %g, one run: steplab's peer %.1f us, plain C %.1f us, ratio %.3f\n",
+                  tol, a->second, b->second, a->second / b->second);  // the rows' unit: us
     out += line;
   }
   return out;

@@ -6,13 +6,17 @@
 // ends it with NoConvergence. Neither is an error: both are results.
 //
 // Along the way, without allocating (the sample buffer is reserved before the loop):
-//   - up to max_samples states, evenly decimated over the steps, first and last always kept;
+//   - up to max_samples states, evenly decimated over the steps, first and last always kept; or
+//     `outputs` states at evenly spaced times, each interpolated inside the step that holds it
+//     (core/dense_output.hpp: output between steps, so that a step need not divide the frames;
+//     on a scene of run-time size an output's state is a new vector, allocated at the output);
 //   - the energy ratio E/E0 (final and max) and, if asked, the least-squares slope of ln E
 //     against t (the energy growth rate), accumulated online with Welford's update;
 //   - against the exact solution where the scene has one: the position error (Euclidean norm)
 //     at the end, its maximum and RMS over the steps, and the velocity error at the end.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <concepts>
@@ -20,97 +24,12 @@
 #include <utility>
 #include <vector>
 
+#include "core/dense_output.hpp"
 #include "core/exact_tracker.hpp"
+#include "core/run_result.hpp"
 #include "core/stepper.hpp"
 
 namespace steplab {
-
-enum class RunStatus { Ok, Diverged, NoConvergence };
-
-inline const char* to_string(RunStatus s) {
-  switch (s) {
-    case RunStatus::Ok: return "ok";
-    case RunStatus::Diverged: return "diverged";
-    case RunStatus::NoConvergence: return "no_convergence";
-  }
-  return "?";
-}
-
-struct RunSpec {
-  double dt = 0.01;
-  long long steps = 1000;
-  long long max_samples = 0;   // 0: no samples; otherwise at most this many (>= 2)
-  bool energy_rate = false;    // fit the growth rate of ln E
-  bool errors = true;          // compare with the exact solution where there is one
-  // On a scene whose exact positions cost a transform (HasExactAlong: the rope), the error is
-  // read at every error_stride-th step and at the last (1: every step). Elsewhere every step.
-  long long error_stride = 1;
-  MethodSettings settings{};  // a method's that has them (sweeps: core/methods/xpbd.hpp)
-  // Stop early once E/E0 leaves [stop_below, stop_above] (0 and inf: never). Above counts as
-  // Diverged (the energy blew up); below ends the run as Ok (it has decayed, clearly stable,
-  // before round-off flattens ln E).
-  double stop_below = 0;
-  double stop_above = std::numeric_limits<double>::infinity();
-};
-
-template <int D> struct Sample {
-  double t;
-  Vec<D> x, v;
-  double energy;
-};
-
-template <int D> struct RunResult {
-  RunStatus status = RunStatus::Ok;
-  long long steps = 0;          // steps completed with a finite state
-  long long failed_step = -1;   // the step (1-based) that diverged or did not converge
-  double failed_t = 0;
-  double t_final = 0;
-  State<D> final = zero_state<D>();
-  bool has_exact = false;
-  double error_final = 0, error_max = 0, error_rms = 0, error_v_final = 0;
-  long long error_reads = 0;    // the steps the errors were read at (the max and RMS are over these)
-  double energy0 = 0, energy_ratio_final = 1, energy_ratio_max = 1;
-  double energy_rate = std::numeric_limits<double>::quiet_NaN();  // d ln E / dt, least squares
-  std::vector<Sample<D>> samples;
-};
-
-// A run's result with its states as vectors of run-time size: what a kernel compiled for one
-// method and scene hands to the studies (analysis/kernel/kernel.hpp), which are not templates.
-using AnyResult = RunResult<Eigen::Dynamic>;
-
-// The same result with its states as vectors of size To (Eigen::Dynamic: run-time size; a fixed
-// size: the caller knows the scene's). Copies, so the numbers are the same.
-template <int To, int From> RunResult<To> resized(RunResult<From>&& r) {
-  RunResult<To> a;
-  a.status = r.status, a.steps = r.steps, a.failed_step = r.failed_step, a.failed_t = r.failed_t, a.t_final = r.t_final;
-  a.final = {r.final.x, r.final.v};
-  a.has_exact = r.has_exact;
-  a.error_final = r.error_final, a.error_max = r.error_max, a.error_rms = r.error_rms, a.error_v_final = r.error_v_final;
-  a.error_reads = r.error_reads;
-  a.energy0 = r.energy0, a.energy_ratio_final = r.energy_ratio_final, a.energy_ratio_max = r.energy_ratio_max;
-  a.energy_rate = r.energy_rate;
-  a.samples.reserve(r.samples.size());
-  for (const Sample<From>& s : r.samples) a.samples.push_back({s.t, s.x, s.v, s.energy});
-  return a;
-}
-template <int D> AnyResult to_any(RunResult<D>&& r) { return resized<Eigen::Dynamic>(std::move(r)); }
-template <int D> RunResult<D> to_fixed(AnyResult&& r) { return resized<D>(std::move(r)); }
-
-// The step indices kept as samples: k (n / (N - 1)) rounded, k = 0 .. N-1.
-struct SamplePlan {
-  long long n, count;
-  long long at(long long k) const { return count - 1 >= n ? k : (k * n + (count - 1) / 2) / (count - 1); }
-  long long size() const { return count == 0 ? 0 : (count - 1 >= n ? n + 1 : count); }
-};
-
-// The number of steps of length dt that cover t_end: round(t_end / dt) when t_end is a whole
-// number of steps (to 1e-9 relative), else the next whole number.
-inline long long steps_for(double t_end, double dt) {
-  const double ratio = t_end / dt;
-  const double nearest = std::round(ratio);
-  if (std::abs(ratio - nearest) <= 1e-9 * std::max(1.0, ratio)) return static_cast<long long>(nearest);
-  return static_cast<long long>(std::ceil(ratio));
-}
 
 // Does nothing with each step; the default observer.
 struct NoObserver {
@@ -290,13 +209,15 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
   static constexpr int D = S::dim;
 
   Run(const S& scene, const RunSpec& spec, RunResult<D>& out, Observer observe = {})
-      : scene_(scene), spec_(spec), observe_(observe), plan_{spec.steps, spec.max_samples}, y_(scene.initial()), r_(out),
-        tracker_(make_tracker(scene, spec)) {
+      : scene_(scene), spec_(spec), observe_(observe), plan_{spec.steps, spec.outputs > 0 ? 0 : spec.max_samples},
+        y_(scene.initial()), r_(out), tracker_(make_tracker(scene, spec)) {
     if constexpr (TakesSettings<M>) stepper_.settings = spec.settings;
     if (plan_.size() > 0) r_.samples.reserve(static_cast<std::size_t>(plan_.size()) + 1);
+    if (spec.outputs > 0) r_.samples.reserve(static_cast<std::size_t>(spec.outputs)), prev_ = y_;
     e0_ = scene.energy(y_.x, y_.v);
     r_.energy0 = e0_;
     keep(0, 0.0, y_, e0_);
+    if (spec.outputs > 0) r_.samples.push_back({0.0, y_.x, y_.v, e0_}), out_k_ = 1;
     tally_ = RunTally<double>::start(e0_, spec.energy_rate);
   }
   Run(const Run&) = delete;
@@ -306,6 +227,11 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
   // failed, or stopped early). After false, call finish(), not advance().
   [[gnu::always_inline]] inline bool advance() {
     if (i_ > spec_.steps) return false;
+    const bool output = out_k_ < spec_.outputs && output_time(out_k_) <= static_cast<double>(i_) * spec_.dt * (1 + 1e-12);
+    if (output) {  // the step's start, to interpolate from; its acceleration is the last output step's end's if that
+      a_prev_kept_ = a_end_step_ == i_ - 1;  // step just before ended where this one starts
+      prev_ = y_;
+    }
     const Stepped<double> s = take_step(stepper_, scene_, y_, y_, i_, spec_.dt, true, tally_, e0_, e0_ != 0, true, spec_.energy_rate,
                                         [&](const State<D>& y, bool, double t, double e) __attribute__((always_inline)) {
                                           if constexpr (HasExactAlong<S>) {
@@ -314,6 +240,7 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
                                             if (spec_.errors) errors_.add(y, tracker_.at(t), true);
                                           }
                                           keep(i_, t, y, e);
+                                          if (output) interpolate(t, y);
                                           observe_(i_, t, y);
                                         });
     if (!s.live) {
@@ -360,6 +287,40 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
     else return 0;
   }
   static long long stride_of(const RunSpec& spec) { return HasExactAlong<S> ? std::max(1LL, spec.error_stride) : 1; }
+  double output_time(long long k) const {
+    return k == spec_.outputs - 1 ? static_cast<double>(spec_.steps) * spec_.dt
+                                  : static_cast<double>(spec_.steps) * spec_.dt * static_cast<double>(k) /
+                                        static_cast<double>(spec_.outputs - 1);
+  }
+  // s in [0, 1] of output time t in the step from t0; an output within 1e-9 of a step's end is
+  // that end (its state itself, to the bit: the weights are then exactly 0 and 1).
+  static double fraction(double t, double t0, double h) {
+    const double s = std::clamp((t - t0) / h, 0.0, 1.0);
+    return s > 1 - 1e-9 ? 1.0 : s < 1e-9 ? 0.0 : s;
+  }
+  // The outputs in the step just taken, from prev_ (at t1 - dt) to y (at t1).
+  void interpolate(double t1, const State<D>& y) {
+    const double h = spec_.dt, t0 = t1 - h;
+    State<D> o = y;
+    if constexpr (quintic_output(M::info.order)) {
+      // a at the start: the previous step's end's where that step held an output too (consecutive
+      // output steps, a step longer than a frame: one force evaluation a step, not two)
+      if (!a_prev_kept_) a_end_ = acceleration(scene_, t0, prev_.x, prev_.v);
+      const Vec<D> a0 = a_end_, a1 = acceleration(scene_, t1, y.x, y.v);
+      a_end_ = a1, a_end_step_ = i_;
+      for (; out_k_ < spec_.outputs && output_time(out_k_) <= t1 * (1 + 1e-12); ++out_k_) {
+        const double t = output_time(out_k_);
+        hermite5(prev_.x, prev_.v, a0, y.x, y.v, a1, h, fraction(t, t0, h), o.x, o.v);
+        r_.samples.push_back({t, o.x, o.v, scene_.energy(o.x, o.v)});
+      }
+    } else {
+      for (; out_k_ < spec_.outputs && output_time(out_k_) <= t1 * (1 + 1e-12); ++out_k_) {
+        const double t = output_time(out_k_);
+        hermite3(prev_.x, prev_.v, y.x, y.v, h, fraction(t, t0, h), o.x, o.v);
+        r_.samples.push_back({t, o.x, o.v, scene_.energy(o.x, o.v)});
+      }
+    }
+  }
   void keep(long long i, double t, const State<D>& s, double e) {
     if (i == next_sample_ && sample_k_ < plan_.size()) {
       r_.samples.push_back({t, s.x, s.v, e});
@@ -372,11 +333,16 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
   Observer observe_;
   const SamplePlan plan_;
   State<D> y_;
+  State<D> prev_ = zero_state<D>();  // a step's start where an output falls in it (outputs > 0)
+  Vec<D> a_end_ = zero_state<D>().x;  // the acceleration at the end of output step a_end_step_ (quintic)
+  long long a_end_step_ = -1;
+  bool a_prev_kept_ = false;
   RunResult<D>& r_;
   double e0_ = 0;
   RunTally<double> tally_;
   ErrorSums<double> errors_;
   long long i_ = 1, next_sample_ = 0, sample_k_ = 0;  // i_: the next step, 1-based
+  long long out_k_ = 0;                                // the next output (outputs > 0)
   const long long stride_ = stride_of(spec_);  // the steps between the error's reads (HasExactAlong)
   [[no_unique_address]] decltype(make_tracker(std::declval<const S&>(), RunSpec{})) tracker_;
   [[no_unique_address]] Stepper<M, S> stepper_;  // a multistep method's memory; nothing for a one-step method

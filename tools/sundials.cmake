@@ -1,11 +1,11 @@
-# SUNDIALS CVODE, the stiff peer of the studies (analysis/peers/peers.hpp), built as its maintainers
+# SUNDIALS CVODE and ARKODE, the multistep and Runge-Kutta peers of the studies (analysis/peers/peers.hpp), built as its maintainers
 # build it: CMAKE_BUILD_TYPE=Release. Debian's libsundials-dev is compiled without optimisation
 # (its debian/rules sets CMAKE_C_FLAGS=-fcommon, which replaces the packaging's -O2), which made
 # every CVODE run about three times slower than SUNDIALS' own build (docs/performance.md).
 #
 # tools/install-deps fetches Debian's source package of the installed libsundials-dev into
 # STEPLAB_PEER_CACHE (no third-party source lives in this repository). Here, at configure time,
-# the upstream tarball in it is unpacked and CVODE alone (its serial vector, dense, band and
+# the upstream tarball in it is unpacked and CVODE and ARKODE alone (their serial vector, dense, band and
 # sparse matrices, their solvers and KLU's) built into <build>/peers/sundials as static,
 # position-independent libraries: about ten seconds, once per build folder.
 #
@@ -23,9 +23,9 @@ option(STEPLAB_OPTIMISED_PEERS "Build CVODE from its source, optimised (else Deb
 set(_sd_prefix "${CMAKE_BINARY_DIR}/peers/sundials")
 set(_sd_lib "${_sd_prefix}/${CMAKE_INSTALL_LIBDIR}")
 file(GLOB _sd_tarballs "${STEPLAB_PEER_CACHE}/sundials/sundials_*.orig.tar.*")
-if(STEPLAB_OPTIMISED_PEERS AND _sd_tarballs AND NOT EXISTS "${_sd_lib}/libsundials_cvode.a")
+if(STEPLAB_OPTIMISED_PEERS AND _sd_tarballs AND NOT EXISTS "${_sd_lib}/libsundials_arkode.a")
   list(GET _sd_tarballs 0 _sd_tarball)
-  message(STATUS "steplab: building SUNDIALS CVODE optimised (Release) from ${_sd_tarball}")
+  message(STATUS "steplab: building SUNDIALS CVODE and ARKODE optimised (Release) from ${_sd_tarball}")
   set(_sd_work "${CMAKE_BINARY_DIR}/peers/sundials-build")
   file(REMOVE_RECURSE "${_sd_work}")
   file(MAKE_DIRECTORY "${_sd_work}")
@@ -43,7 +43,7 @@ if(STEPLAB_OPTIMISED_PEERS AND _sd_tarballs AND NOT EXISTS "${_sd_lib}/libsundia
     COMMAND ${CMAKE_COMMAND} -S "${_sd_src}" -B "${_sd_work}/build" -DCMAKE_BUILD_TYPE=Release
             -DCMAKE_INSTALL_PREFIX=${_sd_prefix} -DCMAKE_INSTALL_LIBDIR=${CMAKE_INSTALL_LIBDIR}
             -DBUILD_SHARED_LIBS=OFF -DBUILD_STATIC_LIBS=ON -DCMAKE_POSITION_INDEPENDENT_CODE=ON
-            -DBUILD_ARKODE=OFF -DBUILD_CVODES=OFF -DBUILD_IDA=OFF -DBUILD_IDAS=OFF -DBUILD_KINSOL=OFF -DBUILD_CVODE=ON
+            -DBUILD_ARKODE=ON -DBUILD_CVODES=OFF -DBUILD_IDA=OFF -DBUILD_IDAS=OFF -DBUILD_KINSOL=OFF -DBUILD_CVODE=ON
             -DEXAMPLES_ENABLE_C=OFF -DEXAMPLES_ENABLE_CXX=OFF -DEXAMPLES_INSTALL=OFF ${_sd_klu_args}
     COMMAND_ECHO NONE OUTPUT_FILE "${_sd_work}/configure.log" ERROR_FILE "${_sd_work}/configure.log" RESULT_VARIABLE _sd_rc)
   if(_sd_rc EQUAL 0)
@@ -59,7 +59,7 @@ if(STEPLAB_OPTIMISED_PEERS AND _sd_tarballs AND NOT EXISTS "${_sd_lib}/libsundia
 endif()
 
 add_library(steplab_sundials INTERFACE)
-if(STEPLAB_OPTIMISED_PEERS AND EXISTS "${_sd_lib}/libsundials_cvode.a")
+if(STEPLAB_OPTIMISED_PEERS AND EXISTS "${_sd_lib}/libsundials_arkode.a")
   set(STEPLAB_CVODE_OPTIMISED 1)
   set(STEPLAB_CVODE_FLAGS "CMAKE_BUILD_TYPE=Release (-O3 -DNDEBUG)")
   set(STEPLAB_HAVE_KLU 0)
@@ -68,7 +68,7 @@ if(STEPLAB_OPTIMISED_PEERS AND EXISTS "${_sd_lib}/libsundials_cvode.a")
     set(STEPLAB_HAVE_KLU 1)
     list(APPEND _sd_libs sundials_sunlinsolklu)
   endif()
-  list(APPEND _sd_libs sundials_cvode)
+  list(APPEND _sd_libs sundials_cvode sundials_arkode)
   # Installed with steplab (lib/steplab/), so that a project built against the package links them.
   foreach(l IN LISTS _sd_libs)
     target_link_libraries(steplab_sundials INTERFACE $<BUILD_INTERFACE:${_sd_lib}/lib${l}.a>
@@ -84,6 +84,7 @@ else()
   set(STEPLAB_CVODE_FLAGS "-fcommon (Debian's CMAKE_C_FLAGS, no -O)")
   find_path(SUNDIALS_INCLUDE_DIR cvode/cvode.h REQUIRED)
   find_library(SUNDIALS_CVODE_LIBRARY sundials_cvode REQUIRED)
+  find_library(SUNDIALS_ARKODE_LIBRARY sundials_arkode REQUIRED)
   find_library(SUNDIALS_KLU_LIBRARY sundials_sunlinsolklu)
   find_library(SUNDIALS_SPARSE_LIBRARY sundials_sunmatrixsparse)
   set(STEPLAB_HAVE_KLU 0)
@@ -91,7 +92,7 @@ else()
     set(STEPLAB_HAVE_KLU 1)
     target_link_libraries(steplab_sundials INTERFACE ${SUNDIALS_KLU_LIBRARY} ${SUNDIALS_SPARSE_LIBRARY})
   endif()
-  target_link_libraries(steplab_sundials INTERFACE ${SUNDIALS_CVODE_LIBRARY})
+  target_link_libraries(steplab_sundials INTERFACE ${SUNDIALS_CVODE_LIBRARY} ${SUNDIALS_ARKODE_LIBRARY})
 endif()
 if(STEPLAB_HAVE_KLU)
   find_library(KLU_LIBRARY klu REQUIRED)

@@ -77,7 +77,7 @@ std::vector<AnyResult> run_all(const PairKernel& k, std::span<const BatchRun> ru
   if (!cpu_has_width(width))
     throw std::invalid_argument("a pack width is 1, 2, 4 (AVX2) or 8 (AVX-512) that this CPU has, not " + std::to_string(width));
   std::vector<AnyResult> out(runs.size());
-  const bool samples = std::ranges::any_of(runs, [](const BatchRun& r) { return r.spec.max_samples > 0; });
+  const bool samples = std::ranges::any_of(runs, [](const BatchRun& r) { return r.spec.max_samples > 0 || r.spec.outputs > 0; });
   if (width > 1 && k.run_batch && !samples) k.run_batch(runs, out.data(), width);
   else
     for (std::size_t i = 0; i < runs.size(); ++i) out[i] = k.run(runs[i].params, runs[i].spec);

@@ -1,5 +1,6 @@
 // The peers (analysis/peers/peers.hpp) on a scene of fixed size S, over its first-order system of 2
-// S::dim entries: Boost.Odeint's controlled dopri5 on a std::array, CVODE with a dense matrix.
+// S::dim entries: Boost.Odeint's controlled dopri5 on a std::array; CVODE and ARKODE with a dense
+// matrix (SundialsDense); RADAU5 with its full Jacobian of the second-order structure.
 // Instantiated in analysis/peers/peers.cpp (and by the tests that check a peer's Jacobian).
 #pragma once
 
@@ -11,7 +12,9 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include "analysis/peers/arkode.hpp"
 #include "analysis/peers/cvode.hpp"
+#include "analysis/peers/radau5.hpp"
 #include "core/scene.hpp"
 
 namespace steplab {
@@ -92,7 +95,7 @@ template <Scene S> struct OdeintDopri5 {
   }
 };
 
-template <Scene S> struct CvodeDense {
+template <Scene S> struct SundialsDense {
   static constexpr int D = S::dim;
 
   // z' = f(z): the velocities, then the accelerations.
@@ -121,18 +124,56 @@ template <Scene S> struct CvodeDense {
     return 0;
   }
 
-  static State<D> run(const S& s, const CvodeSettings& settings, double tol, double t_end, PeerCounts& n,
-                      double* error_max = nullptr) {
+  // CVODE or ARKODE, as the peer is (their callbacks have one signature); ARKODE told the scene is
+  // linear where it is (HasAffineFlow).
+  static State<D> run(const S& s, const PeerInfo& peer, double tol, double t_end, PeerCounts& n, double* error_max = nullptr) {
     CvodeRun c(2 * D);
     const State<D> y0 = s.initial();
     double* a = c.data();
     for (int i = 0; i < D; ++i) a[i] = y0.x[i], a[D + i] = y0.v[i];
-    c.J = SUNDenseMatrix(2 * D, 2 * D, c.ctx);
-    c.ls = SUNLinSol_Dense(c.z, c.J, c.ctx);
-    cvode_solve(c, rhs, jacobian, &s, settings, tol, t_end, n, [&](double t) {
+    if (peer.implicit) {
+      c.J = SUNDenseMatrix(2 * D, 2 * D, c.ctx);
+      c.ls = SUNLinSol_Dense(c.z, c.J, c.ctx);
+    }
+    const auto after_step = [&](double t) {
       if (error_max) *error_max = std::max(*error_max, (Eigen::Map<const Vec<D>>(a) - exact(s, t).x).norm());
-    });
+    };
+    if (peer.is_arkode()) arkode_solve(c, rhs, jacobian, &s, peer.arkode, HasAffineFlow<S>, tol, t_end, n, after_step);
+    else cvode_solve(c, rhs, jacobian, &s, peer.cvode, tol, t_end, n, after_step);
     return {Eigen::Map<const Vec<D>>(a), Eigen::Map<const Vec<D>>(a + D)};
+  }
+};
+
+// RADAU5 with M1 = M2 = D (x' = v eliminated) and its D x 2D Jacobian [M^-1 dF/dx, M^-1 dF/dv].
+template <Scene S> struct Radau5Fixed {
+  static constexpr int D = S::dim;
+  static void rhs(const void* scene, double t, const double* z, double* dz) {
+    const S& s = *static_cast<const S*>(scene);
+    const Vec<D> x = Eigen::Map<const Vec<D>>(z), v = Eigen::Map<const Vec<D>>(z + D);
+    const Vec<D> acc = acceleration(s, t, x, v);
+    for (int i = 0; i < D; ++i) dz[i] = v[i], dz[D + i] = acc[i];
+  }
+  static void jacobian(const void* scene, double t, const double* z, double* dfy, int ld) {
+    const S& s = *static_cast<const S*>(scene);
+    const Vec<D> x = Eigen::Map<const Vec<D>>(z), v = Eigen::Map<const Vec<D>>(z + D);
+    const Jacobians<D> j = jacobians_at(s, t, x, v);
+    const Vec<D> w = s.inverse_mass();
+    Eigen::Map<Eigen::Matrix<double, D, 2 * D>, 0, Eigen::OuterStride<>> m(dfy, D, 2 * D, Eigen::OuterStride<>(ld));
+    m.template leftCols<D>() = w.asDiagonal() * j.dx;
+    m.template rightCols<D>() = w.asDiagonal() * j.dv;
+  }
+  static State<D> run(const S& s, double tol, double t_end, PeerCounts& n, double* error_max = nullptr) {
+    const State<D> y0 = s.initial();
+    std::array<double, 2 * D> z{};
+    for (int i = 0; i < D; ++i) z[i] = y0.x[i], z[D + i] = y0.v[i];
+    const Radau5Problem p{2 * D, -1, &s, rhs, jacobian};
+    std::function<void(const Radau5Step&)> after;
+    if (error_max)
+      after = [&](const Radau5Step& step) {
+        *error_max = std::max(*error_max, (Eigen::Map<const Vec<D>>(step.z.data()) - exact(s, step.t).x).norm());
+      };
+    radau5_solve(p, z.data(), tol, t_end, n, after);
+    return {Eigen::Map<const Vec<D>>(z.data()), Eigen::Map<const Vec<D>>(z.data() + D)};
   }
 };
 

@@ -7,6 +7,11 @@
 //   cvode_adams_*       SUNDIALS CVODE, Adams-Moulton of orders 1..12
 //   cvode_bdf_*         SUNDIALS CVODE, BDF of orders 1..5
 //   cvode_bdf_max2_*    SUNDIALS CVODE, BDF of orders 1..2 (A-stable)
+//   radau5_*            Hairer's RADAU5: Radau IIA of order 5 with step-size control
+//                       (analysis/peers/radau5.hpp), the adaptive peer of steplab's radau_iia5
+//   arkode_sdirk534_*   SUNDIALS ARKODE's ARKStep, SDIRK-5-3-4 (L-stable, order 4, 5 stages)
+//   arkode_ark548_*     ARKStep, ARK5(4)8L[2]SA's DIRK table (L-stable, order 5, 8 stages)
+//   arkode_verner65     ERKStep, Verner's 6(5) (8 stages), explicit
 //
 // CVODE as its user guide advises: Adams for non-stiff problems, BDF for stiff ones, and BDF with
 // its order capped at 2 where eigenvalues lie near the imaginary axis (every scene here is a
@@ -55,20 +60,34 @@ struct SceneKernel;  // analysis/kernel/kernel.hpp
 PeerScenes peer_scenes(const SceneKernel& scene);
 
 inline constexpr std::string_view kCvodeLibrary = "SUNDIALS CVODE";
+inline constexpr std::string_view kArkodeLibrary = "SUNDIALS ARKODE";
+inline constexpr std::string_view kRadau5Library = "RADAU5";
+
+// ARKODE's stepper and table (analysis/peers/arkode.hpp): an ARKODE_DIRKTableID for ARKStep, an
+// ARKODE_ERKTableID for ERKStep.
+struct ArkodeSettings {
+  int table = -1;
+  bool explicit_table = false;
+};
 
 struct PeerInfo {
   std::string_view name;
-  std::string_view library;        // "steplab", "Boost.Odeint", kCvodeLibrary
+  std::string_view library;        // "steplab", "Boost.Odeint", kCvodeLibrary, kArkodeLibrary, kRadau5Library
   std::string_view linear_solver;  // "" for an explicit solver; dense, band, KLU
   PeerScenes scenes;
   bool implicit;
-  bool built;                      // compiled into this steplab (CVODE's KLU solver may not be)
+  bool built;                      // compiled into this steplab (CVODE's KLU solver, RADAU5 may not be)
   CvodeSettings cvode;             // CVODE's only
+  ArkodeSettings arkode;           // ARKODE's only
   constexpr bool is_cvode() const { return library == kCvodeLibrary; }
+  constexpr bool is_arkode() const { return library == kArkodeLibrary; }
+  constexpr bool is_radau5() const { return library == kRadau5Library; }
 };
 
-// "Adams-Moulton", "BDF", "BDF of orders 1-2": a CVODE peer's method in words.
+// "Adams-Moulton", "BDF", "BDF of orders 1-2": a CVODE peer's method in words; an ARKODE peer's
+// table ("SDIRK-5-3-4, L-stable, order 4", ...).
 std::string_view cvode_method_words(const PeerInfo& p);
+std::string_view arkode_method_words(const PeerInfo& p);
 
 // Every peer, steplab's dopri5 first; the ones of a scene (PeerScenes::Any ones included).
 std::span<const PeerInfo> peers();

@@ -1,5 +1,7 @@
 #include "analysis/peers/sized_peers.hpp"
 
+#include <algorithm>
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -12,8 +14,10 @@
 #include <sunmatrix/sunmatrix_band.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
+#include "analysis/peers/arkode.hpp"
 #include "analysis/peers/cvode.hpp"
 #include "analysis/peers/fixed_peers.hpp"  // odeint_adaptive
+#include "analysis/peers/radau5.hpp"
 
 namespace steplab {
 namespace {
@@ -115,18 +119,89 @@ State<Eigen::Dynamic> odeint_dopri5(const MadeScene& s, double tol, double t_end
   return {z.head(d), z.tail(d)};
 }
 
-// CVODE to t_end, or through the frames when there are any, `positions()` the run's x (a copy).
+// CVODE or ARKODE (as the peer is) to t_end, or through the frames when there are any,
+// `positions()` the run's x (a copy). The sized scenes are not linear in their state.
 template <class Positions>
-void cvode_frames_or_end(CvodeRun& c, CVRhsFn rhs, CVLsJacFn jac, const MadeScene& s, const CvodeSettings& settings, double tol,
-                         double t_end, PeerCounts& n, const PeerFrames& frames, Positions&& positions) {
-  if (frames.count > 0)
-    cvode_solve_frames(c, rhs, jac, &s, settings, tol, t_end, frames.count, n, [&](int k) { frames.at(k, positions()); });
-  else
-    cvode_solve(c, rhs, jac, &s, settings, tol, t_end, n, [](double) {});
+void sundials_frames_or_end(CvodeRun& c, CVRhsFn rhs, CVLsJacFn jac, const MadeScene& s, const PeerInfo& peer, double tol,
+                            double t_end, PeerCounts& n, const PeerFrames& frames, Positions&& positions) {
+  const auto at = [&](int k) { frames.at(k, positions()); };
+  if (peer.is_arkode()) {
+    if (frames.count > 0) arkode_solve_frames(c, rhs, jac, &s, peer.arkode, false, tol, t_end, frames.count, n, at);
+    else arkode_solve(c, rhs, jac, &s, peer.arkode, false, tol, t_end, n, [](double) {});
+  } else if (frames.count > 0) {
+    cvode_solve_frames(c, rhs, jac, &s, peer.cvode, tol, t_end, frames.count, n, at);
+  } else {
+    cvode_solve(c, rhs, jac, &s, peer.cvode, tol, t_end, n, [](double) {});
+  }
 }
 
-State<Eigen::Dynamic> cvode_band(const MadeScene& s, int bandwidth, const CvodeSettings& settings, double tol, double t_end,
-                                 PeerCounts& n, const PeerFrames& frames) {
+// RADAU5 on z = (x, v), M1 = M2 = d, its Jacobian's two d x d blocks stored as bands of width b
+// (radau5.hpp): the scene's declared bandwidth, or on a scene without one (the soft body) the
+// widest its Jacobians' pattern at the start reaches (their pattern does not change).
+struct Radau5Sized {
+  static void rhs(const void* data, double t, const double* z, double* dz) {
+    const MadeScene& s = *static_cast<const MadeScene*>(data);
+    const Eigen::Index d = s.inverse_mass().size();
+    const Eigen::Map<const Eigen::VectorXd> a(z, 2 * d);
+    Eigen::Map<Eigen::VectorXd> da(dz, 2 * d);
+    da.head(d) = a.tail(d);
+    da.tail(d) = acceleration(s, t, Eigen::VectorXd(a.head(d)), Eigen::VectorXd(a.tail(d)));
+  }
+  static int width(const Jacobians<Eigen::Dynamic>& j) {
+    Eigen::Index b = 0;
+    for (const SparseMat* m : {&j.dx, &j.dv})
+      for (int c = 0; c < m->outerSize(); ++c)
+        for (SparseMat::InnerIterator e(*m, c); e; ++e) b = std::max(b, std::abs(e.row() - e.col()));
+    return static_cast<int>(b);
+  }
+  static void jacobian(const void* data, double, const double* z, double* dfy, int ld) {
+    const Call& call = *static_cast<const Call*>(data);
+    const MadeScene& s = call.scene;
+    const Eigen::Index d = s.inverse_mass().size();
+    const Eigen::Map<const Eigen::VectorXd> a(z, 2 * d);
+    const Jacobians<Eigen::Dynamic> j = s.jacobians(Eigen::VectorXd(a.head(d)), Eigen::VectorXd(a.tail(d)));
+    const Eigen::VectorXd& w = s.inverse_mass();
+    std::fill(dfy, dfy + static_cast<std::ptrdiff_t>(ld) * 2 * d, 0.0);
+    for (int k = 0; k < 2; ++k) {
+      const SparseMat& m = k == 0 ? j.dx : j.dv;
+      for (int c = 0; c < m.outerSize(); ++c)
+        for (SparseMat::InnerIterator e(m, c); e; ++e)
+          dfy[(e.row() - e.col() + call.band) + (e.col() + k * d) * ld] = w[e.row()] * e.value();
+    }
+  }
+  struct Call {
+    const MadeScene& scene;
+    int band;
+  };
+  static void rhs_of_call(const void* data, double t, const double* z, double* dz) {
+    rhs(&static_cast<const Call*>(data)->scene, t, z, dz);
+  }
+  static State<Eigen::Dynamic> run(const MadeScene& s, int bandwidth, double tol, double t_end, PeerCounts& n,
+                                    const PeerFrames& frames) {
+    const State<Eigen::Dynamic> y0 = s.initial();
+    const Eigen::Index d = y0.x.size();
+    Eigen::VectorXd z(2 * d), out(2 * d);
+    z << y0.x, y0.v;
+    const Call call{s, bandwidth >= 0 ? bandwidth : width(s.jacobians(y0.x, y0.v))};
+    const Radau5Problem p{static_cast<int>(2 * d), call.band, &call, rhs_of_call, jacobian};
+    int k = 1;
+    std::function<void(const Radau5Step&)> after;
+    if (frames.count > 0)  // each frame in the step that reaches it, from the collocation polynomial
+      after = [&](const Radau5Step& step) {
+        for (; k <= frames.count; ++k) {
+          const double tk = k == frames.count ? t_end : t_end * k / frames.count;
+          if (tk > step.t) break;
+          step.dense(tk, out.data());
+          frames.at(k, out.head(d));
+        }
+      };
+    radau5_solve(p, z.data(), tol, t_end, n, after);
+    return {z.head(d), z.tail(d)};
+  }
+};
+
+State<Eigen::Dynamic> sundials_band(const MadeScene& s, int bandwidth, const PeerInfo& peer, double tol, double t_end,
+                                    PeerCounts& n, const PeerFrames& frames) {
   const State<Eigen::Dynamic> y0 = s.initial();
   const Eigen::Index d = y0.x.size();
   CvodeRun c(2 * d);
@@ -134,7 +209,7 @@ State<Eigen::Dynamic> cvode_band(const MadeScene& s, int bandwidth, const CvodeS
   for (Eigen::Index i = 0; i < d; ++i) a[2 * i] = y0.x[i], a[2 * i + 1] = y0.v[i];
   c.J = SUNBandMatrix(2 * d, 2 * bandwidth, 2 * bandwidth + 1, c.ctx);
   c.ls = SUNLinSol_Band(c.z, c.J, c.ctx);
-  cvode_frames_or_end(c, interleaved_rhs, band_jacobian, s, settings, tol, t_end, n, frames, [&] {
+  sundials_frames_or_end(c, interleaved_rhs, band_jacobian, s, peer, tol, t_end, n, frames, [&] {
     return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd, 0, Eigen::InnerStride<2>>(a, d));
   });
   State<Eigen::Dynamic> end{Eigen::VectorXd(d), Eigen::VectorXd(d)};
@@ -142,22 +217,26 @@ State<Eigen::Dynamic> cvode_band(const MadeScene& s, int bandwidth, const CvodeS
   return end;
 }
 
-#if STEPLAB_HAVE_KLU
-State<Eigen::Dynamic> cvode_klu(const MadeScene& s, const CvodeSettings& settings, double tol, double t_end, PeerCounts& n,
-                                const PeerFrames& frames) {
+// CVODE or ARKODE on z = (x, v) in blocks: with KLU on the CSR Jacobian where the peer is
+// implicit, without a linear solver where it is explicit (ARKODE's explicit table).
+State<Eigen::Dynamic> sundials_blocked(const MadeScene& s, const PeerInfo& peer, double tol, double t_end, PeerCounts& n,
+                                       const PeerFrames& frames) {
   const State<Eigen::Dynamic> y0 = s.initial();
   const sunindextype d = y0.x.size();
   CvodeRun c(2 * d);
   Eigen::Map<Eigen::VectorXd>(c.data(), 2 * d) << y0.x, y0.v;
-  const Jacobians<Eigen::Dynamic> j0 = s.jacobians(y0.x, y0.v);
-  c.J = SUNSparseMatrix(2 * d, 2 * d, d + j0.dx.nonZeros() + j0.dv.nonZeros(), CSR_MAT, c.ctx);
-  c.ls = SUNLinSol_KLU(c.z, c.J, c.ctx);
-  cvode_frames_or_end(c, blocked_rhs, csr_jacobian, s, settings, tol, t_end, n, frames,
-                      [&] { return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(c.data(), d)); });
+#if STEPLAB_HAVE_KLU
+  if (peer.implicit) {
+    const Jacobians<Eigen::Dynamic> j0 = s.jacobians(y0.x, y0.v);
+    c.J = SUNSparseMatrix(2 * d, 2 * d, d + j0.dx.nonZeros() + j0.dv.nonZeros(), CSR_MAT, c.ctx);
+    c.ls = SUNLinSol_KLU(c.z, c.J, c.ctx);
+  }
+#endif
+  sundials_frames_or_end(c, blocked_rhs, peer.implicit ? csr_jacobian : nullptr, s, peer, tol, t_end, n, frames,
+                         [&] { return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(c.data(), d)); });
   const Eigen::Map<const Eigen::VectorXd> a(c.data(), 2 * d);
   return {a.head(d), a.tail(d)};
 }
-#endif
 
 [[noreturn]] void not_here(const PeerInfo& peer, const SceneKernel& scene) {
   throw std::logic_error("run_sized_peer: " + std::string(peer.name) + " does not run on the " + std::string(scene.name));
@@ -170,10 +249,10 @@ State<Eigen::Dynamic> run_sized_peer(const PeerInfo& peer, const SceneKernel& sc
   if (!scene.made || !peer_runs_on(peer, peer_scenes(scene))) not_here(peer, scene);
   const MadeScene s{*scene.made, made};
   if (peer.name == "odeint_dopri5") return odeint_dopri5(s, tol, t_end, n, frames);
-  if (peer.linear_solver == "band") return cvode_band(s, scene.jacobian_bandwidth, peer.cvode, tol, t_end, n, frames);
-#if STEPLAB_HAVE_KLU
-  if (peer.linear_solver == "KLU" && peer.built) return cvode_klu(s, peer.cvode, tol, t_end, n, frames);
-#endif
+  if (peer.is_arkode() && !peer.implicit) return sundials_blocked(s, peer, tol, t_end, n, frames);
+  if (peer.is_radau5() && peer.built) return Radau5Sized::run(s, scene.jacobian_bandwidth, tol, t_end, n, frames);
+  if (peer.linear_solver == "band") return sundials_band(s, scene.jacobian_bandwidth, peer, tol, t_end, n, frames);
+  if (peer.linear_solver == "KLU" && peer.built) return sundials_blocked(s, peer, tol, t_end, n, frames);
   not_here(peer, scene);
 }
 

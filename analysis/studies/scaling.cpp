@@ -166,13 +166,15 @@ template <class Run> void search(ScalingRow& row, double start, double most, dou
   ++row.runs;
 }
 
-// A fixed-step run of `steps` steps (a multiple of the frames) with a sample at every frame.
+// A fixed-step run of `steps` steps with a sample at every frame: its output between steps
+// (core/dense_output.hpp), or, where the steps divide the frames, the state at step k steps/frames.
 RunSpec frame_run(const ScalingConfig& c, long long steps) {
   RunSpec spec;
   spec.errors = false;
   spec.steps = steps;
   spec.dt = c.t_end / static_cast<double>(steps);
-  spec.max_samples = c.frames + 1;  // SamplePlan: step k (steps / frames), exactly frame k
+  if (c.steps_divide_frames) spec.max_samples = c.frames + 1;  // SamplePlan: step k (steps / frames), exactly frame k
+  else spec.outputs = c.frames + 1;
   return spec;
 }
 
@@ -182,15 +184,20 @@ ScalingRow method_row(const ScalingConfig& c, const Cell& cell, int target, std:
   ScalingRow row{std::string(info.name), target, cell.stiffness, info.implicit, false, cell.n, cell.masses};
   row.dt_stable = modes_predicted_threshold(m, cell.modes);  // analysis/studies/mode_stability.hpp
   const double frame = c.t_end / c.frames;
-  const double most = std::min(0.95 * row.dt_stable, frame);
+  const double most = std::min(0.95 * row.dt_stable, c.steps_divide_frames ? frame : c.t_end);
   if (!(most * c.max_steps >= c.t_end)) {  // no stable step covers t_end in max_steps
     row.dt = kNaN;
     return row;
   }
   const PairKernel& k = pair_kernel(m, scene);
-  // steps = frames j: dt = frame / ceil(frame / knob), a whole number of steps to each frame
+  // steps_divide_frames: steps = frames j, dt = frame / ceil(frame / knob), a whole number of
+  // steps to each frame; else any whole number of steps to t_end
+  const auto steps_for_knob = [&](double knob) {
+    return c.steps_divide_frames ? c.frames * static_cast<long long>(std::ceil(frame / knob * (1 - 1e-12)))
+                                 : static_cast<long long>(std::ceil(c.t_end / knob * (1 - 1e-12)));
+  };
   search(row, std::min(most, frame), most, info.order, cell.errors[target], [&](double knob) {
-    const long long steps = c.frames * static_cast<long long>(std::ceil(frame / knob * (1 - 1e-12)));
+    const long long steps = steps_for_knob(knob);
     if (steps > c.max_steps) return Trial{kNaN, {}};
     return remembered(made, static_cast<double>(steps), [&] {
       Counts counts;
@@ -199,7 +206,7 @@ ScalingRow method_row(const ScalingConfig& c, const Cell& cell, int target, std:
     });
   });
   if (row.reached()) {
-    row.capped = row.dt >= most && 0.95 * row.dt_stable <= frame;  // the search stopped at 0.95 dt*
+    row.capped = row.dt >= most && 0.95 * row.dt_stable <= (c.steps_divide_frames ? frame : c.t_end);  // stopped at 0.95 dt*
     row.dt = c.t_end / static_cast<double>(row.steps);
   }
   return row;

@@ -11,9 +11,11 @@
 //     and the frames t_k = k t_end / frames, k = 1 .. frames, against the exact solution (the
 //     rope) or the reference solution (dopri5 at rtol 1e-13 with its dense output), so that the
 //     same error per mass is asked at every N and a body that has settled by t_end is not
-//     matched there alone. A fixed-step run gives each frame a state of its own (its step divides
-//     the frame interval, as an animation's does); dopri5 interpolates (its dense output), CVODE
-//     too (its normal mode), Boost.Odeint steps to each frame. A target is absolute, or a fraction
+//     matched there alone. A fixed-step run interpolates each frame inside the step that holds it
+//     (its output between steps, core/dense_output.hpp: a step need not divide the frame
+//     interval; with steps_divide_frames, as an animation's, it does and gives each frame a state
+//     of its own); dopri5 interpolates (its dense output), CVODE and ARKODE too (their normal
+//     mode), RADAU5 by its collocation polynomial, Boost.Odeint steps to each frame. A target is absolute, or a fraction
 //     of the body's extent at rest (the visual one: 1 % of its size). The search: secant in
 //     log-log on error ~ C dt^p (p the method's order; for a tolerance p = 1), the largest step
 //     tried whose error is at or below the target, from at most kSearchRuns runs.
@@ -64,6 +66,7 @@ struct ScalingConfig {
   std::vector<double> stiffnesses;  // the scene's stiffness_param; empty: params' own (one)
   std::vector<ErrorTarget> targets{{1e-4, false}};
   int frames = 100;  // the error is the largest over the frames k t_end / frames, k = 1 .. frames
+  bool steps_divide_frames = false;  // a fixed step divides the frame interval (else: output between steps)
   std::vector<std::size_t> methods;  // numerical methods of the table
   // steplab's dopri5 and the peers (analysis/peers/peers.hpp) that run on the scene: by default all
   // that are built (scaling_config)
@@ -127,15 +130,15 @@ struct ScalingFit {
 
 // A cell of the map (one target, stiffness and size): the cheapest solver that reached the target
 // and the next cheapest, with the margin next / cheapest; the cheapest implicit fixed-step method
-// against the cheapest explicit one (fixed-step or dopri5) and against the cheapest CVODE
-// configuration: their costs over its (> 1: the implicit method is cheaper). NaN where a side
+// against the cheapest explicit one (fixed-step or adaptive) and against the cheapest adaptive
+// implicit peer (CVODE, ARKODE's DIRK tables, RADAU5): their costs over its (> 1: the implicit method is cheaper). NaN where a side
 // has none. `motion`: how far the body moves, the largest |x_i(t_k) - x_i(0)| of the exact (or
 // reference) solution over the coordinates and frames; where the target error exceeds it, a run
 // that stays at rest meets the target, and only stability separates the solvers.
 struct ScalingCell {
   int n = 0, masses = 0;
-  std::string cheapest, next, best_implicit, best_explicit, best_cvode;
-  double margin = 0, explicit_over_implicit = 0, cvode_over_implicit = 0;
+  std::string cheapest, next, best_implicit, best_explicit, best_implicit_peer;
+  double margin = 0, explicit_over_implicit = 0, implicit_peer_over_implicit = 0;
   double motion = 0;
 };
 

@@ -28,16 +28,17 @@ ScalingFit fit_of(const ScalingConfig& c, std::span<const ScalingRow> rows) {
   return f;
 }
 
-bool is_cvode(const ScalingRow& r) {
+// An adaptive implicit peer: CVODE (its Adams too: Newton's iteration), ARKODE's DIRK tables, RADAU5.
+bool is_implicit_peer(const ScalingRow& r) {
   const PeerInfo* p = r.adaptive ? find_peer(r.solver) : nullptr;
-  return p && p->is_cvode();
+  return p && p->implicit;
 }
 
 // The map's cell at size k of block b (its rows: series b * solvers + s, entry k).
 void answer_cell(const ScalingResult& r, std::size_t b, std::size_t k, ScalingCell& cell) {
   const ScalingConfig& c = r.config;
   constexpr double inf = std::numeric_limits<double>::infinity();
-  double cheapest = inf, next = inf, implicit = inf, explicit_ = inf, cvode = inf;
+  double cheapest = inf, next = inf, implicit = inf, explicit_ = inf, peer = inf;
   for (std::size_t s = 0; s < r.solvers(); ++s) {
     const ScalingRow& w = r.rows_of(b * r.solvers() + s)[k];
     if (!w.reached()) continue;
@@ -45,13 +46,13 @@ void answer_cell(const ScalingResult& r, std::size_t b, std::size_t k, ScalingCe
     if (cost < cheapest) next = cheapest, cell.next = cell.cheapest, cheapest = cost, cell.cheapest = w.solver;
     else if (cost < next) next = cost, cell.next = w.solver;
     if (!w.adaptive && w.implicit && cost < implicit) implicit = cost, cell.best_implicit = w.solver;
-    if (!w.implicit && !is_cvode(w) && cost < explicit_) explicit_ = cost, cell.best_explicit = w.solver;
-    if (is_cvode(w) && cost < cvode) cvode = cost, cell.best_cvode = w.solver;
+    if (!w.implicit && !is_implicit_peer(w) && cost < explicit_) explicit_ = cost, cell.best_explicit = w.solver;
+    if (is_implicit_peer(w) && cost < peer) peer = cost, cell.best_implicit_peer = w.solver;
   }
   const auto ratio = [](double num, double den) { return std::isfinite(num) && std::isfinite(den) ? num / den : kNaN; };
   cell.margin = ratio(next, cheapest);
   cell.explicit_over_implicit = ratio(explicit_, implicit);
-  cell.cvode_over_implicit = ratio(cvode, implicit);
+  cell.implicit_peer_over_implicit = ratio(peer, implicit);
 }
 
 // The first size where the cheapest implicit method beats every explicit one (steplab's methods).

@@ -12,6 +12,7 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "reports/cli/commands.hpp"
 #include "analysis/kernel/kernel.hpp"
@@ -287,19 +288,7 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   add_stability_options(stab_cmd, stab, false, true);
 
   WorkPrecisionArgs wp;
-  CLI::App* wp_cmd = study->add_subcommand("work-precision", "cost against error on the spring and the stiff chain; "
-                                                             "cheapest method per error level; stiffness crossover");
-  wp_cmd->add_option("--methods", wp.methods, "comma-separated methods and adaptive solvers (dopri5, odeint_dopri5, cvode_adams_dense, "
-                                                "cvode_bdf_dense, cvode_bdf_max2_dense; default every numerical method, and every adaptive solver where the list names none)");
-  wp_cmd->add_option("--points", wp.points, "fixed-step methods: steps in each scene's dt sweep, 3 .. 100")->capture_default_str();
-  wp_cmd->add_option("--stiffnesses", wp.stiffnesses, "comma-separated k2 of the stiffness sweep (the chain's k1 is 5)")
-      ->capture_default_str();
-  wp_cmd->add_option("--threads", wp.threads, "worker threads for the error runs (timings run one at a time)")
-      ->capture_default_str();
-  add_lanes_option(wp_cmd, wp.lanes);
-  add_shard_option(wp_cmd, wp.shard);
-  wp_cmd->add_flag("--no-timing", wp.no_timing, "cost by force evaluations only (reproducible byte for byte)");
-  wp_cmd->add_option("--json", wp.json, fmt::format("write JSON (schema {}) to this file", schema::work_precision));
+  CLI::App* wp_cmd = add_work_precision_command(study, wp);
   CollisionArgs coll;
   CLI::App* coll_cmd = study->add_subcommand("collision", "the bounce and the falling triangle on the penalty ground");
   coll.scene.add_to(coll_cmd, collision_scene, false);
@@ -317,6 +306,8 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   CLI::App* frames_cmd = add_frames_command(study, frames);
   LongTimeArgs long_time;
   CLI::App* long_time_cmd = add_long_time_command(study, long_time);
+  DenseOutputArgs dense;
+  CLI::App* dense_cmd = add_dense_output_command(study, dense);
 
   ReportArgs rep;
   CLI::App* rep_cmd = app.add_subcommand("report", "run every study and write report.md, report.pdf, figures/ and data/ into one folder");
@@ -339,7 +330,7 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   add_merge_command(app, merge);
 
   bool progress = false;
-  for (CLI::App* cmd : {conv_cmd, damp_cmd, stab_cmd, wp_cmd, coll_cmd, scaling_cmd, long_time_cmd, rep_cmd, check_cmd})
+  for (CLI::App* cmd : {conv_cmd, damp_cmd, stab_cmd, wp_cmd, coll_cmd, scaling_cmd, long_time_cmd, dense_cmd, rep_cmd, check_cmd})
     cmd->add_flag("--progress", progress, "progress on stderr also where it is not a terminal (a log): runs done, time spent and left");
 
   name_value_kinds(app);
@@ -361,6 +352,7 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
     if (scaling_cmd->parsed()) return scaling_command(scaling, ctx);
     if (frames_cmd->parsed()) return frames_command(frames, ctx);
     if (long_time_cmd->parsed()) return long_time_command(long_time, ctx);
+    if (dense_cmd->parsed()) return dense_output_command(dense, ctx);
     if (rep_cmd->parsed()) {
       rep.methods_given = rep_methods->count() > 0, rep.scenes_given = rep_scenes->count() > 0,
       rep.sections_given = rep_sections->count() > 0;

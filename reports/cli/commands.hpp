@@ -169,6 +169,18 @@ struct LongTimeArgs {
 CLI::App* add_long_time_command(CLI::App* study, LongTimeArgs& args);
 int long_time_command(LongTimeArgs& args, Context& ctx);
 
+// `study dense-output` (reports/cli/dense_output_command.cpp): the order of each method's output
+// between steps beside its steps' (analysis/studies/dense_output.hpp).
+struct DenseOutputArgs {
+  SceneArgs scene;  // the spring by default
+  std::string methods;
+  std::string t_end = "10", dt_max = "0.1", dt_min = "0.002", points = "8", outputs = "98";
+  std::string threads = "0";
+  std::string json;
+};
+CLI::App* add_dense_output_command(CLI::App* study, DenseOutputArgs& args);
+int dense_output_command(DenseOutputArgs& args, Context& ctx);
+
 // `study scaling` (reports/cli/scaling_command.cpp): cost against the number of masses of the rope or the soft body.
 struct ScalingArgs {
   SceneArgs scene;  // the scene's parameters (--masses, --grid replaced by each size); add_scaling_command makes rope the default
@@ -177,6 +189,7 @@ struct ScalingArgs {
   std::string error = "1e-4,1%";  // targets: absolute, or N% of the body's extent
   std::string t_end = "2";
   std::string frames = "100";
+  bool steps_divide_frames = false;
   std::string max_steps;  // empty: the scene's default (scaling_command.cpp)
   std::string threads = "0";
   bool no_timing = false;
@@ -199,6 +212,7 @@ struct WorkPrecisionArgs {
   std::string json;
 };
 
+CLI::App* add_work_precision_command(CLI::App* study, WorkPrecisionArgs& args);
 int work_precision_command(WorkPrecisionArgs& args, Context& ctx);
 
 }  // namespace steplab

@@ -5,9 +5,11 @@
 #include <cstdio>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "analysis/studies/defaults.hpp"
 #include "analysis/kernel/kernel.hpp"
+#include "analysis/peers/peers.hpp"
 #include "analysis/studies/scaling.hpp"
 #include "reports/cli/commands.hpp"
 #include "reports/data/inputs.hpp"
@@ -24,10 +26,17 @@ CLI::App* add_scaling_command(CLI::App* study, ScalingArgs& a) {
                                                    "given error, largest stable step, against N; fitted exponents, crossover");
   a.scene.scene = std::string(kDefaultSizedScene);  // any scene that scales() (analysis/studies/scaling.hpp)
   a.scene.add_to(cmd, scales);
-  cmd->add_option("--methods", a.methods, "comma-separated methods and adaptive solvers (dopri5, odeint_dopri5, cvode_adams_band, "
-                                          "cvode_bdf_band, cvode_bdf_max2_band on the rope, cvode_adams_klu, cvode_bdf_klu, "
-                                          "cvode_bdf_max2_klu on the soft body; default "
-                                          "every numerical method, and every adaptive solver where the list names none)");
+  const auto only_on = [](PeerScenes on) {
+    std::vector<std::string> out;
+    for (const PeerInfo* p : peers_on(on))
+      if (p->scenes == on) out.emplace_back(p->name);
+    return out;
+  };
+  cmd->add_option("--methods", a.methods,
+                  fmt::format("comma-separated methods and adaptive solvers ({}; {} on the rope; {} on the soft body; default "
+                              "every numerical method, and every adaptive solver where the list names none)",
+                              fmt::join(peer_names(PeerScenes::Explicit), ", "), fmt::join(only_on(PeerScenes::Banded), ", "),
+                              fmt::join(only_on(PeerScenes::Sparse), ", ")));
   // The scene's stiffness option (--stiffness on the rope and the soft body) takes a list here: the map's axis.
   cmd->add_option("--sizes", a.sizes, "comma-separated sizes: the rope's numbers of masses (1 .. 100000), the soft body's "
                                       "grid sides n (1 .. 300; default 16,64,256,1024 masses on the rope, 4,8,16 on the soft body)");
@@ -35,8 +44,10 @@ CLI::App* add_scaling_command(CLI::App* study, ScalingArgs& a) {
                                       "frames), each a number or a percentage of the body's extent at rest (1% the visual one)")
       ->capture_default_str();
   cmd->add_option("--t-end", a.t_end, "simulated time")->capture_default_str();
-  cmd->add_option("--frames", a.frames, "output frames up to t_end where the error is measured (1 .. 10000); a fixed step "
-                                        "divides the frame interval")->capture_default_str();
+  cmd->add_option("--frames", a.frames, "output frames up to t_end where the error is measured (1 .. 10000); a fixed-step "
+                                        "method interpolates each inside its step (its output between steps)")->capture_default_str();
+  cmd->add_flag("--steps-divide-frames", a.steps_divide_frames, "a fixed step divides the frame interval and each frame is a "
+                                                                "step's state (no output between steps), as in an animation loop");
   cmd->add_option("--max-steps", a.max_steps, "a search tries no step that needs more steps than this (default 2000000 "
                                               "on the rope, 200000 on the soft body, whose implicit steps cost a sparse solve each)");
   cmd->add_option("--threads", a.threads, "worker threads for the searches (timings run one at a time)")->capture_default_str();
@@ -94,6 +105,7 @@ int scaling_command(ScalingArgs& a, Context& ctx) {
   c.targets = error_targets(a.error);
   c.t_end = parse_number("--t-end", a.t_end, Bound::Positive);
   c.frames = static_cast<int>(parse_count("--frames", a.frames, 1, 10'000));
+  c.steps_divide_frames = a.steps_divide_frames;
   if (!a.max_steps.empty()) c.max_steps = parse_count("--max-steps", a.max_steps, 1, 1'000'000'000);
   c.workers = ctx.workers(resolve_thread_count(a.threads));
   c.timing = !a.no_timing;

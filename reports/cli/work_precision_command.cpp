@@ -1,12 +1,14 @@
 // `steplab study work-precision`: cost against error on the spring and the stiff chain, the
 // cheapest method per error level, the chain's stability limits, the stiffness sweep and its
-// crossover (analysis/studies/work_precision.hpp). Table on stdout, JSON (steplab.work_precision/1) with --json.
+// crossover (analysis/studies/work_precision.hpp). Table on stdout, JSON (steplab.work_precision/2) with --json.
 #include <cstdio>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "analysis/studies/work_precision.hpp"
 #include "analysis/kernel/kernel.hpp"
+#include "analysis/peers/peers.hpp"
 #include "reports/cli/commands.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/data/output.hpp"
@@ -16,6 +18,25 @@
 #include "reports/data/schemas.hpp"
 
 namespace steplab {
+
+CLI::App* add_work_precision_command(CLI::App* study, WorkPrecisionArgs& a) {
+  CLI::App* cmd = study->add_subcommand("work-precision", "cost against error on the spring and the stiff chain; "
+                                                          "cheapest method per error level; stiffness crossover");
+  cmd->add_option("--methods", a.methods,
+                  fmt::format("comma-separated methods and adaptive solvers ({}; default every numerical method, and every "
+                              "adaptive solver where the list names none)", fmt::join(peer_names(PeerScenes::FixedSize), ", ")));
+  cmd->add_option("--points", a.points, "fixed-step methods: steps in each scene's dt sweep, 3 .. 100")->capture_default_str();
+  cmd->add_option("--stiffnesses", a.stiffnesses, "comma-separated k2 of the stiffness sweep (the chain's k1 is 5)")
+      ->capture_default_str();
+  cmd->add_option("--threads", a.threads, "worker threads for the error runs (timings run one at a time)")
+      ->capture_default_str();
+  add_lanes_option(cmd, a.lanes);
+  add_shard_option(cmd, a.shard);
+  cmd->add_flag("--no-timing", a.no_timing, "cost by force evaluations only (reproducible byte for byte)");
+  cmd->add_option("--json", a.json, fmt::format("write JSON (schema {}) to this file", schema::work_precision));
+  return cmd;
+}
+
 int work_precision_command(WorkPrecisionArgs& a, Context& ctx) {
   WorkPrecisionConfig c;
   Solvers solvers = resolve_solvers(a.methods, adaptive_solvers(), "spring and chain", false);

@@ -34,6 +34,7 @@ Json scaling_json(const ScalingResult& r) {
   for (const ErrorTarget& t : c.targets) targets.push_back({{"value", t.value}, {"of_extent", t.of_extent}});
   p["targets"] = std::move(targets);
   p["frames"] = c.frames;
+  p["steps_divide_frames"] = c.steps_divide_frames;
   p["t_end"] = c.t_end;
   p["max_steps"] = c.max_steps;
   p["timing"] = c.timing;
@@ -66,8 +67,8 @@ Json scaling_json(const ScalingResult& r) {
     for (const ScalingCell& m : b.cells)
       map.push_back({{size_key, m.n}, {"masses", m.masses}, {"cheapest", name(m.cheapest)}, {"next", name(m.next)},
                      {"margin", num(m.margin)}, {"best_implicit", name(m.best_implicit)}, {"best_explicit", name(m.best_explicit)},
-                     {"best_cvode", name(m.best_cvode)}, {"explicit_over_implicit", num(m.explicit_over_implicit)},
-                     {"cvode_over_implicit", num(m.cvode_over_implicit)}, {"motion", m.motion}});
+                     {"best_implicit_peer", name(m.best_implicit_peer)}, {"explicit_over_implicit", num(m.explicit_over_implicit)},
+                     {"implicit_peer_over_implicit", num(m.implicit_peer_over_implicit)}, {"motion", m.motion}});
     blocks.push_back({{"target", b.target}, {"error", b.error}, {"stiffness", num(b.stiffness)},
                       {"crossover", b.crossover == 0 ? Json(nullptr)
                                                      : Json({{size_key, b.crossover}, {"masses", scaling_masses(c, b.crossover)},
@@ -147,17 +148,17 @@ std::string scaling_map_table(const ScalingResult& r) {
   const std::size_t nk = r.blocks.size() / c.targets.size();
   for (std::size_t t = 0; t < c.targets.size(); ++t) {
     out += fmt::format("\nThe map at error {}: per cell the cheapest solver x its margin over the next; the cheapest implicit "
-                       "fixed-step method's cost against the best explicit solver's and the best CVODE's (> 1: implicit cheaper); "
+                       "fixed-step method's cost against the best explicit solver's and the best adaptive implicit peer's (> 1: implicit cheaper); "
                        "the body's motion (largest displacement from rest; ! below the target: a run at rest meets it)\n"
                        "{:>10} {:>7}  {:<32} {:<26} {:>8} {:>8} {:>10}\n",
                        target_text(c, r.blocks[t * nk]), "stiffness", "N", "cheapest x margin",
-                       "best implicit", "vs expl", "vs CVODE", "motion");
+                       "best implicit", "vs expl", "vs peer", "motion");
     for (std::size_t k = 0; k < nk; ++k) {
       const ScalingBlock& b = r.blocks[t * nk + k];
       for (const ScalingCell& m : b.cells)
         out += fmt::format("{:>10} {:>7}  {:<32} {:<26} {:>8} {:>8} {:>10}\n", std::isnan(b.stiffness) ? "-" : fmt::format("{:g}", b.stiffness),
                            m.masses, m.cheapest.empty() ? "none reached" : fmt::format("{} x {}", m.cheapest, ratio_text(m.margin)),
-                           m.best_implicit.empty() ? "-" : m.best_implicit, ratio_text(m.explicit_over_implicit), ratio_text(m.cvode_over_implicit),
+                           m.best_implicit.empty() ? "-" : m.best_implicit, ratio_text(m.explicit_over_implicit), ratio_text(m.implicit_peer_over_implicit),
                            fmt::format("{:.2e}{}", m.motion, m.motion < b.error ? "!" : ""));
     }
   }

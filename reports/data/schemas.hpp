@@ -20,9 +20,10 @@ inline constexpr std::string_view collision = "steplab.collision/1";        // s
 // them in): by_forces, forces, explicit_forces, implicit_forces where it had *evaluations*
 inline constexpr std::string_view work_precision = "steplab.work_precision/2";
 // study scaling: "unbounded" for a stable step of every size (version 3 wrote "inf")
-inline constexpr std::string_view scaling = "steplab.scaling/4";
+inline constexpr std::string_view scaling = "steplab.scaling/5";
 inline constexpr std::string_view frames = "steplab.frames/1";              // study frames
 inline constexpr std::string_view long_time = "steplab.long_time/1";        // study long-time
+inline constexpr std::string_view dense_output = "steplab.dense_output/1";  // study dense-output
 inline constexpr std::string_view part = "steplab.part/1";                  // --shard i/N, read by steplab merge
 
 }  // namespace steplab::schema

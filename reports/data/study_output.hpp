@@ -62,7 +62,7 @@ std::string mode_thresholds_table(std::string_view scene, const std::vector<Mode
 #include "analysis/studies/scaling.hpp"
 
 namespace steplab {
-// `study scaling` (reports/data/scaling_output.cpp): schema steplab.scaling/3.
+// `study scaling` (reports/data/scaling_output.cpp): schema steplab.scaling/5.
 Json scaling_json(const ScalingResult& r);
 std::string scaling_table(const ScalingResult& r);
 // The map alone: per target, stiffness and size the cheapest solver and its margins.
@@ -110,4 +110,11 @@ Json long_time_json(const LongTimeResult& r);  // schema steplab.long_time/1 (re
 std::string long_time_table(const LongTimeResult& r);
 // "0.02 [0.01, 0.03]" for a fitted growth exponent, "-" where there were too few samples.
 std::string growth_text(const GrowthFit& g);
+}  // namespace steplab
+
+#include "analysis/studies/dense_output.hpp"
+
+namespace steplab {
+Json dense_output_json(const DenseOutputResult& r);  // schema steplab.dense_output/1 (reports/data/dense_output_output.cpp)
+std::string dense_output_table(const DenseOutputResult& r);
 }  // namespace steplab

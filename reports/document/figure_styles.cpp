@@ -40,16 +40,20 @@ std::string shade(std::string_view hue, int order) {
 
 }  // namespace
 
+// The adaptive implicit peers by library (Paul Tol's colours the families leave free): CVODE sky
+// blue, ARKODE teal, RADAU5 rose; the explicit adaptive solvers grey.
 std::string solver_hue(std::string_view solver) {
   if (const auto m = find_method(solver)) return std::string(family_hue(method_info(*m).family));
   const PeerInfo* p = find_peer(solver);
-  return p && p->is_cvode() ? "#56B4E9" : "#999999";
+  if (!p || !p->implicit) return "#999999";
+  return p->is_cvode() ? "#56B4E9" : p->is_arkode() ? "#44AA99" : "#CC6677";
 }
 
 std::string solver_group(std::string_view solver) {
   if (const auto m = find_method(solver)) return std::string(to_string(method_info(*m).family));
   const PeerInfo* p = find_peer(solver);
-  return p && p->is_cvode() ? "CVODE" : "adaptive explicit";
+  if (!p || !p->implicit) return "adaptive explicit";
+  return p->is_cvode() ? "CVODE" : p->is_arkode() ? "ARKODE" : "RADAU5";
 }
 
 MethodStyle method_style(std::size_t method) {
@@ -101,9 +105,15 @@ std::string styles_gp() {
   // point and a dash of its own
   std::string adaptive;
   std::size_t lt = method_count();
+  // ARKODE's: SDIRK-5-3-4 teal, ARK5(4)8L[2]SA's DIRK green, Verner's explicit table dark grey;
+  // RADAU5 rose.
   for (const PeerInfo& p : peers()) {
     const bool cvode = p.is_cvode();
     const MethodStyle st = p.name == "dopri5"          ? MethodStyle{"#000000", 7, 1}
+                           : p.is_radau5()             ? MethodStyle{"#CC6677", 5, 1}
+                           : p.is_arkode()             ? (p.arkode.explicit_table       ? MethodStyle{"#444444", 4, 3}
+                                                          : p.name.starts_with("arkode_sdirk") ? MethodStyle{"#44AA99", 11, 1}
+                                                                                          : MethodStyle{"#117733", 12, 2})
                            : !cvode                    ? MethodStyle{"#777777", 6, 2}
                            : p.cvode.adams             ? MethodStyle{"#56B4E9", 13, 2}
                            : p.cvode.max_order == 2    ? MethodStyle{"#999933", 9, 5}

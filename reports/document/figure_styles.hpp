@@ -21,9 +21,10 @@ struct MethodStyle {
 // in all three, and in grey scale in point, dash and grey level.
 MethodStyle method_style(std::size_t method);
 
-// A solver's colour on the crossover map: a method's family hue; CVODE sky blue; the explicit
-// adaptive solvers (dopri5, Boost.Odeint's) grey. And the group in words: the family's name,
-// "CVODE", "adaptive explicit".
+// A solver's colour on the crossover map: a method's family hue; CVODE sky blue, ARKODE's DIRK
+// tables teal, RADAU5 rose; the explicit adaptive solvers (dopri5, Boost.Odeint's, ARKODE's
+// explicit table) grey. And the group in words: the family's name, "CVODE", "ARKODE", "RADAU5",
+// "adaptive explicit".
 std::string solver_hue(std::string_view solver);
 std::string solver_group(std::string_view solver);
 

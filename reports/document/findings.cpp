@@ -163,7 +163,7 @@ LevelWinner level_winner(const SceneWork& w, double level, bool timed) {
   return out;
 }
 
-std::vector<PeerComparison> implicit_against_cvode(const WorkPrecisionResult& r, const SceneWork& w, double level, bool timed) {
+std::vector<PeerComparison> implicit_against_peers(const WorkPrecisionResult& r, const SceneWork& w, double level, bool timed) {
   const WorkPoint* best = nullptr;
   for (std::size_t m : r.config.methods)
     if (method_info(m).implicit)
@@ -171,7 +171,7 @@ std::vector<PeerComparison> implicit_against_cvode(const WorkPrecisionResult& r,
         best = p;
   std::vector<PeerComparison> out;
   for (const std::string& solver : r.config.adaptive)
-    if (const PeerInfo* peer = find_peer(solver); peer && peer->is_cvode())
+    if (const PeerInfo* peer = find_peer(solver); peer && peer->implicit)  // CVODE, ARKODE's DIRK tables, RADAU5
       out.push_back({level, best, solver, cheapest_point(w, solver, level, timed)});
   return out;
 }

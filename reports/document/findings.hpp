@@ -113,6 +113,6 @@ struct PeerComparison {
   std::string peer;
   const WorkPoint* run;
 };
-std::vector<PeerComparison> implicit_against_cvode(const WorkPrecisionResult& r, const SceneWork& w, double level, bool timed);
+std::vector<PeerComparison> implicit_against_peers(const WorkPrecisionResult& r, const SceneWork& w, double level, bool timed);
 
 }  // namespace steplab

@@ -3,7 +3,7 @@
 // report's claims are true for whatever the studies measure. A statistic, a count and a list never
 // include the exact flow. The classes, each a function below:
 //   1 which methods are stable (answers, hand-in)      9  the cheapest run per error level, ties, edges
-//   2 never stable vs stable again, undamped           10 steplab's implicit methods against CVODE
+//   2 never stable vs stable again, undamped           10 steplab's implicit methods against the implicit peers
 //   3 stable at every step tried                       11 the stiffness crossover
 //   4 the rank correlation of order and dt*            12 the bounce orders that are findings
 //   5 each family's trend with the order               13 the scaling exponents that are findings

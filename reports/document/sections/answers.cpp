@@ -132,7 +132,8 @@ std::string stiff_answer(const Page& page) {
 }
 
 // At the report's crossover error: the cheapest run on each scene (a tie named as one), and on
-// the stiff scene steplab's cheapest implicit method against CVODE's cheapest set-up.
+// the stiff scene steplab's cheapest implicit method against the cheapest adaptive implicit peer
+// (CVODE, ARKODE's DIRK tables, RADAU5).
 std::string cost_answer(const Page& page) {
   const WorkPrecisionResult& r = page.data.work;
   const bool timed = page.data.config.timing;
@@ -149,14 +150,14 @@ std::string cost_answer(const Page& page) {
   std::string md = "- **What does accuracy cost?** " + and_list(parts);
   if (r.stiff >= 0) {
     const SceneWork& w = r.scenes[static_cast<std::size_t>(r.stiff)];
-    const std::vector<PeerComparison> against = implicit_against_cvode(r, w, level, timed);
+    const std::vector<PeerComparison> against = implicit_against_peers(r, w, level, timed);
     const PeerComparison* best = nullptr;
     for (const PeerComparison& c : against)
       if (c.steplab && c.run && (!best || point_cost(*c.run, timed) < point_cost(*best->run, timed))) best = &c;
     if (best)
-      md += fmt::format("; there steplab's cheapest implicit method, `{}`, takes {} steps where CVODE's cheapest set-up (`{}`) "
-                        "takes {}: {:.3g} times its cost",
-                        best->steplab->method, best->steplab->steps, best->peer, best->run->steps,
+      md += fmt::format("; there steplab's cheapest implicit method, `{}`, takes {} steps where the cheapest adaptive implicit "
+                        "peer, `{}` ({}), takes {}: {:.3g} times its cost",
+                        best->steplab->method, best->steplab->steps, best->peer, find_peer(best->peer)->library, best->run->steps,
                         point_cost(*best->run, timed) / point_cost(*best->steplab, timed));
   }
   return md + fmt::format("{}.\n", see(page, "work_precision"));

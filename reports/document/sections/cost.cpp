@@ -2,7 +2,7 @@
 // work_precision.hpp) with the adaptive peers; the cheapest solver per error level (a margin
 // within the timing's noise is a tie), steplab's implicit methods against CVODE, the chain's
 // stable against accurate steps, and the stiffness crossover. Every sentence is computed from
-// d.work (findings.hpp: point_cost, level_winner, implicit_against_cvode). "Evaluations" are
+// d.work (findings.hpp: point_cost, level_winner, implicit_against_peers). "Evaluations" are
 // force evaluations; Jacobians and factorisations are counted beside them.
 #include <algorithm>
 #include <cmath>
@@ -138,10 +138,18 @@ class Cost : public Section {
     for (const std::string& a : r.config.adaptive) {
       const PeerInfo* p = find_peer(a);
       if (!p) continue;
-      const std::string setup = p->is_cvode() ? fmt::format("{}; Newton on the analytic Jacobian, {} LU ({})", cvode_method_words(*p),
-                                                           p->linear_solver, cvode_build_text())
-                                              : p->library == "steplab" ? std::string("Dormand-Prince 5(4) with its own step control")
-                                                                        : std::string("controlled runge_kutta_dopri5, odeint's own controller");
+      const std::string setup =
+          p->is_cvode()    ? fmt::format("{}; Newton on the analytic Jacobian, {} LU ({})", cvode_method_words(*p), p->linear_solver,
+                                         cvode_build_text())
+          : p->is_arkode() ? fmt::format("{}{} ({})", arkode_method_words(*p),
+                                         p->implicit ? fmt::format("; Newton on the analytic Jacobian, {} LU, told the "
+                                                                   "scene is linear", p->linear_solver)
+                                                     : std::string(),
+                                         cvode_build_text())
+          : p->is_radau5() ? std::string("Radau IIA of order 5, its own step control; Newton on the analytic Jacobian of the "
+                                         "second-order form (M1 = N/2), dense LU (gfortran -O2)")
+          : p->library == "steplab" ? std::string("Dormand-Prince 5(4) with its own step control")
+                                    : std::string("controlled runge_kutta_dopri5, odeint's own controller");
       md += fmt::format("| `{}` | {} | {} |\n", a, p->library, setup);
     }
     return md + "\n";
@@ -165,15 +173,15 @@ class Cost : public Section {
                             "tried, might be cheaper still.\n\n", kTieMargin);
   }
 
-  // steplab's cheapest implicit method against each CVODE set-up on the stiff scene, at the
+  // steplab's cheapest implicit method against each adaptive implicit peer on the stiff scene, at the
   // crossover error and the tightest level: a row each, with the counts.
   static std::string peer_table(const WorkPrecisionResult& r, bool timed) {
     if (r.stiff < 0) return {};
     const SceneWork& w = r.scenes[static_cast<std::size_t>(r.stiff)];
     std::string rows;
-    double per_step_lo = INFINITY, per_step_hi = 0;  // CVODE's cost of a step over steplab's
+    double per_step_lo = INFINITY, per_step_hi = 0;  // a peer's cost of a step over steplab's
     for (const double level : {r.config.crossover_error, r.config.error_levels.back()})
-      for (const PeerComparison& c : implicit_against_cvode(r, w, level, timed)) {
+      for (const PeerComparison& c : implicit_against_peers(r, w, level, timed)) {
         if (!c.steplab || !c.run) continue;
         const double cost = point_cost(*c.run, timed) / point_cost(*c.steplab, timed);
         const double steps = double(c.run->steps) / double(c.steplab->steps);
@@ -184,10 +192,11 @@ class Cost : public Section {
                             double(c.run->force_evaluations) / double(c.steplab->force_evaluations), steps);
       }
     if (rows.empty()) return {};
-    return fmt::format("On the {}, steplab's cheapest implicit method against each CVODE set-up (F: force evaluations, J: "
-                       "Jacobians, LU: factorisations):\n\n| error | steplab | CVODE | cost ratio | force ratio | step ratio |\n"
-                       "|---|-----------------|-----------------|---|---|---|\n{}\nA ratio above 1: CVODE costs or takes more. "
-                       "A step of CVODE's costs {:.2g} .. {:.2g} times one of steplab's method by {}: the rest of each cost "
+    return fmt::format("On the {}, steplab's cheapest implicit method against each adaptive implicit peer (CVODE; ARKODE's "
+                       "DIRK tables; RADAU5, the adaptive code of steplab's Radau IIA; F: force evaluations, J: Jacobians, "
+                       "LU: factorisations):\n\n| error | steplab | peer | cost ratio | force ratio | step ratio |\n"
+                       "|---|-----------------|-----------------|---|---|---|\n{}\nA ratio above 1: the peer costs or takes more. "
+                       "A step of a peer's costs {:.2g} .. {:.2g} times one of steplab's method by {}: the rest of each cost "
                        "ratio is in how many steps each needs.\n\n",
                        scene_word(w), rows, per_step_lo, per_step_hi, timed ? "run time" : "force evaluations");
   }

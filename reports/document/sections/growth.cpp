@@ -58,8 +58,8 @@ std::string exponents_table(const ScalingResult& r) {
   return md;
 }
 
-// The crossover sentence, and steplab's cheapest against each CVODE configuration at the largest
-// size, as a table with the counts.
+// The crossover sentence, and steplab's cheapest against each adaptive implicit peer (CVODE,
+// ARKODE's DIRK tables, RADAU5) at the largest size, as a table with the counts.
 std::string findings(const ScalingResult& r) {
   const ScalingConfig& c = r.config;
   const auto any_row = [&](bool implicit) {
@@ -74,17 +74,17 @@ std::string findings(const ScalingResult& r) {
                        : fmt::format("From N = {} on (of these sizes), `{}` is cheaper than every explicit method.",
                                      scaling_masses(c, r.blocks.front().crossover), r.blocks.front().crossover_method);
   const ScalingRow* best = nullptr;
-  std::vector<const ScalingRow*> cvode;
+  std::vector<const ScalingRow*> cvode;  // and the other implicit peers
   for (std::size_t s = 0; s < r.solvers(); ++s) {  // the first block's
     const ScalingRow& w = r.rows_of(s).back();
     if (!w.reached()) continue;
     const PeerInfo* peer = w.adaptive ? find_peer(w.solver) : nullptr;
-    if (peer && peer->is_cvode()) cvode.push_back(&w);
+    if (peer && peer->implicit) cvode.push_back(&w);
     else if (peer && peer->library != "steplab") continue;  // the other peers
     else if (!best || scaling_cost(c, w) < scaling_cost(c, *best)) best = &w;
   }
   if (!best || cvode.empty()) return md + "\n\n";
-  md += fmt::format(" At N = {}, steplab's cheapest, `{}`{}, against each CVODE set-up ({} in {}):\n\n"
+  md += fmt::format(" At N = {}, steplab's cheapest, `{}`{}, against each adaptive implicit peer ({} in {}):\n\n"
                     "| solver | counts | cost over steplab's |\n|------------|-----------------------|---|\n| `{}` | {} | 1 |\n",
                     scaling_masses(c, c.sizes.back()), best->solver, best->capped ? " (its step at the cap 0.95 dt*)" : "",
                     "cost", c.timing ? "run time" : "force evaluations x N", best->solver, counts_text(best->counts()));
@@ -104,16 +104,18 @@ std::string scene_paragraph(const ScalingResult& r, bool first) {
   const std::string at = masses == c.sizes ? fmt::format("N = {}", join(masses))
                                            : fmt::format("N = {} masses ({} = {})", join(masses), size_name, join(c.sizes));
   const std::string against = k.has_exact ? "its exact solution" : "its reference solution (dopri5 at rtol 1e-13)";
-  const std::string solver = k.jacobian_bandwidth >= 0 ? "its banded LU" : "SuiteSparse's KLU";
+  const std::string solver = k.jacobian_bandwidth >= 0 ? "their banded LU, RADAU5 with its own"
+                                                       : "SuiteSparse's KLU, RADAU5 (no sparse solver) with its banded LU as wide as the grid";
   if (!first)
-    return fmt::format("**{}** ({}), at {}: the same measure against {}, CVODE with {}.\n\n", k.title,
+    return fmt::format("**{}** ({}), at {}: the same measure against {}, CVODE and ARKODE with {}.\n\n", k.title,
                        params_but_size(scene, c.params), at, against, solver);
   return fmt::format(
       "**{}** ({}), refined by its {} to {}: each method's step (each adaptive solver's tolerance) searched until the position "
       "error over the whole motion (the largest over the masses and {} frames to t = {:g}) against {} is at most {:g}, and "
-      "that run's cost by {}. A fixed-step method's step divides the frame interval and is capped at 0.95 of the dt* its "
-      "modes predict: it is told where its steps stop being stable, which no adaptive solver is told. The peers as above, "
-      "CVODE with {}.\n\n",
+      "that run's cost by {}. A fixed-step method interpolates each frame inside the step that holds it (its output between "
+      "steps, above), and its step is capped at 0.95 of the dt* its modes predict: it is told where its steps stop being "
+      "stable, which no adaptive solver is told. The peers as above, "
+      "CVODE and ARKODE with {}.\n\n",
       k.title, params_but_size(scene, c.params), size_name, at, c.frames, c.t_end, against, c.targets.front().value,
       c.timing ? "run time" : "force evaluations times N", solver);
 }
@@ -194,10 +196,10 @@ std::string map_findings(const ScalingResult& r) {
     const auto times = [](double over) { return std::isnan(over) ? std::string("-") : fmt::format("{:.3g}", over); };
     if (!far.best_implicit.empty())
       md += fmt::format(" At stiffness {:g} and N = {} the best explicit solver (`{}`) costs {} times the cheapest implicit "
-                        "method (`{}`), the best CVODE (`{}`) {} times.",
+                        "method (`{}`), the best adaptive implicit peer (`{}`) {} times.",
                         stiffest->stiffness, far.masses, far.best_explicit.empty() ? "none reached" : far.best_explicit,
                         times(far.explicit_over_implicit), far.best_implicit,
-                        far.best_cvode.empty() ? "none reached" : far.best_cvode, times(far.cvode_over_implicit));
+                        far.best_implicit_peer.empty() ? "none reached" : far.best_implicit_peer, times(far.implicit_peer_over_implicit));
     if (!still.empty())
       md += fmt::format(" At stiffness {} the body moves less than this target (at most {:.2g}): a run that stays at rest "
                         "meets it, and only stability tells the solvers apart.",
@@ -220,7 +222,7 @@ std::string map_markdown(const ScalingResult& r, Page& page) {
       "**When does implicit pay?** The {} stiffened as well, at N = {}: its {} at {}, each cell (size, stiffness) the same "
       "study with every method and the peers but CVODE's BDF of orders up to 5 (its orders 1-2 stand for it; a search tries "
       "no step that needs more than {} steps), at the error above and at a visual one ({}). Each cell is coloured by the "
-      "group of its cheapest solver (a family; CVODE; the explicit adaptive solvers) and labelled with it and its margin "
+      "group of its cheapest solver (a family; CVODE; ARKODE; RADAU5; the explicit adaptive solvers) and labelled with it and its margin "
       "over the next; a margin below {:g} is a tie (white, both named), counted for neither. `steplab study scaling --scene "
       "{} --sizes {} --stiffness {} --error {:g},{:g}% --max-steps {}` gives the map with every peer and count.\n\n",
       s.name, join(masses), stiffness_name, fmt::join(stiff, ", "), c.max_steps, target_text(c, r.blocks.back()), kTieMargin,
@@ -229,7 +231,8 @@ std::string map_markdown(const ScalingResult& r, Page& page) {
   if (page.has("map"))
     md += page.figure("map", fmt::format("{}: the cheapest solver in each cell (masses N, {}); colour by group: explicit "
                                          "Runge-Kutta blue, symplectic splitting vermillion, implicit Runge-Kutta green, "
-                                         "Adams-Bashforth purple, BDF orange, CVODE sky blue, explicit adaptive grey, a tie white",
+                                         "Adams-Bashforth purple, BDF orange, CVODE sky blue, ARKODE teal, RADAU5 rose, explicit "
+                                         "adaptive grey, a tie white",
                                          s.title, stiffness_name));
   return md;
 }

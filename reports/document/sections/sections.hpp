@@ -17,6 +17,7 @@
   X(convergence, true)             \
   X(long_run, false)               \
   X(stiff_order, true)             \
+  X(dense_output, true)            \
   X(stability, true)               \
   X(cost, true)                    \
   X(collision, true)               \

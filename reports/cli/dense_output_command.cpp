@@ -1,0 +1,67 @@
+// `steplab study dense-output`: each fixed-step method's output between steps (core/
+// dense_output.hpp), its order beside its steps' (analysis/studies/dense_output.hpp). Table on
+// stdout, JSON (steplab.dense_output/1) with --json.
+#include <cstdio>
+
+#include <fmt/format.h>
+
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/dense_output.hpp"
+#include "reports/cli/commands.hpp"
+#include "reports/data/inputs.hpp"
+#include "reports/data/output.hpp"
+#include "reports/data/schemas.hpp"
+#include "reports/data/study_output.hpp"
+
+namespace steplab {
+namespace {
+
+bool has_exact(const SceneKernel& s) { return s.exact != nullptr && s.dim != Eigen::Dynamic; }
+
+}  // namespace
+
+CLI::App* add_dense_output_command(CLI::App* study, DenseOutputArgs& a) {
+  CLI::App* cmd = study->add_subcommand("dense-output", "output between steps: each method's error inside its steps and its "
+                                                        "order, beside the order at the steps");
+  a.scene.scene = "spring";
+  a.scene.add_to(cmd, has_exact);
+  cmd->add_option("--methods", a.methods, "comma-separated methods (default every numerical method that runs on the scene)");
+  cmd->add_option("--t-end", a.t_end, "simulated time")->capture_default_str();
+  cmd->add_option("--dt-max", a.dt_max, "largest step of the sweep")->capture_default_str();
+  cmd->add_option("--dt-min", a.dt_min, "smallest step of the sweep")->capture_default_str();
+  cmd->add_option("--points", a.points, "steps in the sweep, 3 .. 100")->capture_default_str();
+  cmd->add_option("--outputs", a.outputs, "output times, evenly spaced over [0, t_end], 2 .. 100000")->capture_default_str();
+  cmd->add_option("--threads", a.threads, "worker threads, 0 = all cores")->capture_default_str();
+  cmd->add_option("--json", a.json, fmt::format("write JSON (schema {}) to this file", schema::dense_output));
+  return cmd;
+}
+
+int dense_output_command(DenseOutputArgs& a, Context& ctx) {
+  const std::size_t scene = a.scene.scene_index();
+  if (!has_exact(scene_kernel(scene)))
+    throw UsageError(fmt::format("--scene {} has no exact solution to measure against; accepted: {}", scene_name(scene),
+                                 scene_list(has_exact)));
+  DenseOutputConfig c;
+  c.scene = scene;
+  c.params = a.scene.values(scene);
+  c.methods = a.methods.empty() ? std::vector<std::size_t>{} : resolve_methods(a.methods, false, scene);
+  if (a.methods.empty())
+    for (std::size_t m : ode_methods())
+      if (applies(m, scene)) c.methods.push_back(m);
+  c.t_end = parse_number("--t-end", a.t_end, Bound::Positive);
+  c.dt_max = parse_number("--dt-max", a.dt_max, Bound::Positive);
+  c.dt_min = parse_number("--dt-min", a.dt_min, Bound::Positive);
+  if (!(c.dt_min < c.dt_max && c.dt_max <= c.t_end))
+    throw UsageError(fmt::format("--dt-min {} and --dt-max {} are not a sweep; accepted: 0 < dt-min < dt-max <= t-end",
+                                 a.dt_min, a.dt_max));
+  c.points = static_cast<int>(parse_count("--points", a.points, 3, 100));
+  c.outputs = static_cast<int>(parse_count("--outputs", a.outputs, 2, 100'000));
+  c.workers = ctx.workers(resolve_thread_count(a.threads));
+  if (ctx.stop_after_validation(a.json)) return 0;
+  const DenseOutputResult r = dense_output_study(c);
+  std::fputs(dense_output_table(r).c_str(), stdout);
+  if (!a.json.empty()) write_atomic(a.json, dense_output_json(r).dump(1) + "\n");
+  return 0;
+}
+
+}  // namespace steplab

@@ -1,0 +1,61 @@
+// `study dense-output`'s table and JSON (schema steplab.dense_output/1, docs/json.md).
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/dense_output.hpp"
+#include "reports/data/run_json.hpp"
+#include "reports/data/schemas.hpp"
+#include "reports/data/study_output.hpp"
+
+namespace steplab {
+namespace {
+
+Json order_json(const OrderFit& f) {
+  if (!f.fitted) return {{"order", nullptr}, {"exact", f.exact}, {"note", f.note}};
+  return {{"order", f.order}, {"order_bound", {finite_or_null(f.bound_lo), finite_or_null(f.bound_hi)}},
+          {"dt_range", {f.dt_lo, f.dt_hi}}, {"local_orders", f.local_slopes}};
+}
+
+std::string order_text(const OrderFit& f) {
+  if (f.exact) return "exact";
+  if (!f.fitted) return "-";
+  return fmt::format("{:.2f} [{:.2f}, {:.2f}]", f.order, f.bound_lo, f.bound_hi);
+}
+
+}  // namespace
+
+Json dense_output_json(const DenseOutputResult& r) {
+  const DenseOutputConfig& c = r.config;
+  Json rows = Json::array(), fits = Json::array();
+  for (const DenseOutputRow& w : r.rows)
+    rows.push_back({{"method", std::string(method_info(w.method).name)}, {"dt", w.dt}, {"steps", w.steps}, {"status", to_string(w.status)},
+                    {"error_steps", finite_or_null(w.error_steps)}, {"error_outputs", finite_or_null(w.error_outputs)},
+                    {"floor", w.floor}});
+  for (const DenseOutputFit& f : r.fits)
+    fits.push_back({{"method", std::string(method_info(f.method).name)}, {"declared_order", f.declared}, {"output", f.quintic ? "quintic" : "cubic"},
+                    {"predicted_output_order", f.predicted}, {"steps", order_json(f.steps)}, {"outputs", order_json(f.outputs)}});
+  return {{"schema", schema::dense_output},
+          {"scene", scene_name(c.scene)},
+          {"params", scene_params_json(c.scene, c.params)},
+          {"t_end", c.t_end},
+          {"outputs", c.outputs},
+          {"rows", rows},
+          {"fits", fits}};
+}
+
+std::string dense_output_table(const DenseOutputResult& r) {
+  const DenseOutputConfig& c = r.config;
+  std::string out = fmt::format(
+      "Output between steps on the {} to t = {:g}: the largest position error at the steps and at {} evenly spaced times "
+      "inside them (cubic Hermite from x, v below order 3, quintic from x, v, a from 3 up), each error's order fitted over "
+      "the dt sweep\n\n{:<18} {:>8} {:>8} {:>9} {:>22} {:>22}\n",
+      scene_name(c.scene), c.t_end, c.outputs, "method", "declared", "output", "predicted", "order at steps", "order between steps");
+  for (const DenseOutputFit& f : r.fits)
+    out += fmt::format("{:<18} {:>8} {:>8} {:>9} {:>22} {:>22}\n", std::string(method_info(f.method).name), f.declared, f.quintic ? "quintic" : "cubic",
+                       f.predicted, order_text(f.steps), order_text(f.outputs));
+  return out + "\nOrders with their bounds (analysis/fits/order_fit.hpp); '-' where no asymptotic range was found.\n";
+}
+
+}  // namespace steplab
