@@ -85,7 +85,7 @@ void arkode_solve_frames(CvodeRun& run, ARKRhsFn rhs, ARKLsJacFn jac, const void
                          bool linear, double tol, double t_end, int frames, PeerCounts& n, AtFrame&& at_frame) {
   arkode_run(run, rhs, jac, scene, settings, linear, tol, t_end, n, [&](void* mem, double& t, auto step) {
     for (int k = 1; k <= frames; ++k) {
-      const double tout = k == frames ? t_end : t_end * k / frames;
+      const double tout = frame_time(k, frames, t_end);
       if (step(mem, tout, run.z, &t, ARK_NORMAL) < 0) return false;
       at_frame(k);
     }

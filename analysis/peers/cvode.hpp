@@ -96,7 +96,7 @@ void cvode_solve_frames(CvodeRun& run, CVRhsFn rhs, CVLsJacFn jac, const void* s
                         double tol, double t_end, int frames, PeerCounts& n, AtFrame&& at_frame) {
   cvode_run(run, rhs, jac, scene, settings, tol, t_end, n, [&](void* mem, double& t) {
     for (int k = 1; k <= frames; ++k) {
-      const double tout = k == frames ? t_end : t_end * k / frames;
+      const double tout = frame_time(k, frames, t_end);
       if (CVode(mem, tout, run.z, &t, CV_NORMAL) < 0) return false;
       at_frame(k);
     }

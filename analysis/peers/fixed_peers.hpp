@@ -52,7 +52,7 @@ void odeint_times(Stepper&& stepper, System&& system, Z& z, double t_end, int fr
   constexpr double eps = std::numeric_limits<double>::epsilon();
   double t = 0;
   for (int k = 1; k <= frames; ++k) {
-    const double tk = k == frames ? t_end : t_end * k / frames;
+    const double tk = frame_time(k, frames, t_end);
     int fails = 0;
     while (tk - t > eps) {
       double step = std::min(dt, tk - t);
@@ -95,32 +95,43 @@ template <Scene S> struct OdeintDopri5 {
   }
 };
 
+// A scene of fixed size S as a first-order system z = (x, v) of 2 S::dim entries, for every
+// peer's callbacks (CVODE's and ARKODE's, RADAU5's).
+template <Scene S> struct FirstOrder {
+  static constexpr int D = S::dim;
+  // z' = f(z): the velocities, then the accelerations.
+  static void derivative(const S& s, double t, const double* z, double* dz) {
+    const Vec<D> x = Eigen::Map<const Vec<D>>(z), v = Eigen::Map<const Vec<D>>(z + D);
+    const Vec<D> acc = acceleration(s, t, x, v);
+    for (int i = 0; i < D; ++i) dz[i] = v[i], dz[D + i] = acc[i];
+  }
+  // The Jacobian's non-trivial rows, [M^-1 dF/dx, M^-1 dF/dv] (D x 2D), column-major with leading
+  // dimension ld (x' = v's rows, [0, I], are the caller's).
+  static void acceleration_rows(const S& s, double t, const double* z, double* rows, int ld) {
+    const Vec<D> x = Eigen::Map<const Vec<D>>(z), v = Eigen::Map<const Vec<D>>(z + D);
+    const Jacobians<D> j = jacobians_at(s, t, x, v);
+    const Vec<D> w = s.inverse_mass();
+    // entry by entry: an Eigen map with an outer stride would take a 1 x 2 block (D = 1) for a
+    // vector and ignore the stride
+    for (int c = 0; c < D; ++c)
+      for (int r = 0; r < D; ++r) rows[r + c * ld] = w[r] * j.dx(r, c), rows[r + (c + D) * ld] = w[r] * j.dv(r, c);
+  }
+};
+
 template <Scene S> struct SundialsDense {
   static constexpr int D = S::dim;
 
-  // z' = f(z): the velocities, then the accelerations.
   static int rhs(sunrealtype t, N_Vector z, N_Vector dz, void* scene) {
-    const S& s = *static_cast<const S*>(scene);
-    const double* a = N_VGetArrayPointer(z);
-    double* da = N_VGetArrayPointer(dz);
-    const Vec<D> x = Eigen::Map<const Vec<D>>(a), v = Eigen::Map<const Vec<D>>(a + D);
-    const Vec<D> acc = acceleration(s, t, x, v);
-    for (int i = 0; i < D; ++i) da[i] = v[i], da[D + i] = acc[i];
+    FirstOrder<S>::derivative(*static_cast<const S*>(scene), t, N_VGetArrayPointer(z), N_VGetArrayPointer(dz));
     return 0;
   }
 
   // df/dz = [[0, I], [M^-1 dF/dx, M^-1 dF/dv]] (column-major dense matrix).
   static int jacobian(sunrealtype t, N_Vector z, N_Vector, SUNMatrix J, void* scene, N_Vector, N_Vector, N_Vector) {
-    const S& s = *static_cast<const S*>(scene);
-    const double* a = N_VGetArrayPointer(z);
-    const Vec<D> x = Eigen::Map<const Vec<D>>(a), v = Eigen::Map<const Vec<D>>(a + D);
-    const Jacobians<D> j = jacobians_at(s, t, x, v);
-    const Vec<D> w = s.inverse_mass();
     Eigen::Map<Eigen::Matrix<double, 2 * D, 2 * D>> m(SUNDenseMatrix_Data(J));
     m.setZero();
     m.template topRightCorner<D, D>().setIdentity();
-    m.template bottomLeftCorner<D, D>() = w.asDiagonal() * j.dx;
-    m.template bottomRightCorner<D, D>() = w.asDiagonal() * j.dv;
+    FirstOrder<S>::acceleration_rows(*static_cast<const S*>(scene), t, N_VGetArrayPointer(z), SUNDenseMatrix_Data(J) + D, 2 * D);
     return 0;
   }
 
@@ -148,19 +159,10 @@ template <Scene S> struct SundialsDense {
 template <Scene S> struct Radau5Fixed {
   static constexpr int D = S::dim;
   static void rhs(const void* scene, double t, const double* z, double* dz) {
-    const S& s = *static_cast<const S*>(scene);
-    const Vec<D> x = Eigen::Map<const Vec<D>>(z), v = Eigen::Map<const Vec<D>>(z + D);
-    const Vec<D> acc = acceleration(s, t, x, v);
-    for (int i = 0; i < D; ++i) dz[i] = v[i], dz[D + i] = acc[i];
+    FirstOrder<S>::derivative(*static_cast<const S*>(scene), t, z, dz);
   }
   static void jacobian(const void* scene, double t, const double* z, double* dfy, int ld) {
-    const S& s = *static_cast<const S*>(scene);
-    const Vec<D> x = Eigen::Map<const Vec<D>>(z), v = Eigen::Map<const Vec<D>>(z + D);
-    const Jacobians<D> j = jacobians_at(s, t, x, v);
-    const Vec<D> w = s.inverse_mass();
-    Eigen::Map<Eigen::Matrix<double, D, 2 * D>, 0, Eigen::OuterStride<>> m(dfy, D, 2 * D, Eigen::OuterStride<>(ld));
-    m.template leftCols<D>() = w.asDiagonal() * j.dx;
-    m.template rightCols<D>() = w.asDiagonal() * j.dv;
+    FirstOrder<S>::acceleration_rows(*static_cast<const S*>(scene), t, z, dfy, ld);
   }
   static State<D> run(const S& s, double tol, double t_end, PeerCounts& n, double* error_max = nullptr) {
     const State<D> y0 = s.initial();

@@ -50,6 +50,10 @@ struct CvodeSettings {
   bool stability_limit_detection = false;  // BDF: lower the order where it is unstable
 };
 
+// The k-th of `frames` output times over [0, t_end], k = 1 .. frames: k t_end / frames, the last
+// t_end itself (no rounding past the run's end). Every peer and the scaling study output there.
+inline double frame_time(int k, int frames, double t_end) { return k == frames ? t_end : t_end * k / frames; }
+
 // Which scenes a peer runs on, by the linear solver that fits their Jacobian: the fixed-size
 // scenes of the work-precision study (dense), the scenes of run-time size that declare their
 // Jacobians banded (core/scene.hpp, jacobian_bandwidth: the rope), the other scenes of run-time

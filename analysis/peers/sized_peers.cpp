@@ -62,14 +62,16 @@ int band_jacobian(sunrealtype, N_Vector z, N_Vector, SUNMatrix J, void* data, N_
   return 0;
 }
 
-// z' = (v, M^-1 F(x, v)), z = (x, v) in blocks.
-int blocked_rhs(sunrealtype t, N_Vector z, N_Vector dz, void* data) {
-  const MadeScene& s = *static_cast<const MadeScene*>(data);
-  const Eigen::Index d = N_VGetLength(z) / 2;
-  const Eigen::Map<const Eigen::VectorXd> a(N_VGetArrayPointer(z), 2 * d);
-  Eigen::Map<Eigen::VectorXd> da(N_VGetArrayPointer(dz), 2 * d);
+// z' = (v, M^-1 F(x, v)), z = (x, v) in blocks of d entries: CVODE's and ARKODE's right side
+// (blocked_rhs) and RADAU5's.
+void blocked_derivative(const MadeScene& s, double t, const double* z, double* dz, Eigen::Index d) {
+  const Eigen::Map<const Eigen::VectorXd> a(z, 2 * d);
+  Eigen::Map<Eigen::VectorXd> da(dz, 2 * d);
   da.head(d) = a.tail(d);
   da.tail(d) = acceleration(s, t, Eigen::VectorXd(a.head(d)), Eigen::VectorXd(a.tail(d)));
+}
+int blocked_rhs(sunrealtype t, N_Vector z, N_Vector dz, void* data) {
+  blocked_derivative(*static_cast<const MadeScene*>(data), t, N_VGetArrayPointer(z), N_VGetArrayPointer(dz), N_VGetLength(z) / 2);
   return 0;
 }
 
@@ -139,13 +141,14 @@ void sundials_frames_or_end(CvodeRun& c, CVRhsFn rhs, CVLsJacFn jac, const MadeS
 // (radau5.hpp): the scene's declared bandwidth, or on a scene without one (the soft body) the
 // widest its Jacobians' pattern at the start reaches (their pattern does not change).
 struct Radau5Sized {
+  // What RADAU5's callbacks read: the scene and the Jacobian's stored bandwidth.
+  struct Call {
+    const MadeScene& scene;
+    int band;
+  };
   static void rhs(const void* data, double t, const double* z, double* dz) {
-    const MadeScene& s = *static_cast<const MadeScene*>(data);
-    const Eigen::Index d = s.inverse_mass().size();
-    const Eigen::Map<const Eigen::VectorXd> a(z, 2 * d);
-    Eigen::Map<Eigen::VectorXd> da(dz, 2 * d);
-    da.head(d) = a.tail(d);
-    da.tail(d) = acceleration(s, t, Eigen::VectorXd(a.head(d)), Eigen::VectorXd(a.tail(d)));
+    const MadeScene& s = static_cast<const Call*>(data)->scene;
+    blocked_derivative(s, t, z, dz, s.inverse_mass().size());
   }
   static int width(const Jacobians<Eigen::Dynamic>& j) {
     Eigen::Index b = 0;
@@ -169,13 +172,6 @@ struct Radau5Sized {
           dfy[(e.row() - e.col() + call.band) + (e.col() + k * d) * ld] = w[e.row()] * e.value();
     }
   }
-  struct Call {
-    const MadeScene& scene;
-    int band;
-  };
-  static void rhs_of_call(const void* data, double t, const double* z, double* dz) {
-    rhs(&static_cast<const Call*>(data)->scene, t, z, dz);
-  }
   static State<Eigen::Dynamic> run(const MadeScene& s, int bandwidth, double tol, double t_end, PeerCounts& n,
                                     const PeerFrames& frames) {
     const State<Eigen::Dynamic> y0 = s.initial();
@@ -183,13 +179,13 @@ struct Radau5Sized {
     Eigen::VectorXd z(2 * d), out(2 * d);
     z << y0.x, y0.v;
     const Call call{s, bandwidth >= 0 ? bandwidth : width(s.jacobians(y0.x, y0.v))};
-    const Radau5Problem p{static_cast<int>(2 * d), call.band, &call, rhs_of_call, jacobian};
+    const Radau5Problem p{static_cast<int>(2 * d), call.band, &call, rhs, jacobian};
     int k = 1;
     std::function<void(const Radau5Step&)> after;
     if (frames.count > 0)  // each frame in the step that reaches it, from the collocation polynomial
       after = [&](const Radau5Step& step) {
         for (; k <= frames.count; ++k) {
-          const double tk = k == frames.count ? t_end : t_end * k / frames.count;
+          const double tk = frame_time(k, frames.count, t_end);
           if (tk > step.t) break;
           step.dense(tk, out.data());
           frames.at(k, out.head(d));

@@ -58,7 +58,7 @@ std::string fmt_reference_error(double estimated, double target, int n) {
 }
 
 // The frame times t_k = k t_end / frames, k = 0 .. frames (t_frames = t_end exactly).
-double frame_time(const ScalingConfig& c, int k) { return k == c.frames ? c.t_end : c.t_end * k / c.frames; }
+double frame_time(const ScalingConfig& c, int k) { return steplab::frame_time(k, c.frames, c.t_end); }
 
 // The positions at the frames k = 0 .. frames the runs are measured against: exact where the
 // scene has an exact solution (the rope), else the reference solution at the frames
