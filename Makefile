@@ -33,22 +33,24 @@ report: deps
 # build/bench.json and build/bench-ratios.md; the ratios file ends with CVODE as Debian builds it
 # (no optimisation) against the build steplab uses: the same program, rope and steps
 # (bench/cvode_rope.c). Google Benchmark's "Library was built as DEBUG" warning is about
-# Debian's build of that library's own timing loop, not steplab's code (-O3): the rows time
-# batches of 10 000 steps (KeepRunningBatch) or whole runs, so that loop's cost is negligible
-# beside them (the finite_check rows, a step at a time, compare two loops that pay it alike).
+# Debian's build of that library's own timing loop, not steplab's code (-O3): every row times
+# batches of 10 000 steps (KeepRunningBatch: the step/, hand/, odeint/ and finite_check/ rows
+# alike) or whole runs, so that loop's cost is negligible beside them. The ratios are of CPU
+# times (the row's own thread's, which a busy core beside it hardly moves), the repetitions of
+# all rows interleaved at random, and the load average recorded before and after.
 BENCH_DEBUG_NOTE = (Google Benchmark's 'Library was built as DEBUG' warning concerns Debian's build of its timing loop, not steplab's -O3 code: the Makefile says why it does not matter)
 BENCH_QUICK = ^((step|odeint|hand)/spring/|(hand/)?rope_size/(rk4|explicit_euler|implicit_euler)/4096$$|throughput|cvode_rope/)
 bench: build
 	@echo "make bench: every row, 5 repetitions, about 13 minutes (make bench-quick: the headline rows, about a minute)"
 	@echo "$(BENCH_DEBUG_NOTE)"
-	@$(BUILD)/steplab_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
+	@$(BUILD)/steplab_bench --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true \
 	  --benchmark_out=$(BUILD)/bench.json --benchmark_out_format=json --ratios=$(BUILD)/bench-ratios.md
 	@$(MAKE) --no-print-directory bench-debian-cvode
 bench-quick: build
 	@echo "make bench-quick: the headline rows, 3 repetitions, about a minute"
 	@echo "$(BENCH_DEBUG_NOTE)"
-	@$(BUILD)/steplab_bench --benchmark_filter='$(BENCH_QUICK)' --benchmark_repetitions=3 --benchmark_report_aggregates_only=true \
-	  --benchmark_out=$(BUILD)/bench.json --benchmark_out_format=json --ratios=$(BUILD)/bench-ratios.md
+	@$(BUILD)/steplab_bench --benchmark_filter='$(BENCH_QUICK)' --benchmark_repetitions=3 --benchmark_enable_random_interleaving=true \
+	  --benchmark_report_aggregates_only=true --benchmark_out=$(BUILD)/bench.json --benchmark_out_format=json --ratios=$(BUILD)/bench-ratios.md
 	@$(MAKE) --no-print-directory bench-debian-cvode
 bench-debian-cvode:
 	@if [ -x $(BUILD)/cvode_rope_debian ]; then \

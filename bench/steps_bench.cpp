@@ -64,6 +64,17 @@ namespace odeint = boost::numeric::odeint;
 constexpr double kDt = 0.001;
 constexpr int kRestart = 10'000;
 
+// Every row times batches of kRestart steps from the initial state (KeepRunningBatch), the rule
+// of the kernel's rows (register_step, time_steps): Google Benchmark's own cost an iteration
+// (Debian builds it without optimisation) is then spread over 10 000 steps in every row alike.
+template <class Reset, class Step> void time_batches(benchmark::State& st, Reset&& reset, Step&& step) {
+  while (st.KeepRunningBatch(kRestart)) {
+    reset();
+    for (int n = 0; n < kRestart; ++n) step(n);
+  }
+  st.counters["steps_per_second"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
+}
+
 // ---------------- steplab ----------------
 
 // The cost of detecting a blow-up: the same stepping loop with and without the check that run()
@@ -73,15 +84,13 @@ template <class S, class M, bool Check> void register_finite_check() {
   benchmark::RegisterBenchmark(name.c_str(), [](benchmark::State& st) {
     const S scene = make_default_scene<S>();
     State<S::dim> y = scene.initial();
-    int n = 0;
-    for (auto _ : st) {
+    bool finite = true;
+    time_batches(st, [&] { y = scene.initial(); }, [&](int n) {
       M::step(scene, y, n * kDt, kDt);
-      if constexpr (Check) {
-        if (!all_finite(y)) st.SkipWithError("non-finite state");
-      }
+      if constexpr (Check) finite = finite && all_finite(y);
       benchmark::DoNotOptimize(y);
-      if (++n == kRestart) n = 0, y = scene.initial();
-    }
+    });
+    if (!finite) st.SkipWithError("non-finite state");
   });
 }
 
@@ -114,14 +123,11 @@ struct SpringForce {
 template <class Step> void register_loop(const char* name, SpringForce f, Step step) {
   benchmark::RegisterBenchmark(name, [f, step](benchmark::State& st) {
     double y = -f.L, v = 0;
-    int n = 0;
-    for (auto _ : st) {
+    time_batches(st, [&] { y = -f.L, v = 0; }, [&](int) {
       step(f, y, v);
       benchmark::DoNotOptimize(y);
       benchmark::DoNotOptimize(v);
-      if (++n == kRestart) n = 0, y = -f.L, v = 0;
-    }
-    st.counters["steps_per_second"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
+    });
   });
 }
 
@@ -191,13 +197,10 @@ template <class Stepper> void register_odeint(const char* name, Stepper stepper,
       ds[0] = s[1];
       ds[1] = f(s[0], s[1]) / f.m;
     };
-    int n = 0;
-    for (auto _ : st) {
+    time_batches(st, [&] { y = Y{-f.L, 0.0}; }, [&](int n) {
       stepper.do_step(sys, y, n * kDt, kDt);
       benchmark::DoNotOptimize(y);
-      if (++n == kRestart) n = 0, y = Y{-f.L, 0.0};
-    }
-    st.counters["steps_per_second"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
+    });
   });
 }
 
@@ -217,26 +220,20 @@ void register_odeint_all() {
     odeint::velocity_verlet<Q> vv;
     std::pair<Q, Q> qp{Q{-undamped.L}, Q{0.0}};
     const auto acc = [&undamped](const Q& q, const Q& p, Q& a, double) { a[0] = undamped(q[0], p[0]) / undamped.m; };
-    int n = 0;
-    for (auto _ : st) {
+    time_batches(st, [&] { qp = {Q{-undamped.L}, Q{0.0}}, vv.reset(); }, [&](int n) {
       vv.do_step(acc, qp, n * kDt, kDt);
       benchmark::DoNotOptimize(qp);
-      if (++n == kRestart) n = 0, qp = {Q{-undamped.L}, Q{0.0}}, vv.reset();
-    }
-    st.counters["steps_per_second"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
+    });
   });
   benchmark::RegisterBenchmark("odeint/spring_undamped/symplectic_euler", [undamped](benchmark::State& st) {
     odeint::symplectic_euler<Q> se;
     std::pair<Q, Q> qp{Q{-undamped.L}, Q{0.0}};
     const auto coor = [](const Q& p, Q& dq) { dq[0] = p[0]; };
     const auto mom = [&undamped](const Q& q, Q& dp) { dp[0] = undamped(q[0], 0.0) / undamped.m; };
-    int n = 0;
-    for (auto _ : st) {
+    time_batches(st, [&] { qp = {Q{-undamped.L}, Q{0.0}}; }, [&](int n) {
       se.do_step(std::make_pair(coor, mom), qp, n * kDt, kDt);
       benchmark::DoNotOptimize(qp);
-      if (++n == kRestart) n = 0, qp = {Q{-undamped.L}, Q{0.0}};
-    }
-    st.counters["steps_per_second"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
+    });
   });
 
   register_odeint_implicit_euler();  // odeint_implicit_bench.cpp, compiled as C++17
@@ -255,7 +252,10 @@ class Collecting : public Base {
     for (const auto& r : runs) {
       const bool use = r.run_type == benchmark::BenchmarkReporter::Run::RT_Aggregate ? r.aggregate_name == "median"
                                                                                      : r.repetitions <= 1;
-      if (use && !r.error_occurred) ns_per_step[r.run_name.function_name] = r.GetAdjustedRealTime();
+      // CPU time: a row's own thread's, which a busy core beside it hardly moves; wall time
+      // counts the time the thread waited for a core (a ratio of wall times read 0.71 where
+      // the same rows' CPU times gave 1.12, a build on the other core).
+      if (use && !r.error_occurred) ns_per_step[r.run_name.function_name] = r.GetAdjustedCPUTime();
     }
     Base::ReportRuns(runs);
   }
@@ -269,6 +269,12 @@ template <class Reporter, class... Args> std::map<std::string, double> run_colle
   return reporter.ns_per_step;
 }
 
+
+std::string fmt_load(double load) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", load);
+  return text;
+}
 
 // The value of --flag=value among the arguments (the last one given), or `fallback`.
 std::string flag_value(int argc, char** argv, const std::string& flag, const std::string& fallback) {
@@ -361,7 +367,8 @@ int main(int argc, char** argv) {
   benchmark::AddCustomContext("cxx_flags", STEPLAB_BENCH_CXX_FLAGS);
   benchmark::AddCustomContext("steplab_version", STEPLAB_BENCH_VERSION);
   benchmark::AddCustomContext("cpu_model", cpu_model());
-  benchmark::AddCustomContext("load_at_start", std::to_string(load_average()));
+  const double load_at_start = load_average();
+  benchmark::AddCustomContext("load_at_start", std::to_string(load_at_start));
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
 #pragma GCC diagnostic push
@@ -374,8 +381,10 @@ int main(int argc, char** argv) {
 #pragma GCC diagnostic pop
   benchmark::Shutdown();
   const std::string table = ratio_table(ns_per_step) + "\n" + rope_floor_lines(ns_per_step) + peer_ratio_lines(ns_per_step);
-  const std::string rule = "Time per step, the median of the repetitions; every ratio is steplab's time over the other's (below 1: "
-                           "steplab is faster).\n\n";
+  const std::string rule = "CPU time per step, the median of the repetitions (interleaved at random with the other rows' where "
+                           "--benchmark_enable_random_interleaving is on, as make bench has it); every ratio is steplab's time over "
+                           "the other's (below 1: steplab is faster). Load average at the start " +
+                           fmt_load(load_at_start) + ", at the end " + fmt_load(load_average()) + ".\n\n";
   if (format == "console" && !ns_per_step.empty()) {  // json and csv on stdout stay machine-readable
     std::printf("\n%s%s", rule.c_str(), table.c_str());
     for (const auto& [name, ns] : ns_per_step) {

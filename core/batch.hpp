@@ -21,6 +21,7 @@
 #include <array>
 #include <concepts>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <span>
 
@@ -111,14 +112,14 @@ template <class M, Packable S, class T> class BatchRunner {
       Stepper<M, LaneScene, T> stepper = stepper_;
       const LaneMask active = active_, rate = rate_, errors = errors_, e0_nonzero = e0_nonzero_;
       const bool some_rate = some_rate_, some_errors = some_errors_;
-      const T h = h_, steps = steps_, above = above_, below = below_, e0 = e0_;
+      const T h = h_, steps = steps_, above = above_, below = below_, e0 = e0_, blow_up = blow_up_;
       State<D, T> y = y_, last = y_;
       T i = i_, t = 0;
       RunTally<T> tally = tally_;
       Exact ex = exact_;
       LaneMask failed, diverged, ended;
       do {
-        const Stepped<T> s = take_step(stepper, scene, y, last, i, h, active, tally, e0, e0_nonzero, rate, some_rate,
+        const Stepped<T> s = take_step(stepper, scene, y, last, i, h, active, tally, e0, blow_up, e0_nonzero, rate, some_rate,
                                        [&](const State<D, T>& now, const LaneMask& live, const T& at, const T&) __attribute__((always_inline)) {
                                          if constexpr (HasExact<S>)  // a lane not `on` keeps its values
                                            if (some_errors) track_errors(ex, now, live && errors, at);
@@ -245,7 +246,7 @@ template <class M, Packable S, class T> class BatchRunner {
         job_[l] = -1;
         active_.set(l, false);
         set_lane(y_, l, make_default_scene<S>().initial());
-        h_.set(l, 0);
+        h_.set(l, 0), blow_up_.set(l, std::numeric_limits<double>::infinity());
         return;
       }
       job_[l] = static_cast<long long>(next_++);
@@ -257,6 +258,7 @@ template <class M, Packable S, class T> class BatchRunner {
       set_lane(y_, l, y0);
       const double e0 = s.energy(y0.x, y0.v);
       e0_.set(l, e0);
+      blow_up_.set(l, blow_up_energy(s, y0, e0));
       h_.set(l, run.spec.dt), i_.set(l, 1), steps_.set(l, static_cast<double>(run.spec.steps));
       above_.set(l, run.spec.stop_above), below_.set(l, run.spec.stop_below);
       rate_.set(l, run.spec.energy_rate);
@@ -267,6 +269,7 @@ template <class M, Packable S, class T> class BatchRunner {
         if (errors_[l]) load_tracker(l, s, run.spec.dt);
       }
       if constexpr (Multistep<M>) stepper_.memory.count.set(l, 0);  // the lane starts itself again
+      if constexpr (Compensated<M>) set_lane(stepper_.carry, l, zero_state<D>());  // nothing lost yet
       if (run.spec.steps >= 1) {
         active_.set(l, true);
         return;
@@ -309,7 +312,7 @@ template <class M, Packable S, class T> class BatchRunner {
   bool some_rate_ = false, some_errors_ = false;
   State<D, T> y_ = zero_state<D, T>();
   T h_ = 0, i_ = 1, steps_ = 0, above_ = 0, below_ = 0;
-  T e0_ = 0;
+  T e0_ = 0, blow_up_ = 0;
   RunTally<T> tally_;
   Exact exact_;
 };

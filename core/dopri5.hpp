@@ -93,7 +93,16 @@ template <Scene S> double initial_step(const S& s, const State<S::dim>& y0, cons
   return std::min({100 * h0, h1, span});
 }
 
+// f(t, y) = (v, a(t, x, v)) into k (sized): the stages' derivatives, in vectors the run keeps.
+template <Scene S> void derivative_into(const S& s, double t, const State<S::dim>& y, State<S::dim>& k) {
+  k.x = y.v;
+  k.v = acceleration(s, t, y.x, y.v);
+}
+
 // Runs from 0 to spec.t_end; `observe(t, y)` after every accepted step (must not allocate).
+// On a scene of run-time size the stages' vectors are made once, before the first step, and a
+// step's temporaries come from the thread's scratch pool (core/scratch.hpp): after the first
+// step a step allocates nothing (a sample's state does, at the samples).
 template <Scene S, class Observer = NoObserver>
 AdaptiveResult<S::dim> simulate_dopri5(const S& s, const AdaptiveSpec& spec, Observer&& observe = {}) {
   using namespace dp5;
@@ -102,7 +111,7 @@ AdaptiveResult<S::dim> simulate_dopri5(const S& s, const AdaptiveSpec& spec, Obs
   RunResult<D>& r = out.run;
   AdaptiveStats& st = out.stats;
   State<D> y = s.initial();
-  const double e0 = s.energy(y.x, y.v);
+  const double e0 = s.energy(y.x, y.v), blow_up = blow_up_energy(s, y, e0);
   r.energy0 = e0;
   RunTally<double> tally;  // no fit of ln E, no stop on E/E0
   ErrorSums<double> errors;
@@ -111,12 +120,17 @@ AdaptiveResult<S::dim> simulate_dopri5(const S& s, const AdaptiveSpec& spec, Obs
   long long next_sample = 0;
   const auto sample_time = [&](long long k) { return spec.t_end * static_cast<double>(k) / static_cast<double>(n_samples - 1); };
   if (n_samples > 0) r.samples.push_back({0.0, y.x, y.v, e0}), next_sample = 1;
+  // The exact state at an accepted step's end: where the scene's exact positions cost a transform
+  // (HasExactAlong: the rope), its closed form at any t (jump) into the tracker's own vectors, the
+  // velocities read once at the end, as a fixed-step run reads them (core/simulate.hpp).
   [[maybe_unused]] auto tracker = [&] {
-    if constexpr (HasExact<S>) return ExactTracker<S>(s);
+    if constexpr (HasExactAlong<S>) return s.exact_along(0.0);
+    else if constexpr (HasExact<S>) return ExactTracker<S>(s);
     else return 0;
   }();
 
-  State<D> k1 = derivative(s, 0.0, y);
+  State<D> k1 = y, k2 = y, k3 = y, k4 = y, k5 = y, k6 = y, k7 = y, ys = y, y1 = y, err = y;
+  derivative_into(s, 0.0, y, k1);
   st.force_evaluations = 1;
   double t = 0;
   double h = spec.t_end > 0 ? initial_step(s, y, k1, spec.tol, spec.t_end, st.force_evaluations) : 0;
@@ -130,23 +144,24 @@ AdaptiveResult<S::dim> simulate_dopri5(const S& s, const AdaptiveSpec& spec, Obs
     }
     const bool last = t + h >= spec.t_end;
     if (last) h = spec.t_end - t;
-    const State<D> k2 = derivative(s, t + c2 * h, axpy(y, h * a21, k1));
-    const State<D> y3{y.x + h * (a31 * k1.x + a32 * k2.x), y.v + h * (a31 * k1.v + a32 * k2.v)};
-    const State<D> k3 = derivative(s, t + c3 * h, y3);
-    const State<D> y4{y.x + h * (a41 * k1.x + a42 * k2.x + a43 * k3.x), y.v + h * (a41 * k1.v + a42 * k2.v + a43 * k3.v)};
-    const State<D> k4 = derivative(s, t + c4 * h, y4);
-    const State<D> y5{y.x + h * (a51 * k1.x + a52 * k2.x + a53 * k3.x + a54 * k4.x),
-                      y.v + h * (a51 * k1.v + a52 * k2.v + a53 * k3.v + a54 * k4.v)};
-    const State<D> k5 = derivative(s, t + c5 * h, y5);
-    const State<D> y6{y.x + h * (a61 * k1.x + a62 * k2.x + a63 * k3.x + a64 * k4.x + a65 * k5.x),
-                      y.v + h * (a61 * k1.v + a62 * k2.v + a63 * k3.v + a64 * k4.v + a65 * k5.v)};
-    const State<D> k6 = derivative(s, t + h, y6);
-    const State<D> y1{y.x + h * (b1 * k1.x + b3 * k3.x + b4 * k4.x + b5 * k5.x + b6 * k6.x),
-                      y.v + h * (b1 * k1.v + b3 * k3.v + b4 * k4.v + b5 * k5.v + b6 * k6.v)};
-    const State<D> k7 = derivative(s, t + h, y1);
+    ys.x = y.x + (h * a21) * k1.x, ys.v = y.v + (h * a21) * k1.v;
+    derivative_into(s, t + c2 * h, ys, k2);
+    ys.x = y.x + h * (a31 * k1.x + a32 * k2.x), ys.v = y.v + h * (a31 * k1.v + a32 * k2.v);
+    derivative_into(s, t + c3 * h, ys, k3);
+    ys.x = y.x + h * (a41 * k1.x + a42 * k2.x + a43 * k3.x), ys.v = y.v + h * (a41 * k1.v + a42 * k2.v + a43 * k3.v);
+    derivative_into(s, t + c4 * h, ys, k4);
+    ys.x = y.x + h * (a51 * k1.x + a52 * k2.x + a53 * k3.x + a54 * k4.x);
+    ys.v = y.v + h * (a51 * k1.v + a52 * k2.v + a53 * k3.v + a54 * k4.v);
+    derivative_into(s, t + c5 * h, ys, k5);
+    ys.x = y.x + h * (a61 * k1.x + a62 * k2.x + a63 * k3.x + a64 * k4.x + a65 * k5.x);
+    ys.v = y.v + h * (a61 * k1.v + a62 * k2.v + a63 * k3.v + a64 * k4.v + a65 * k5.v);
+    derivative_into(s, t + h, ys, k6);
+    y1.x = y.x + h * (b1 * k1.x + b3 * k3.x + b4 * k4.x + b5 * k5.x + b6 * k6.x);
+    y1.v = y.v + h * (b1 * k1.v + b3 * k3.v + b4 * k4.v + b5 * k5.v + b6 * k6.v);
+    derivative_into(s, t + h, y1, k7);
     st.force_evaluations += 6;
-    const State<D> err{h * (e1 * k1.x + e3 * k3.x + e4 * k4.x + e5 * k5.x + e6 * k6.x + e7 * k7.x),
-                       h * (e1 * k1.v + e3 * k3.v + e4 * k4.v + e5 * k5.v + e6 * k6.v + e7 * k7.v)};
+    err.x = h * (e1 * k1.x + e3 * k3.x + e4 * k4.x + e5 * k5.x + e6 * k6.x + e7 * k7.x);
+    err.v = h * (e1 * k1.v + e3 * k3.v + e4 * k4.v + e5 * k5.v + e6 * k6.v + e7 * k7.v);
     const double en = error_norm<D>(err, y, y1, spec.tol);
     if (!std::isfinite(en) || !all_finite(y1)) {  // a blow-up inside the step: shrink and retry
       ++st.rejected;
@@ -159,6 +174,13 @@ AdaptiveResult<S::dim> simulate_dopri5(const S& s, const AdaptiveSpec& spec, Obs
       rejected_last = true;
       h *= std::max(min_factor, safety * std::pow(en, -0.2));
       continue;
+    }
+    const double e1 = s.energy(y1.x, y1.v);
+    if (!(std::abs(e1 - e0) <= blow_up)) {  // within its tolerance, yet blown up (core/simulate.hpp)
+      r.status = RunStatus::Diverged;
+      r.failed_step = st.accepted + 1;
+      r.failed_t = t + h;
+      break;
     }
     // Accepted. Dense output between t and t + h (CONTD5), for the sample times inside the step.
     const double t1 = last ? spec.t_end : t + h;
@@ -181,15 +203,20 @@ AdaptiveResult<S::dim> simulate_dopri5(const S& s, const AdaptiveSpec& spec, Obs
     ++st.accepted;
     t = t1;
     y = y1;
-    k1 = k7;  // first same as last
-    tally.account(t, s.energy(y.x, y.v), e0, true, e0 != 0, false, false);
-    if constexpr (HasExact<S>) {
+    std::swap(k1, k7);  // first same as last: k1 is k7, whose storage the next step overwrites
+    tally.account(t, e1, e0, true, e0 != 0, false, false);
+    if constexpr (HasExactAlong<S>) {
+      if (spec.errors) tracker.jump(), errors.add_positions(y.x, tracker.at(t));
+    } else if constexpr (HasExact<S>) {
       if (spec.errors) errors.add(y, tracker.at(t), true);
     }
     observe(t, y);
     const double grow = en == 0 ? max_factor : std::min(max_factor, safety * std::pow(en, -0.2));
     h *= rejected_last ? std::min(1.0, grow) : grow;
     rejected_last = false;
+  }
+  if constexpr (HasExactAlong<S>) {
+    if (spec.errors && st.accepted > 0) errors.error_v_final = (y.v - tracker.velocities()).norm();
   }
   r.steps = st.accepted;
   r.t_final = t;

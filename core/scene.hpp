@@ -47,6 +47,9 @@
 //                                 values (the stiff chain's two masses moving as one spring).
 //                                 Work-precision measures the step accuracy alone would allow
 //                                 on it (HasStiffLimit)
+//   energy_scale()                the size of the energies its exact motion reaches, where its
+//                                 start's energy understates it (the driven target): the scale of
+//                                 a run's blow-up bound (core/simulate.hpp, blow_up_energy)
 //   title = "<words>"             the scene in a few words, for a table's heading
 //   equation = "<m x'' = ...>"    its equation of motion in one line, for the report's appendix
 //   old_name = "<name>"           a name the old framework gave it, also accepted

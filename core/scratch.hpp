@@ -26,7 +26,9 @@ namespace steplab {
 class ScratchPool {
  public:
   // A free vector of size n: one of that size if there is one (a step's temporaries all have the
-  // scene's size, the rope's transforms twice it), else a free one resized, else a new one.
+  // scene's size, the rope's transforms 2N + 1), else a new one. Never a free one of another size
+  // resized: a step that borrows both sizes would then resize them back and forth, allocating in
+  // every step; so the pool keeps vectors of each size a step asks for.
   int take(Eigen::Index n) {
     for (std::size_t k = free_.size(); k-- > 0;) {
       const int slot = free_[k];
@@ -35,16 +37,9 @@ class ScratchPool {
         return slot;
       }
     }
-    int slot;
-    if (!free_.empty()) {
-      slot = free_.back();
-      free_.pop_back();
-    } else {
-      slot = static_cast<int>(vectors_.size());
-      vectors_.emplace_back();  // a deque: the vectors lent out stay where they are
-      free_.reserve(vectors_.size());
-    }
-    vectors_[static_cast<std::size_t>(slot)].resize(n);
+    const int slot = static_cast<int>(vectors_.size());
+    vectors_.emplace_back(n);  // a deque: the vectors lent out stay where they are
+    free_.reserve(vectors_.size());
     return slot;
   }
   void give_back(int slot) { free_.push_back(slot); }  // within capacity: reserved for every slot

@@ -1,8 +1,8 @@
 // One run: a method stepping a scene from its initial state for a fixed number of steps.
 //
-// After every step the state is checked for non-finite values (MuJoCo's mj_checkPos in spirit):
-// a blow-up ends the run with status Diverged and the step and time where it happened, and the
-// last finite state as the final one. An implicit step whose Newton iteration did not converge
+// After every step the state is checked (MuJoCo's mj_checkPos in spirit): a non-finite value, or
+// an energy that has left the run's blow-up bound (blow_up_energy below), ends the run with
+// status Diverged and the step and time where it happened, and the last state before as the final one. An implicit step whose Newton iteration did not converge
 // ends it with NoConvergence. Neither is an error: both are results.
 //
 // Along the way, without allocating (the sample buffer is reserved before the loop):
@@ -128,6 +128,23 @@ template <class T> struct RunTally {
   [[gnu::always_inline]] inline Mask left(const T& above, const T& below) const { return ratio > above || ratio < below; }
 };
 
+// When a run has blown up: its energy has moved from its start E0 by more than kBlowUp times the
+// start's energy scale, the larger of |E0|, its kinetic energy and, where the scene declares it,
+// energy_scale(), the size of the energies its exact motion reaches (a driven scene's: the
+// target's, started at the energy 1/2 m w^2, reaches 1/2 k); the total mass times 1 m^2/s^2 where
+// all are 0. A physical motion stays within a few times that scale; an unstable one grows
+// geometrically and passes the bound within some dozens of steps of passing the physical range,
+// long before it overflows (RK4 on a rope of 10^5 masses above its step limit: E/E0 3e202 at its
+// end). The state's velocities are then 10^6 times the start's scale. Such a run ends as
+// Diverged at that step, its last state within the bound kept, as a non-finite state ends it.
+inline constexpr double kBlowUp = 1e12;
+template <class S, int D> double blow_up_energy(const S& s, const State<D>& y0, double e0) {
+  const double kinetic = 0.5 * s.mass().cwiseProduct(y0.v.cwiseProduct(y0.v)).sum();
+  double scale = std::max(std::abs(e0), kinetic);
+  if constexpr (requires { s.energy_scale(); }) scale = std::max(scale, s.energy_scale());
+  return kBlowUp * (scale > 0 ? scale : s.mass().sum());
+}
+
 // One step of a run loop, for one run (T = double, masks bool: Run below) or a pack of runs
 // (BatchRunner, core/batch.hpp; i then counts each lane's steps in a T): the step from
 // t_prev = (i - 1) h to t = i h, i 1-based, where `active`, the
@@ -154,23 +171,26 @@ template <class Stp, int D, class T> [[gnu::always_inline]] inline State<D, T>& 
 template <class Stp, class Sc, int D, class T, class I, class After>
 [[gnu::always_inline]] inline Stepped<T> take_step(Stp& stepper, const Sc& scene, State<D, T>& y, State<D, T>& last, I& i,
                                                    const T& h, const MaskOf<T>& active, RunTally<T>& tally, const T& e0,
-                                                   const MaskOf<T>& e0_nonzero, const MaskOf<T>& rate, bool some_rate,
-                                                   After&& after) {
+                                                   const T& blow_up, const MaskOf<T>& e0_nonzero, const MaskOf<T>& rate,
+                                                   bool some_rate, After&& after) {
   using Mask = MaskOf<T>;
+  using std::abs;
   const T t_prev = (i - 1.0) * h, t = i * h;
   // The step is taken on a copy, so that one run keeps its last finite state: on the stack for a
   // fixed size, in the run's workspace for a run-time one (sized in its first step).
   State<D, T> local;
   State<D, T>& next = step_copy(stepper, y, local);
   const Mask failed = active && Mask(steplab::failed(stepper.step(scene, next, t_prev, h)));
-  const Mask live = all_finite(next) && active && !failed;
+  // Live: finite, and its energy within the run's blow-up bound of its start (blow_up_energy;
+  // false for a NaN energy too).
+  const T e = scene.energy(next.x, next.v);
+  const Mask live = all_finite(next) && active && !failed && abs(e - e0) <= blow_up;
   if constexpr (std::same_as<Mask, bool>) {
     if (!live) return {live, failed, t};
   } else {
     last = y;
   }
   y = next;
-  const T e = scene.energy(y.x, y.v);
   tally.account(t, e, e0, live, e0_nonzero, rate, some_rate);
   after(y, live, t, e);
   if constexpr (std::same_as<Mask, bool>)
@@ -215,6 +235,7 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
     if (plan_.size() > 0) r_.samples.reserve(static_cast<std::size_t>(plan_.size()) + 1);
     if (spec.outputs > 0) r_.samples.reserve(static_cast<std::size_t>(spec.outputs)), prev_ = y_;
     e0_ = scene.energy(y_.x, y_.v);
+    blow_up_ = blow_up_energy(scene, y_, e0_);
     r_.energy0 = e0_;
     keep(0, 0.0, y_, e0_);
     if (spec.outputs > 0) r_.samples.push_back({0.0, y_.x, y_.v, e0_}), out_k_ = 1;
@@ -232,7 +253,7 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
       a_prev_kept_ = a_end_step_ == i_ - 1;  // step just before ended where this one starts
       prev_ = y_;
     }
-    const Stepped<double> s = take_step(stepper_, scene_, y_, y_, i_, spec_.dt, true, tally_, e0_, e0_ != 0, true, spec_.energy_rate,
+    const Stepped<double> s = take_step(stepper_, scene_, y_, y_, i_, spec_.dt, true, tally_, e0_, blow_up_, e0_ != 0, true, spec_.energy_rate,
                                         [&](const State<D>& y, bool, double t, double e) __attribute__((always_inline)) {
                                           if constexpr (HasExactAlong<S>) {
                                             if (spec_.errors && i_ % stride_ == 0) errors_.add_positions(y.x, tracker_.at(t));
@@ -338,7 +359,7 @@ template <class M, Scene S, class Observer = NoObserver> class Run {
   long long a_end_step_ = -1;
   bool a_prev_kept_ = false;
   RunResult<D>& r_;
-  double e0_ = 0;
+  double e0_ = 0, blow_up_ = 0;
   RunTally<double> tally_;
   ErrorSums<double> errors_;
   long long i_ = 1, next_sample_ = 0, sample_k_ = 0;  // i_: the next step, 1-based

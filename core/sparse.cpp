@@ -60,6 +60,7 @@ struct Slot {
   Complex a, b;
   long version = -1, last_use = 0;
   std::unique_ptr<Eigen::SimplicialLDLT<SparseMat>> ldlt;  // its ordering and analysis: made once
+  Eigen::VectorXd inv_d;  // 1 / D of its LDL^T, kept at each factorisation (Eigen's vectorD() returns a copy)
   klu_numeric* numeric = nullptr;
   std::vector<double> values;  // E's values in E's pattern (real) or as (re, im) pairs (complex)
 };
@@ -79,7 +80,7 @@ struct IterationMatrices::Impl {
   long clock = 0;
   std::array<Eigen::VectorXd, 4> wr;      // the transformed stages, real eigenvalues
   std::array<Eigen::VectorXcd, 4> wc;     // and complex pairs
-  Eigen::VectorXd rhs;                    // LDL^T's right side, where it is solved in place
+  Eigen::VectorXd permuted;               // LDL^T's work vector, P r, solved in place
 
   Impl() { klu_defaults(&common); }
   ~Impl() {
@@ -169,6 +170,7 @@ struct IterationMatrices::Impl {
       }
       s->ldlt->factorize(m);
       if (s->ldlt->info() != Eigen::Success) return nullptr;
+      s->inv_d = s->ldlt->vectorD().cwiseInverse();
       s->version = version;
       return s;
     }
@@ -190,11 +192,36 @@ struct IterationMatrices::Impl {
     return s;
   }
 
-  // z = E^-1 r; r and z may be the same vector (LDL^T then solves from a copy; KLU in place).
+  // z = E^-1 r; r and z may be the same vector (LDL^T solves in its work vector; KLU in place).
   bool solve_real(Slot& s, const Eigen::VectorXd& r, Eigen::VectorXd& z) {
     if (s.ldlt) {
-      if (&r == &z) rhs = r;
-      z = s.ldlt->solve(&r == &z ? rhs : r);
+      // E = P^T L D L^T P:  z = P^T L^-T D^-1 L^-1 P r, the steps and the order of Eigen's own
+      // solve (SimplicialCholeskyBase::_solve_impl), so the same bits; but its last permutation is
+      // made in place, which allocates a mask each solve: here it is made out of place, from the
+      // work vector the matrices keep.
+      // The permutations as the copies they are (P r: entry i of r to P(i)), the diagonal as
+      // Eigen's inverse times (1/d_i, kept, then the product): the same values, no temporary.
+      const Eigen::SimplicialLDLT<SparseMat>& f = *s.ldlt;
+      if (f.info() != Eigen::Success) return false;
+      const Eigen::Index n = r.size();
+      const bool ordered = f.permutationP().size() > 0;
+      permuted.resize(n);  // sized in a run's first solve
+      if (ordered) {
+        const auto& p = f.permutationP().indices();
+        for (Eigen::Index i = 0; i < n; ++i) permuted[p[i]] = r[i];
+      } else {
+        permuted = r;
+      }
+      f.matrixL().solveInPlace(permuted);
+      for (Eigen::Index i = 0; i < n; ++i) permuted[i] = s.inv_d[i] * permuted[i];
+      f.matrixU().solveInPlace(permuted);
+      if (ordered) {
+        const auto& q = f.permutationPinv().indices();
+        z.resize(n);  // r's size: no allocation once sized, and r itself when z is r
+        for (Eigen::Index i = 0; i < n; ++i) z[q[i]] = permuted[i];
+      } else {
+        z = permuted;
+      }
       return true;
     }
     if (&r != &z) z = r;

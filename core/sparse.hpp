@@ -32,6 +32,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <complex>
 #include <memory>
 #include <span>
@@ -81,6 +82,11 @@ class IterationMatrices {
   // |dF/dx| |x| + |dF/dv| |v| with the kept Jacobians (Frobenius norms): the size of the force's
   // terms in Newton's stopping test (core/method.hpp).
   double force_terms(Eigen::Ref<const Eigen::VectorXd> x, Eigen::Ref<const Eigen::VectorXd> v) const { return dx_norm_ * x.norm() + dv_norm_ * v.norm(); }
+  // An upper bound on |E(a, b)|_F = |M - a dF/dv - b dF/dx|_F with the kept Jacobians: |M| + |a|
+  // |dF/dv| + |b| |dF/dx| (m_norm: |M|), for Newton's round-off size (core/method.hpp).
+  double dx_norm() const { return dx_norm_; }
+  double dv_norm() const { return dv_norm_; }
+  double norm_bound(double m_norm, double a, double b) const { return m_norm + std::abs(a) * dv_norm_ + std::abs(b) * dx_norm_; }
 
   // z = E(a, b)^-1 r, factorising E(a, b) first where it is not kept.
   SolveCounts solve(double a, double b, const Eigen::VectorXd& r, Eigen::VectorXd& z);

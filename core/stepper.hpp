@@ -18,6 +18,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "core/compensated.hpp"
 #include "core/method.hpp"
 
 namespace steplab {
@@ -81,18 +82,34 @@ template <> struct RunWorkspace<Eigen::Dynamic> {
 // from its RunSpec (core/simulate.hpp), the defaults elsewhere; any other method nothing.
 struct NoSettings {};
 template <class M> using SettingsOf = std::conditional_t<TakesSettings<M>, MethodSettings, NoSettings>;
+// A compensated method's carry (core/compensated.hpp): what its sums lost so far, for x and v.
+template <class M, int D, class T> using CarryOf = std::conditional_t<Compensated<M>, State<D, T>, NoCarry>;
 
 template <class M, class S, class T = double> struct Stepper {
   [[no_unique_address]] SettingsOf<M> settings{};
+  [[no_unique_address]] CarryOf<M, S::dim, T> carry = no_carry();
   [[no_unique_address]] RunWorkspace<S::dim> work;
   auto step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h)
-    requires requires { M::step(s, y, t, h); } || requires { M::step(s, y, t, h, settings); }
+    requires requires { M::step(s, y, t, h); } || requires { M::step(s, y, t, h, settings); } ||
+             requires { M::step(s, y, t, h, carry); }
   {
     [[maybe_unused]] const auto in_use = work.use();
     if constexpr (TakesSettings<M>) return M::step(s, y, t, h, settings);
+    else if constexpr (Compensated<M>) return M::step(s, y, t, h, carry);
     else return M::step(s, y, t, h);
   }
-  void forget() {}
+  // Back to a run's start: the carry zero (its vectors kept on a run-time size).
+  void forget() {
+    if constexpr (Compensated<M>) carry.x.setZero(), carry.v.setZero();
+  }
+
+ private:
+  // Zero on a fixed size; empty on a run-time size, sized at the first step (add_compensated).
+  static CarryOf<M, S::dim, T> no_carry() {
+    if constexpr (!Compensated<M>) return {};
+    else if constexpr (S::dim == Eigen::Dynamic) return State<S::dim, T>{};
+    else return zero_state<S::dim, T>();
+  }
 };
 
 template <Multistep M, class S, class T> struct Stepper<M, S, T> {

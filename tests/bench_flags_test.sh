@@ -22,11 +22,11 @@ grep -q '^| spring/explicit_euler |' "$tmp/ratios.md" || { echo "no ratio row in
 
 "$bench" "${one[@]}" --benchmark_format=csv >"$tmp/out.csv"
 head -1 "$tmp/out.csv" | grep -q '^name,iterations,real_time' || { echo "not CSV:"; head -3 "$tmp/out.csv"; exit 1; }
-! grep -q 'Time per step' "$tmp/out.csv" || { echo "ratio table mixed into CSV"; exit 1; }
+! grep -q 'CPU time per step' "$tmp/out.csv" || { echo "ratio table mixed into CSV"; exit 1; }
 
 "$bench" "${one[@]}" --benchmark_out="$tmp/file.json" --benchmark_out_format=json >"$tmp/console.txt"
 python3 -c 'import json, sys; assert json.load(open(sys.argv[1]))["benchmarks"]' "$tmp/file.json"
-grep -q 'Time per step' "$tmp/console.txt" || { echo "console output lost its ratio table"; exit 1; }
+grep -q 'CPU time per step' "$tmp/console.txt" || { echo "console output lost its ratio table"; exit 1; }
 
 set +e
 "$bench" "${one[@]}" --benchmark_format=xml >/dev/null 2>"$tmp/err"

@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # The README's walk-through "check your own integrator", from an empty folder: install steplab
 # into a temporary prefix, write a method (Heun's), the same method declared one order too high,
-# and a scene without an exact solution (a damped pendulum) into a new project, build it with
+# and a scene without an exact solution (a damped pendulum, named arm: steplab has a pendulum of its own) into a new project, build it with
 # steplab_add_executable(), and ask the tool about them:
 #   mysteplab check --method heun            exit 0 (every claim holds)
 #   mysteplab check --method heun_claims_3   exit 1 (the order claim fails, and the symplectic one
 #                                            on Kepler's orbit: its energy drifts)
 #   mysteplab check --method heun_frozen_time  exit 1 (its order on the driven target fails alone)
-#   mysteplab study convergence --scene pendulum --methods heun,rk4
+#   mysteplab study convergence --scene arm --methods heun,rk4
 #                                            against the reference solution (no exact one):
 #                                            fitted orders 2 and 4 within 0.1
 #   mysteplab study stability --methods heun,rk4 --lanes 1 and --lanes 2
@@ -15,7 +15,7 @@
 #                                            so the spring's runs step two at a time)
 #   mysteplab report --methods heun,explicit_euler,explicit_midpoint,rk4 --sections ...
 #                                            its own report: those methods, the full report's numbers
-#   mysteplab report --scenes pendulum ...   a report on the user's scene: its convergence, the
+#   mysteplab report --scenes arm ...        a report on the user's scene: its convergence, the
 #                                            sections it cannot feed left out with one line each
 # and a scene of run-time size (beads on a string, exact modes) that run and the studies of
 # convergence, stability and scaling take by what it declares; and docs/scenes.md's worked
@@ -94,7 +94,7 @@ struct HeunFrozenTime {
 STEPLAB_METHOD(HeunFrozenTime);
 EOF
 
-cat > pendulum.hpp <<'EOF'
+cat > arm.hpp <<'EOF'
 #pragma once
 #include <array>
 #include <cmath>
@@ -103,11 +103,11 @@ cat > pendulum.hpp <<'EOF'
 
 #include <steplab/core/scene.hpp>
 
-// A damped pendulum, angle x from the vertical: m l^2 x'' = -m g l sin x - c x'. No closed form:
+// A damped pendulum on an arm, angle x from the vertical: m l^2 x'' = -m g l sin x - c x'. No closed form:
 // studies converge against the reference solution.
-struct Pendulum {
+struct Arm {
   static constexpr int dim = 1;
-  static constexpr std::string_view name = "pendulum";
+  static constexpr std::string_view name = "arm";
   static constexpr std::array<steplab::ParamSpec, 4> params{{
       {"bob-mass", 1.0, steplab::Bound::Positive, "mass of the bob"},
       {"arm", 1.0, steplab::Bound::Positive, "length of the arm"},
@@ -115,7 +115,7 @@ struct Pendulum {
       {"angle", 2.0, steplab::Bound::Any, "start angle (at rest), radians"},
   }};
   double m, l, c, a0, g = 9.81;
-  explicit Pendulum(std::span<const double> p) : m(p[0]), l(p[1]), c(p[2]), a0(p[3]) {}
+  explicit Arm(std::span<const double> p) : m(p[0]), l(p[1]), c(p[2]), a0(p[3]) {}
   steplab::Vec<1> mass() const { return steplab::Vec<1>::Constant(m * l * l); }
   steplab::Vec<1> inverse_mass() const { return steplab::Vec<1>::Constant(1 / (m * l * l)); }
   steplab::Vec<1> force(const steplab::Vec<1>& x, const steplab::Vec<1>& v) const {
@@ -131,7 +131,7 @@ struct Pendulum {
   steplab::State<1> initial() const { return {steplab::Vec<1>::Constant(a0), steplab::Vec<1>::Zero()}; }
 };
 
-STEPLAB_SCENE(Pendulum);
+STEPLAB_SCENE(Arm);
 EOF
 
 cat > beads.hpp <<'EOF'
@@ -245,7 +245,7 @@ cat > CMakeLists.txt <<'EOF'
 cmake_minimum_required(VERSION 3.22)
 project(mine LANGUAGES CXX)
 find_package(steplab 0.2 REQUIRED)
-steplab_add_executable(mysteplab METHODS heun.hpp heun_claims_3.hpp heun_frozen_time.hpp SCENES pendulum.hpp beads.hpp duffing.hpp)
+steplab_add_executable(mysteplab METHODS heun.hpp heun_claims_3.hpp heun_frozen_time.hpp SCENES arm.hpp beads.hpp duffing.hpp)
 EOF
 
 cmake -S . -B build -DCMAKE_PREFIX_PATH="$tmp/prefix" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
@@ -265,11 +265,11 @@ status=0
 grep -q "^FAIL  order 2 on the target: fitted" frozen.txt || { cat frozen.txt; exit 1; }
 [[ $(grep -c "^FAIL" frozen.txt) -eq 1 ]] || { cat frozen.txt; exit 1; }
 
-"$tool" study convergence --scene pendulum --methods heun,rk4 --json conv.json >/dev/null
+"$tool" study convergence --scene arm --methods heun,rk4 --json conv.json >/dev/null
 python3 - conv.json <<'EOF'
 import json, sys
 d = json.load(open(sys.argv[1]))
-assert d["scene"] == "pendulum", d["scene"]
+assert d["scene"] == "arm", d["scene"]
 assert d["reference"] is not None, "no reference solution"
 want = {"heun": 2, "rk4": 4}
 for f in d["fits"]:
@@ -309,7 +309,7 @@ assert r.returncode == 2 and len(r.stderr.splitlines()) == 1 and "jacobians" in 
 EOF
 # the new method on a built-in scene, the built-in ones on the new scene
 "$tool" run --scene chain --method heun --dt 0.001 --t-end 1 >/dev/null
-"$tool" run --scene pendulum --method radau_iia5 --dt 0.01 --t-end 1 >/dev/null
+"$tool" run --scene arm --method radau_iia5 --dt 0.01 --t-end 1 >/dev/null
 # A scene of run-time size none of the studies has seen (beads.hpp: its file and its name in
 # steplab_add_executable) joins run, study convergence, study stability and study scaling by
 # what it declares: its exact flow, its size parameter, its modes, its banded Jacobians.
@@ -399,17 +399,17 @@ print("heun: a report of its own, beside the methods chosen")
 EOF
 # ... and a report on the user's scene: the sections that need the spring left out with one line
 # each, its convergence against the reference solution, the same fits as `study convergence`.
-echo '{"convergence": {"t_end": 1}}' > pendulum.json
-"$tool" report --config pendulum.json --scenes pendulum --methods heun,rk4 --sections summary,convergence,cost,reproduce \
-  --out pendulum >/dev/null
-python3 - pendulum/report.md pendulum/data/convergence/convergence_pendulum.json conv.json <<'EOF'
+echo '{"convergence": {"t_end": 1}}' > arm.json
+"$tool" report --config arm.json --scenes arm --methods heun,rk4 --sections summary,convergence,cost,reproduce \
+  --out arm >/dev/null
+python3 - arm/report.md arm/data/convergence/convergence_arm.json conv.json <<'EOF'
 import sys, json
 md, rep, study = open(sys.argv[1]).read(), json.load(open(sys.argv[2])), json.load(open(sys.argv[3]))
 assert "*Left out: Summary (it needs `spring`, not among the chosen scenes).*" in md, md
 assert "*Left out: What accuracy costs (it needs `spring`" in md, md
-assert "pendulum has no exact solution" in md.replace("Pendulum", "pendulum"), md
+assert "arm has no exact solution" in md.replace("Arm", "arm"), md
 orders = lambda d: {f["method"]: f["order"] for f in d["fits"]}
 assert orders(rep) == orders(study), (orders(rep), orders(study))
-print("pendulum: a report of its own, its orders those of study convergence")
+print("arm: a report of its own, its orders those of study convergence")
 EOF
 echo "plugin ok"

@@ -36,7 +36,7 @@ Corrected fit_corrected(const std::vector<ErrorPoint>& pts, int q) {
 
 // Step 6 on the window's points (by decreasing dt).
 void asymptotic_order(const std::vector<ErrorPoint>& window, OrderFit& out) {
-  if (window.size() < 5) {
+  if (window.size() < kCorrectedFitPoints) {
     out.order = out.line.slope;
     out.bound_lo = out.line.ci95_lo;
     out.bound_hi = out.line.ci95_hi;
@@ -134,6 +134,14 @@ OrderFit fit_order(std::span<const ErrorPoint> points) {
   asymptotic_order(std::vector<ErrorPoint>(kept.begin() + best_i, kept.begin() + best_i + n_points), out);
   out.dt_hi = kept[best_i].dt;
   out.dt_lo = kept[best_i + n_points - 1].dt;
+  out.few_points = static_cast<int>(n_points) < kCorrectedFitPoints;
+  for (std::size_t k = best_i; k + 1 < best_i + n_points; ++k) out.non_monotone = out.non_monotone || !(kept[k + 1].error < kept[k].error);
+  const double turn = kSettleTolerance * std::max(1.0, std::abs(reference));  // the window's slopes: s[first .. end)
+  for (std::size_t k = first; k + 2 < s.size(); ++k) {
+    const double d1 = s[k + 1] - s[k], d2 = s[k + 2] - s[k + 1];
+    if (d1 * d2 < 0 && std::min(std::abs(d1), std::abs(d2)) > turn) out.non_monotone = true;
+  }
+  out.wide = out.bound_hi - out.bound_lo > 2 * kWideBound;
   return out;
 }
 

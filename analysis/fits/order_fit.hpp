@@ -29,6 +29,13 @@
 //      |p - p'| bounds p's own), and p_1, p_2 are the two models' estimates (which next term).
 //      Fewer than 5 points in the window: the plain slope and its interval stand in, and
 //      correction_power is 0.
+//   7. What the fit cannot vouch for, said beside it: a window of fewer than 5 points (q = 0: the
+//      plain slope's Student-t interval, which a smooth next term biases; it can exclude the true
+//      order); errors that do not approach their order monotonically in the window (an error not
+//      below the one at the next larger step, or local orders that turn, down then up or up then
+//      down, by more than kSettleTolerance each way: the error crosses zero or changes regime,
+//      and a slope through it is not an order); a bound wider than +-kWideBound (the fit says
+//      too little to be a finding).
 // SUNDIALS' ark_kepler --check-order also reports the pairwise orders; we keep them too.
 #pragma once
 
@@ -59,7 +66,14 @@ struct OrderFit {
   double extrapolated = 0;   // Aitken delta-squared limit of the local slopes (NaN if not defined)
   std::string note;          // why there is no order, if there is none
   int diverged_skipped = 0;  // diverged runs (non-finite state) left out of the fit
+  bool few_points = false;   // fitted over fewer than 5 points: the plain slope (step 7)
+  bool non_monotone = false; // the errors do not approach their order monotonically in the window (step 7)
+  bool wide = false;         // the bound is wider than +-kWideBound (step 7)
+  bool trusted() const { return fitted && !few_points && !non_monotone && !wide; }
 };
+
+inline constexpr int kCorrectedFitPoints = 5;  // fewer: the plain slope stands in (step 6)
+inline constexpr double kWideBound = 0.5;      // a bound wider than +-0.5 is not a finding (step 7)
 
 inline constexpr double kSettleTolerance = 0.01;   // local slopes within 1 % of the reference
 inline constexpr double kSettleNoiseFactor = 4;   // ... or within 4 sigma of their noise

@@ -8,12 +8,14 @@
 
 #include "analysis/kernel/kernel.hpp"
 #include "core/invariants.hpp"
+#include "core/simulate.hpp"
 #include "core/stepper.hpp"
 
 namespace steplab {
 
-// Every step's invariants read, their largest distance from the start kept; the state's
-// finiteness checked every step (a blow-up ends the run, its samples after it left out).
+// Every step's invariants read, their largest distance from the start kept; the state checked
+// every step as a run's is (finite, its energy within the blow-up bound of core/simulate.hpp): a
+// blow-up ends the run, its samples after it left out.
 template <class M, HasInvariants S> LongRun long_run(Params p, const LongRunSpec& spec) {
   const S s(p);
   constexpr std::size_t ni = S::invariant_names.size();
@@ -23,13 +25,14 @@ template <class M, HasInvariants S> LongRun long_run(Params p, const LongRunSpec
   LongRun out;
   out.invariant0.assign(i0.begin(), i0.end());
   out.largest.assign(ni, {});
+  const double e0 = s.energy(y.x, y.v), blow_up = blow_up_energy(s, y, e0);
   Stepper<M, S> stepper;
   if constexpr (TakesSettings<M>) stepper.settings = spec.settings;
   // One step; false where the run ends there (its Newton iteration gave up, or the state is not
   // finite), with its status set.
   const auto step = [&](long long k) {
     if (steplab::failed(stepper.step(s, y, static_cast<double>(k) * spec.dt, spec.dt))) out.status = RunStatus::NoConvergence;
-    else if (!all_finite(y)) out.status = RunStatus::Diverged;
+    else if (!all_finite(y) || !(std::abs(s.energy(y.x, y.v) - e0) <= blow_up)) out.status = RunStatus::Diverged;
     return out.status == RunStatus::Ok;
   };
   long long k = 0;

@@ -5,6 +5,8 @@
 #include <limits>
 
 #include "analysis/fits/fit.hpp"
+#include "analysis/kernel/shard.hpp"
+#include "analysis/kernel/timing.hpp"
 #include "analysis/studies/defaults.hpp"
 
 namespace steplab {
@@ -90,6 +92,18 @@ FrameRun measure(const FramesConfig& c, const Reference& ref, const FrameSetup& 
   return out;
 }
 
+// Whether run a dominates run b: no dearer and more accurate, on each cost the study has. Spring
+// visits are counts: a dearer by any amount is dearer, equal ones are equal. Times within the
+// timing's noise (kTieMargin, analysis/kernel/timing.hpp) are not told apart: of two set-ups of
+// (nearly) equal cost the more accurate dominates, whichever timed a little faster.
+bool dominates(const FrameRun& a, const FrameRun& b, bool timed) {
+  if (!(a.error < b.error)) return false;
+  if (a.spring_visits > b.spring_visits) return false;
+  return !timed || a.seconds <= kTieMargin * b.seconds;
+}
+
+// Per family, its stable set-ups that no other of the family dominates, cheapest first (by the
+// cost the front is drawn against, then by error).
 std::vector<FamilyFront> fronts(const std::vector<FrameRun>& runs, bool timed) {
   std::vector<FamilyFront> out;
   for (Family f : {Family::ExplicitRungeKutta, Family::Splitting, Family::ImplicitRungeKutta, Family::AdamsBashforth, Family::Bdf,
@@ -98,12 +112,14 @@ std::vector<FamilyFront> fronts(const std::vector<FrameRun>& runs, bool timed) {
     for (std::size_t i = 0; i < runs.size(); ++i)
       if (method_info(runs[i].setup.method).family == f && runs[i].stable) members.push_back(i);
     if (members.empty()) continue;
-    std::stable_sort(members.begin(), members.end(),
-                     [&](std::size_t a, std::size_t b) { return frame_cost(runs[a], timed) < frame_cost(runs[b], timed); });
     FamilyFront front{f, {}};
-    double best = std::numeric_limits<double>::infinity();
     for (std::size_t i : members)
-      if (runs[i].error < best) best = runs[i].error, front.runs.push_back(i);
+      if (std::none_of(members.begin(), members.end(), [&](std::size_t j) { return dominates(runs[j], runs[i], timed); }))
+        front.runs.push_back(i);
+    std::stable_sort(front.runs.begin(), front.runs.end(), [&](std::size_t a, std::size_t b) {
+      const double ca = frame_cost(runs[a], timed), cb = frame_cost(runs[b], timed);
+      return ca != cb ? ca < cb : runs[a].error < runs[b].error;
+    });
     out.push_back(std::move(front));
   }
   return out;
@@ -142,8 +158,9 @@ FramesResult frames_study(const FramesConfig& config) {
   const Reference ref = reference(config);
   out.springs = ref.measures.springs;
   const std::vector<FrameSetup> setups = frame_setups(config.methods, config.budget);
-  out.runs.resize(setups.size());
-  parallel_for(setups.size(), config.workers, [&](std::size_t i) { out.runs[i] = measure(config, ref, setups[i]); });
+  // Through study_map, one task a set-up and one an order's run: a shard (analysis/kernel/shard.hpp)
+  // runs its part of each (an untimed study only: a shard refuses timing).
+  out.runs = study_map<FrameRun>(setups.size(), config.workers, [&](std::size_t i) { return measure(config, ref, setups[i]); });
   // Timed one at a time, after the runs in parallel: each alone on its core.
   if (config.timing)
     for (FrameRun& r : out.runs) {
@@ -173,12 +190,12 @@ FramesResult frames_study(const FramesConfig& config) {
     std::vector<std::pair<std::size_t, std::size_t>> cells;
     for (std::size_t o = 0; o < out.orders.size(); ++o)
       for (std::size_t k = 0; k < out.orders[o].substeps.size(); ++k) cells.push_back({o, k});
-    parallel_for(cells.size(), config.workers, [&](std::size_t i) {
-      FrameOrder& o = out.orders[cells[i].first];
-      FrameSetup s = o.setup;
-      s.substeps = o.substeps[cells[i].second];
-      o.errors[cells[i].second] = measure(config, ref, s).error;
+    const std::vector<double> errors = study_map<double>(cells.size(), config.workers, [&](std::size_t i) {
+      FrameSetup s = out.orders[cells[i].first].setup;
+      s.substeps = out.orders[cells[i].first].substeps[cells[i].second];
+      return measure(config, ref, s).error;
     });
+    for (std::size_t i = 0; i < cells.size(); ++i) out.orders[cells[i].first].errors[cells[i].second] = errors[i];
     for (FrameOrder& o : out.orders) {
       std::vector<double> lh, le;
       for (std::size_t k = 0; k < o.substeps.size(); ++k)

@@ -16,7 +16,9 @@
 //             a projection visits one spring, a force evaluation or a CG product all of them.
 // The equal-cost grid: substeps x sweeps (or CG iterations) = budget for each divisor of it. Per
 // family the front of error against cost a frame (seconds when timed, spring visits otherwise): the
-// set-ups no cheaper one beats. And each method on springs' measured order in h on the same scene
+// set-ups no other of the family dominates, i.e. is more accurate at no more cost on every cost
+// the study has (spring visits; and seconds, where timed, within the timing's noise, so that of
+// set-ups of equal work the more accurate is on the front, not the one that timed faster). And each method on springs' measured order in h on the same scene
 // (substeps doubled at fixed settings): XPBD with one sweep and carried to convergence, PBD,
 // Baraff-Witkin with its CG converged.
 #pragma once

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "analysis/fits/fit.hpp"
+#include "analysis/kernel/shard.hpp"
 #include "analysis/studies/defaults.hpp"
 
 namespace steplab {
@@ -98,8 +99,9 @@ LongTimeResult long_time_study(const LongTimeConfig& c) {
     return method_info(out.rows[a].method).implicit > method_info(out.rows[b].method).implicit;
   });
   constexpr double u = 0x1p-53;
-  parallel_for(out.rows.size(), c.workers, [&](std::size_t i) {
-    LongTimeRow& r = out.rows[order[i]];
+  // One task a row, through study_map: a shard (analysis/kernel/shard.hpp) runs its part of them.
+  out.rows = study_map<LongTimeRow>(out.rows.size(), c.workers, [&](std::size_t i) {
+    LongTimeRow r = out.rows[i];
     LongRunSpec spec;
     spec.dt = r.dt;
     spec.at = sample_steps(c.periods, c.samples_per_decade, r.steps_per_period);
@@ -124,7 +126,8 @@ LongTimeResult long_time_study(const LongTimeConfig& c) {
       r.position_growth = fit_growth(r.times, r.position_error, c.fit_from, out.extent / 10);
       out_of_phase(r, out.extent);
     }
-  });
+    return r;
+  }, order);
   return out;
 }
 

@@ -70,6 +70,12 @@ struct LongTimeRow {
   bool out_of_phase_extrapolated = false;
 };
 
+// A row crosses a shard as bytes (analysis/kernel/shard.hpp).
+template <class F> void encode_fields(LongTimeRow& r, F&& f) {
+  f(r.method), f(r.steps_per_period), f(r.dt), f(r.status), f(r.ended), f(r.times), f(r.error), f(r.growth), f(r.round_off);
+  f(r.change), f(r.position_error), f(r.position_growth), f(r.out_of_phase), f(r.out_of_phase_extrapolated);
+}
+
 struct LongTimeResult {
   LongTimeConfig config;
   std::vector<std::string> invariants;

@@ -66,20 +66,38 @@ long long threshold_run_steps(std::size_t method, const std::vector<Mode>& modes
   return static_cast<long long>(std::clamp(needed, static_cast<double>(steps), most));
 }
 
+bool damped(const std::vector<Mode>& modes) {
+  return !modes.empty() && std::all_of(modes.begin(), modes.end(), [](const Mode& m) { return m.two_zeta > 0; });
+}
+
+bool unstable_run(const AnyResult& r, bool damped_scene, bool rate_trusted) {
+  if (r.status != RunStatus::Ok) return true;  // E/E0 past 1e4, a blow-up, a Newton that gave up
+  if (damped_scene) return r.samples.back().energy > r.samples.front().energy;
+  return rate_trusted && r.energy_rate > kStableRate;
+}
+
 double measured_threshold(std::size_t method, std::size_t scene, const std::vector<double>& params, double omega_max,
                           long long steps) {
   const PairKernel& k = pair_kernel(method, scene);
   const SceneKernel& sk = scene_kernel(scene);
   const std::vector<Mode> modes = sk.modes ? sk.modes(params) : std::vector<Mode>{};
   const int dim = static_cast<int>(sk.initial(params).x.size());
+  const bool damped_scene = damped(modes);
+  double omega_min = omega_max;
+  for (const Mode& m : modes) omega_min = std::min(omega_min, m.omega);
   RunSpec spec;
   spec.errors = false;
   spec.stop_above = 1e4;
+  spec.max_samples = 2;                  // the start's energy and the end's
+  spec.energy_rate = !damped_scene;      // the ln E slope of an undamped scene
   return stable_set(kMeasureMinWh / omega_max, kMaxWh / omega_max, 2, 1e-3,
                     [&](double h) {
                       spec.dt = h;
-                      spec.steps = threshold_run_steps(method, modes, dim, h, steps);
-                      return k.run(params, spec).status != RunStatus::Ok;
+                      // undamped: long enough for the ln E slope to be the trend's (kRateRadians)
+                      const double rate_steps = damped_scene ? 0 : std::ceil(kRateRadians / (omega_min * h));
+                      const double cap = kMaxThresholdWork / std::max(dim, 1);
+                      spec.steps = threshold_run_steps(method, modes, dim, h, std::max<long long>(steps, static_cast<long long>(std::min(rate_steps, cap))));
+                      return unstable_run(k.run(params, spec), damped_scene, static_cast<double>(spec.steps) >= rate_steps);
                     },
                     false)
       .dt_star;

@@ -11,10 +11,27 @@
 // axis, so the scene's is C / omega_max. A scene that is not linear declares the modes of its
 // linearisation (the soft body: its fastest), and the prediction is theirs.
 // Measurement. Runs of the scene itself from its start, h scanned by doubling from
-// 0.02 / omega_max until a run diverges, the edge bisected to 1e-3 relative. A run diverges when
-// E/E0 passes 1e4 or a state is not finite. Stability here is the verdict "no growth past 1e4",
-// not the ln E slope of the spring's study: the energy sits in slow modes whose slope says
-// nothing of the fastest. How long a run must be to see a growth: a mode that the start barely
+// 0.02 / omega_max until a run is unstable, the edge bisected to 1e-3 relative. A run is unstable
+// when its state blows up (core/simulate.hpp) or E/E0 passes 1e4, and besides, by what the
+// exact motion of the scene cannot do:
+//   damped (every mode's zeta > 0): the exact energy only falls (dE/dt = -v^T C v), so a run
+//       whose energy ends above its start is unstable. A bounded nonlinear force (a pendulum)
+//       never blows up: an unstable method makes it swing wider or spin over the top with a
+//       bounded energy, which this sees and "E/E0 past 1e4" would not;
+//   undamped: its energy's ln E slope over the run is above the spring study's kStableRate
+//       (analysis/studies/stability.hpp), where the run spans kRateRadians of its slowest mode
+//       (where the work cap cuts it shorter, E/E0 past 1e4 alone decides). An oscillation of
+//       amplitude A in ln E at frequency Omega biases the slope by about 12 A / (Omega T^2)
+//       (stability.hpp): over omega_min T = 2000 radians, with Omega = 2 omega_min, that is
+//       3e-6 A omega_min, below kStableRate for the oscillations a stable method leaves (A of
+//       1e-3 .. 1e-1) where omega_min is of order 1 (the rope of 16 masses: 30 slow periods, where
+//       5 000 fast steps spanned 3 and symplectic Euler's oscillation read as growth).
+// Where the instability saturates (a pendulum just past dt*: its rest is unstable, the swing
+// grows until the softer restoring force at large angles balances the damping, a limit cycle) a
+// run whose limit cycle holds less energy than its start ends below it and counts as stable: the
+// measured dt* is then the step whose limit cycle reaches the start's energy, above the
+// linearisation's (docs/studies.md gives the pendulum's figures).
+// How long a run must be to see a growth: a mode that the start barely
 // excites grows from round-off (1e-16 of the state) and must pass the test's amplitude ratio
 // 1e2, a growth of e^41 (kSeedGrowth). Just past dt* it grows slowly: explicit Euler on the
 // chain at 0.00025 (25 % past its dt* 0.000200) by 0.06 % a step, so 60 000 steps saw no growth
@@ -29,11 +46,13 @@
 #include <vector>
 
 #include "analysis/kernel/parallel.hpp"
+#include "core/run_result.hpp"
 #include "core/scene.hpp"
 
 namespace steplab {
 
 inline constexpr double kSeedGrowth = 45;           // ln(1e18) = 41.4, and a margin
+inline constexpr double kRateRadians = 2000;        // an undamped run's span in its slowest mode's radians, for its slope
 inline constexpr double kMaxThresholdWork = 1e7;     // steps x coordinates of one run, at most
 
 struct ModeStabilityConfig {
@@ -57,8 +76,14 @@ struct ModeThresholdRow {
 double unit_oscillator_threshold(std::size_t method, double two_zeta);
 // min over the modes of their dt*; `binding_mode` (if given) receives the mode j that sets it.
 double modes_predicted_threshold(std::size_t method, const std::vector<Mode>& modes, int* binding_mode = nullptr);
-// The largest step at which runs of `steps` steps of the scene do not diverge; `omega_max` sets
-// the scale of the search.
+// Whether every mode is damped (zeta > 0): the scene's exact energy then only falls.
+bool damped(const std::vector<Mode>& modes);
+// Whether a run from the scene's start is unstable by the rules above (its samples the first
+// and the last state; its ln E slope fitted where the scene is undamped, and read where the run
+// was long enough for it, rate_trusted).
+bool unstable_run(const AnyResult& r, bool damped_scene, bool rate_trusted);
+// The largest step at which runs of `steps` steps of the scene are stable (above); `omega_max`
+// sets the scale of the search.
 double measured_threshold(std::size_t method, std::size_t scene, const std::vector<double>& params, double omega_max,
                           long long steps);
 std::vector<ModeThresholdRow> mode_threshold_study(const ModeStabilityConfig& c);

@@ -354,8 +354,10 @@ ScalingResult scaling_study(const ScalingConfig& c) {
       rows.push_back(solver < nm ? method_row(c, cell, t, c.methods[solver], made) : peer_row(c, cell, t, c.adaptive[solver - nm], made));
     return rows;
   });
+  // In a shard (analysis/kernel/shard.hpp) the tasks of other parts have no rows here: they stand
+  // as empty rows, so that every index below holds; a shard writes its tasks' results, not these.
   for (std::size_t t = 0; t < nt; ++t)
-    for (std::size_t task = 0; task < tasks; ++task) out.rows.push_back(found[task][t]);
+    for (std::size_t task = 0; task < tasks; ++task) out.rows.push_back(found[task].empty() ? ScalingRow{} : found[task][t]);
   if (c.timing) {  // a run timed once: the rows of other targets that chose the same run share its time
     std::map<std::tuple<std::string, int, double, double>, double> timed;
     for (ScalingRow& r : out.rows)

@@ -1,4 +1,5 @@
 #pragma once
+#include "core/compensated.hpp"
 #include "core/method.hpp"
 
 namespace steplab {
@@ -11,9 +12,11 @@ struct SymplecticEuler {
   static constexpr MethodInfo info{.name = "symplectic_euler", .order = 1, .family = Family::Splitting,
                                    .symplectic = true,
                                    .summary = "v += h a(x, v), then x += h v with the new v"};
-  template <class S, class T> static StepStatus step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
-    y.v += h * acceleration(s, t, y.x, y.v);
-    y.x += h * y.v;
+  static constexpr bool compensated = true;  // its sums carry their round-off (core/compensated.hpp)
+  template <class S, class T, class Carry = NoCarry>
+  static StepStatus step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h, Carry&& carry = Carry{}) {
+    add_compensated(y.v, Temp<S::dim, T>(h * acceleration(s, t, y.x, y.v)), carry.v);
+    add_compensated(y.x, Temp<S::dim, T>(h * y.v), carry.x);
     return StepStatus::Ok;
   }
 };

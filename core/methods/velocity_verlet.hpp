@@ -1,4 +1,5 @@
 #pragma once
+#include "core/compensated.hpp"
 #include "core/method.hpp"
 
 namespace steplab {
@@ -16,20 +17,34 @@ struct VelocityVerlet {
                                    .symplectic = true,
                                    .summary = "v += h/2 a(x, v); x += h v; v += h/2 a(x, v) at the new x (implicit in v where the force is damped)"};
   static constexpr int solve_stages = 1;  // the implicit kick (core/method.hpp)
-  template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
+  static constexpr bool compensated = true;  // its sums carry their round-off (core/compensated.hpp)
+  // Without damping the increments are summed compensated: dx = h v + h^2/2 a0, dv = h/2 (a0 + a1)
+  // (core/compensated.hpp). With damping (no invariant to keep) the kick is solved for v itself;
+  // the velocity's carry, zero from the run's start, stays so in those lanes.
+  template <class S, class T, class Carry = NoCarry>
+  static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h, Carry&& carry = Carry{}) {
     using V = Temp<S::dim, T>;  // a step's temporaries (core/scratch.hpp)
     const V a0 = acceleration(s, t, y.x, y.v);
-    y.x += h * y.v + (0.5 * h * h) * a0;
-    const V kicked = y.v + (0.5 * h) * a0;
+    const V v0 = y.v;
+    add_compensated(y.x, V(h * y.v + (0.5 * h * h) * a0), carry.x);
     const auto implicit = s.velocity_dependent();  // a Mask for a pack of springs, some damped
     if (!any(implicit)) {
-      y.v = kicked + (0.5 * h) * acceleration(s, t + h, y.x, y.v);
+      add_compensated(y.v, V((0.5 * h) * (a0 + acceleration(s, t + h, y.x, v0))), carry.v);
       return status_of(MaskOf<T>(false));
     }
+    const V kicked = v0 + (0.5 * h) * a0;
     if (all(implicit)) return solve_implicit(s, t + h, y.x, 0.0, kicked, 0.5 * h, y.v);
-    const V explicit_kick = kicked + (0.5 * h) * acceleration(s, t + h, y.x, y.v);  // a pack: each lane its kick
+    // a pack, some lanes damped: each lane its kick
+    V explicit_v = v0;
+    if constexpr (kCarries<Carry>) {
+      Vec<S::dim, T> lost = carry.v;
+      add_compensated(explicit_v, V((0.5 * h) * (a0 + acceleration(s, t + h, y.x, v0))), lost);
+      carry.v = select(implicit, carry.v, lost);
+    } else {
+      explicit_v += (0.5 * h) * (a0 + acceleration(s, t + h, y.x, v0));
+    }
     const Status<T> st = solve_implicit(s, t + h, y.x, 0.0, kicked, 0.5 * h, y.v);
-    y.v = select(implicit, y.v, Vec<S::dim, T>(explicit_kick));
+    y.v = select(implicit, y.v, Vec<S::dim, T>(explicit_v));
     return status_of(implicit && failed(st));
   }
 };

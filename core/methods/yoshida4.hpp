@@ -14,14 +14,16 @@ struct Yoshida4 {
                                    .symplectic = true,
                                    .summary = "velocity Verlet steps of w1 h, w0 h, w1 h, w1 = 1/(2 - 2^(1/3)), w0 = 1 - 2 w1 (the triple jump)"};
   static constexpr int solve_stages = VelocityVerlet::solve_stages;  // core/method.hpp
+  static constexpr bool compensated = true;  // each substep's sums carry their round-off (core/compensated.hpp)
   static constexpr double cbrt2 = 1.2599210498948731648;  // 2^(1/3)
   static constexpr double w1 = 1 / (2 - cbrt2), w0 = -cbrt2 / (2 - cbrt2);
   // A lane of a pack whose Newton failed in one substep takes the others too; its state is dropped.
-  template <class S, class T> static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h) {
+  template <class S, class T, class Carry = NoCarry>
+  static Status<T> step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h, Carry&& carry = Carry{}) {
     MaskOf<T> failed_lanes(false);
     T at = t;  // each substep starts where the last ended: t, t + w1 h, t + (w1 + w0) h
     for (const double w : {w1, w0, w1}) {
-      failed_lanes = failed_lanes || failed(VelocityVerlet::step(s, y, at, w * h));
+      failed_lanes = failed_lanes || failed(VelocityVerlet::step(s, y, at, w * h, carry));
       if (all(failed_lanes)) break;
       at += w * h;
     }

@@ -30,10 +30,11 @@ namespace steplab {
 
 // u_n = sum_{j=1}^N q_j sin(n theta_j) (synthesis) and q_j = 4/M sum_{n=1}^N u_n sin(n theta_j)
 // (analysis), n, j = 1 .. N, theta_j = (2j - 1) pi / M, M = 2N + 1 (a DST-VII). Each is one real
-// FFT of the odd length M (FFTW r2c, X_p = sum_{n=0}^{M-1} z_n e^{-2 pi i n p / M}), by
+// FFT of the odd length M (FFTW r2hc, X_p = sum_{n=0}^{M-1} z_n e^{-2 pi i n p / M}), by
 //   sin(n (M - 2p) pi / M) = -(-1)^n sin(2 pi n p / M),   2j - 1 = M - 2p,  p = N + 1 - j:
 // analysis: z_n = (-1)^{n+1} u_n (n = 1 .. N, the rest zero), q_j = -(4/M) Im X_{N+1-j};
-// synthesis: z_p = q_{N+1-p} (p = 1 .. N, the rest zero), u_n = (-1)^n Im X_n.
+// synthesis: z_p = q_{N+1-p} (p = 1 .. N, the rest zero), u_n = (-1)^n Im X_n. FFTW's
+// real-to-halfcomplex transform gives Im X_k at position M - k.
 // (The DST-I of size 2N that holds the same sums has a DFT of length 2M behind it: twice the
 // work.) The plan is made once per rope (FFTW's planner is not thread-safe: serialised) and
 // executed on each call's own arrays (which is).
@@ -312,9 +313,13 @@ std::mutex& fftw_planner() {
 
 SineTransform::SineTransform(int n) : n_(n) {
   const int m = 2 * n + 1;
-  std::vector<double> in(m), out(2 * (n + 1));
+  std::vector<double> in(m), out(m);
   const std::lock_guard lock(fftw_planner());
-  plan_ = fftw_plan_dft_r2c_1d(m, in.data(), reinterpret_cast<fftw_complex*>(out.data()), FFTW_ESTIMATE | FFTW_UNALIGNED);
+  // Real-to-halfcomplex (out[k] = Re X_k, out[M - k] = Im X_k): where M's prime factors are small
+  // its execution allocates nothing; the real-to-complex interface's (rdft2) allocated a buffer of
+  // M each call. Where M has a large prime factor (M = 2049 = 3 x 683) FFTW's Rader algorithm
+  // allocates a buffer each call whichever the interface (docs/scenes.md).
+  plan_ = fftw_plan_r2r_1d(m, in.data(), out.data(), FFTW_R2HC, FFTW_ESTIMATE | FFTW_UNALIGNED);
 }
 
 SineTransform::~SineTransform() {
@@ -330,12 +335,13 @@ Eigen::VectorXd SineTransform::synthesis(const Eigen::VectorXd& q) const {
 
 template <class Fill, class Read> void SineTransform::odd_fft(Fill fill, Read read) const {
   const int n = n_;
-  ScratchVec z(2 * n + 1), x(2 * (n + 1));
+  const int m = 2 * n + 1;
+  ScratchVec z(m), x(m);
   z[0] = 0;
   for (int k = 1; k <= n; ++k) z[k] = fill(k);
   z.tail(n).setZero();
-  fftw_execute_dft_r2c(static_cast<fftw_plan>(plan_), z.data(), reinterpret_cast<fftw_complex*>(x.data()));
-  for (int k = 1; k <= n; ++k) read(k, x[2 * k + 1]);
+  fftw_execute_r2r(static_cast<fftw_plan>(plan_), z.data(), x.data());
+  for (int k = 1; k <= n; ++k) read(k, x[m - k]);  // Im X_k
 }
 
 void SineTransform::synthesis(Eigen::Ref<const Eigen::VectorXd> q, Eigen::Ref<Eigen::VectorXd> u) const {

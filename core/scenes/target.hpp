@@ -62,6 +62,9 @@ struct Target {
   // 1/2 m v^2 + 1/2 k x^2: bounded on the exact motion (by 1/2 (m w^2 + k)), growing without
   // bound when a method blows up, which is all the studies ask of it here.
   double energy(const Vec<1>& x, const Vec<1>& v) const { return 0.5 * m * v[0] * v[0] + 0.5 * k * x[0] * x[0]; }
+  // That bound, the blow-up rule's scale (core/simulate.hpp): its start's energy, 1/2 m w^2, is
+  // k / (m w^2) times smaller than the energy of its exact motion a quarter period later.
+  double energy_scale() const { return 0.5 * (m * w * w + k); }
 
   State<1> initial() const { return exact_at(0); }
   State<1> exact_at(double t) const {

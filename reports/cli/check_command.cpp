@@ -16,7 +16,7 @@ namespace steplab {
 namespace {
 
 std::string dt_text(double dt) {
-  if (std::isinf(dt)) return "inf";
+  if (std::isinf(dt)) return "unbounded";
   return fmt::format("{:.4g}", dt);
 }
 

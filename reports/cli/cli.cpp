@@ -15,6 +15,7 @@
 #include <fmt/ranges.h>
 
 #include "reports/cli/commands.hpp"
+#include "reports/cli/input_checks.hpp"
 #include "analysis/kernel/kernel.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/cli/parts.hpp"
@@ -118,7 +119,8 @@ std::string_view value_kind(std::string_view command, std::string_view option) {
       {"--scene", "NAME"},            {"--testcase", "NAME"},         {"--json", "FILE"},
       {"--config", "FILE"},           {"--out", "FOLDER"},            {"--scenes", "NAME,..."},
       {"--sweep", "NAME=NUMBER,..."}, {"--sections", "NAME,..."},     {"--sweeps", "WHOLE"},
-      {"--cg-iterations", "WHOLE"},   {"--budget", "WHOLE"}};
+      {"--cg-iterations", "WHOLE"},   {"--budget", "WHOLE"},          {"--steps-per-period", "WHOLE,..."},
+      {"--outputs", "WHOLE"},         {"--periods", "NUMBER"},        {"--samples-per-decade", "WHOLE"}};
   for (const auto& [name, kind] : kinds)
     if (name == option) return kind;
   return "NUMBER";  // steps, times, ranges and every scene parameter
@@ -339,9 +341,12 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   std::vector<const char*> cargv{"steplab"};
   for (const auto& a : args) cargv.push_back(a.c_str());
   try {
+    check_unique_names();
     check_command_words(app, args);
+    check_repeats(args);
     app.parse(static_cast<int>(cargv.size()), cargv.data());
     check_no_extras(app);
+    check_no_empty_values(app);
     if (progress) ctx.progress = log_progress;
     if (run_cmd->parsed()) return run_command(run, ctx);
     if (conv_cmd->parsed()) return convergence_command(conv, ctx);

@@ -150,6 +150,7 @@ struct FramesArgs {
   std::string fps = "60", t_end = "2", budget = "30";
   std::string threads = "0";
   bool no_timing = false, no_orders = false;
+  std::string shard;  // --shard i/N (reports/cli/parts.hpp)
   std::string json;
 };
 CLI::App* add_frames_command(CLI::App* study, FramesArgs& args);
@@ -164,6 +165,7 @@ struct LongTimeArgs {
   std::string steps_per_period;  // empty: the scene's default (analysis/studies/defaults.hpp)
   std::string periods = "1e5", samples_per_decade = "8", fit_from = "10";
   std::string threads = "0";
+  std::string shard;  // --shard i/N (reports/cli/parts.hpp)
   std::string json;
 };
 CLI::App* add_long_time_command(CLI::App* study, LongTimeArgs& args);
@@ -176,6 +178,7 @@ struct DenseOutputArgs {
   std::string methods;
   std::string t_end = "10", dt_max = "0.1", dt_min = "0.002", points = "8", outputs = "98";
   std::string threads = "0";
+  std::string shard;  // --shard i/N (reports/cli/parts.hpp)
   std::string json;
 };
 CLI::App* add_dense_output_command(CLI::App* study, DenseOutputArgs& args);

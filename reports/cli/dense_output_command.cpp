@@ -8,6 +8,7 @@
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/studies/dense_output.hpp"
 #include "reports/cli/commands.hpp"
+#include "reports/cli/parts.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/data/output.hpp"
 #include "reports/data/schemas.hpp"
@@ -32,6 +33,7 @@ CLI::App* add_dense_output_command(CLI::App* study, DenseOutputArgs& a) {
   cmd->add_option("--points", a.points, "steps in the sweep, 3 .. 100")->capture_default_str();
   cmd->add_option("--outputs", a.outputs, "output times, evenly spaced over [0, t_end], 2 .. 100000")->capture_default_str();
   cmd->add_option("--threads", a.threads, "worker threads, 0 = all cores")->capture_default_str();
+  add_shard_option(cmd, a.shard);
   cmd->add_option("--json", a.json, fmt::format("write JSON (schema {}) to this file", schema::dense_output));
   return cmd;
 }
@@ -57,8 +59,10 @@ int dense_output_command(DenseOutputArgs& a, Context& ctx) {
   c.points = static_cast<int>(parse_count("--points", a.points, 3, 100));
   c.outputs = static_cast<int>(parse_count("--outputs", a.outputs, 2, 100'000));
   c.workers = ctx.workers(resolve_thread_count(a.threads));
+  begin_shard(ctx, a.shard, a.json, false);
   if (ctx.stop_after_validation(a.json)) return 0;
   const DenseOutputResult r = dense_output_study(c);
+  if (finish_shard(ctx, a.json)) return 0;
   std::fputs(dense_output_table(r).c_str(), stdout);
   if (!a.json.empty()) write_atomic(a.json, dense_output_json(r).dump(1) + "\n");
   return 0;

@@ -11,6 +11,7 @@
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/studies/frames.hpp"
 #include "reports/cli/commands.hpp"
+#include "reports/cli/parts.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/data/output.hpp"
 #include "reports/data/schemas.hpp"
@@ -76,6 +77,7 @@ CLI::App* add_frames_command(CLI::App* study, FramesArgs& a) {
   cmd->add_option("--threads", a.threads, "worker threads (timings run one at a time)")->capture_default_str();
   cmd->add_flag("--no-timing", a.no_timing, "cost by spring visits a frame only (reproducible byte for byte)");
   cmd->add_flag("--no-orders", a.no_orders, "leave out the order in h of the methods on springs");
+  add_shard_option(cmd, a.shard);
   cmd->add_option("--json", a.json, fmt::format("write JSON (schema {}) to this file", schema::frames));
   return cmd;
 }
@@ -102,8 +104,10 @@ int frames_command(FramesArgs& a, Context& ctx) {
   c.timing = !a.no_timing;
   c.orders = !a.no_orders;
   c.workers = ctx.workers(resolve_thread_count(a.threads));
+  begin_shard(ctx, a.shard, a.json, c.timing);
   if (ctx.stop_after_validation(a.json)) return 0;
   const FramesResult r = frames_study(c);
+  if (finish_shard(ctx, a.json)) return 0;
   std::fputs(frames_table(r).c_str(), stdout);
   if (!a.json.empty()) write_atomic(a.json, frames_json(r).dump(1) + "\n");
   return 0;

@@ -10,6 +10,7 @@
 #include "analysis/studies/defaults.hpp"
 #include "analysis/studies/long_time.hpp"
 #include "reports/cli/commands.hpp"
+#include "reports/cli/parts.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/data/output.hpp"
 #include "reports/data/schemas.hpp"
@@ -35,6 +36,7 @@ CLI::App* add_long_time_command(CLI::App* study, LongTimeArgs& a) {
   cmd->add_option("--fit-from", a.fit_from, "the growth exponents are fitted from this many periods on")->capture_default_str();
   a.settings.add_to(cmd);
   cmd->add_option("--threads", a.threads, "worker threads, 0 = all cores")->capture_default_str();
+  add_shard_option(cmd, a.shard);
   cmd->add_option("--json", a.json, fmt::format("write JSON (schema {}) to this file", schema::long_time));
   return cmd;
 }
@@ -67,8 +69,10 @@ int long_time_command(LongTimeArgs& a, Context& ctx) {
   if (c.fit_from >= c.periods)
     throw UsageError(fmt::format("--fit-from {} is not below --periods {}; accepted: 0 < fit-from < periods", a.fit_from, a.periods));
   c.workers = ctx.workers(resolve_thread_count(a.threads));
+  begin_shard(ctx, a.shard, a.json, false);
   if (ctx.stop_after_validation(a.json)) return 0;
   const LongTimeResult r = long_time_study(c);
+  if (finish_shard(ctx, a.json)) return 0;
   std::fputs(long_time_table(r).c_str(), stdout);
   if (!a.json.empty()) write_atomic(a.json, long_time_json(r).dump(1) + "\n");
   return 0;

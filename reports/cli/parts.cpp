@@ -133,7 +133,7 @@ void begin_shard(Context& ctx, const std::string& shard, const std::string& json
   if (json.empty()) throw UsageError("--shard needs --json PART.json: the part is written there; accepted: --shard i/N --json FILE");
   if (timed)
     throw UsageError("--shard with timed runs: times taken on different machines do not compare; accepted: --shard "
-                     "without --timing (study convergence), with --no-timing (study work-precision)");
+                     "with --no-timing (study work-precision, scaling, frames), without --timing (study convergence)");
   if (!ctx.dry_run) ctx.log = WorkLog{WorkMode::Shard, static_cast<int>(i), static_cast<int>(n), {}, 0};
 }
 

@@ -25,7 +25,7 @@ CLI::App* add_scaling_command(CLI::App* study, ScalingArgs& a) {
   CLI::App* cmd = study->add_subcommand("scaling", "rope of N masses or soft body of n x n: cost of a step and of a run at a "
                                                    "given error, largest stable step, against N; fitted exponents, crossover");
   a.scene.scene = std::string(kDefaultSizedScene);  // any scene that scales() (analysis/studies/scaling.hpp)
-  a.scene.add_to(cmd, scales);
+  a.scene.add_to(cmd, scales, true, true);
   const auto only_on = [](PeerScenes on) {
     std::vector<std::string> out;
     for (const PeerInfo* p : peers_on(on))

@@ -17,19 +17,27 @@ std::vector<std::string> all_scene_parameters() {
   return out;
 }
 
-std::string scene_parameters_help(bool (*accepts)(const SceneKernel&)) {
-  std::string out = "Scene parameters (each a NUMBER), by scene:\n";
+std::string scene_parameters_help(bool (*accepts)(const SceneKernel&), bool sized) {
+  std::string out = sized ? "Scene parameters (each a NUMBER; the stiffness NUMBER,..., the map's axis; the size is --sizes), by scene:\n"
+                          : "Scene parameters (each a NUMBER), by scene:\n";
   for (std::size_t s = 0; s < scene_count(); ++s) {
-    if (accepts && !accepts(scene_kernel(s))) continue;
+    const SceneKernel& k = scene_kernel(s);
+    if (accepts && !accepts(k)) continue;
     out += fmt::format("  {}:\n", scene_name(s));
-    for (const ParamSpec& p : scene_kernel(s).params)
-      out += fmt::format("    {:<28}{} (default {})\n", fmt::format("--{} NUMBER", p.name), p.help, p.default_value);
+    for (std::size_t i = 0; i < k.params.size(); ++i) {
+      const ParamSpec& p = k.params[i];
+      if (sized && static_cast<int>(i) == k.size_param) continue;
+      const bool list = sized && static_cast<int>(i) == k.stiffness_param;
+      out += fmt::format("    {:<28}{}{} (default {})\n", fmt::format("--{} {}", p.name, list ? "NUMBER,..." : "NUMBER"), p.help,
+                         list ? ", a comma-separated list" : "", p.default_value);
+    }
   }
   return out;
 }
 
-void SceneArgs::add_to(CLI::App* a, bool (*accepts)(const SceneKernel&), bool with_scene_option) {
+void SceneArgs::add_to(CLI::App* a, bool (*accepts)(const SceneKernel&), bool with_scene_option, bool sized_scene) {
   app = a;
+  sized = sized_scene;
   const auto every = [](const SceneKernel&) { return true; };
   if (!accepts) accepts = every;
   if (with_scene_option) {
@@ -41,7 +49,7 @@ void SceneArgs::add_to(CLI::App* a, bool (*accepts)(const SceneKernel&), bool wi
   }
   // Listed once, by scene, in the footer; an empty group keeps them out of the merged option list.
   for (const std::string& name : all_scene_parameters()) a->add_option("--" + name, text[name])->group("");
-  a->footer(scene_parameters_help(accepts));
+  a->footer(scene_parameters_help(accepts, sized));
 }
 
 bool SceneArgs::given(std::string_view name) const {
@@ -59,6 +67,9 @@ std::size_t SceneArgs::scene_index() const {
 
 std::vector<double> SceneArgs::values(std::size_t index) const {
   const SceneKernel& s = scene_kernel(index);
+  if (sized && s.size_param >= 0 && given(s.params[s.size_param].name))
+    throw UsageError(fmt::format("--{} is not an option here: the study sets the {}'s size; accepted: --sizes WHOLE,...",
+                                 s.params[s.size_param].name, s.name));
   for (const auto& [name, value] : text) {
     if (!given(name)) continue;
     if (!has_param(index, name)) {

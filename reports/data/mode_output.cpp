@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/stability.hpp"
 #include "reports/data/study_output.hpp"
 #include "reports/data/schemas.hpp"
 
@@ -32,7 +33,7 @@ constexpr double kModeAgreement = 0.01;
 
 std::string mode_thresholds_table(std::string_view scene, const std::vector<ModeThresholdRow>& rows) {
   std::string out = fmt::format(
-      "Stability thresholds dt* of the {} (largest stable step; inf: stable at every step, 0: at none)\n"
+      "Stability thresholds dt* of the {} (largest stable step; unbounded: stable at every step tried, 0: at none)\n"
       "predicted: the smallest dt* over its modes (each a damped spring); measured: runs of the whole {}\n\n"
       "{:<18} {:>12} {:>6} {:>12} {:>10} {:>14}\n",
       scene, scene, "method", "predicted", "mode", "measured", "rel. diff", "dt* omega_max");
@@ -50,8 +51,11 @@ std::string mode_thresholds_table(std::string_view scene, const std::vector<Mode
     out += fmt::format(
         "\n!: measured and predicted differ by more than {:g} %. The prediction is exact for the linearisation the scene's "
         "modes() declares. On a linear scene trust it: runs that show no growth were too short to see a barely excited "
-        "mode grow. On a nonlinear one trust the measurement: its modes hold about one state only (docs/scenes.md).\n",
-        100 * kModeAgreement);
+        "mode grow. On a nonlinear one each answers its own question: the prediction is about small motions near the "
+        "state the modes linearise, the measurement about the motion from the scene's start (unstable: its energy ends "
+        "above its start where every mode is damped, grows faster than {:g}/s where not); a measured dt* above the "
+        "prediction there is an instability that saturates below the start's energy (docs/studies.md, stability).\n",
+        100 * kModeAgreement, kStableRate);
   return out;
 }
 

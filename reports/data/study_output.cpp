@@ -18,6 +18,14 @@ Json number_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr
 
 }  // namespace
 
+Json fit_caveats(const OrderFit& f) {
+  Json out = Json::array();
+  if (f.fitted && f.few_points) out.push_back("few_points");
+  if (f.fitted && f.non_monotone) out.push_back("non_monotone");
+  if (f.fitted && f.wide) out.push_back("wide");
+  return out;
+}
+
 Json scene_params_json(std::size_t scene, const std::vector<double>& values) {
   return params_json(scene_kernel(scene).params, values);
 }
@@ -99,6 +107,7 @@ Json convergence_json(const ConvergenceResult& r) {
     e["order_extrapolated"] = f.fit.fitted ? number_or_null(f.fit.extrapolated) : Json(nullptr);
     e["local_orders"] = f.fit.local_slopes;
     e["diverged_skipped"] = f.fit.diverged_skipped;
+    e["caveats"] = fit_caveats(f.fit);
     e["note"] = f.fit.note;
     fits.push_back(std::move(e));
   }
@@ -128,9 +137,10 @@ std::string convergence_table(const ConvergenceResult& r) {
     }
     out += "\n";
   }
-  out += fmt::format("\n{:<18} {:>8} {:>8} {:>20} {:>2} {:>8} {:>20} {:>9} {:>6} {:>21}\n", "method", "declared", "order",
-                     "bound", "q", "slope", "slope 95% interval", "R^2", "points", "dt range");
+  out += fmt::format("\n{:<18} {:>8} {:>8} {:>20} {:>2} {:>7} {:>8} {:>20} {:>9} {:>6} {:>21}\n", "method", "declared", "order",
+                     "bound", "q", "aitken", "slope", "slope 95% interval", "R^2", "points", "dt range");
   int skipped = 0;
+  bool few = false, non_monotone = false, wide = false;
   for (const auto& f : r.fits) skipped += f.fit.diverged_skipped;
   for (const auto& f : r.fits) {
     const MethodInfo& info = method_info(f.method);
@@ -141,12 +151,22 @@ std::string convergence_table(const ConvergenceResult& r) {
       out += fmt::format("{:<18} {:>8} {:>8}   {}\n", info.name, declared, "-", f.fit.note);
     } else {
       const LineFit& l = f.fit.line;
-      out += fmt::format("{:<18} {:>8} {:>8.4f} {:>20} {:>2} {:>8.4f} {:>20} {:>9.6f} {:>6} {:>21}\n", info.name, declared,
+      few = few || f.fit.few_points, non_monotone = non_monotone || f.fit.non_monotone, wide = wide || f.fit.wide;
+      const std::string mark = std::string(f.fit.few_points ? " ~" : "") + (f.fit.non_monotone ? " *" : "") + (f.fit.wide ? " ?" : "");
+      out += fmt::format("{:<18} {:>8} {:>8.4f} {:>20} {:>2} {:>7} {:>8.4f} {:>20} {:>9.6f} {:>6} {:>21}{}\n", info.name, declared,
                          f.fit.order, fmt::format("[{:.4f}, {:.4f}]", f.fit.bound_lo, f.fit.bound_hi), f.fit.correction_power,
-                         l.slope, fmt::format("[{:.4f}, {:.4f}]", l.ci95_lo, l.ci95_hi), l.r2, l.n,
-                         fmt::format("{:.3g} .. {:.3g}", f.fit.dt_lo, f.fit.dt_hi));
+                         std::isnan(f.fit.extrapolated) ? std::string("-") : fmt::format("{:.3f}", f.fit.extrapolated), l.slope,
+                         fmt::format("[{:.4f}, {:.4f}]", l.ci95_lo, l.ci95_hi), l.r2, l.n,
+                         fmt::format("{:.3g} .. {:.3g}", f.fit.dt_lo, f.fit.dt_hi), mark);
     }
   }
+  out += "\nq: the next error term modelled (1 or 2); 0: fewer than 5 points, the plain slope and its interval stand in. "
+         "aitken: the local orders' limit by Aitken's delta-squared (-: no converging trend). docs/studies.md, orders.\n";
+  if (few) out += "~: fitted over fewer than 5 points: its interval comes from the plain slope, which the next error term biases; "
+                  "it may miss the true order. More points (--points, --dt-min) make it a bound.\n";
+  if (non_monotone) out += "*: the errors in its window do not approach their order monotonically (an error not below the one at the "
+                           "next larger step, or local orders that turn down and up): the slope is not an order.\n";
+  if (wide) out += "?: its bound is wider than +-0.5: not a finding.\n";
   if (skipped > 0) out += fmt::format("\n{} diverged runs (marked 'diverged' above) are left out of the fits.\n", skipped);
   return out;
 }
@@ -207,7 +227,9 @@ Json again_json(double again, double dt) {
 
 // JSON has no infinity: a threshold of every step is the string "unbounded".
 Json threshold_json(double x) { return std::isinf(x) ? Json("unbounded") : Json(x); }
-std::string threshold_text(double x) { return std::isinf(x) ? "inf" : fmt::format("{:.6g}", x); }
+std::string threshold_text(double x) { return std::isinf(x) ? "unbounded" : fmt::format("{:.6g}", x); }
+// Where stability comes back (StableSet::again): infinite is never.
+std::string again_text(double x) { return std::isinf(x) ? "never" : fmt::format("{:.6g}", x); }
 
 Json stability_json(const std::vector<double>& params, const std::vector<ThresholdRow>& thresholds,
                     const std::vector<SweepRow>& sweep, const StabilityMap* map) {
@@ -266,14 +288,14 @@ Json stability_json(const std::vector<double>& params, const std::vector<Thresho
 }
 
 std::string thresholds_table(const std::vector<ThresholdRow>& rows) {
-  std::string out = fmt::format("Stability thresholds dt* (largest stable step; inf: stable at every step, 0: at none)\n\n"
+  std::string out = fmt::format("Stability thresholds dt* (largest stable step; unbounded: stable at every step tried, 0: at none)\n\n"
                                 "{:<18} {:>8} {:>12} {:>12} {:>10}  {}\n", "method", "damping", "predicted", "measured", "rel. diff",
                                 "stable again from (predicted / measured)");
   for (const ThresholdRow& r : rows) {
     const bool finite = std::isfinite(r.dt_theory) && r.dt_theory > 0;
     const std::string again = std::isinf(r.again_theory) && std::isinf(r.again_measured)
                                   ? "-"
-                                  : threshold_text(r.again_theory) + " / " + threshold_text(r.again_measured);
+                                  : again_text(r.again_theory) + " / " + again_text(r.again_measured);
     out += fmt::format("{:<18} {:>8g} {:>12} {:>12} {:>10}  {}\n", method_info(r.method).name, r.damping,
                        threshold_text(r.dt_theory), threshold_text(r.dt_measured),
                        finite ? fmt::format("{:+.1e}", r.dt_measured / r.dt_theory - 1) : "-", again);

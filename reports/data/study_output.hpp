@@ -13,6 +13,9 @@ namespace steplab {
 using Json = nlohmann::ordered_json;
 
 Json scene_params_json(std::size_t scene, const std::vector<double>& values);
+// What an order fit cannot vouch for (analysis/fits/order_fit.hpp, step 7): ["few_points",
+// "non_monotone"], empty where neither (and where there is no fit).
+Json fit_caveats(const OrderFit& f);
 // The library builds the peers ran on (analysis/peers/peers.hpp, peer_builds): [{library, version,
 // optimised, flags}], in every study's JSON that has peers.
 Json peer_builds_json();
@@ -49,6 +52,7 @@ std::string amplitude_table_text(const AmplitudeTable& t);
 // A threshold dt*: a number, or "unbounded" (stable at every step).
 Json threshold_json(double x);
 std::string threshold_text(double x);
+std::string again_text(double x);  // stable again from: "never" where infinite
 }  // namespace steplab
 
 #include "analysis/studies/mode_stability.hpp"

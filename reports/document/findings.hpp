@@ -10,15 +10,14 @@
 #include <string_view>
 #include <vector>
 
+#include "analysis/kernel/timing.hpp"
 #include "core/method.hpp"
 #include "reports/document/report.hpp"
 
 namespace steplab {
 
-// A margin of one solver's cost over another's below this is within the noise of timing runs this
-// short (the minimum of repeats moves by up to 10-20 % from one report to the next on a 2-core
-// machine): a tie, not a win. Exact counts (an untimed report) tie only when equal.
-inline constexpr double kTieMargin = 1.2;
+// Whether a margin of one cost over another is a tie: below kTieMargin (analysis/kernel/timing.hpp)
+// where the costs are times, only at 1 where they are counts.
 bool tied(double margin, bool timed);
 
 // How dt* moves along a family's orders; two dt* within kSameThreshold of each other (relative:

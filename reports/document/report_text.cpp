@@ -25,7 +25,11 @@ std::string order_text(std::size_t m) {
 std::string fitted_text(const ConvergenceFit& fit) {
   if (fit.fit.exact) return "exact (round-off)";
   if (!fit.fit.fitted) return "-";
-  return fmt::format("{:.3f} [{:.3f}, {:.3f}]", fit.fit.order, fit.fit.bound_lo, fit.fit.bound_hi);
+  // what the fit cannot vouch for, said beside it (analysis/fits/order_fit.hpp, step 7)
+  const std::string few = fit.fit.few_points ? fmt::format(" ({} points: the plain slope)", fit.fit.line.n) : "";
+  const std::string rough = fit.fit.non_monotone ? " (errors not monotone: no order)" : "";
+  const std::string wide = fit.fit.wide && !fit.fit.non_monotone ? " (bound too wide: no finding)" : "";
+  return fmt::format("{:.3f} [{:.3f}, {:.3f}]{}{}{}", fit.fit.order, fit.fit.bound_lo, fit.fit.bound_hi, few, rough, wide);
 }
 
 std::string and_list(const std::vector<std::string>& items) {

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "analysis/peers/fixed_peers.hpp"
+#include "analysis/peers/peers.hpp"
 #include "analysis/studies/work_precision.hpp"
 #include "analysis/kernel/kernel.hpp"
 #include "core/scenes/chain.hpp"
@@ -144,8 +145,9 @@ TEST(WorkPrecision, Rk4AccuracyStepOnTheChainMatchesItsPhaseError) {
   }
 }
 
-// On the stiff chain one of steplab's implicit methods is the cheapest at 1e-4 (by force
-// evaluations), on the spring none of them is (an explicit method, or a peer: CVODE takes the
+// On the stiff chain an implicit solver is the cheapest at 1e-4 (by force evaluations: RADAU5,
+// whose Newton stops at its tolerance where steplab's runs to round-off, two residuals a step on
+// a linear scene), on the spring none of them is (an explicit method, or a peer: CVODE takes the
 // fewest evaluations there). Along the stiffness sweep the cheapest explicit run's force
 // evaluations grow with the stiffness (its stable step shrinks as 1 / omega_fast: x98 from ratio
 // 1 to 1e6 measured), the cheapest implicit run's do not (72 down to 30); by force evaluations
@@ -162,8 +164,9 @@ TEST(WorkPrecision, ImplicitPaysOnlyOnTheStiffChain) {
   ASSERT_FALSE(spring.empty());
   ASSERT_FALSE(chain.empty());
   EXPECT_TRUE(!find_method(spring) || !method_info(*find_method(spring)).implicit) << spring;
-  ASSERT_TRUE(find_method(chain)) << chain;
-  EXPECT_TRUE(method_info(*find_method(chain)).implicit) << chain;
+  // steplab's own or a peer's: an implicit solver either way
+  const bool implicit = find_method(chain) ? method_info(*find_method(chain)).implicit : find_peer(chain) && find_peer(chain)->implicit;
+  EXPECT_TRUE(implicit) << chain;
   EXPECT_GE(r.crossover_ratio, 1);
   EXPECT_LE(r.crossover_ratio, 1e5);
   ASSERT_GE(r.stiffness.size(), 2u);

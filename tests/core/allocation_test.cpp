@@ -71,7 +71,10 @@ long allocations_in_run(std::size_t m, std::size_t s, long long steps, long long
                       : kind == 1 ? pair_kernel(m, s).run_counted(p, spec, counts)
                                   : pair_kernel(m, s).run_observed(p, spec, observed);
   const long used = g_allocations.load() - before;
-  EXPECT_EQ(r.steps, steps);
+  // every step taken, or a blow-up that ended the run (explicit Euler on the chain at this step:
+  // its fast mode grows 4 % a step and passes the blow-up bound, core/simulate.hpp, at step 497)
+  if (r.status == RunStatus::Ok) EXPECT_EQ(r.steps, steps);
+  else EXPECT_EQ(r.status, RunStatus::Diverged);
   return used;
 }
 

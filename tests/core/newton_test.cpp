@@ -130,7 +130,7 @@ TEST(SparseNewton, LinearRopeFactorisesEachMatrixOncePerRun) {
     EXPECT_EQ(n.factorisations, expected) << name;
     EXPECT_EQ(n.jacobians, 1) << name;
     EXPECT_GE(n.newton, 100) << name;
-    EXPECT_LE(n.newton, 3 * 100) << name;  // one update a solve; Yoshida solves three kicks a step
+    EXPECT_LE(n.newton, 6 * 100) << name;  // two updates a solve (the second round-off's); Yoshida solves three kicks a step
   }
 }
 

@@ -61,7 +61,7 @@ INSTANTIATE_TEST_SUITE_P(
     CliAndConfig, BadInputs,
     ::testing::Values(
         // run: names
-        BadInput{"run --scene pendulum", "pendulum"}, BadInput{"run --method heun", "heun"},
+        BadInput{"run --scene double_pendulum", "double_pendulum"}, BadInput{"run --method heun", "heun"},
         // a typo: the nearest name, whatever kind of name it is
         BadInput{"study stabilty", "study 'stabilty' is unknown (did you mean 'stability'?)"},
         BadInput{"run --dtt 0.01", "--dtt is not an option of steplab run (did you mean '--dt'?)"},
@@ -199,7 +199,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"study convergence --scene rope --sweep masses=4,8", "names no parameter"},
         BadInput{"study convergence --scene target --sweep stiffness=1,10 --shard 1/2 --json {dir}/s.json", "not both"},
         // the scenes: known names, each once, not an empty list; each method runs on one of them
-        BadInput{"report --scenes spring,pendulum --out {dir}/r", "pendulum"}, BadInput{"report --scenes spring,spring --out {dir}/r", "twice"},
+        BadInput{"report --scenes spring,double_pendulum --out {dir}/r", "double_pendulum"}, BadInput{"report --scenes spring,spring --out {dir}/r", "twice"},
         BadInput{"report --scenes , --out {dir}/r", "--scenes is empty"},
         BadInput{"report --scenes falling --methods rk4,analytic --out {dir}/r", "'analytic' runs on none of the chosen scenes"},
         BadInput{"report --sheet --scenes falling --out {dir}/r", "'analytic' runs on none"},
