@@ -27,9 +27,9 @@ report: deps
 	@cmake --build $(BUILD) -j $(JOBS) --target steplab
 	@$(BUILD)/steplab report --out report
 
-# `make bench`: every row, 5 repetitions (about 13 minutes on 2 cores); `make bench-quick`: the
+# `make bench`: every row, 5 repetitions (about 25 minutes on 2 cores); `make bench-quick`: the
 # headline rows (a step on the spring beside Boost.Odeint and the hand-written loops, the rope at
-# 4096 masses, the packs, CVODE's wrapper), 3 repetitions (about a minute). Each writes
+# 4096 masses, the packs, CVODE's wrapper), 3 repetitions (about two minutes). Each writes
 # build/bench.json and build/bench-ratios.md; the ratios file ends with CVODE as Debian builds it
 # (no optimisation) against the build steplab uses: the same program, rope and steps
 # (bench/cvode_rope.c). Google Benchmark's "Library was built as DEBUG" warning is about
@@ -41,13 +41,13 @@ report: deps
 BENCH_DEBUG_NOTE = (Google Benchmark's 'Library was built as DEBUG' warning concerns Debian's build of its timing loop, not steplab's -O3 code: the Makefile says why it does not matter)
 BENCH_QUICK = ^((step|odeint|hand)/spring/|(hand/)?rope_size/(rk4|explicit_euler|implicit_euler)/4096$$|throughput|cvode_rope/)
 bench: build
-	@echo "make bench: every row, 5 repetitions, about 13 minutes (make bench-quick: the headline rows, about a minute)"
+	@echo "make bench: every row, 5 repetitions, about 25 minutes (make bench-quick: the headline rows, about two minutes)"
 	@echo "$(BENCH_DEBUG_NOTE)"
 	@$(BUILD)/steplab_bench --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true \
 	  --benchmark_out=$(BUILD)/bench.json --benchmark_out_format=json --ratios=$(BUILD)/bench-ratios.md
 	@$(MAKE) --no-print-directory bench-debian-cvode
 bench-quick: build
-	@echo "make bench-quick: the headline rows, 3 repetitions, about a minute"
+	@echo "make bench-quick: the headline rows, 3 repetitions, about two minutes"
 	@echo "$(BENCH_DEBUG_NOTE)"
 	@$(BUILD)/steplab_bench --benchmark_filter='$(BENCH_QUICK)' --benchmark_repetitions=3 --benchmark_enable_random_interleaving=true \
 	  --benchmark_report_aggregates_only=true --benchmark_out=$(BUILD)/bench.json --benchmark_out_format=json --ratios=$(BUILD)/bench-ratios.md
