@@ -19,7 +19,7 @@ namespace {
 // here), BDF of orders 3-5 is not stable there, so BDF also with its order capped at 2 (A-stable):
 // CVodeSetMaxOrd. The stability-limit detection CVODE offers for that case (CVodeSetStabLimDet)
 // took more steps on the rope, not fewer, and a setup frequency other than the default 20 changed
-// factorisations, not steps (README, "The peers").
+// factorisations, not steps (docs/peers.md).
 constexpr CvodeSettings kAdams{.adams = true};
 constexpr CvodeSettings kBdf{.adams = false};
 constexpr CvodeSettings kBdfMax2{.adams = false, .max_order = 2};

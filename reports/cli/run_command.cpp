@@ -160,7 +160,7 @@ int run_command(RunArgs& a, Context& ctx) {
     write_atomic(a.json, j.dump(1) + "\n");
   }
   if (r.status != RunStatus::Ok)
-    fmt::print(stderr, "steplab: {} {} at step {} (t = {})\n", name, to_string(r.status), r.failed_step, r.failed_t);
+    fmt::print(stderr, "steplab: {} {} at step {} (t = {:.6g})\n", name, to_string(r.status), r.failed_step, r.failed_t);
   return 0;
 }
 

@@ -115,7 +115,7 @@ TEST(Chain, ImplicitMethodsKeepTheirOrderFarAboveTheExplicitLimit) {
   EXPECT_NEAR(radau.order, 5, 0.05);
   EXPECT_GE(radau.dt_hi, 0.4);
   for (const ConvergenceRecord& rec : r.records) {
-    if (rec.method == c.methods[1] && rec.dt > 0.0126) {
+    if (rec.method == c.methods[1] && rec.dt > 0.01) {  // above its step map's limit, 0.009124: diverged
       EXPECT_NE(rec.status, RunStatus::Ok) << rec.dt;
     }
   }
