@@ -60,7 +60,9 @@ TEST(HelpKinds, EachOptionTakesWhatItsHelpSays) {
       ++checked;
       if (!list) {
         EXPECT_EQ(dry_status(words, option, "1,2"), 2) << command << " " << option << " is labelled " << kind << " but takes a list";
-        if (kind == "WHOLE") EXPECT_EQ(dry_status(words, option, "1.5"), 2) << command << " " << option << " takes a fraction";
+        if (kind == "WHOLE") {
+          EXPECT_EQ(dry_status(words, option, "1.5"), 2) << command << " " << option << " takes a fraction";
+        }
         continue;
       }
       std::vector<std::string> taken;  // values it takes one by one
