@@ -175,8 +175,8 @@ AdaptiveResult<S::dim> simulate_dopri5(const S& s, const AdaptiveSpec& spec, Obs
       h *= std::max(min_factor, safety * std::pow(en, -0.2));
       continue;
     }
-    const double e1 = s.energy(y1.x, y1.v);
-    if (!(std::abs(e1 - e0) <= blow_up)) {  // within its tolerance, yet blown up (core/simulate.hpp)
+    const double energy1 = s.energy(y1.x, y1.v);
+    if (!within_blow_up(energy1, e0, blow_up)) {  // within its tolerance, yet blown up (core/simulate.hpp)
       r.status = RunStatus::Diverged;
       r.failed_step = st.accepted + 1;
       r.failed_t = t + h;
@@ -204,7 +204,7 @@ AdaptiveResult<S::dim> simulate_dopri5(const S& s, const AdaptiveSpec& spec, Obs
     t = t1;
     y = y1;
     std::swap(k1, k7);  // first same as last: k1 is k7, whose storage the next step overwrites
-    tally.account(t, e1, e0, true, e0 != 0, false, false);
+    tally.account(t, energy1, e0, true, e0 != 0, false, false);
     if constexpr (HasExactAlong<S>) {
       if (spec.errors) tracker.jump(), errors.add_positions(y.x, tracker.at(t));
     } else if constexpr (HasExact<S>) {

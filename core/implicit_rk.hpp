@@ -17,7 +17,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <type_traits>
 
 #include "core/compensated.hpp"
@@ -61,7 +60,8 @@ template <int Stages, class S, class T, class Carry>
   std::array<Vec<D, T>, Stages> X, F;
   F.fill(Vec<D, T>::Zero());
   std::array<Jacobians<D, T>, Stages> J;
-  T force_terms = 0, last_step = std::numeric_limits<double>::infinity();
+  T force_terms = 0;
+  RoundOff<T> round_off;
   const T mv0_norms = Stages * m.cwiseProduct(y.v).norm(), v0_norms = Stages * y.v.norm();
   NewtonLanes<T> lanes;
   for (int it = 0;; ++it) {
@@ -97,11 +97,9 @@ template <int Stages, class S, class T, class Carry>
       }
     count_newton_update(s);
     const Big dV = lu_solve(G, r);
-    const T step = dV.norm();
-    const RoundOffRule<T> rule = round_off_rule(step, last_step, round_off_size(T(V.norm() + v0_norms), scale, T(G.norm())), small);
-    V = select(!lanes.done && rule.apply, Big(V - dV), V);
-    last_step = step;
-    if (lanes.solved(rule.stop)) break;  // at round-off: V, and F its forces
+    const MaskOf<T> stop = round_off.stop(dV.norm(), V.norm() + v0_norms, scale, G.norm(), small);
+    V = select(!lanes.done && !stop, Big(V - dV), V);
+    if (lanes.solved(stop)) break;  // at round-off: V, and F its forces
   }
   if (all(lanes.failed)) return lanes.status();  // a failed lane's state is dropped
   add_increments(s, y, h, t, [&](int i) { return V.template segment<D>(i * D); }, F, carry);
@@ -128,12 +126,11 @@ StepStatus implicit_rk_step_sparse(const S& s, State<S::dim>& y, double t0, doub
   const Eigen::VectorXd& m = s.mass();
   std::array<Eigen::VectorXd, 4>&X = ws.stage_x, &V = ws.stage_v, &F = ws.stage_f, &r = ws.stage_r, &dV = ws.stage_dv;
   for (int i = 0; i < Stages; ++i) V[i] = y.v;
-  double force_terms = 0, r_last = 0, last_step = std::numeric_limits<double>::infinity();
+  double force_terms = 0, r_last = 0;
+  RoundOff<double> round_off;
   const double mv0_norms = Stages * m.cwiseProduct(y.v).norm(), v0_norms = Stages * y.v.norm(), m_norm = m.norm();
-  double a_norm = 0, dx_max = 0, dv_max = 0;  // |A|_F; the largest Jacobians' norms of the last update
-  for (int i = 0; i < Stages; ++i)
-    for (int j = 0; j < Stages; ++j) a_norm += t.a[i][j] * t.a[i][j];
-  a_norm = std::sqrt(a_norm);
+  const double a_norm = t.a_norm();
+  double dx_max = 0, dv_max = 0;  // the largest Jacobians' norms of this step's updates (since a restart)
   bool fresh = false, full = false;  // Jacobians refreshed for the last update; full Newton
   for (int it = 0;; ++it) {
     for (int i = 0; i < Stages; ++i) {
@@ -154,7 +151,7 @@ StepStatus implicit_rk_step_sparse(const S& s, State<S::dim>& y, double t0, doub
     const bool small = it > 0 && r_norm <= NewtonSettings::tolerance * scale;
     if (it == NewtonSettings::max_iterations || !std::isfinite(r_norm) || (fresh && r_norm > r_last && !small)) {
       if (full) return StepStatus::NoConvergence;
-      full = true, fresh = false, force_terms = 0, dx_max = dv_max = 0, it = -1, last_step = std::numeric_limits<double>::infinity();  // again from V_i = v0, by full Newton
+      full = true, fresh = false, force_terms = 0, dx_max = dv_max = 0, it = -1, round_off = {};  // again from V_i = v0, by full Newton
       for (int i = 0; i < Stages; ++i) V[i] = y.v;
       continue;
     }
@@ -185,14 +182,11 @@ StepStatus implicit_rk_step_sparse(const S& s, State<S::dim>& y, double t0, doub
     if (!n.ok) return StepStatus::NoConvergence;
     double step_sq = 0, v_sq = 0;
     for (int i = 0; i < Stages; ++i) step_sq += dV[i].squaredNorm(), v_sq += V[i].squaredNorm();
-    const double step = std::sqrt(step_sq);
     // |K|_F <= sqrt(s) |M| + |h| |A| max|dF/dv| + h^2 |A|^2 max|dF/dx| (Frobenius norms), block by block
     const double j_bound = std::sqrt(double(Stages)) * m_norm + std::abs(h) * a_norm * dv_max + h * h * a_norm * a_norm * dx_max;
-    const RoundOffRule<double> rule = round_off_rule(step, last_step, round_off_size(std::sqrt(v_sq) + v0_norms, scale, j_bound), small);
-    if (rule.apply)
-      for (int i = 0; i < Stages; ++i) V[i] -= dV[i];
-    if (rule.stop) break;  // at round-off: V, and F its forces
-    r_last = r_norm, last_step = step;
+    if (round_off.stop(std::sqrt(step_sq), std::sqrt(v_sq) + v0_norms, scale, j_bound, small)) break;  // at round-off: V, and F its forces
+    for (int i = 0; i < Stages; ++i) V[i] -= dV[i];
+    r_last = r_norm;
   }
   add_increments(s, y, h, t, [&](int i) -> const Eigen::VectorXd& { return V[i]; }, F, carry);
   return StepStatus::Ok;

@@ -93,6 +93,14 @@ template <int Stages> struct ButcherTableau {
     for (double x : a[static_cast<std::size_t>(i)]) sum += x;
     return sum;
   }
+  // |A|_F, A's Frobenius norm: how far the stages' coupling can scale the Jacobians (Newton's
+  // round-off size on a run-time size, core/implicit_rk.hpp).
+  double a_norm() const {
+    double sq = 0;
+    for (const auto& row : a)
+      for (double x : row) sq += x * x;
+    return std::sqrt(sq);
+  }
 };
 
 // A method whose step solves for its stages by Newton (solve_implicit, core/implicit_rk.hpp)
@@ -139,15 +147,14 @@ template <int W> Mask<W> failed(const Mask<W>& s) { return s; }
 // The scale is the size of the terms G balances: |M u| + |M w| + c (|F| + |dF/dx| |x| + |dF/dv| |u|),
 // the last two from the first Jacobian (|c|: a composition such as Yoshida's runs substeps
 // backwards; near equilibrium F itself is ~0 while its terms, k|y| or m g, are not, and round-off
-// in F is relative to those). A correction within round_off (|u| + |w|) would change u's last
-// bits only: it is round-off's; and so, once |G(u)| is within tolerance * scale, is a correction
-// no smaller than the last (where u is near 0, at rest, the first test cannot hold and this one
-// ends the iteration). At either the iteration stops without it: u is then the solution to
-// round-off, and the force last evaluated is u's own (an implicit Runge-Kutta step builds v from
-// its stages' forces: a correction applied after them would leave them a correction behind, which
-// a stiff step multiplies by h^2 k / m). The size is u's, not the residual's scale through M^-1:
-// where the step is stiff, J = M - c dF/dv - c cx dF/dx is far larger than M, and that bound
-// would take the first correction for round-off.
+// in F is relative to those). A correction below round-off's size (RoundOff below) would change
+// u's last bits only, or G's: it is round-off's; and so, once |G(u)| is within tolerance * scale,
+// is a correction no smaller than the last. At either the iteration stops without it: u is then
+// the solution to round-off, and the force last evaluated is u's own (an implicit Runge-Kutta
+// step builds v from its stages' forces: a correction applied after them would leave them a
+// correction behind, which a stiff step multiplies by h^2 k / m). The size is bounded through
+// |J|, not through M^-1: where the step is stiff, J is far larger than M, and M^-1 times the
+// residual's scale would take the first correction for round-off.
 // Stopping at the tolerance alone left each step's solution wrong by up to 1e-12 of that scale, a
 // bias a long run adds up (Gauss-Legendre 4 on Kepler's orbit drifted in angular momentum by
 // 8.5e-8 over 10^5 periods). A force linear in (x, v) converges in one Newton step, the second's
@@ -158,28 +165,25 @@ struct NewtonSettings {
   static constexpr double round_off = 4 * 0x1p-52;  // 4 epsilon: a correction of about an ulp a coordinate
 };
 
-// The size a correction is round-off's below: an ulp or so of |u| + |w|, and at least the size
-// whose effect on G is within round-off of G's own terms: |J du| <= j_bound |du| <= round_off
-// scale, j_bound an upper bound on |J| (its Frobenius norm, or a sum of norms). Near rest u is ~0
-// while G's terms are not: x0 + cx u cannot see a change in u below ulp(x0) / cx, the residual
-// then answers to only part of J, and each correction shrinks by 1 - (that part) / |J| (the
-// damped spring at h = 1, implicit Euler: 0.82 an iteration, 50 iterations of corrections 1e-18
-// on a u of 4e-7). The second term ends that: such a correction is round-off's.
-template <class T> [[gnu::always_inline]] inline T round_off_size(const T& u_size, const T& scale, const T& j_bound) {
-  return u_size + scale / j_bound;
-}
-
-// Newton's round-off rule above for the correction just computed, of size `step` against the
-// last one's `last` and the size round-off gives it, `size` (round_off_size), with `small` whether
-// the residual is within tolerance: `stop` where the iteration ends (without it), `apply` where it is taken.
-template <class T> struct RoundOffRule {
-  MaskOf<T> apply, stop;
+// Newton's round-off rule above, one iteration after another. A correction is round-off's below
+// the size: an ulp or so of |u| + |w| (u_size), and at least the size whose effect on G is within
+// round-off of G's own terms: |J du| <= j_bound |du| <= round_off scale, j_bound an upper bound on
+// |J| (its Frobenius norm, or a sum of norms). Near rest u is ~0 while G's terms are not: x0 + cx u
+// cannot see a change in u below ulp(x0) / cx, the residual then answers to only part of J, and
+// each correction shrinks by 1 - (that part) / |J| (the damped spring at h = 1, implicit Euler:
+// 0.82 an iteration, 50 iterations of corrections 1e-18 on a u of 4e-7); the second term ends
+// that. stop() takes the correction just computed, of size `step`, with `small` whether the
+// residual is within tolerance, and says where the iteration ends there, without it (where it
+// does not, the correction is taken).
+template <class T> struct RoundOff {
+  T last = std::numeric_limits<double>::infinity();  // the last correction's size
+  [[gnu::always_inline]] MaskOf<T> stop(const T& step, const T& u_size, const T& scale, const T& j_bound, const MaskOf<T>& small) {
+    const T size = u_size + scale / j_bound;
+    const MaskOf<T> at_round_off = (small && step >= last) || step <= NewtonSettings::round_off * size;
+    last = step;
+    return at_round_off;
+  }
 };
-template <class T> [[gnu::always_inline]] inline RoundOffRule<T> round_off_rule(const T& step, const T& last, const T& size,
-                                                                               const MaskOf<T>& small) {
-  const MaskOf<T> stop = (small && step >= last) || step <= NewtonSettings::round_off * size;
-  return {!stop, stop};
-}
 
 // Which lanes of a Newton iteration have stopped: solved, or given up (failed). Each call says
 // whether every lane has now stopped; the loop then returns status().
@@ -238,7 +242,8 @@ StepStatus solve_implicit_sparse(const S& s, double t, Eigen::Ref<const Eigen::V
   const Eigen::VectorXd& m = s.mass();
   Eigen::VectorXd &x = ws.x, &r = ws.r, &f = ws.f;
   u = w;
-  double force_terms = 0, r_last = 0, last_step = std::numeric_limits<double>::infinity();
+  double force_terms = 0, r_last = 0;
+  RoundOff<double> round_off;
   const double mw_norm = m.cwiseProduct(w).norm(), w_norm = w.norm(), m_norm = m.norm();
   for (int it = 0;; ++it) {
     x = x0 + cx * u;
@@ -255,12 +260,9 @@ StepStatus solve_implicit_sparse(const S& s, double t, Eigen::Ref<const Eigen::V
     const SolveCounts n = kept.solve(c, c * cx, r, ws.du);
     count_iteration(s, n);
     if (!n.ok) return StepStatus::NoConvergence;
-    const double step = ws.du.norm();
-    const double size = round_off_size(u.norm() + w_norm, scale, kept.norm_bound(m_norm, c, c * cx));
-    const RoundOffRule<double> rule = round_off_rule(step, last_step, size, small);
-    if (rule.apply) u -= ws.du;
-    if (rule.stop) return StepStatus::Ok;
-    r_last = r_norm, last_step = step;
+    if (round_off.stop(ws.du.norm(), u.norm() + w_norm, scale, kept.norm_bound(m_norm, c, c * cx), small)) return StepStatus::Ok;
+    u -= ws.du;
+    r_last = r_norm;
   }
 }
 
@@ -277,7 +279,8 @@ template <class S, class T>
   constexpr int D = S::dim;
   const Vec<D, T>& m = s.mass();
   u = w;
-  T force_terms = 0, last_step = std::numeric_limits<double>::infinity();
+  T force_terms = 0;
+  RoundOff<T> round_off;
   const T mw_norm = m.cwiseProduct(w).norm(), w_norm = w.norm();
   NewtonLanes<T> lanes;
   for (int it = 0;; ++it) {
@@ -295,11 +298,9 @@ template <class S, class T>
     Mat<D, T> J = -c * jac.dv - (c * cx) * jac.dx;
     J.diagonal() += m;
     const Vec<D, T> du = lu_solve(J, r);
-    const T step = du.norm();
-    const RoundOffRule<T> rule = round_off_rule(step, last_step, round_off_size(T(u.norm() + w_norm), scale, T(J.norm())), small);
-    u = select(!lanes.done && rule.apply, Vec<D, T>(u - du), u);
-    last_step = step;
-    if (lanes.solved(rule.stop)) return lanes.status();
+    const MaskOf<T> stop = round_off.stop(du.norm(), u.norm() + w_norm, scale, J.norm(), small);
+    u = select(!lanes.done && !stop, Vec<D, T>(u - du), u);
+    if (lanes.solved(stop)) return lanes.status();
   }
 }
 

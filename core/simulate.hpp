@@ -144,6 +144,12 @@ template <class S, int D> double blow_up_energy(const S& s, const State<D>& y0, 
   if constexpr (requires { s.energy_scale(); }) scale = std::max(scale, s.energy_scale());
   return kBlowUp * (scale > 0 ? scale : s.mass().sum());
 }
+// Whether an energy e is within the run's blow-up bound of its start e0 (false for a NaN energy):
+// the test every run loop makes after each step (here, core/dopri5.hpp, long runs).
+template <class T> [[gnu::always_inline]] inline auto within_blow_up(const T& e, const T& e0, const T& bound) {
+  using std::abs;
+  return abs(e - e0) <= bound;
+}
 
 // One step of a run loop, for one run (T = double, masks bool: Run below) or a pack of runs
 // (BatchRunner, core/batch.hpp; i then counts each lane's steps in a T): the step from
@@ -174,7 +180,6 @@ template <class Stp, class Sc, int D, class T, class I, class After>
                                                    const T& blow_up, const MaskOf<T>& e0_nonzero, const MaskOf<T>& rate,
                                                    bool some_rate, After&& after) {
   using Mask = MaskOf<T>;
-  using std::abs;
   const T t_prev = (i - 1.0) * h, t = i * h;
   // The step is taken on a copy, so that one run keeps its last finite state: on the stack for a
   // fixed size, in the run's workspace for a run-time one (sized in its first step).
@@ -184,7 +189,7 @@ template <class Stp, class Sc, int D, class T, class I, class After>
   // Live: finite, and its energy within the run's blow-up bound of its start (blow_up_energy;
   // false for a NaN energy too).
   const T e = scene.energy(next.x, next.v);
-  const Mask live = all_finite(next) && active && !failed && abs(e - e0) <= blow_up;
+  const Mask live = all_finite(next) && active && !failed && within_blow_up(e, e0, blow_up);
   if constexpr (std::same_as<Mask, bool>) {
     if (!live) return {live, failed, t};
   } else {

@@ -90,8 +90,7 @@ template <class M, class S, class T = double> struct Stepper {
   [[no_unique_address]] CarryOf<M, S::dim, T> carry = no_carry();
   [[no_unique_address]] RunWorkspace<S::dim> work;
   auto step(const S& s, State<S::dim, T>& y, Time<T> t, Time<T> h)
-    requires requires { M::step(s, y, t, h); } || requires { M::step(s, y, t, h, settings); } ||
-             requires { M::step(s, y, t, h, carry); }
+    requires requires { M::step(s, y, t, h); } || requires { M::step(s, y, t, h, settings); }
   {
     [[maybe_unused]] const auto in_use = work.use();
     if constexpr (TakesSettings<M>) return M::step(s, y, t, h, settings);

@@ -32,7 +32,7 @@ template <class M, HasInvariants S> LongRun long_run(Params p, const LongRunSpec
   // finite), with its status set.
   const auto step = [&](long long k) {
     if (steplab::failed(stepper.step(s, y, static_cast<double>(k) * spec.dt, spec.dt))) out.status = RunStatus::NoConvergence;
-    else if (!all_finite(y) || !(std::abs(s.energy(y.x, y.v) - e0) <= blow_up)) out.status = RunStatus::Diverged;
+    else if (!all_finite(y) || !within_blow_up(s.energy(y.x, y.v), e0, blow_up)) out.status = RunStatus::Diverged;
     return out.status == RunStatus::Ok;
   };
   long long k = 0;

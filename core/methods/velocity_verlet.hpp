@@ -28,22 +28,24 @@ struct VelocityVerlet {
     const V v0 = y.v;
     add_compensated(y.x, V(h * y.v + (0.5 * h * h) * a0), carry.x);
     const auto implicit = s.velocity_dependent();  // a Mask for a pack of springs, some damped
+    // the damped lanes' closing kick, implicit in v: M (v - v0 - h/2 a0) = h/2 F(x1, v)
+    const auto implicit_kick = [&] { return solve_implicit(s, t + h, y.x, 0.0, V(v0 + (0.5 * h) * a0), 0.5 * h, y.v); };
+    if (all(implicit)) return implicit_kick();
+    const V dv = (0.5 * h) * (a0 + acceleration(s, t + h, y.x, v0));  // the undamped lanes' kicks
     if (!any(implicit)) {
-      add_compensated(y.v, V((0.5 * h) * (a0 + acceleration(s, t + h, y.x, v0))), carry.v);
+      add_compensated(y.v, dv, carry.v);
       return status_of(MaskOf<T>(false));
     }
-    const V kicked = v0 + (0.5 * h) * a0;
-    if (all(implicit)) return solve_implicit(s, t + h, y.x, 0.0, kicked, 0.5 * h, y.v);
-    // a pack, some lanes damped: each lane its kick
+    // a pack, some lanes damped: each lane its kick, the damped ones' carry left at zero
     V explicit_v = v0;
     if constexpr (kCarries<Carry>) {
       Vec<S::dim, T> lost = carry.v;
-      add_compensated(explicit_v, V((0.5 * h) * (a0 + acceleration(s, t + h, y.x, v0))), lost);
+      add_compensated(explicit_v, dv, lost);
       carry.v = select(implicit, carry.v, lost);
     } else {
-      explicit_v += (0.5 * h) * (a0 + acceleration(s, t + h, y.x, v0));
+      explicit_v += dv;
     }
-    const Status<T> st = solve_implicit(s, t + h, y.x, 0.0, kicked, 0.5 * h, y.v);
+    const Status<T> st = implicit_kick();
     y.v = select(implicit, y.v, Vec<S::dim, T>(explicit_v));
     return status_of(implicit && failed(st));
   }

@@ -13,8 +13,8 @@ namespace steplab {
 using Json = nlohmann::ordered_json;
 
 Json scene_params_json(std::size_t scene, const std::vector<double>& values);
-// What an order fit cannot vouch for (analysis/fits/order_fit.hpp, step 7): ["few_points",
-// "non_monotone"], empty where neither (and where there is no fit).
+// What an order fit cannot vouch for (analysis/fits/order_fit.hpp, step 7): of "few_points",
+// "non_monotone" and "wide" those that hold, empty where none does (and where there is no fit).
 Json fit_caveats(const OrderFit& f);
 // The library builds the peers ran on (analysis/peers/peers.hpp, peer_builds): [{library, version,
 // optimised, flags}], in every study's JSON that has peers.
