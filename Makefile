@@ -6,7 +6,7 @@ ifdef CI
 CMAKE_FLAGS += -DSTEPLAB_WERROR=ON
 endif
 
-.PHONY: all build test report bench bench-quick bench-debian-cvode performance test-sanitize fuzz clean deps
+.PHONY: all build test report bench bench-quick bench-debian-cvode performance test-sanitize test-sanitize-core fuzz clean deps
 
 all: build
 
@@ -115,6 +115,16 @@ test-sanitize: deps
 	@cmake --build $(BUILD)-sanitize -j $(JOBS)
 	@cd $(BUILD)-sanitize && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS) -E '$(SANITIZE_SKIP)'
 
+# CI's sanitized stage: core/ and the tests of tests/core/ that need nothing else
+# (tests/core_only.cmake), under AddressSanitizer and UndefinedBehaviorSanitizer, in a few minutes.
+# The whole suite there (test-sanitize above) is about 40 minutes of compiling on 2 cores: each
+# method's kernel file costs the compiler 4-5 times its Release time under the sanitizers.
+test-sanitize-core: deps
+	@tools/install-deps test
+	@cmake -S . -B $(BUILD)-sanitize-core -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSTEPLAB_SANITIZE=ON -DSTEPLAB_CORE_ONLY=ON -DSTEPLAB_WERROR=OFF >/dev/null
+	@cmake --build $(BUILD)-sanitize-core -j $(JOBS)
+	@cd $(BUILD)-sanitize-core && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS)
+
 # libFuzzer over the command line and the report configuration, 60 s from tests/fuzz/corpus
 # (new inputs go to $(BUILD)-fuzz/corpus; the kept corpus is not changed).
 FUZZ_SECONDS ?= 60
@@ -126,4 +136,4 @@ fuzz:
 	@$(BUILD)-fuzz/steplab_fuzz -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 -close_fd_mask=3 $(BUILD)-fuzz/corpus tests/fuzz/corpus
 
 clean:
-	rm -rf $(BUILD) $(BUILD)-sanitize $(BUILD)-fuzz
+	rm -rf $(BUILD) $(BUILD)-sanitize $(BUILD)-sanitize-core $(BUILD)-fuzz

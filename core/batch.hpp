@@ -59,8 +59,8 @@ inline bool cpu_has_width(int width) {
 }
 
 // The studies' default: AVX2's 4 lanes where the CPU has it, else SSE2's 2. Not AVX-512's 8:
-// on the machine the README quotes (AMD EPYC, Zen 4, which executes a 512-bit operation as two
-// 256-bit halves) its loop ran 2x slower than AVX2's (README, SIMD packs); --lanes 8 asks for it.
+// on the machine docs/performance.md quotes (AMD EPYC, Zen 4, which executes a 512-bit operation as two
+// 256-bit halves) its loop ran 2x slower than AVX2's (docs/performance.md, "Runs stepped together in SIMD packs"); --lanes 8 asks for it.
 inline int best_width() {
   static const int best = cpu_has_width(4) ? 4 : cpu_has_width(2) ? 2 : 1;
   return best;

@@ -20,7 +20,7 @@
 // the scenes that declare a banded Jacobian (the rope; its state interleaved), KLU (SuiteSparse's
 // sparse LU) on the other scenes of run-time size (the soft body). Its other
 // settings at their defaults (the iteration matrix reused for up to 20 steps, refreshed when gamma
-// changes by 30 %); what the other settings measured on the rope is in the README. CVODE is built
+// changes by 30 %); what the other settings measured on the rope is in docs/peers.md. CVODE is built
 // optimised from its Debian source package (tools/sundials.cmake); peer_builds() says which build
 // runs.
 //

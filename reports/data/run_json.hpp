@@ -1,5 +1,5 @@
 // JSON of one run (schema "steplab.run/1"). The field names are an interface: notebooks and
-// scripts rely on them, and the README lists them.
+// scripts rely on them, and docs/json.md lists them.
 #pragma once
 
 #include <cmath>

@@ -4,13 +4,12 @@
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
+#include "reports/data/run_json.hpp"
 #include "reports/data/study_output.hpp"
 #include "reports/data/schemas.hpp"
 
 namespace steplab {
 namespace {
-
-Json number_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
 
 std::string_view param_name(const ConvergenceSweep& s) {
   return scene_kernel(s.studies.front().config.scene).params[s.param].name;
@@ -81,8 +80,8 @@ Json order_reduction_json(const OrderReduction& r) {
     e["theory"] = theory_json(m.theory);
     e["non_stiff"] = limit_json(m.non_stiff);
     e["stiff"] = m.theory.stiff >= 0 && r.driven ? limit_json(m.stiff) : Json(nullptr);
-    e["order_kept_to_h_lambda"] = number_or_null(m.keeps_to);
-    e["stiff_order_from_h_lambda"] = number_or_null(m.reduced_from);
+    e["order_kept_to_h_lambda"] = finite_or_null(m.keeps_to);
+    e["stiff_order_from_h_lambda"] = finite_or_null(m.reduced_from);
     methods.push_back(std::move(e));
   }
   j["methods"] = std::move(methods);
@@ -94,10 +93,10 @@ Json order_reduction_json(const OrderReduction& r) {
       e["method"] = method_info(f.method).name;
       e["value"] = s.values[v];
       e["exact"] = f.fit.exact;
-      e["order"] = f.fit.fitted ? number_or_null(f.fit.order) : Json(nullptr);
-      e["order_bound"] = f.fit.fitted ? Json{number_or_null(f.fit.bound_lo), number_or_null(f.fit.bound_hi)} : Json(nullptr);
+      e["order"] = f.fit.fitted ? finite_or_null(f.fit.order) : Json(nullptr);
+      e["order_bound"] = f.fit.fitted ? Json{finite_or_null(f.fit.bound_lo), finite_or_null(f.fit.bound_hi)} : Json(nullptr);
       e["dt_range"] = f.fit.fitted ? Json{f.fit.dt_lo, f.fit.dt_hi} : Json(nullptr);
-      e["h_lambda"] = number_or_null(r.methods[m].h_lambda[v]);
+      e["h_lambda"] = finite_or_null(r.methods[m].h_lambda[v]);
       e["note"] = f.fit.note;
       fits.push_back(std::move(e));
     }

@@ -101,14 +101,17 @@ TEST(OrderReduction, BothLimitsHoldUnderChangedParameters) {
 // h |lambda| = 1, the stiff order shows only above it.
 TEST(OrderReduction, RadauTransitionStraddlesHLambdaOne) {
   const OrderReduction r = report_sweep();
+  int rows = 0;
   for (const MethodReduction& m : r.methods) {
     if (method_info(m.method).name != "radau_iia5") continue;
+    ++rows;
     ASSERT_FALSE(std::isnan(m.keeps_to));
     ASSERT_FALSE(std::isnan(m.reduced_from));
     EXPECT_LT(m.keeps_to, m.reduced_from);
     EXPECT_LT(m.keeps_to, 1);
     EXPECT_GT(m.reduced_from, 1);
   }
+  EXPECT_EQ(rows, 1);  // the sweep has Radau IIA's row
 }
 
 // Where the sweep stops short of the stiff regime, the limit is not claimed.

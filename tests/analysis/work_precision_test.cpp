@@ -32,7 +32,9 @@ const WorkPrecisionResult& study() {
 // and the splittings built on velocity Verlet (it and Yoshida's composition of it), whose closing
 // kick is implicit in v on a damped scene: none for the explicit Runge-Kutta and Adams-Bashforth.
 TEST(WorkPrecision, CountsWhatTheFormulasSay) {
+  std::map<std::string, int> rows;  // of the methods checked by name
   for (const WorkPoint& p : study().scenes[0].points) {
+    ++rows[p.method];
     if (p.method == "rk4") {
       EXPECT_EQ(p.force_evaluations, 4 * p.steps) << p.setting;
     }
@@ -47,6 +49,7 @@ TEST(WorkPrecision, CountsWhatTheFormulasSay) {
       EXPECT_GE(p.force_evaluations, 2 + 6 * p.steps);
     }
   }
+  for (const char* m : {"rk4", "radau_iia5", "dopri5"}) EXPECT_GT(rows[m], 0) << m << " has no row";
 }
 
 // Every adaptive solver reaches errors that follow the tolerance on both scenes. A tolerance
@@ -136,13 +139,16 @@ TEST(WorkPrecision, BdfStepsOverTheStiffModeAtALooseTolerance) {
 // sqrt 2 * omega * 10 e^{-0.25} (omega h)^4 / 120 = 1e-4 at h = 0.1025 (omega = 1.5809). The
 // study interpolates between sweep steps 3 per decade apart: within 10 %.
 TEST(WorkPrecision, Rk4AccuracyStepOnTheChainMatchesItsPhaseError) {
+  int rows = 0;
   for (const StableStep& l : study().limits) {
     if (l.method != "rk4") continue;
+    ++rows;
     const double omega = std::sqrt(2.5 - 0.025 * 0.025);
     const double h = std::pow(1e-4 * 120 / (std::sqrt(2.0) * omega * 10 * std::exp(-0.25)), 0.25) / omega;
     EXPECT_NEAR(l.accuracy_dt, h, 0.1 * h);
     EXPECT_GT(l.accuracy_dt, 10 * l.largest_stable_dt);  // the stiff mode, not accuracy, limits it
   }
+  EXPECT_EQ(rows, 1);  // the study has RK4's row
 }
 
 // On the stiff chain an implicit solver is the cheapest at 1e-4 (by force evaluations: RADAU5,

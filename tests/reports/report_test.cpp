@@ -72,6 +72,11 @@ std::string expect_growth_follows_data(const ReportConfig& c) {
   const ReportData& d = report.data;
   EXPECT_EQ(d.scaling.size(), 2u);  // the rope and the soft body
   for (const ScalingResult& r : d.scaling) {
+    // the study ran at the configuration's sizes (its text is checked against the study below)
+    for (const ReportSizes& s : c.scaling)
+      if (scene_name(s.scene) == r.config.scene) {
+        EXPECT_EQ(r.config.sizes, s.sizes) << r.config.scene;
+      }
     const std::string part = md.substr(md.find(std::string(scene_kernel(*find_scene(r.config.scene)).title)));
     const std::size_t table = part.substr(0, part.find("\n**")).find("| solver | cost ~ N^p^");  // its exponents' table, if any
     const std::string exponents = table == std::string::npos ? "" : part.substr(table, part.find("\n\n", table) - table);
@@ -92,6 +97,7 @@ std::string expect_growth_follows_data(const ReportConfig& c) {
   }
   EXPECT_TRUE(d.scaling_map.has_value());
   const ScalingResult& map = *d.scaling_map;
+  EXPECT_EQ(map.config.targets.front().value, c.scaling_error);  // the map's first target is the configured error
   const std::size_t nk = map.blocks.size() / map.config.targets.size();
   for (std::size_t t = 0; t < map.config.targets.size(); ++t) {
     std::map<std::string, int> wins;
@@ -127,7 +133,9 @@ TEST(ReportGrowth, FollowsTheDataUnderChangedParameters) {
   c.scaling_error = 1e-3;
   c.scaling_stiffening = {1, 30, 1000};
   const std::string b = expect_growth_follows_data(c);
-  EXPECT_NE(a, b);
+  // The section's words changed with the data: the exponents fitted only over 1.5 decades of N.
+  EXPECT_EQ(a.find("| solver | cost ~ N^p^"), std::string::npos) << a;
+  EXPECT_NE(b.find("| solver | cost ~ N^p^"), std::string::npos) << b;
 }
 
 }  // namespace
