@@ -85,7 +85,7 @@ performance: bench
 # already runs, to check a property of the numbers rather than of memory, runs in `make test` only
 # (SANITIZE_SKIP; they were more than half the sanitized suite's time):
 # - whole reports and studies with other parameters: ReportFindings, ReportGrowth, ReportChoice's
-#   two, ReportInterrupted, ReportUpToDate, WorkPrecision's accuracy tests. Here a whole report is
+#   two, ReportInterrupted (with its up-to-date check), WorkPrecision's accuracy tests. Here a whole report is
 #   made by ReportSheet (the hand-in, through the command line, gnuplot and pandoc), every
 #   section by ReportChoice and ReportScenes, a work-precision study by WorkPrecision.CountsWhat...
 # - the same bytes for one and two threads (Determinism, StabilityJson.SameForOneAndTwoThreads):
@@ -108,7 +108,7 @@ performance: bench
 #   on the damped rope and the chain), the energy drift against the stability functions (every
 #   row's check runs here) and work-precision's counts against the formulas (the study runs here
 #   in its one-and-two-threads test).
-SANITIZE_SKIP ?= readme\.walkthrough|ReportPages|ReportGrowth|LongTime\.Kepler|ReportLongTime\.Follows|RopeStability\.Undamped|Check\.EnergyDrift|WorkPrecision\.CountsWhatTheFormulasSay|ReportSubsets|ReportChoice\.(AChosenMethodHasTheFullReportsNumbers|ACrossoverNeedsBothKinds)|ReportInterrupted|ReportUpToDate|package\.plugin|ReportFindings|WorkPrecision\.(Rk4Accuracy|BdfSteps|AdaptiveErrors|ImplicitPays)|Determinism\.SameBytes|StabilityJson\.SameForOneAndTwoThreads|Allocation\.NoneInAStepOn|ReportSheet\.NumbersAreTheFullReports|Claims\.FollowTheData(WithoutDamping|WithAStiffSpringAndALargeStep)|notebook\.explore
+SANITIZE_SKIP ?= readme\.walkthrough|ReportPages|ReportGrowth|LongTime\.Kepler|ReportLongTime\.Follows|RopeStability\.Undamped|Check\.EnergyDrift|WorkPrecision\.CountsWhatTheFormulasSay|ReportSubsets|ReportChoice\.(AChosenMethodHasTheFullReportsNumbers|ACrossoverNeedsBothKinds)|ReportInterrupted|package\.plugin|ReportFindings|WorkPrecision\.(Rk4Accuracy|BdfSteps|AdaptiveErrors|ImplicitPays)|Determinism\.SameBytes|StabilityJson\.SameForOneAndTwoThreads|Allocation\.NoneInAStepOn|ReportSheet\.NumbersAreTheFullReports|Claims\.FollowTheData(WithoutDamping|WithAStiffSpringAndALargeStep)|notebook\.explore
 test-sanitize: deps
 	@tools/install-deps test
 	@cmake -S . -B $(BUILD)-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSTEPLAB_SANITIZE=ON -DSTEPLAB_BUILD_BENCH=OFF -DSTEPLAB_WERROR=OFF >/dev/null

@@ -11,9 +11,14 @@ include(GoogleTest)
 set(STEPLAB_CORE_TESTS baraff_witkin dense_output scratch small_lu spring springs xpbd)
 list(TRANSFORM STEPLAB_CORE_TESTS PREPEND ${CMAKE_CURRENT_SOURCE_DIR}/tests/core/)
 list(TRANSFORM STEPLAB_CORE_TESTS APPEND _test.cpp)
-# each scene's out-of-line parts (core/scene.hpp, STEPLAB_SCENE_SOURCE), as its kernel file has them
+# the out-of-line parts of the scenes that have them (core/scene.hpp, STEPLAB_SCENE_SOURCE), as
+# their kernel files have them
 set(scene_sources "")
 foreach(h IN LISTS STEPLAB_SCENE_HEADERS)
+  file(STRINGS "${h}" out_of_line REGEX "STEPLAB_SCENE_SOURCE")
+  if(NOT out_of_line)
+    continue()
+  endif()
   get_filename_component(stem "${h}" NAME_WE)
   file(CONFIGURE OUTPUT "${CMAKE_BINARY_DIR}/generated/core_only/scene_${stem}.cpp"
        CONTENT "#define STEPLAB_SCENE_SOURCE\n#include \"${h}\"\n" @ONLY)

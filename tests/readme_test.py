@@ -20,10 +20,10 @@ blocks = re.findall(r"^ *```[a-z]*\n(.*?)^ *```", readme, flags=re.S | re.M)
 
 # Commands shown but run elsewhere, by their first words.
 ELSEWHERE = {
-    "make report": "CI's clean clone (.ci/run) and the report tests (ReportFindings, ReportUpToDate)",
+    "make report": "CI's clean clone (.ci/run) and the report tests (ReportFindings, ReportInterrupted)",
     "make test": "CI (.ci/run)",
     "jupyter nbconvert": "notebook.explore (tests/notebook_test.sh), from a folder laid out as steplab's",
-    "build/steplab report": "the report tests (a whole report takes 40 s; ReportFindings, ReportUpToDate)",
+    "build/steplab report": "the report tests (a whole report takes 40 s; ReportFindings, ReportInterrupted)",
     "build/mysteplab": "readme.walkthrough (tests/readme_walkthrough_test.py), which builds mysteplab from an empty folder",
     "cmake": "readme.walkthrough and package.consumer (tests/readme_walkthrough_test.py, tests/consumer_test.sh)",
     "find_package": "package.consumer", "target_link_libraries": "package.consumer",

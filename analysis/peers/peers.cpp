@@ -6,7 +6,10 @@
 #include <boost/version.hpp>
 #include <sundials/sundials_config.h>
 
+#include <fmt/format.h>
+
 #include "analysis/peers/fixed_peers.hpp"
+#include "analysis/peers/sized_peers.hpp"
 #include "analysis/kernel/kernel.hpp"
 #include "core/scenes/chain.hpp"
 #include "core/scenes/spring.hpp"
@@ -24,7 +27,7 @@ constexpr CvodeSettings kAdams{.adams = true};
 constexpr CvodeSettings kBdf{.adams = false};
 constexpr CvodeSettings kBdfMax2{.adams = false, .max_order = 2};
 constexpr bool kKlu = STEPLAB_HAVE_KLU;
-constexpr bool kRadau5 = STEPLAB_HAVE_RADAU5;
+constexpr bool kRadau5Built = STEPLAB_HAVE_RADAU5;
 
 // ARKODE's guide: a DIRK table for stiff problems, its defaults of orders 4 and 5 (SDIRK-5-3-4,
 // ARK5(4)8L[2]SA's implicit table), both L-stable; for non-stiff ones an explicit table, Verner's
@@ -33,57 +36,125 @@ constexpr ArkodeSettings kSdirk534{.table = ARKODE_SDIRK_5_3_4};
 constexpr ArkodeSettings kArk548{.table = ARKODE_ARK548L2SA_DIRK_8_4_5};
 constexpr ArkodeSettings kVerner65{.table = ARKODE_VERNER_8_5_6, .explicit_table = true};
 
-// A CVODE peer: implicit (Newton), its linear solver and its settings.
-constexpr PeerInfo cvode(std::string_view name, std::string_view solver, PeerScenes scenes, CvodeSettings settings,
-                         bool built = true) {
-  return {name, kCvodeLibrary, solver, scenes, true, built, settings, {}};
+// The libraries' builds in words: "7.1.1, built optimised".
+std::string build_text(const PeerInfo& p) {
+  for (const PeerBuild& b : peer_builds())
+    if (b.library == p.library()) return fmt::format("{}, {}", b.version, b.optimised ? "built optimised" : "Debian's build, not optimised");
+  return "?";
 }
-constexpr PeerInfo arkode(std::string_view name, std::string_view solver, PeerScenes scenes, ArkodeSettings settings,
-                          bool built = true) {
-  return {name, kArkodeLibrary, solver, scenes, !settings.explicit_table, built, {}, settings};
+
+std::string cvode_setup(const PeerInfo& p) {
+  const std::string_view method = p.cvode.adams ? "Adams-Moulton" : p.cvode.max_order == 2 ? "BDF of orders 1-2" : "BDF";
+  return fmt::format("{}; Newton on the analytic Jacobian, {} LU ({})", method, to_string(p.linear_solver), build_text(p));
+}
+
+std::string arkode_setup(const PeerInfo& p) {
+  const std::string_view table = p.arkode.table == ARKODE_SDIRK_5_3_4 ? "ARKStep, SDIRK-5-3-4 (L-stable, order 4, 5 stages)"
+                                 : p.arkode.table == ARKODE_ARK548L2SA_DIRK_8_4_5
+                                     ? "ARKStep, ARK5(4)8L[2]SA's DIRK table (L-stable, order 5, 8 stages)"
+                                     : "ERKStep, Verner 6(5) (explicit, 8 stages)";
+  const std::string newton = p.implicit ? fmt::format("; Newton on the analytic Jacobian, {} LU, told the scene is linear",
+                                                      to_string(p.linear_solver))
+                                        : std::string();
+  return fmt::format("{}{} ({})", table, newton, build_text(p));
+}
+
+// The runs on the fixed-size scenes the peers are compiled for (the work-precision study's):
+// `run` called on the scene made from `params`.
+template <class Run>
+State<Eigen::Dynamic> on_fixed_scene(const PeerInfo& peer, std::string_view scene, std::span<const double> params, Run&& run) {
+  const auto as_dynamic = [](const auto& end) { return State<Eigen::Dynamic>{end.x, end.v}; };
+  if (scene == Spring::name) return as_dynamic(run(Spring(params)));
+  if (scene == Chain::name) return as_dynamic(run(Chain(params)));
+  throw std::logic_error(fmt::format("{} runs on the spring and the chain only, not on the {}", peer.name, scene));
+}
+
+State<Eigen::Dynamic> odeint_fixed(const PeerInfo& peer, std::string_view scene, std::span<const double> params, double tol,
+                                   double t_end, PeerCounts& n, double* error_max) {
+  return on_fixed_scene(peer, scene, params,
+                        [&]<class S>(const S& s) { return OdeintDopri5<S>::run(s, tol, t_end, n, error_max); });
+}
+State<Eigen::Dynamic> sundials_fixed(const PeerInfo& peer, std::string_view scene, std::span<const double> params, double tol,
+                                     double t_end, PeerCounts& n, double* error_max) {
+  return on_fixed_scene(peer, scene, params,
+                        [&]<class S>(const S& s) { return SundialsDense<S>::run(s, peer, tol, t_end, n, error_max); });
+}
+State<Eigen::Dynamic> radau5_fixed(const PeerInfo& peer, std::string_view scene, std::span<const double> params, double tol,
+                                   double t_end, PeerCounts& n, double* error_max) {
+  return on_fixed_scene(peer, scene, params,
+                        [&]<class S>(const S& s) { return Radau5Fixed<S>::run(s, tol, t_end, n, error_max); });
+}
+
+constexpr PeerLibrary kSteplab{"steplab", "adaptive explicit", "#999999",
+                               [](const PeerInfo&) { return std::string("Dormand-Prince 5(4) with its own step control"); },
+                               nullptr, nullptr};
+constexpr PeerLibrary kOdeint{"Boost.Odeint", "adaptive explicit", "#999999",
+                              [](const PeerInfo&) { return std::string("controlled runge_kutta_dopri5, odeint's own controller"); },
+                              odeint_fixed, run_sized_odeint};
+constexpr PeerLibrary kCvode{kCvodeLibrary, "CVODE", "#56B4E9", cvode_setup, sundials_fixed, run_sized_sundials};
+constexpr PeerLibrary kArkode{kArkodeLibrary, "ARKODE", "#44AA99", arkode_setup, sundials_fixed, run_sized_sundials};
+constexpr PeerLibrary kRadau5{kRadau5Library, "RADAU5", "#CC6677",
+                              [](const PeerInfo&) {
+                                return std::string("Radau IIA of order 5, its own step control; Newton on the analytic Jacobian of "
+                                                   "the second-order form (M1 = N/2), dense LU (gfortran -O2)");
+                              },
+                              radau5_fixed, run_sized_radau5};
+
+using enum LinearSolver;
+using enum PeerScenes;
+
+// A CVODE peer: implicit (Newton), its linear solver, its settings and its style: by set-up,
+// whatever the linear solver (one figure has one of each), Adams sky blue, BDF indigo, BDF of
+// orders 1-2 olive (Paul Tol's), each with a point and a dash of its own.
+constexpr PeerInfo cvode(std::string_view name, LinearSolver solver, PeerScenes scenes, CvodeSettings settings, bool built = true) {
+  const PeerStyle style = settings.adams ? PeerStyle{"#56B4E9", 13, 2} : settings.max_order == 2 ? PeerStyle{"#999933", 9, 5}
+                                                                                                 : PeerStyle{"#332288", 15, 4};
+  return {name, &kCvode, solver, scenes, true, built, style, settings, {}};
+}
+// ARKODE's: SDIRK-5-3-4 teal, ARK5(4)8L[2]SA's DIRK green, Verner's explicit table dark grey.
+constexpr PeerInfo arkode(std::string_view name, LinearSolver solver, PeerScenes scenes, ArkodeSettings settings, bool built = true) {
+  const PeerStyle style = settings.explicit_table ? PeerStyle{"#444444", 4, 3} : settings.table == ARKODE_SDIRK_5_3_4
+                                                                                    ? PeerStyle{"#44AA99", 11, 1}
+                                                                                    : PeerStyle{"#117733", 12, 2};
+  return {name, &kArkode, solver, scenes, !settings.explicit_table, built, style, {}, settings};
+}
+// RADAU5 rose.
+constexpr PeerInfo radau5(std::string_view name, LinearSolver solver, PeerScenes scenes) {
+  return {name, &kRadau5, solver, scenes, true, kRadau5Built, {"#CC6677", 5, 1}, {}, {}};
 }
 
 constexpr PeerInfo kPeers[] = {
-    {"dopri5", "steplab", "", PeerScenes::Any, false, true, {}, {}},
-    {"odeint_dopri5", "Boost.Odeint", "", PeerScenes::Any, false, true, {}, {}},
-    cvode("cvode_adams_dense", "dense", PeerScenes::FixedSize, kAdams),
-    cvode("cvode_bdf_dense", "dense", PeerScenes::FixedSize, kBdf),
-    cvode("cvode_bdf_max2_dense", "dense", PeerScenes::FixedSize, kBdfMax2),
-    {"radau5_dense", kRadau5Library, "dense", PeerScenes::FixedSize, true, kRadau5, {}, {}},
-    arkode("arkode_sdirk534_dense", "dense", PeerScenes::FixedSize, kSdirk534),
-    arkode("arkode_ark548_dense", "dense", PeerScenes::FixedSize, kArk548),
-    arkode("arkode_verner65", "", PeerScenes::Any, kVerner65),
-    cvode("cvode_adams_band", "band", PeerScenes::Banded, kAdams),
-    cvode("cvode_bdf_band", "band", PeerScenes::Banded, kBdf),
-    cvode("cvode_bdf_max2_band", "band", PeerScenes::Banded, kBdfMax2),
-    {"radau5_band", kRadau5Library, "band", PeerScenes::Banded, true, kRadau5, {}, {}},
-    arkode("arkode_sdirk534_band", "band", PeerScenes::Banded, kSdirk534),
-    arkode("arkode_ark548_band", "band", PeerScenes::Banded, kArk548),
-    cvode("cvode_adams_klu", "KLU", PeerScenes::Sparse, kAdams, kKlu),
-    cvode("cvode_bdf_klu", "KLU", PeerScenes::Sparse, kBdf, kKlu),
-    cvode("cvode_bdf_max2_klu", "KLU", PeerScenes::Sparse, kBdfMax2, kKlu),
+    {"dopri5", &kSteplab, None, Any, false, true, {"#000000", 7, 1}, {}, {}},
+    {"odeint_dopri5", &kOdeint, None, Any, false, true, {"#777777", 6, 2}, {}, {}},
+    cvode("cvode_adams_dense", Dense, FixedSize, kAdams),
+    cvode("cvode_bdf_dense", Dense, FixedSize, kBdf),
+    cvode("cvode_bdf_max2_dense", Dense, FixedSize, kBdfMax2),
+    radau5("radau5_dense", Dense, FixedSize),
+    arkode("arkode_sdirk534_dense", Dense, FixedSize, kSdirk534),
+    arkode("arkode_ark548_dense", Dense, FixedSize, kArk548),
+    arkode("arkode_verner65", None, Any, kVerner65),
+    cvode("cvode_adams_band", Band, Banded, kAdams),
+    cvode("cvode_bdf_band", Band, Banded, kBdf),
+    cvode("cvode_bdf_max2_band", Band, Banded, kBdfMax2),
+    radau5("radau5_band", Band, Banded),
+    arkode("arkode_sdirk534_band", Band, Banded, kSdirk534),
+    arkode("arkode_ark548_band", Band, Banded, kArk548),
+    cvode("cvode_adams_klu", Klu, Sparse, kAdams, kKlu),
+    cvode("cvode_bdf_klu", Klu, Sparse, kBdf, kKlu),
+    cvode("cvode_bdf_max2_klu", Klu, Sparse, kBdfMax2, kKlu),
     // RADAU5 has no sparse solver: on the soft body its band solver, as wide as the grid's pattern
-    {"radau5_wideband", kRadau5Library, "band", PeerScenes::Sparse, true, kRadau5, {}, {}},
-    arkode("arkode_sdirk534_klu", "KLU", PeerScenes::Sparse, kSdirk534, kKlu),
-    arkode("arkode_ark548_klu", "KLU", PeerScenes::Sparse, kArk548, kKlu),
+    radau5("radau5_wideband", Band, Sparse),
+    arkode("arkode_sdirk534_klu", Klu, Sparse, kSdirk534, kKlu),
+    arkode("arkode_ark548_klu", Klu, Sparse, kArk548, kKlu),
 };
 
 }  // namespace
 
 std::span<const PeerInfo> peers() { return kPeers; }
 
-std::string_view cvode_method_words(const PeerInfo& p) {
-  return p.cvode.adams ? "Adams-Moulton" : p.cvode.max_order == 2 ? "BDF of orders 1-2" : "BDF";
-}
-
-std::string_view arkode_method_words(const PeerInfo& p) {
-  switch (p.arkode.table) {
-    case ARKODE_SDIRK_5_3_4: return "ARKStep, SDIRK-5-3-4 (L-stable, order 4, 5 stages)";
-    case ARKODE_ARK548L2SA_DIRK_8_4_5: return "ARKStep, ARK5(4)8L[2]SA's DIRK table (L-stable, order 5, 8 stages)";
-    case ARKODE_VERNER_8_5_6: return "ERKStep, Verner 6(5) (explicit, 8 stages)";
-    default: return "ARKODE";
-  }
-}
+bool PeerInfo::is_cvode() const { return lib == &kCvode; }
+bool PeerInfo::is_arkode() const { return lib == &kArkode; }
+bool PeerInfo::is_steplab() const { return lib == &kSteplab; }
 
 const PeerInfo* find_peer(std::string_view name) {
   const auto it = std::find_if(std::begin(kPeers), std::end(kPeers), [&](const PeerInfo& p) { return p.name == name; });
@@ -116,24 +187,15 @@ std::vector<PeerBuild> peer_builds() {
       {std::string(kCvodeLibrary), SUNDIALS_VERSION, STEPLAB_CVODE_FLAGS, STEPLAB_CVODE_OPTIMISED != 0},
       {std::string(kArkodeLibrary), SUNDIALS_VERSION, STEPLAB_CVODE_FLAGS, STEPLAB_CVODE_OPTIMISED != 0},
       {"Boost.Odeint", BOOST_LIB_VERSION, "header-only, compiled with steplab's own flags", true}};
-  if (kRadau5) out.push_back({std::string(kRadau5Library), STEPLAB_RADAU5_SOURCE, STEPLAB_RADAU5_FLAGS, true});
+  if (kRadau5Built) out.push_back({std::string(kRadau5Library), STEPLAB_RADAU5_SOURCE, STEPLAB_RADAU5_FLAGS, true});
   return out;
 }
 
 State<Eigen::Dynamic> run_fixed_peer(const PeerInfo& peer, std::string_view scene, std::span<const double> params, double tol,
                                      double t_end, PeerCounts& n, double* error_max) {
-  const auto on = [&]<class S>(const S& s) -> State<Eigen::Dynamic> {
-    State<S::dim> end;
-    if (peer.name == "odeint_dopri5") end = OdeintDopri5<S>::run(s, tol, t_end, n, error_max);
-    else if ((peer.is_cvode() || peer.is_arkode()) && (peer.linear_solver == "dense" || !peer.implicit))
-      end = SundialsDense<S>::run(s, peer, tol, t_end, n, error_max);
-    else if (peer.is_radau5() && peer.linear_solver == "dense") end = Radau5Fixed<S>::run(s, tol, t_end, n, error_max);
-    else throw std::logic_error("run_fixed_peer: " + std::string(peer.name) + " does not run on a scene of fixed size");
-    return {end.x, end.v};
-  };
-  if (scene == Spring::name) return on(Spring(params));
-  if (scene == Chain::name) return on(Chain(params));
-  throw std::logic_error("the peers run on the spring and the chain only, not on " + std::string(scene));
+  if (!peer.lib->run_fixed || peer.linear_solver == LinearSolver::Band || peer.linear_solver == LinearSolver::Klu)
+    throw std::logic_error("run_fixed_peer: " + std::string(peer.name) + " does not run on a scene of fixed size");
+  return peer.lib->run_fixed(peer, scene, params, tol, t_end, n, error_max);
 }
 
 }  // namespace steplab

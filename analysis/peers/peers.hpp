@@ -67,6 +67,13 @@ inline constexpr std::string_view kCvodeLibrary = "SUNDIALS CVODE";
 inline constexpr std::string_view kArkodeLibrary = "SUNDIALS ARKODE";
 inline constexpr std::string_view kRadau5Library = "RADAU5";
 
+// The linear solver of an implicit peer's Newton iteration (None for an explicit one).
+enum class LinearSolver { None, Dense, Band, Klu };
+constexpr std::string_view to_string(LinearSolver s) {
+  constexpr std::string_view words[] = {"", "dense", "band", "KLU"};
+  return words[static_cast<int>(s)];
+}
+
 // ARKODE's stepper and table (analysis/peers/arkode.hpp): an ARKODE_DIRKTableID for ARKStep, an
 // ARKODE_ERKTableID for ERKStep.
 struct ArkodeSettings {
@@ -74,24 +81,49 @@ struct ArkodeSettings {
   bool explicit_table = false;
 };
 
+struct PeerInfo;
+struct PeerCounts;
+struct SceneKernel;
+struct PeerFrames;  // analysis/peers/sized_peers.hpp
+
+// A peer's library, one row each (analysis/peers/peers.cpp): its name, the group the report draws
+// its implicit peers under (the crossover map's, a colour each), its set-up in words (the report's
+// table of peers) and the code that runs it on a scene of fixed size (run_fixed_peer) and on one
+// of run-time size (run_sized_peer); a null run: not on such scenes.
+using FixedPeerRun = State<Eigen::Dynamic> (*)(const PeerInfo& peer, std::string_view scene, std::span<const double> params,
+                                               double tol, double t_end, PeerCounts& n, double* error_max);
+using SizedPeerRun = State<Eigen::Dynamic> (*)(const PeerInfo& peer, const SceneKernel& scene, const void* made, double tol,
+                                               double t_end, PeerCounts& n, const PeerFrames& frames);
+struct PeerLibrary {
+  std::string_view name;   // "SUNDIALS CVODE"
+  std::string_view group;  // "CVODE"
+  std::string_view hue;    // its implicit peers' colour in the map (Paul Tol's colours the families leave free)
+  std::string (*setup)(const PeerInfo& p);
+  FixedPeerRun run_fixed;
+  SizedPeerRun run_sized;
+};
+
+// How a peer is drawn in every figure: colour, gnuplot point type and dash.
+struct PeerStyle {
+  std::string_view colour;
+  int point, dash;
+};
+
 struct PeerInfo {
   std::string_view name;
-  std::string_view library;        // "steplab", "Boost.Odeint", kCvodeLibrary, kArkodeLibrary, kRadau5Library
-  std::string_view linear_solver;  // "" for an explicit solver; dense, band, KLU
+  const PeerLibrary* lib;
+  LinearSolver linear_solver;
   PeerScenes scenes;
   bool implicit;
   bool built;                      // compiled into this steplab (CVODE's KLU solver, RADAU5 may not be)
+  PeerStyle style;
   CvodeSettings cvode;             // CVODE's only
   ArkodeSettings arkode;           // ARKODE's only
-  constexpr bool is_cvode() const { return library == kCvodeLibrary; }
-  constexpr bool is_arkode() const { return library == kArkodeLibrary; }
-  constexpr bool is_radau5() const { return library == kRadau5Library; }
+  constexpr std::string_view library() const { return lib->name; }
+  bool is_cvode() const;           // the two SUNDIALS integrators take different calls
+  bool is_arkode() const;
+  bool is_steplab() const;         // steplab's own (dopri5)
 };
-
-// "Adams-Moulton", "BDF", "BDF of orders 1-2": a CVODE peer's method in words; an ARKODE peer's
-// table ("SDIRK-5-3-4, L-stable, order 4", ...).
-std::string_view cvode_method_words(const PeerInfo& p);
-std::string_view arkode_method_words(const PeerInfo& p);
 
 // Every peer, steplab's dopri5 first; the ones of a scene (PeerScenes::Any ones included).
 std::span<const PeerInfo> peers();

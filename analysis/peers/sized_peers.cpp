@@ -240,16 +240,28 @@ State<Eigen::Dynamic> sundials_blocked(const MadeScene& s, const PeerInfo& peer,
 
 }  // namespace
 
+State<Eigen::Dynamic> run_sized_odeint(const PeerInfo&, const SceneKernel& scene, const void* made, double tol, double t_end,
+                                       PeerCounts& n, const PeerFrames& frames) {
+  return odeint_dopri5({*scene.made, made}, tol, t_end, n, frames);
+}
+
+// CVODE or ARKODE, explicit or with the peer's linear solver: band on z interleaved, KLU on z blocked.
+State<Eigen::Dynamic> run_sized_sundials(const PeerInfo& peer, const SceneKernel& scene, const void* made, double tol,
+                                         double t_end, PeerCounts& n, const PeerFrames& frames) {
+  const MadeScene s{*scene.made, made};
+  if (peer.linear_solver == LinearSolver::Band) return sundials_band(s, scene.jacobian_bandwidth, peer, tol, t_end, n, frames);
+  return sundials_blocked(s, peer, tol, t_end, n, frames);
+}
+
+State<Eigen::Dynamic> run_sized_radau5(const PeerInfo&, const SceneKernel& scene, const void* made, double tol, double t_end,
+                                       PeerCounts& n, const PeerFrames& frames) {
+  return Radau5Sized::run({*scene.made, made}, scene.jacobian_bandwidth, tol, t_end, n, frames);
+}
+
 State<Eigen::Dynamic> run_sized_peer(const PeerInfo& peer, const SceneKernel& scene, const void* made, double tol, double t_end,
                                      PeerCounts& n, const PeerFrames& frames) {
-  if (!scene.made || !peer_runs_on(peer, peer_scenes(scene))) not_here(peer, scene);
-  const MadeScene s{*scene.made, made};
-  if (peer.name == "odeint_dopri5") return odeint_dopri5(s, tol, t_end, n, frames);
-  if (peer.is_arkode() && !peer.implicit) return sundials_blocked(s, peer, tol, t_end, n, frames);
-  if (peer.is_radau5() && peer.built) return Radau5Sized::run(s, scene.jacobian_bandwidth, tol, t_end, n, frames);
-  if (peer.linear_solver == "band") return sundials_band(s, scene.jacobian_bandwidth, peer, tol, t_end, n, frames);
-  if (peer.linear_solver == "KLU" && peer.built) return sundials_blocked(s, peer, tol, t_end, n, frames);
-  not_here(peer, scene);
+  if (!scene.made || !peer.built || !peer.lib->run_sized || !peer_runs_on(peer, peer_scenes(scene))) not_here(peer, scene);
+  return peer.lib->run_sized(peer, scene, made, tol, t_end, n, frames);
 }
 
 State<Eigen::Dynamic> run_sized_peer(const PeerInfo& peer, std::size_t scene, std::span<const double> params, double tol,

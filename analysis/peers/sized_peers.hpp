@@ -37,6 +37,13 @@ struct PeerFrames {
 // table), on the scene `made` by scene.make(params).
 State<Eigen::Dynamic> run_sized_peer(const PeerInfo& peer, const SceneKernel& scene, const void* made, double tol, double t_end,
                                      PeerCounts& n, const PeerFrames& frames = {});
+// The libraries' code behind it (their rows, analysis/peers/peers.cpp).
+State<Eigen::Dynamic> run_sized_odeint(const PeerInfo& peer, const SceneKernel& scene, const void* made, double tol, double t_end,
+                                       PeerCounts& n, const PeerFrames& frames);
+State<Eigen::Dynamic> run_sized_sundials(const PeerInfo& peer, const SceneKernel& scene, const void* made, double tol,
+                                         double t_end, PeerCounts& n, const PeerFrames& frames);
+State<Eigen::Dynamic> run_sized_radau5(const PeerInfo& peer, const SceneKernel& scene, const void* made, double tol, double t_end,
+                                       PeerCounts& n, const PeerFrames& frames);
 // The same on scene `scene` of the table with these parameters, made here.
 State<Eigen::Dynamic> run_sized_peer(const PeerInfo& peer, std::size_t scene, std::span<const double> params, double tol,
                                      double t_end, PeerCounts& n);

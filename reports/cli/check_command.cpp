@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/defaults.hpp"
 #include "reports/cli/commands.hpp"
 #include "reports/data/inputs.hpp"
 
@@ -57,9 +58,10 @@ ClaimLine energy_line(const EnergyCheck& e, const MethodInfo& claims) {
 
 ClaimLine orbit_line(const OrbitCheck& o, const MethodInfo& claims) {
   const std::string growth = o.fitted ? fmt::format("grows as t^{:.2f} [{:.2f}, {:.2f}]", o.growth, o.lo, o.hi) : "has no fitted growth";
-  return {o.holds, fmt::format("{}: on Kepler's orbit over {:g} periods of {} steps the energy error {}, largest {}{}: {} "
+  return {o.holds, fmt::format("{}: on {} over {:g} periods of {} steps the energy error {}, largest {}{}: {} "
                                "(bounded means the interval below 0.5 or round-off, and the orbit kept: error < {})",
-                               claims.symplectic ? "symplectic" : "not symplectic", kOrbitPeriods, kOrbitStepsPerPeriod, growth,
+                               claims.symplectic ? "symplectic" : "not symplectic", scene_kernel(*find_scene(kLongTimeScene)).title, kOrbitPeriods,
+                               kOrbitStepsPerPeriod, growth,
                                std::isinf(o.error) ? "- it blew up" : fmt::format("{:.3g}", o.error), o.round_off ? " (round-off)" : "",
                                o.bounded ? "bounded" : "not bounded", kOrbitKept)};
 }

@@ -272,7 +272,7 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
                      "errors against a reference solution (dopri5 at rtol 1e-13) even where an exact one exists; "
                      "a scene without one always uses it");
   conv_cmd->add_option("--error", conv.error, "error the order is fitted to: final, max, rms")->capture_default_str();
-  conv_cmd->add_option("--threads", conv.threads, "worker threads, 0 = all cores")->capture_default_str();
+  add_threads_option(conv_cmd, conv.threads);
   add_lanes_option(conv_cmd, conv.lanes);
   add_shard_option(conv_cmd, conv.shard);
   conv.settings.add_to(conv_cmd);
@@ -298,7 +298,7 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   coll_cmd->add_option("--dts", coll.dts, "steps for the bounce")->capture_default_str();
   coll_cmd->add_option("--t-end", coll.t_end, "simulated time")->capture_default_str();
   coll_cmd->add_option("--triangle-dt", coll.triangle_dt, "step for the falling triangle")->capture_default_str();
-  coll_cmd->add_option("--threads", coll.threads, "worker threads, 0 = all cores")->capture_default_str();
+  add_threads_option(coll_cmd, coll.threads);
   add_shard_option(coll_cmd, coll.shard);
   coll_cmd->add_option("--json", coll.json, fmt::format("write JSON (schema {}) to this file", schema::collision));
 
@@ -326,7 +326,7 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   CLI::App* check_cmd = app.add_subcommand("check", "is a method what its row in the table claims? One line per claim, "
                                                     "PASS or FAIL; exit 0 if all hold, 1 if one fails");
   check_cmd->add_option("--method", check.method, "integrator: " + method_names());
-  check_cmd->add_option("--threads", check.threads, "worker threads, 0 = all cores")->capture_default_str();
+  add_threads_option(check_cmd, check.threads);
 
   MergeArgs merge;
   add_merge_command(app, merge);

@@ -2,6 +2,7 @@
 // (before writing anything) and returns the exit status.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
@@ -101,6 +102,8 @@ unsigned resolve_thread_count(const std::string& text);
 int resolve_lanes(const std::string& text);
 // --lanes on a study command.
 void add_lanes_option(CLI::App* app, std::string& lanes);
+// --threads on a command (`help`: where a study times its runs one at a time, it says so).
+void add_threads_option(CLI::App* app, std::string& threads, const std::string& help = "worker threads, 0 = all cores");
 
 }  // namespace steplab
 
@@ -162,8 +165,7 @@ struct LongTimeArgs {
   SceneArgs scene;  // add_long_time_command makes Kepler's orbit the default
   SettingsArgs settings;
   std::string methods;  // empty: every ODE method that runs on the scene
-  std::string steps_per_period;  // empty: the scene's default (analysis/studies/defaults.hpp)
-  std::string periods = "1e5", samples_per_decade = "8", fit_from = "10";
+  std::map<std::string, std::string> params;  // as typed, by name (long_time_params())
   std::string threads = "0";
   std::string shard;  // --shard i/N (reports/cli/parts.hpp)
   std::string json;

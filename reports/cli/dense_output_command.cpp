@@ -32,7 +32,7 @@ CLI::App* add_dense_output_command(CLI::App* study, DenseOutputArgs& a) {
   cmd->add_option("--dt-min", a.dt_min, "smallest step of the sweep")->capture_default_str();
   cmd->add_option("--points", a.points, "steps in the sweep, 3 .. 100")->capture_default_str();
   cmd->add_option("--outputs", a.outputs, "output times, evenly spaced over [0, t_end], 2 .. 100000")->capture_default_str();
-  cmd->add_option("--threads", a.threads, "worker threads, 0 = all cores")->capture_default_str();
+  add_threads_option(cmd, a.threads);
   add_shard_option(cmd, a.shard);
   cmd->add_option("--json", a.json, fmt::format("write JSON (schema {}) to this file", schema::dense_output));
   return cmd;
@@ -59,13 +59,8 @@ int dense_output_command(DenseOutputArgs& a, Context& ctx) {
   c.points = static_cast<int>(parse_count("--points", a.points, 3, 100));
   c.outputs = static_cast<int>(parse_count("--outputs", a.outputs, 2, 100'000));
   c.workers = ctx.workers(resolve_thread_count(a.threads));
-  begin_shard(ctx, a.shard, a.json, false);
-  if (ctx.stop_after_validation(a.json)) return 0;
-  const DenseOutputResult r = dense_output_study(c);
-  if (finish_shard(ctx, a.json)) return 0;
-  std::fputs(dense_output_table(r).c_str(), stdout);
-  if (!a.json.empty()) write_atomic(a.json, dense_output_json(r).dump(1) + "\n");
-  return 0;
+  return run_study(ctx, a.shard, a.json, false, [&] { return dense_output_study(c); },
+                   [](const DenseOutputResult& r) { return dense_output_table(r); }, [](const DenseOutputResult& r) { return dense_output_json(r); });
 }
 
 }  // namespace steplab

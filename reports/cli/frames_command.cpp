@@ -74,7 +74,7 @@ CLI::App* add_frames_command(CLI::App* study, FramesArgs& a) {
   cmd->add_option("--t-end", a.t_end, "simulated time (a whole number of frames)")->capture_default_str();
   cmd->add_option("--budget", a.budget, "substeps x sweeps (or CG iterations) a frame: every divisor of it as the substeps "
                                         "(1 .. 10000)")->capture_default_str();
-  cmd->add_option("--threads", a.threads, "worker threads (timings run one at a time)")->capture_default_str();
+  add_threads_option(cmd, a.threads, "worker threads (timings run one at a time)");
   cmd->add_flag("--no-timing", a.no_timing, "cost by spring visits a frame only (reproducible byte for byte)");
   cmd->add_flag("--no-orders", a.no_orders, "leave out the order in h of the methods on springs");
   add_shard_option(cmd, a.shard);
@@ -104,13 +104,8 @@ int frames_command(FramesArgs& a, Context& ctx) {
   c.timing = !a.no_timing;
   c.orders = !a.no_orders;
   c.workers = ctx.workers(resolve_thread_count(a.threads));
-  begin_shard(ctx, a.shard, a.json, c.timing);
-  if (ctx.stop_after_validation(a.json)) return 0;
-  const FramesResult r = frames_study(c);
-  if (finish_shard(ctx, a.json)) return 0;
-  std::fputs(frames_table(r).c_str(), stdout);
-  if (!a.json.empty()) write_atomic(a.json, frames_json(r).dump(1) + "\n");
-  return 0;
+  return run_study(ctx, a.shard, a.json, c.timing, [&] { return frames_study(c); },
+                   [](const FramesResult& r) { return frames_table(r); }, [](const FramesResult& r) { return frames_json(r); });
 }
 
 }  // namespace steplab

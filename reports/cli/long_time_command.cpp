@@ -29,13 +29,9 @@ CLI::App* add_long_time_command(CLI::App* study, LongTimeArgs& a) {
   a.scene.scene = std::string(kLongTimeScene);
   a.scene.add_to(cmd, has_invariants);
   cmd->add_option("--methods", a.methods, "comma-separated methods (default every numerical method that runs on the scene)");
-  cmd->add_option("--steps-per-period", a.steps_per_period, "comma-separated steps a period: the step is the period over each "
-                                                            "(1 .. 1000000; default 500 on kepler, 100 elsewhere)");
-  cmd->add_option("--periods", a.periods, "how long, in periods (1 .. 1e7)")->capture_default_str();
-  cmd->add_option("--samples-per-decade", a.samples_per_decade, "log-spaced sample times a decade (1 .. 100)")->capture_default_str();
-  cmd->add_option("--fit-from", a.fit_from, "the growth exponents are fitted from this many periods on")->capture_default_str();
+  add_params(cmd, long_time_params(), a.params, default_long_time_config(*find_scene(kLongTimeScene)));
   a.settings.add_to(cmd);
-  cmd->add_option("--threads", a.threads, "worker threads, 0 = all cores")->capture_default_str();
+  add_threads_option(cmd, a.threads);
   add_shard_option(cmd, a.shard);
   cmd->add_option("--json", a.json, fmt::format("write JSON (schema {}) to this file", schema::long_time));
   return cmd;
@@ -53,29 +49,11 @@ int long_time_command(LongTimeArgs& a, Context& ctx) {
                                  scene_name(scene)));
   if (!a.methods.empty()) c.methods = resolve_methods(a.methods, false, scene);
   c.settings = a.settings.resolve(c.methods);
-  if (!a.steps_per_period.empty()) {
-    c.steps_per_period.clear();
-    for (const std::string& n : split_list(a.steps_per_period))
-      c.steps_per_period.push_back(static_cast<int>(parse_count("--steps-per-period", n, 1, 1'000'000)));
-  }
-  c.periods = parse_number("--periods", a.periods, Bound::Positive);
-  if (c.periods < 1 || c.periods > 1e7)
-    throw UsageError(fmt::format("--periods {} is out of range; accepted: 1 .. 1e7", a.periods));
-  for (int n : c.steps_per_period)
-    if (c.periods * n > 1e10)
-      throw UsageError(fmt::format("--periods {} at --steps-per-period {} is {:g} steps; accepted: at most 1e10", a.periods, n, c.periods * n));
-  c.samples_per_decade = static_cast<int>(parse_count("--samples-per-decade", a.samples_per_decade, 1, 100));
-  c.fit_from = parse_number("--fit-from", a.fit_from, Bound::Positive);
-  if (c.fit_from >= c.periods)
-    throw UsageError(fmt::format("--fit-from {} is not below --periods {}; accepted: 0 < fit-from < periods", a.fit_from, a.periods));
+  read_params(long_time_params(), a.params, c);
+  check_long_time(c, [](std::string_view p) { return "--" + std::string(p); });
   c.workers = ctx.workers(resolve_thread_count(a.threads));
-  begin_shard(ctx, a.shard, a.json, false);
-  if (ctx.stop_after_validation(a.json)) return 0;
-  const LongTimeResult r = long_time_study(c);
-  if (finish_shard(ctx, a.json)) return 0;
-  std::fputs(long_time_table(r).c_str(), stdout);
-  if (!a.json.empty()) write_atomic(a.json, long_time_json(r).dump(1) + "\n");
-  return 0;
+  return run_study(ctx, a.shard, a.json, false, [&] { return long_time_study(c); },
+                   [](const LongTimeResult& r) { return long_time_table(r); }, [](const LongTimeResult& r) { return long_time_json(r); });
 }
 
 }  // namespace steplab

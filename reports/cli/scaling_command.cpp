@@ -50,7 +50,7 @@ CLI::App* add_scaling_command(CLI::App* study, ScalingArgs& a) {
                                                                 "step's state (no output between steps), as in an animation loop");
   cmd->add_option("--max-steps", a.max_steps, "a search tries no step that needs more steps than this (default 2000000 "
                                               "on the rope, 200000 on the soft body, whose implicit steps cost a sparse solve each)");
-  cmd->add_option("--threads", a.threads, "worker threads for the searches (timings run one at a time)")->capture_default_str();
+  add_threads_option(cmd, a.threads, "worker threads for the searches (timings run one at a time)");
   cmd->add_flag("--no-timing", a.no_timing, "cost by force evaluations only (reproducible byte for byte)");
   cmd->add_flag("--no-peers", a.no_peers, "steplab's fixed-step methods only (no dopri5, CVODE, Boost.Odeint)");
   add_shard_option(cmd, a.shard);
@@ -109,13 +109,8 @@ int scaling_command(ScalingArgs& a, Context& ctx) {
   if (!a.max_steps.empty()) c.max_steps = parse_count("--max-steps", a.max_steps, 1, 1'000'000'000);
   c.workers = ctx.workers(resolve_thread_count(a.threads));
   c.timing = !a.no_timing;
-  begin_shard(ctx, a.shard, a.json, c.timing);
-  if (ctx.stop_after_validation(a.json)) return 0;
-  const ScalingResult r = scaling_study(c);
-  if (finish_shard(ctx, a.json)) return 0;
-  std::fputs(scaling_table(r).c_str(), stdout);
-  if (!a.json.empty()) write_atomic(a.json, scaling_json(r).dump(1) + "\n");
-  return 0;
+  return run_study(ctx, a.shard, a.json, c.timing, [&] { return scaling_study(c); },
+                   [](const ScalingResult& r) { return scaling_table(r); }, [](const ScalingResult& r) { return scaling_json(r); });
 }
 
 }  // namespace steplab

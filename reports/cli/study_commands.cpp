@@ -61,7 +61,7 @@ Solvers resolve_solvers(const std::string& list, const std::vector<std::string>&
     }
     if (!peer->built)
       throw UsageError(fmt::format("--methods '{}' is not built into this steplab (its {} solver is missing from SUNDIALS); "
-                                   "accepted here: {}", name, peer->linear_solver, fmt::join(available, ", ")));
+                                   "accepted here: {}", name, to_string(peer->linear_solver), fmt::join(available, ", ")));
     if (std::find(available.begin(), available.end(), name) == available.end())
       throw UsageError(fmt::format("--methods '{}' does not run on the {}; accepted adaptive solvers there: {}", name, scene,
                                    fmt::join(available, ", ")));
@@ -88,6 +88,10 @@ int resolve_lanes(const std::string& text) {
                                  "2 (SSE2){}{}",
                                  text, cpu_has_width(4) ? ", 4 (AVX2)" : "", cpu_has_width(8) ? ", 8 (AVX-512)" : ""));
   return static_cast<int>(n);
+}
+
+void add_threads_option(CLI::App* app, std::string& threads, const std::string& help) {
+  app->add_option("--threads", threads, help)->capture_default_str();
 }
 
 void add_lanes_option(CLI::App* app, std::string& lanes) {
@@ -163,14 +167,8 @@ int convergence_command(ConvergenceArgs& a, Context& ctx) {
     if (!a.json.empty()) write_atomic(a.json, order_reduction_json(r).dump(1) + "\n");
     return 0;
   }
-  begin_shard(ctx, a.shard, a.json, c.timing);
-  if (ctx.stop_after_validation(a.json)) return 0;
-
-  const ConvergenceResult r = convergence_study(c);
-  if (finish_shard(ctx, a.json)) return 0;
-  std::fputs(convergence_table(r).c_str(), stdout);
-  if (!a.json.empty()) write_atomic(a.json, convergence_json(r).dump(1) + "\n");
-  return 0;
+  return run_study(ctx, a.shard, a.json, c.timing, [&] { return convergence_study(c); },
+                   [](const ConvergenceResult& r) { return convergence_table(r); }, [](const ConvergenceResult& r) { return convergence_json(r); });
 }
 
 }  // namespace steplab
@@ -216,7 +214,7 @@ void add_stability_options(CLI::App* app, StabilityArgs& a, bool sweep, bool map
     app->add_option("--map-dt-min", a.map_dt_min, "map: smallest step")->capture_default_str();
     app->add_option("--map-dt-max", a.map_dt_max, "map: largest step")->capture_default_str();
   }
-  app->add_option("--threads", a.threads, "worker threads, 0 = all cores")->capture_default_str();
+  add_threads_option(app, a.threads);
   add_lanes_option(app, a.lanes);
   add_shard_option(app, a.shard);
   app->add_option("--json", a.json, map ? fmt::format("write JSON (schema {} on the spring, {} on a scene with modes) to this "
@@ -228,13 +226,9 @@ int damping_command(StabilityArgs& a, Context& ctx) {
   StabilityConfig c = stability_config(a, ctx);
   c.sweep_dts = number_list("--dts", a.dts, Bound::Positive);
   if (!a.dampings.empty()) c.sweep_dampings = number_list("--dampings", a.dampings, Bound::NonNegative);
-  begin_shard(ctx, a.shard, a.json, false);
-  if (ctx.stop_after_validation(a.json)) return 0;
-  const std::vector<SweepRow> rows = damping_sweep(c);
-  if (finish_shard(ctx, a.json)) return 0;
-  std::fputs(sweep_table(rows).c_str(), stdout);
-  if (!a.json.empty()) write_atomic(a.json, stability_json(c.params, {}, rows, nullptr).dump(1) + "\n");
-  return 0;
+  using Rows = std::vector<SweepRow>;
+  return run_study(ctx, a.shard, a.json, false, [&] { return damping_sweep(c); }, [](const Rows& r) { return sweep_table(r); },
+                   [&](const Rows& r) { return stability_json(c.params, {}, r, nullptr); });
 }
 
 namespace {
@@ -255,13 +249,10 @@ int mode_stability_command(StabilityArgs& a, Context& ctx) {
   c.methods = resolve_methods(a.methods, false, c.scene);
   c.workers = ctx.workers(resolve_thread_count(a.threads));
   resolve_lanes(a.lanes);  // checked; the runs of a scene of run-time size go one at a time
-  begin_shard(ctx, a.shard, a.json, false);
-  if (ctx.stop_after_validation(a.json)) return 0;
-  const std::vector<ModeThresholdRow> rows = mode_threshold_study(c);
-  if (finish_shard(ctx, a.json)) return 0;
-  std::fputs(mode_thresholds_table(scene_name(c.scene), rows).c_str(), stdout);
-  if (!a.json.empty()) write_atomic(a.json, mode_stability_json(c, rows).dump(1) + "\n");
-  return 0;
+  using Rows = std::vector<ModeThresholdRow>;
+  return run_study(ctx, a.shard, a.json, false, [&] { return mode_threshold_study(c); },
+                   [&](const Rows& r) { return mode_thresholds_table(scene_name(c.scene), r); },
+                   [&](const Rows& r) { return mode_stability_json(c, r); });
 }
 
 }  // namespace
@@ -282,15 +273,10 @@ int stability_command(StabilityArgs& a, Context& ctx) {
   c.map_dt_max = parse_number("--map-dt-max", a.map_dt_max, Bound::Positive);
   if (c.map_dt_min >= c.map_dt_max)
     throw UsageError(fmt::format("--map-dt-min {} is not below --map-dt-max {}; accepted: min < max", c.map_dt_min, c.map_dt_max));
-  begin_shard(ctx, a.shard, a.json, false);
-  if (ctx.stop_after_validation(a.json)) return 0;
-  const std::vector<ThresholdRow> rows = threshold_study(c);
-  const StabilityMap map = stability_map(c);
-  if (finish_shard(ctx, a.json)) return 0;
-  std::fputs(thresholds_table(rows).c_str(), stdout);
-  std::fputs(("\n" + map_summary(map)).c_str(), stdout);
-  if (!a.json.empty()) write_atomic(a.json, stability_json(c.params, rows, {}, &map).dump(1) + "\n");
-  return 0;
+  using Result = std::pair<std::vector<ThresholdRow>, StabilityMap>;
+  return run_study(ctx, a.shard, a.json, false, [&] { return Result{threshold_study(c), stability_map(c)}; },
+                   [](const Result& r) { return thresholds_table(r.first) + "\n" + map_summary(r.second); },
+                   [&](const Result& r) { return stability_json(c.params, r.first, {}, &r.second); });
 }
 
 int amplitude_command(const std::vector<double>& spring_params, double step, const Context& ctx) {
@@ -337,13 +323,8 @@ int collision_command(CollisionArgs& a, Context& ctx) {
   for (double dt : c.dts) step_count(c.t_end, dt);
   step_count(c.t_end, c.triangle_dt);
   c.workers = ctx.workers(resolve_thread_count(a.threads));
-  begin_shard(ctx, a.shard, a.json, false);
-  if (ctx.stop_after_validation(a.json)) return 0;
-  const CollisionResult r = collision_study(c);
-  if (finish_shard(ctx, a.json)) return 0;
-  std::fputs(collision_table(r).c_str(), stdout);
-  if (!a.json.empty()) write_atomic(a.json, collision_json(r).dump(1) + "\n");
-  return 0;
+  return run_study(ctx, a.shard, a.json, false, [&] { return collision_study(c); },
+                   [](const CollisionResult& r) { return collision_table(r); }, [](const CollisionResult& r) { return collision_json(r); });
 }
 
 }  // namespace steplab

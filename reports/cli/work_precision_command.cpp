@@ -28,8 +28,7 @@ CLI::App* add_work_precision_command(CLI::App* study, WorkPrecisionArgs& a) {
   cmd->add_option("--points", a.points, "fixed-step methods: steps in each scene's dt sweep, 3 .. 100")->capture_default_str();
   cmd->add_option("--stiffnesses", a.stiffnesses, "comma-separated k2 of the stiffness sweep (the chain's k1 is 5)")
       ->capture_default_str();
-  cmd->add_option("--threads", a.threads, "worker threads for the error runs (timings run one at a time)")
-      ->capture_default_str();
+  add_threads_option(cmd, a.threads, "worker threads for the error runs (timings run one at a time)");
   add_lanes_option(cmd, a.lanes);
   add_shard_option(cmd, a.shard);
   cmd->add_flag("--no-timing", a.no_timing, "cost by force evaluations only (reproducible byte for byte)");
@@ -47,13 +46,8 @@ int work_precision_command(WorkPrecisionArgs& a, Context& ctx) {
   c.workers = ctx.workers(resolve_thread_count(a.threads));
   resolve_lanes(a.lanes);  // checked; the work-precision runs go one at a time
   c.timing = !a.no_timing;
-  begin_shard(ctx, a.shard, a.json, c.timing);
-  if (ctx.stop_after_validation(a.json)) return 0;
-  const WorkPrecisionResult r = work_precision_study(c);
-  if (finish_shard(ctx, a.json)) return 0;
-  std::fputs(work_precision_table(r).c_str(), stdout);
-  if (!a.json.empty()) write_atomic(a.json, work_precision_json(r).dump(1) + "\n");
-  return 0;
+  return run_study(ctx, a.shard, a.json, c.timing, [&] { return work_precision_study(c); },
+                   [](const WorkPrecisionResult& r) { return work_precision_table(r); }, [](const WorkPrecisionResult& r) { return work_precision_json(r); });
 }
 
 }  // namespace steplab

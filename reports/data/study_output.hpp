@@ -108,10 +108,16 @@ std::string frame_settings_text(const FrameSetup& s);
 }  // namespace steplab
 
 #include "analysis/studies/long_time.hpp"
+#include "reports/data/study_params.hpp"
 
 namespace steplab {
 Json long_time_json(const LongTimeResult& r);  // schema steplab.long_time/1 (reports/data/long_time_output.cpp)
 std::string long_time_table(const LongTimeResult& r);
+// Its parameters (the command's options, the report's long_time keys) and the rules between
+// them: fit-from below periods, at most 1e10 steps a run. `name` gives a parameter's name as
+// the user wrote it ("--periods", "config: long_time.periods").
+std::span<const StudyParam<LongTimeConfig>> long_time_params();
+void check_long_time(const LongTimeConfig& c, std::string (*name)(std::string_view param));
 // "0.02 [0.01, 0.03]" for a fitted growth exponent, "-" where there were too few samples.
 std::string growth_text(const GrowthFit& g);
 }  // namespace steplab

@@ -45,15 +45,13 @@ std::string shade(std::string_view hue, int order) {
 std::string solver_hue(std::string_view solver) {
   if (const auto m = find_method(solver)) return std::string(family_hue(method_info(*m).family));
   const PeerInfo* p = find_peer(solver);
-  if (!p || !p->implicit) return "#999999";
-  return p->is_cvode() ? "#56B4E9" : p->is_arkode() ? "#44AA99" : "#CC6677";
+  return p && p->implicit ? std::string(p->lib->hue) : "#999999";
 }
 
 std::string solver_group(std::string_view solver) {
   if (const auto m = find_method(solver)) return std::string(to_string(method_info(*m).family));
   const PeerInfo* p = find_peer(solver);
-  if (!p || !p->implicit) return "adaptive explicit";
-  return p->is_cvode() ? "CVODE" : p->is_arkode() ? "ARKODE" : "RADAU5";
+  return p && p->implicit ? std::string(p->lib->group) : "adaptive explicit";
 }
 
 MethodStyle method_style(std::size_t method) {
@@ -99,25 +97,11 @@ std::string styles_gp() {
     if (!names.empty()) names += ' ';
     names += name(m);
   }
-  // the adaptive solvers (analysis/peers/peers.hpp): steplab's dopri5 black, odeint's grey, and CVODE's
-  // three set-ups in colours the families leave free, Adams sky blue, BDF indigo, BDF of orders
-  // 1-2 olive (Paul Tol's), whatever the linear solver (one figure has one of each); each with a
-  // point and a dash of its own
+  // the adaptive solvers, each in its row's style (analysis/peers/peers.cpp)
   std::string adaptive;
   std::size_t lt = method_count();
-  // ARKODE's: SDIRK-5-3-4 teal, ARK5(4)8L[2]SA's DIRK green, Verner's explicit table dark grey;
-  // RADAU5 rose.
   for (const PeerInfo& p : peers()) {
-    const bool cvode = p.is_cvode();
-    const MethodStyle st = p.name == "dopri5"          ? MethodStyle{"#000000", 7, 1}
-                           : p.is_radau5()             ? MethodStyle{"#CC6677", 5, 1}
-                           : p.is_arkode()             ? (p.arkode.explicit_table       ? MethodStyle{"#444444", 4, 3}
-                                                          : p.name.starts_with("arkode_sdirk") ? MethodStyle{"#44AA99", 11, 1}
-                                                                                          : MethodStyle{"#117733", 12, 2})
-                           : !cvode                    ? MethodStyle{"#777777", 6, 2}
-                           : p.cvode.adams             ? MethodStyle{"#56B4E9", 13, 2}
-                           : p.cvode.max_order == 2    ? MethodStyle{"#999933", 9, 5}
-                                                       : MethodStyle{"#332288", 15, 4};
+    const PeerStyle& st = p.style;
     out += fmt::format("set linetype {} lc rgb \"{}\" pt {} dt {} lw 1.5 ps 0.6  # {}\n", ++lt, st.colour, st.point, st.dash, p.name);
     names += fmt::format(" {}", p.name);
   }

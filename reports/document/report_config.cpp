@@ -275,10 +275,12 @@ ReportConfig report_config_from_json(const Json& user, const ReportConfig& base)
   c.triangle_dt = num(co["triangle_dt"], "collision.triangle_dt", Bound::Positive);
   for (double dt : c.collision_dts) step_count(c.collision_t_end, dt);
   step_count(c.collision_t_end, c.triangle_dt);
-  c.long_time_periods = num(j["long_time"]["periods"], "long_time.periods", Bound::Positive);
-  if (c.long_time_periods < 20 || c.long_time_periods > 1e6)
-    throw UsageError(fmt::format("config: long_time.periods {} is out of range; accepted: 20 .. 1e6 (the growth is fitted from 10 periods on)",
-                                 c.long_time_periods));
+  LongTimeConfig long_time = default_long_time_config(scene_index(kLongTimeScene));  // the study's rules, as its command has them
+  param_from_json(long_time_params(), "periods", j["long_time"]["periods"], "config: long_time.periods", long_time);
+  check_long_time(long_time, [](std::string_view p) {
+    return p == "periods" ? std::string("config: long_time.periods") : "the long-time study's " + std::string(p);
+  });
+  c.long_time_periods = long_time.periods;
   const Json& sc = j["scaling"];
   for (ReportSizes& s : c.scaling) {  // each within its size parameter's range
     const SceneKernel& k = scene_kernel(s.scene);

@@ -8,7 +8,6 @@
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
-#include "analysis/peers/peers.hpp"
 
 namespace steplab {
 
@@ -123,13 +122,6 @@ std::vector<std::size_t> family_members(const std::vector<std::size_t>& methods,
 bool family_order_less(std::size_t a, std::size_t b) {
   const MethodInfo &x = method_info(a), &y = method_info(b);
   return std::tuple(x.family, x.order, a) < std::tuple(y.family, y.order, b);
-}
-
-std::string cvode_build_text() {
-  for (const PeerBuild& b : peer_builds())
-    if (b.library == kCvodeLibrary)
-      return fmt::format("{}, {}", b.version, b.optimised ? "built optimised" : "Debian's build, not optimised");
-  return "?";
 }
 
 }  // namespace steplab

@@ -29,8 +29,6 @@ std::string words(const std::vector<double>& v);          // gnuplot word list: 
 std::string join(const std::vector<double>& v);           // CLI list: "a,b,c"
 std::string join(const std::vector<int>& v);
 std::string method_words(const std::vector<std::size_t>& methods);
-// "6.4.1, built optimised": the CVODE the peers ran on (its flags are in the studies' JSON).
-std::string cvode_build_text();
 
 // The families the report groups methods by, and a family's members among `methods` (its own
 // and those that open it: explicit Euler for Adams-Bashforth, implicit Euler for BDF), by order.

@@ -38,8 +38,8 @@ TEST(Peers, TableSaysWhatEachIs) {
   EXPECT_EQ(bdf2->cvode.max_order, 2);
   EXPECT_FALSE(bdf2->cvode.adams);
   EXPECT_EQ(find_peer("cvode_band"), nullptr);  // the old name
-  for (const PeerInfo* p : peers_on(PeerScenes::Banded)) EXPECT_NE(p->linear_solver, "KLU") << p->name;
-  for (const PeerInfo* p : peers_on(PeerScenes::FixedSize)) EXPECT_TRUE(p->linear_solver.empty() || p->linear_solver == "dense") << p->name;
+  for (const PeerInfo* p : peers_on(PeerScenes::Banded)) EXPECT_NE(p->linear_solver, LinearSolver::Klu) << p->name;
+  for (const PeerInfo* p : peers_on(PeerScenes::FixedSize)) EXPECT_TRUE(p->linear_solver == LinearSolver::None || p->linear_solver == LinearSolver::Dense) << p->name;
 }
 
 // steplab's CVODE peer on the rope against bench/cvode_rope.c, which calls CVODE from C with no
@@ -76,7 +76,7 @@ TEST(Peers, CvodeCountsHangTogether) {
   std::vector<double> p = default_param_values(rope);
   p[scene_kernel(rope).size_param] = 32;
   for (const PeerInfo* peer : peers_on(PeerScenes::Banded)) {
-    if (peer->library != "SUNDIALS CVODE") continue;
+    if (!peer->is_cvode()) continue;
     PeerCounts n;
     run_sized_peer(*peer, rope, p, 1e-5, 2.0, n);
     EXPECT_FALSE(n.failed);
@@ -123,7 +123,7 @@ TEST(Peers, ImplicitCountsOnALinearScene) {
 TEST(Peers, ResolveSolversRefusesAPeerNotBuiltOrElsewhere) {
   std::vector<PeerInfo> table(peers().begin(), peers().end());
   for (PeerInfo& p : table)
-    if (p.linear_solver == "KLU") p.built = false;
+    if (p.linear_solver == LinearSolver::Klu) p.built = false;
   const std::vector<std::string> soft{"dopri5", "odeint_dopri5"};
   try {
     resolve_solvers("rk4,cvode_bdf_klu", soft, "soft body", false, table);

@@ -42,8 +42,8 @@ std::string long_runs(const ReportData& d) {
       if (std::find(s.bounded.begin(), s.bounded.end(), row.method) != s.bounded.end())
         kept_bounded.push_back(fmt::format("`{}` (energy error {:.2g}, growth {})", name(row.method), row.error[0].back(),
                                            growth_text(row.growth[0])));
-    md += fmt::format(" Over {:g} periods of Kepler's orbit at {} steps a period: {}.", orbit.config.periods,
-                      orbit.config.steps_per_period.front(), kept_bounded.empty() ? "none stays bounded" : and_list(kept_bounded));
+    md += fmt::format(" Over {:g} periods of {} at {} steps a period: {}.", orbit.config.periods,
+                      scene_kernel(orbit.config.scene).title, orbit.config.steps_per_period.front(), kept_bounded.empty() ? "none stays bounded" : and_list(kept_bounded));
   } else {
     md += " A method whose energy drifts here will drift further over a longer run.";
   }

@@ -51,9 +51,9 @@ std::string stable_answer(const Page& page) {
 std::string long_time_answer(const Page& page) {
   const LongTimeResult& r = page.data.long_time_orbit;
   const LongTimeSides s = sides(r);
-  std::string md = fmt::format("- **Stable for how long?** Over {:g} periods of Kepler's orbit the energy error stays bounded with {} and "
+  std::string md = fmt::format("- **Stable for how long?** Over {:g} periods of {} the energy error stays bounded with {} and "
                                "drifts with {}",
-                               r.config.periods, method_list(s.bounded), method_list(s.drifting));
+                               r.config.periods, scene_kernel(r.config.scene).title, method_list(s.bounded), method_list(s.drifting));
   if (!s.lost.empty()) md += fmt::format("; {} {} the orbit", method_list(s.lost), s.lost.size() == 1 ? "loses" : "lose");
   md += ".";
   if (s.not_by_order)
@@ -157,7 +157,7 @@ std::string cost_answer(const Page& page) {
     if (best)
       md += fmt::format("; there steplab's cheapest implicit method, `{}`, takes {} steps where the cheapest adaptive implicit "
                         "peer, `{}` ({}), takes {}: {:.3g} times its cost",
-                        best->steplab->method, best->steplab->steps, best->peer, find_peer(best->peer)->library, best->run->steps,
+                        best->steplab->method, best->steplab->steps, best->peer, find_peer(best->peer)->library(), best->run->steps,
                         point_cost(*best->run, timed) / point_cost(*best->steplab, timed));
   }
   return md + fmt::format("{}.\n", see(page, "work_precision"));

@@ -138,19 +138,7 @@ class Cost : public Section {
     for (const std::string& a : r.config.adaptive) {
       const PeerInfo* p = find_peer(a);
       if (!p) continue;
-      const std::string setup =
-          p->is_cvode()    ? fmt::format("{}; Newton on the analytic Jacobian, {} LU ({})", cvode_method_words(*p), p->linear_solver,
-                                         cvode_build_text())
-          : p->is_arkode() ? fmt::format("{}{} ({})", arkode_method_words(*p),
-                                         p->implicit ? fmt::format("; Newton on the analytic Jacobian, {} LU, told the "
-                                                                   "scene is linear", p->linear_solver)
-                                                     : std::string(),
-                                         cvode_build_text())
-          : p->is_radau5() ? std::string("Radau IIA of order 5, its own step control; Newton on the analytic Jacobian of the "
-                                         "second-order form (M1 = N/2), dense LU (gfortran -O2)")
-          : p->library == "steplab" ? std::string("Dormand-Prince 5(4) with its own step control")
-                                    : std::string("controlled runge_kutta_dopri5, odeint's own controller");
-      md += fmt::format("| `{}` | {} | {} |\n", a, p->library, setup);
+      md += fmt::format("| `{}` | {} | {} |\n", a, p->library(), p->lib->setup(*p));
     }
     return md + "\n";
   }

@@ -80,7 +80,7 @@ std::string findings(const ScalingResult& r) {
     if (!w.reached()) continue;
     const PeerInfo* peer = w.adaptive ? find_peer(w.solver) : nullptr;
     if (peer && peer->implicit) cvode.push_back(&w);
-    else if (peer && peer->library != "steplab") continue;  // the other peers
+    else if (peer && !peer->is_steplab()) continue;  // the other peers
     else if (!best || scaling_cost(c, w) < scaling_cost(c, *best)) best = &w;
   }
   if (!best || cvode.empty()) return md + "\n\n";

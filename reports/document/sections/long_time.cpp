@@ -122,18 +122,19 @@ class LongTime : public Section {
     std::string md = fmt::format("## {}\n\n", title());
     md += fmt::format(
         "The linear spring cannot tell the structures apart: there every A-stable or symplectic method looks alike. A long run of a "
-        "nonlinear system can. Kepler's orbit ({}) and the sheet's spring swinging in a plane ({}) run for {:g} periods at {} steps a "
+        "nonlinear system can. {} ({}) and the sheet's spring swinging in a plane ({}) run for {:g} periods at {} steps a "
         "period with each method; every step's energy (and the orbit's angular momentum) is read, and the largest relative error "
         "up to t is fitted against t on log-log axes from {:g} periods on: the growth exponent with its 95 % interval (near 0: "
         "bounded; near 1: a drift linear in t; near 0.5: round-off's random walk).\n\n",
-        params_text(c.scene, c.params), params_text(swing_.config.scene, swing_.config.params), c.periods, c.steps_per_period.front(),
+        scene_kernel(c.scene).title, params_text(c.scene, c.params), params_text(swing_.config.scene, swing_.config.params), c.periods, c.steps_per_period.front(),
         c.fit_from);
-    md += fmt::format("- **Kepler's orbit.** {}\n- **The swinging spring.** {}\n", structure_answer(orbit_), structure_answer(swing_));
+    md += fmt::format("- **{}.** {}\n- **The swinging spring.** {}\n", scene_kernel(c.scene).title, structure_answer(orbit_),
+                      structure_answer(swing_));
     md += angular_momentum() + phase() + crossing() + "\n";
     if (!panels(page.data.methods).empty())
-      md += page.figure("long_time", fmt::format("Kepler's orbit, {} steps a period: the largest relative energy error up to t (in "
+      md += page.figure("long_time", fmt::format("{}, {} steps a period: the largest relative energy error up to t (in "
                                                "periods), a panel per family",
-                                               c.steps_per_period.front()));
+                                               scene_kernel(c.scene).title, c.steps_per_period.front()));
     md += table();
     return md;
   }
