@@ -69,20 +69,15 @@ State<Eigen::Dynamic> on_fixed_scene(const PeerInfo& peer, std::string_view scen
   throw std::logic_error(fmt::format("{} runs on the spring and the chain only, not on the {}", peer.name, scene));
 }
 
-State<Eigen::Dynamic> odeint_fixed(const PeerInfo& peer, std::string_view scene, std::span<const double> params, double tol,
-                                   double t_end, PeerCounts& n, double* error_max) {
-  return on_fixed_scene(peer, scene, params,
-                        [&]<class S>(const S& s) { return OdeintDopri5<S>::run(s, tol, t_end, n, error_max); });
-}
-State<Eigen::Dynamic> sundials_fixed(const PeerInfo& peer, std::string_view scene, std::span<const double> params, double tol,
-                                     double t_end, PeerCounts& n, double* error_max) {
-  return on_fixed_scene(peer, scene, params,
-                        [&]<class S>(const S& s) { return SundialsDense<S>::run(s, peer, tol, t_end, n, error_max); });
-}
-State<Eigen::Dynamic> radau5_fixed(const PeerInfo& peer, std::string_view scene, std::span<const double> params, double tol,
-                                   double t_end, PeerCounts& n, double* error_max) {
-  return on_fixed_scene(peer, scene, params,
-                        [&]<class S>(const S& s) { return Radau5Fixed<S>::run(s, tol, t_end, n, error_max); });
+// A library's run on them (FixedPeerRun): Solver<S>::run, handed the peer where it takes one
+// (SUNDIALS: CVODE or ARKODE and their settings).
+template <template <Scene> class Solver>
+State<Eigen::Dynamic> fixed_run(const PeerInfo& peer, std::string_view scene, std::span<const double> params, double tol,
+                                double t_end, PeerCounts& n, double* error_max) {
+  return on_fixed_scene(peer, scene, params, [&]<class S>(const S& s) {
+    if constexpr (requires { Solver<S>::run(s, peer, tol, t_end, n, error_max); }) return Solver<S>::run(s, peer, tol, t_end, n, error_max);
+    else return Solver<S>::run(s, tol, t_end, n, error_max);
+  });
 }
 
 constexpr PeerLibrary kSteplab{"steplab", "adaptive explicit", "#999999",
@@ -90,15 +85,15 @@ constexpr PeerLibrary kSteplab{"steplab", "adaptive explicit", "#999999",
                                nullptr, nullptr};
 constexpr PeerLibrary kOdeint{"Boost.Odeint", "adaptive explicit", "#999999",
                               [](const PeerInfo&) { return std::string("controlled runge_kutta_dopri5, odeint's own controller"); },
-                              odeint_fixed, run_sized_odeint};
-constexpr PeerLibrary kCvode{kCvodeLibrary, "CVODE", "#56B4E9", cvode_setup, sundials_fixed, run_sized_sundials};
-constexpr PeerLibrary kArkode{kArkodeLibrary, "ARKODE", "#44AA99", arkode_setup, sundials_fixed, run_sized_sundials};
+                              fixed_run<OdeintDopri5>, run_sized_odeint};
+constexpr PeerLibrary kCvode{kCvodeLibrary, "CVODE", "#56B4E9", cvode_setup, fixed_run<SundialsDense>, run_sized_sundials};
+constexpr PeerLibrary kArkode{kArkodeLibrary, "ARKODE", "#44AA99", arkode_setup, fixed_run<SundialsDense>, run_sized_sundials};
 constexpr PeerLibrary kRadau5{kRadau5Library, "RADAU5", "#CC6677",
                               [](const PeerInfo&) {
                                 return std::string("Radau IIA of order 5, its own step control; Newton on the analytic Jacobian of "
                                                    "the second-order form (M1 = N/2), dense LU (gfortran -O2)");
                               },
-                              radau5_fixed, run_sized_radau5};
+                              fixed_run<Radau5Fixed>, run_sized_radau5};
 
 using enum LinearSolver;
 using enum PeerScenes;

@@ -1,8 +1,7 @@
 // A study's parameters, declared once: a table of StudyParam<Config> beside the study's command,
 // as a scene's ParamSpec table declares the scene's. From the table come the command's options and
 // their help (add_params), the one rule each value is checked by, whether it is typed on the
-// command line (read_params) or given in a report's configuration (param_from_json), and its key
-// there (param_key). A rule between parameters (fit-from below periods) is the study's own
+// command line (read_params) or given in a report's configuration (param_from_json). A rule between parameters (fit-from below periods) is the study's own
 // check, called on the Config both ways.
 #pragma once
 
@@ -43,12 +42,6 @@ inline std::string short_number(double v) {
   while (exponent.size() > 1 && exponent[0] == '0') exponent.erase(0, 1);
   const std::string compact = mantissa + "e" + (negative ? "-" : "") + exponent;
   return compact.size() + 2 <= plain.size() ? compact : plain;
-}
-
-inline std::string param_key(std::string_view name) {
-  std::string key(name);
-  for (char& ch : key) ch = ch == '-' ? '_' : ch;
-  return key;
 }
 
 // The rule: `value` (shown as `shown`, as typed or read) within [lo, hi], or one UsageError naming `where`.
