@@ -20,17 +20,23 @@ std::string_view to_text(Trend t) {
     case Trend::Falls: return "falls";
     case Trend::StaysTheSame: return "stays the same";
     case Trend::Mixed: return "does not move one way";
+    case Trend::NotMeasured: return "not measured";
   }
   return "?";
 }
 
+bool same_within(double a, double b, double relative) {
+  if (a == b) return true;
+  return std::isfinite(a) && std::isfinite(b) && std::abs(a - b) <= relative * std::max(std::abs(a), std::abs(b));
+}
+
 Trend trend(const std::vector<double>& dt) {
+  if (std::any_of(dt.begin(), dt.end(), [](double x) { return std::isnan(x); })) return Trend::NotMeasured;
   if (std::all_of(dt.begin(), dt.end(), [](double x) { return std::isinf(x); })) return Trend::StaysInfinite;
   // Two measured dt* closer than the threshold search resolves them (analysis/studies/stability.hpp) are equal.
-  const auto same = [](double a, double b) { return a == b || std::abs(a - b) <= kSameThreshold * std::max(a, b); };
   bool up = false, down = false;
   for (std::size_t i = 0; i + 1 < dt.size(); ++i)
-    if (!same(dt[i + 1], dt[i])) up |= dt[i + 1] > dt[i], down |= dt[i + 1] < dt[i];
+    if (!same_within(dt[i + 1], dt[i], kSameThreshold)) up |= dt[i + 1] > dt[i], down |= dt[i + 1] < dt[i];
   return up && down ? Trend::Mixed : up ? Trend::Rises : down ? Trend::Falls : Trend::StaysTheSame;
 }
 

@@ -20,9 +20,15 @@ namespace steplab {
 // where the costs are times, only at 1 where they are counts.
 bool tied(double margin, bool timed);
 
+// Whether two measured values are the same within `relative` of the larger: equal, or both finite
+// and |a - b| <= relative max(|a|, |b|). Infinity is the same as infinity only, never as a number
+// (|inf - x| <= relative inf would hold for any x); NaN is the same as nothing.
+bool same_within(double a, double b, double relative);
+
 // How dt* moves along a family's orders; two dt* within kSameThreshold of each other (relative:
-// the threshold search's resolution, a few parts in 10^4) count as the same.
-enum class Trend { StaysInfinite, Rises, Falls, StaysTheSame, Mixed };
+// the threshold search's resolution, a few parts in 10^4) count as the same (same_within). An
+// unbounded dt* (stable at every step) is above every finite one. NotMeasured: a member has no dt*.
+enum class Trend { StaysInfinite, Rises, Falls, StaysTheSame, Mixed, NotMeasured };
 inline constexpr double kSameThreshold = 1e-3;
 std::string_view to_text(Trend t);
 Trend trend(const std::vector<double>& dt);

@@ -137,8 +137,19 @@ void family_claims(const ReportData& d, const std::string& md) {
         inf &= std::isinf(x);
         if (i == 0) continue;
         const double y = threshold(d, fam[i - 1], g)->dt_measured;
-        if (x == y || std::abs(x - y) <= 1e-3 * std::max(x, y)) continue;  // within the threshold search's resolution
+        // Stable at every step (infinity) against a finite dt* is a move, up or down; two finite dt*
+        // within the threshold search's resolution (1e-3 of the larger, in logarithms) are no move.
+        if (std::isinf(x) != std::isinf(y)) {
+          up |= std::isinf(x), down |= std::isinf(y);
+          continue;
+        }
+        if (std::isinf(x) || (x > 0 && y > 0 && std::abs(std::log(x / y)) < 1e-3) || (x == 0 && y == 0)) continue;
         up |= x > y, down |= x < y;
+      }
+      // Theory (Dahlquist): implicit Euler and BDF2 are A-stable, BDF3 is not, so where BDF3's dt*
+      // is finite the family falls, whatever its value.
+      if (f == Family::Bdf && std::isinf(threshold(d, fam.front(), g)->dt_measured) && std::isfinite(threshold(d, fam.back(), g)->dt_measured)) {
+        EXPECT_TRUE(down && !up) << "BDF at damping " << g;
       }
       row += fmt::format(" {} |", inf ? "stays unbounded" : up && !down ? "rises" : down && !up ? "falls" : !up && !down ? "stays the same"
                                                                                                        : "does not move one way");
@@ -155,6 +166,25 @@ void family_claims(const ReportData& d, const std::string& md) {
   if (!dahlquist.empty()) {
     EXPECT_EQ(names(dahlquist, "at every damping tried:", "; with a stability region"), every_step) << dahlquist;
   }
+}
+
+// The comparison every trend rests on, against values whose answer is known: infinity is the same
+// as infinity only, never as a number, and NaN is the same as nothing.
+TEST(Trend, InfinityIsNeverTheSameAsANumber) {
+  EXPECT_FALSE(same_within(INFINITY, 0.2183, kSameThreshold));
+  EXPECT_FALSE(same_within(0, INFINITY, kSameThreshold));
+  EXPECT_TRUE(same_within(INFINITY, INFINITY, kSameThreshold));
+  EXPECT_FALSE(same_within(NAN, NAN, kSameThreshold));
+  EXPECT_TRUE(same_within(1.0, 1.0009, kSameThreshold));
+  EXPECT_FALSE(same_within(1.0, 1.0011, kSameThreshold));
+  // BDF at damping 0 and 0.1: implicit Euler and BDF2 unbounded, BDF3 0 or 0.2183.
+  EXPECT_EQ(trend({INFINITY, INFINITY, 0.0}), Trend::Falls);
+  EXPECT_EQ(trend({INFINITY, INFINITY, 0.2183}), Trend::Falls);
+  EXPECT_EQ(trend({0.2, INFINITY}), Trend::Rises);
+  EXPECT_EQ(trend({INFINITY, INFINITY}), Trend::StaysInfinite);
+  EXPECT_EQ(trend({0.2, 0.20001, 0.2}), Trend::StaysTheSame);
+  EXPECT_EQ(trend({0.2, INFINITY, 0.1}), Trend::Mixed);
+  EXPECT_EQ(trend({0.2, NAN}), Trend::NotMeasured);
 }
 
 // 7: the energy over the long undamped run, classified here from its samples.

@@ -72,7 +72,7 @@ std::string order_answer(const Page& page) {
                       std::abs(f.spearman) < 0.3 ? "Not as a rule" : "Only loosely", f.spearman_n, c.damping(), f.spearman,
                       correlation_words(f.spearman));
   std::vector<std::string> ways;
-  for (Trend t : {Trend::Rises, Trend::Falls, Trend::StaysInfinite, Trend::Mixed, Trend::StaysTheSame}) {
+  for (Trend t : {Trend::Rises, Trend::Falls, Trend::StaysInfinite, Trend::Mixed, Trend::StaysTheSame, Trend::NotMeasured}) {
     std::vector<std::string> fams;
     for (const FamilyTrend& ft : family_trends(page.data, c.damping()))
       if (ft.trend == t) fams.emplace_back(to_string(ft.family));
