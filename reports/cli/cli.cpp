@@ -119,8 +119,7 @@ std::string_view value_kind(std::string_view command, std::string_view option) {
       {"--scene", "NAME"},            {"--testcase", "NAME"},         {"--json", "FILE"},
       {"--config", "FILE"},           {"--out", "FOLDER"},            {"--scenes", "NAME,..."},
       {"--sweep", "NAME=NUMBER,..."}, {"--sections", "NAME,..."},     {"--sweeps", "WHOLE"},
-      {"--cg-iterations", "WHOLE"},   {"--budget", "WHOLE"},          {"--steps-per-period", "WHOLE,..."},
-      {"--outputs", "WHOLE"},         {"--periods", "NUMBER"},        {"--samples-per-decade", "WHOLE"}};
+      {"--cg-iterations", "WHOLE"},   {"--budget", "WHOLE"}};
   for (const auto& [name, kind] : kinds)
     if (name == option) return kind;
   return "NUMBER";  // steps, times, ranges and every scene parameter
@@ -131,7 +130,7 @@ std::string_view value_kind(std::string_view command, std::string_view option) {
 void name_value_kinds(CLI::App& app) {
   for (CLI::Option* o : app.get_options()) {
     if (o->get_expected_max() == 0 || o->get_lnames().empty() || o == app.get_help_ptr()) continue;  // flags, --help
-    o->type_name(std::string(value_kind(app.get_name(), "--" + o->get_lnames()[0])));
+    if (o->get_type_name() == "TEXT") o->type_name(std::string(value_kind(app.get_name(), "--" + o->get_lnames()[0])));
     if (const std::string d = o->get_default_str(); !d.empty()) {
       o->description(fmt::format("{} (default {})", o->get_description(), d));
       o->default_str("");
@@ -263,11 +262,7 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   CLI::App* conv_cmd = study->add_subcommand("convergence", "errors against the exact solution over a dt sweep, fitted orders");
   conv.scene.add_to(conv_cmd);
   conv_cmd->add_option("--methods", conv.methods, "comma-separated methods (default every numerical method)");
-  conv_cmd->add_option("--dt-max", conv.dt_max, "largest step")->capture_default_str();
-  conv_cmd->add_option("--dt-min", conv.dt_min, "smallest step")->capture_default_str();
-  conv_cmd->add_option("--points", conv.points, "steps in the geometric sweep (>= 3)")->capture_default_str();
-  conv_cmd->add_option("--t-end", conv.t_end,
-                       "simulated time of every run (default 10; 1 against a reference solution, as on falling)");
+  add_params(conv_cmd, convergence_params(), conv.params, ConvergenceConfig{});
   conv_cmd->add_flag("--reference", conv.reference,
                      "errors against a reference solution (dopri5 at rtol 1e-13) even where an exact one exists; "
                      "a scene without one always uses it");
@@ -295,9 +290,7 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   CLI::App* coll_cmd = study->add_subcommand("collision", "the bounce and the falling triangle on the penalty ground");
   coll.scene.add_to(coll_cmd, collision_scene, false);
   coll_cmd->add_option("--methods", coll.methods, "comma-separated methods (default every numerical method)");
-  coll_cmd->add_option("--dts", coll.dts, "steps for the bounce")->capture_default_str();
-  coll_cmd->add_option("--t-end", coll.t_end, "simulated time")->capture_default_str();
-  coll_cmd->add_option("--triangle-dt", coll.triangle_dt, "step for the falling triangle")->capture_default_str();
+  add_params(coll_cmd, collision_params(), coll.params, CollisionConfig{});
   add_threads_option(coll_cmd, coll.threads);
   add_shard_option(coll_cmd, coll.shard);
   coll_cmd->add_option("--json", coll.json, fmt::format("write JSON (schema {}) to this file", schema::collision));

@@ -68,8 +68,7 @@ struct ConvergenceArgs {
   SceneArgs scene;
   SettingsArgs settings;  // of the methods on springs, for every run of theirs
   std::string methods;  // comma-separated; empty: every numerical method
-  std::string dt_max = "0.1", dt_min = "1e-4", points = "16";
-  std::string t_end;  // empty: 10, or 1 against a reference solution (contacts make longer runs chaotic)
+  std::map<std::string, std::string> params;  // as typed, by name (convergence_params(); t-end empty: the study's)
   std::string error = "final";
   std::string sweep;  // NAME=V1,V2,...: the study at each value of one scene parameter
   bool reference = false;
@@ -135,9 +134,7 @@ namespace steplab {
 struct CollisionArgs {
   SceneArgs scene;  // parameters shared by the bounce and the triangle (ground, mass, gravity)
   std::string methods;
-  std::string dts = "0.001,0.002,0.004";
-  std::string t_end = "10";
-  std::string triangle_dt = "0.001";
+  std::map<std::string, std::string> params;  // as typed, by name (collision_params())
   std::string threads = "0";
   std::string shard;
   std::string json;
@@ -178,7 +175,7 @@ int long_time_command(LongTimeArgs& args, Context& ctx);
 struct DenseOutputArgs {
   SceneArgs scene;  // the spring by default
   std::string methods;
-  std::string t_end = "10", dt_max = "0.1", dt_min = "0.002", points = "8", outputs = "98";
+  std::map<std::string, std::string> params;  // as typed, by name (dense_output_params())
   std::string threads = "0";
   std::string shard;  // --shard i/N (reports/cli/parts.hpp)
   std::string json;

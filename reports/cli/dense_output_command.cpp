@@ -27,11 +27,7 @@ CLI::App* add_dense_output_command(CLI::App* study, DenseOutputArgs& a) {
   a.scene.scene = "spring";
   a.scene.add_to(cmd, has_exact);
   cmd->add_option("--methods", a.methods, "comma-separated methods (default every numerical method that runs on the scene)");
-  cmd->add_option("--t-end", a.t_end, "simulated time")->capture_default_str();
-  cmd->add_option("--dt-max", a.dt_max, "largest step of the sweep")->capture_default_str();
-  cmd->add_option("--dt-min", a.dt_min, "smallest step of the sweep")->capture_default_str();
-  cmd->add_option("--points", a.points, "steps in the sweep, 3 .. 100")->capture_default_str();
-  cmd->add_option("--outputs", a.outputs, "output times, evenly spaced over [0, t_end], 2 .. 100000")->capture_default_str();
+  add_params(cmd, dense_output_params(), a.params, DenseOutputConfig{});
   add_threads_option(cmd, a.threads);
   add_shard_option(cmd, a.shard);
   cmd->add_option("--json", a.json, fmt::format("write JSON (schema {}) to this file", schema::dense_output));
@@ -50,14 +46,8 @@ int dense_output_command(DenseOutputArgs& a, Context& ctx) {
   if (a.methods.empty())
     for (std::size_t m : ode_methods())
       if (applies(m, scene)) c.methods.push_back(m);
-  c.t_end = parse_number("--t-end", a.t_end, Bound::Positive);
-  c.dt_max = parse_number("--dt-max", a.dt_max, Bound::Positive);
-  c.dt_min = parse_number("--dt-min", a.dt_min, Bound::Positive);
-  if (!(c.dt_min < c.dt_max && c.dt_max <= c.t_end))
-    throw UsageError(fmt::format("--dt-min {} and --dt-max {} are not a sweep; accepted: 0 < dt-min < dt-max <= t-end",
-                                 a.dt_min, a.dt_max));
-  c.points = static_cast<int>(parse_count("--points", a.points, 3, 100));
-  c.outputs = static_cast<int>(parse_count("--outputs", a.outputs, 2, 100'000));
+  read_params(dense_output_params(), a.params, c);
+  check_sweep(c.dt_min, c.dt_max, c.t_end, option_names());
   c.workers = ctx.workers(resolve_thread_count(a.threads));
   return run_study(ctx, a.shard, a.json, false, [&] { return dense_output_study(c); },
                    [](const DenseOutputResult& r) { return dense_output_table(r); }, [](const DenseOutputResult& r) { return dense_output_json(r); });

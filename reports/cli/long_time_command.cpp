@@ -50,7 +50,7 @@ int long_time_command(LongTimeArgs& a, Context& ctx) {
   if (!a.methods.empty()) c.methods = resolve_methods(a.methods, false, scene);
   c.settings = a.settings.resolve(c.methods);
   read_params(long_time_params(), a.params, c);
-  check_long_time(c, [](std::string_view p) { return "--" + std::string(p); });
+  check_long_time(c, option_names());
   c.workers = ctx.workers(resolve_thread_count(a.threads));
   return run_study(ctx, a.shard, a.json, false, [&] { return long_time_study(c); },
                    [](const LongTimeResult& r) { return long_time_table(r); }, [](const LongTimeResult& r) { return long_time_json(r); });

@@ -135,15 +135,9 @@ int convergence_command(ConvergenceArgs& a, Context& ctx) {
   c.params = a.scene.values(c.scene);
   c.methods = resolve_methods(a.methods, false, c.scene);
   c.settings = a.settings.resolve(c.methods);
-  c.t_end = a.t_end.empty() ? (c.reference ? 1.0 : 10.0) : parse_number("--t-end", a.t_end, Bound::Positive);
-  c.dt_max = parse_number("--dt-max", a.dt_max, Bound::Positive);
-  c.dt_min = parse_number("--dt-min", a.dt_min, Bound::Positive);
-  if (c.dt_min >= c.dt_max)
-    throw UsageError(fmt::format("--dt-min {} is not below --dt-max {}; accepted: dt-min < dt-max", c.dt_min, c.dt_max));
-  if (c.dt_max > c.t_end)
-    throw UsageError(fmt::format("--dt-max {} is longer than --t-end {}; accepted: dt-max <= t-end", c.dt_max, c.t_end));
-  c.points = static_cast<int>(parse_count("--points", a.points, 3, 1000));
-  step_count(c.t_end, c.dt_min);  // refuses more than 10^9 steps
+  c.t_end = c.reference ? 1.0 : 10.0;  // contacts make longer runs against a reference chaotic
+  read_params(convergence_params(), a.params, c);
+  check_convergence(c, option_names());
   if (a.error == "final") c.fit_error = ErrorKind::Final;
   else if (a.error == "max") c.fit_error = ErrorKind::Max;
   else if (a.error == "rms") c.fit_error = ErrorKind::Rms;
@@ -156,8 +150,6 @@ int convergence_command(ConvergenceArgs& a, Context& ctx) {
   c.workers = ctx.workers(resolve_thread_count(a.threads));
   c.pack_width = resolve_lanes(a.lanes);
   c.timing = a.timing;
-  if (sweep_steps(c.t_end, c.dt_max, c.dt_min, c.points).size() < 3)
-    throw UsageError("--dt-max, --dt-min and --t-end leave fewer than 3 distinct steps; accepted: a wider range");
   if (!a.sweep.empty()) {
     const auto [param, values] = parse_sweep(a.sweep, c.scene);
     if (!a.shard.empty()) throw UsageError("--sweep runs in one process; accepted: --sweep or --shard, not both");
@@ -317,11 +309,8 @@ int collision_command(CollisionArgs& a, Context& ctx) {
   c.rebound_params = values_for(scene_name(bounce));
   c.body_params = values_for(scene_name(body));
   c.methods = resolve_methods(a.methods, false);
-  c.dts = number_list("--dts", a.dts, Bound::Positive);
-  c.t_end = parse_number("--t-end", a.t_end, Bound::Positive);
-  c.triangle_dt = parse_number("--triangle-dt", a.triangle_dt, Bound::Positive);
-  for (double dt : c.dts) step_count(c.t_end, dt);
-  step_count(c.t_end, c.triangle_dt);
+  read_params(collision_params(), a.params, c);
+  check_collision(c);
   c.workers = ctx.workers(resolve_thread_count(a.threads));
   return run_study(ctx, a.shard, a.json, false, [&] { return collision_study(c); },
                    [](const CollisionResult& r) { return collision_table(r); }, [](const CollisionResult& r) { return collision_json(r); });

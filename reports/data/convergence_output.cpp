@@ -29,6 +29,22 @@ constexpr std::array<FitCaveat, 3> kFitCaveats{{
     {&OrderFit::wide, "wide", "?", "its bound is wider than +-0.5: not a finding."},
 }};
 
+constexpr StudyParam<ConvergenceConfig> kConvergenceParams[] = {
+    {"dt-max", "largest step", kPositive, &ConvergenceConfig::dt_max},
+    {"dt-min", "smallest step", kPositive, &ConvergenceConfig::dt_min},
+    {"points", "steps in the geometric sweep", {3, 1000}, &ConvergenceConfig::points},
+    {"t-end", "simulated time of every run", kPositive, &ConvergenceConfig::t_end, "10; 1 against a reference solution, as on falling"},
+};
+
+std::span<const StudyParam<ConvergenceConfig>> convergence_params() { return kConvergenceParams; }
+
+void check_convergence(const ConvergenceConfig& c, const ParamNamer& name) {
+  check_sweep(c.dt_min, c.dt_max, c.t_end, name);
+  if (sweep_steps(c.t_end, c.dt_max, c.dt_min, c.points).size() < 3)
+    throw UsageError(fmt::format("{}{}, {}, {} and {} leave fewer than 3 distinct steps; accepted: a wider range", name.origin, name("dt-max"),
+                                 name("dt-min"), name("points"), name("t-end")));
+}
+
 Json fit_caveats(const OrderFit& f) {
   Json out = Json::array();
   for (const FitCaveat& c : kFitCaveats)

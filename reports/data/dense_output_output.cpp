@@ -24,7 +24,17 @@ std::string order_text(const OrderFit& f) {
   return fmt::format("{:.2f} [{:.2f}, {:.2f}]", f.order, f.bound_lo, f.bound_hi);
 }
 
+constexpr StudyParam<DenseOutputConfig> kDenseOutputParams[] = {
+    {"t-end", "simulated time", kPositive, &DenseOutputConfig::t_end},
+    {"dt-max", "largest step of the sweep", kPositive, &DenseOutputConfig::dt_max},
+    {"dt-min", "smallest step of the sweep", kPositive, &DenseOutputConfig::dt_min},
+    {"points", "steps in the sweep", {3, 100}, &DenseOutputConfig::points},
+    {"outputs", "output times, evenly spaced over [0, t_end]", {2, 100'000}, &DenseOutputConfig::outputs},
+};
+
 }  // namespace
+
+std::span<const StudyParam<DenseOutputConfig>> dense_output_params() { return kDenseOutputParams; }
 
 Json dense_output_json(const DenseOutputResult& r) {
   const DenseOutputConfig& c = r.config;

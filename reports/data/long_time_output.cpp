@@ -20,25 +20,25 @@ Json growth_json(const GrowthFit& g) {
 }
 
 constexpr StudyParam<LongTimeConfig> kLongTimeParams[] = {
-    {"steps-per-period", "comma-separated steps a period: the step is the period over each (default 500 on kepler, 100 elsewhere)",
-     1, 1e6, &LongTimeConfig::steps_per_period},
-    {"periods", "how long, in periods", 1, 1e7, &LongTimeConfig::periods},
-    {"samples-per-decade", "log-spaced sample times a decade", 1, 100, &LongTimeConfig::samples_per_decade},
+    {"steps-per-period", "comma-separated steps a period: the step is the period over each", {1, 1e6},
+     &LongTimeConfig::steps_per_period, "500 on kepler, 100 elsewhere"},
+    {"periods", "how long, in periods", {1, 1e7}, &LongTimeConfig::periods},
+    {"samples-per-decade", "log-spaced sample times a decade", {1, 100}, &LongTimeConfig::samples_per_decade},
     // from 1: the samples begin at one period
-    {"fit-from", "the growth exponents are fitted from this many periods on", 1, 1e7, &LongTimeConfig::fit_from},
+    {"fit-from", "the growth exponents are fitted from this many periods on", {1, 1e7}, &LongTimeConfig::fit_from},
 };
 
 }  // namespace
 
 std::span<const StudyParam<LongTimeConfig>> long_time_params() { return kLongTimeParams; }
 
-void check_long_time(const LongTimeConfig& c, std::string (*name)(std::string_view param)) {
+void check_long_time(const LongTimeConfig& c, const ParamNamer& name) {
   if (!(c.fit_from < c.periods))
-    throw UsageError(fmt::format("{} {} is not below {} {}; accepted: fit-from < periods (the growth is fitted from fit-from on)",
-                                 name("fit-from"), short_number(c.fit_from), name("periods"), short_number(c.periods)));
+    throw UsageError(fmt::format("{}{} {} is not below {} {}; accepted: fit-from < periods (the growth is fitted from fit-from on)",
+                                 name.origin, name("fit-from"), short_number(c.fit_from), name("periods"), short_number(c.periods)));
   for (int n : c.steps_per_period)
     if (c.periods * n > 1e10)
-      throw UsageError(fmt::format("{} {} at {} {} is {:g} steps; accepted: at most 1e10", name("periods"), short_number(c.periods),
+      throw UsageError(fmt::format("{}{} {} at {} {} is {:g} steps; accepted: at most 1e10", name.origin, name("periods"), short_number(c.periods),
                                    name("steps-per-period"), n, c.periods * n));
 }
 

@@ -222,4 +222,21 @@ std::string collision_table(const CollisionResult& r) {
   return out;
 }
 
+namespace {
+
+constexpr StudyParam<CollisionConfig> kCollisionParams[] = {
+    {"dts", "steps for the bounce", kPositive, &CollisionConfig::dts},
+    {"t-end", "simulated time", kPositive, &CollisionConfig::t_end},
+    {"triangle-dt", "step for the falling triangle", kPositive, &CollisionConfig::triangle_dt},
+};
+
+}  // namespace
+
+std::span<const StudyParam<CollisionConfig>> collision_params() { return kCollisionParams; }
+
+void check_collision(const CollisionConfig& c) {
+  for (double dt : c.dts) step_count(c.t_end, dt);
+  step_count(c.t_end, c.triangle_dt);
+}
+
 }  // namespace steplab

@@ -7,6 +7,7 @@
 
 #include "analysis/studies/convergence.hpp"
 #include "analysis/studies/order_reduction.hpp"
+#include "reports/data/study_params.hpp"
 
 namespace steplab {
 
@@ -22,6 +23,10 @@ Json peer_builds_json();
 
 Json convergence_json(const ConvergenceResult& r);   // schema steplab.convergence/2
 std::string convergence_table(const ConvergenceResult& r);
+// Its step sweep's parameters (the command's options, the report's convergence keys) and their
+// rule (check_sweep; and at least 3 distinct steps). `name`: as the user wrote it.
+std::span<const StudyParam<ConvergenceConfig>> convergence_params();
+void check_convergence(const ConvergenceConfig& c, const ParamNamer& name);
 // Order against stiffness: schema steplab.convergence_sweep/1 (each method's theory and its two
 // limits checked, the fits by method and value, and each value's whole convergence study), and
 // the table of fitted orders with the theory beside them (reports/data/sweep_output.cpp).
@@ -84,6 +89,10 @@ std::string exponent_rule_text();
 namespace steplab {
 Json collision_json(const CollisionResult& r);   // schema steplab.collision/1
 std::string collision_table(const CollisionResult& r);
+// Its parameters (the command's options, the report's collision keys) and their rule: at most
+// max_steps steps a run.
+std::span<const StudyParam<CollisionConfig>> collision_params();
+void check_collision(const CollisionConfig& c);
 }  // namespace steplab
 
 #include "analysis/studies/work_precision.hpp"
@@ -108,7 +117,6 @@ std::string frame_settings_text(const FrameSetup& s);
 }  // namespace steplab
 
 #include "analysis/studies/long_time.hpp"
-#include "reports/data/study_params.hpp"
 
 namespace steplab {
 Json long_time_json(const LongTimeResult& r);  // schema steplab.long_time/1 (reports/data/long_time_output.cpp)
@@ -117,7 +125,7 @@ std::string long_time_table(const LongTimeResult& r);
 // them: fit-from below periods, at most 1e10 steps a run. `name` gives a parameter's name as
 // the user wrote it ("--periods", "config: long_time.periods").
 std::span<const StudyParam<LongTimeConfig>> long_time_params();
-void check_long_time(const LongTimeConfig& c, std::string (*name)(std::string_view param));
+void check_long_time(const LongTimeConfig& c, const ParamNamer& name);
 // "0.02 [0.01, 0.03]" for a fitted growth exponent, "-" where there were too few samples.
 std::string growth_text(const GrowthFit& g);
 }  // namespace steplab
@@ -127,4 +135,6 @@ std::string growth_text(const GrowthFit& g);
 namespace steplab {
 Json dense_output_json(const DenseOutputResult& r);  // schema steplab.dense_output/1 (reports/data/dense_output_output.cpp)
 std::string dense_output_table(const DenseOutputResult& r);
+// Its parameters (the command's options); their rule is check_sweep's.
+std::span<const StudyParam<DenseOutputConfig>> dense_output_params();
 }  // namespace steplab

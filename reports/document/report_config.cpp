@@ -205,14 +205,13 @@ Json report_config_json(const ReportConfig& c) {
   for (std::size_t s : c.covered) j["scenes"].push_back(std::string(scene_name(s)));
   j["sections"] = c.sections;
   for (const ReportScene* s : c.scenes()) j[std::string(scene_name(s->scene))] = scene_params_json(s->scene, s->params);
-  j["convergence"] = {{"dt_max", c.conv_dt_max}, {"dt_min", c.conv_dt_min}, {"points", c.conv_points},
-                      {"t_end", c.conv_t_end}};
+  j["convergence"] = params_json(convergence_params(), c.convergence);
   j["work_precision"] = {{"points", c.wp_points}, {"stiffnesses", c.wp_stiffnesses}, {"timing", c.timing}};
   j["stability"] = {{"threshold_dampings", c.threshold_dampings}, {"sweep_dts", c.sweep_dts},
                     {"map_dt_points", c.map_dt_points},           {"map_damping_points", c.map_damping_points},
                     {"map_dt_min", c.map_dt_min},                 {"map_dt_max", c.map_dt_max},
                     {"large_dt", c.large_dt},                     {"small_dt", c.small_dt}};
-  j["collision"] = {{"dts", c.collision_dts}, {"t_end", c.collision_t_end}, {"triangle_dt", c.triangle_dt}};
+  j["collision"] = params_json(collision_params(), c.collision);
   j["long_time"] = {{"periods", c.long_time_periods}};
   Json scaling;  // the sizes of each scene by its name, then the measure
   for (const ReportSizes& s : c.scaling) scaling[std::string(scene_name(s.scene))] = s.sizes;
@@ -244,17 +243,8 @@ ReportConfig report_config_from_json(const Json& user, const ReportConfig& base)
   choose_sections(c, j["sections"].get<std::vector<std::string>>(), "config: sections");
   check_choice(c, "config: methods");
   for (ReportScene* s : c.scenes()) s->params = scene_values(j[std::string(scene_name(s->scene))], s->scene);
-  const Json& cv = j["convergence"];
-  c.conv_dt_max = num(cv["dt_max"], "convergence.dt_max", Bound::Positive);
-  c.conv_dt_min = num(cv["dt_min"], "convergence.dt_min", Bound::Positive);
-  c.conv_points = count(cv["points"], "convergence.points", 3, 1000);
-  c.conv_t_end = num(cv["t_end"], "convergence.t_end", Bound::Positive);
-  if (c.conv_dt_min >= c.conv_dt_max)
-    throw UsageError(fmt::format("config: convergence.dt_min {} is not below dt_max {}; accepted: dt_min < dt_max",
-                                 c.conv_dt_min, c.conv_dt_max));
-  if (c.conv_dt_max > c.conv_t_end)
-    throw UsageError("config: convergence.dt_max is longer than convergence.t_end; accepted: dt_max <= t_end");
-  step_count(c.conv_t_end, c.conv_dt_min);
+  params_from_json(convergence_params(), j["convergence"], "convergence", c.convergence);
+  check_convergence(c.convergence, config_names("convergence"));
   const Json& wp = j["work_precision"];
   c.wp_points = count(wp["points"], "work_precision.points", 3, 100);
   c.wp_stiffnesses = nums(wp["stiffnesses"], "work_precision.stiffnesses", Bound::Positive);
@@ -269,17 +259,13 @@ ReportConfig report_config_from_json(const Json& user, const ReportConfig& base)
   if (c.map_dt_min >= c.map_dt_max) throw UsageError("config: stability.map_dt_min is not below map_dt_max; accepted: min < max");
   c.large_dt = num(st["large_dt"], "stability.large_dt", Bound::Positive);
   c.small_dt = num(st["small_dt"], "stability.small_dt", Bound::Positive);
-  const Json& co = j["collision"];
-  c.collision_dts = nums(co["dts"], "collision.dts", Bound::Positive);
-  c.collision_t_end = num(co["t_end"], "collision.t_end", Bound::Positive);
-  c.triangle_dt = num(co["triangle_dt"], "collision.triangle_dt", Bound::Positive);
-  for (double dt : c.collision_dts) step_count(c.collision_t_end, dt);
-  step_count(c.collision_t_end, c.triangle_dt);
+  params_from_json(collision_params(), j["collision"], "collision", c.collision);
+  check_collision(c.collision);
   LongTimeConfig long_time = default_long_time_config(scene_index(kLongTimeScene));  // the study's rules, as its command has them
-  param_from_json(long_time_params(), "periods", j["long_time"]["periods"], "config: long_time.periods", long_time);
-  check_long_time(long_time, [](std::string_view p) {
-    return p == "periods" ? std::string("config: long_time.periods") : "the long-time study's " + std::string(p);
-  });
+  params_from_json(long_time_params(), j["long_time"], "long_time", long_time);  // its one key: periods
+  check_long_time(long_time, {"config: ", [](std::string_view p) {
+                    return p == "periods" ? std::string("long_time.periods") : fmt::format("the long-time study's {}", p);
+                  }});
   c.long_time_periods = long_time.periods;
   const Json& sc = j["scaling"];
   for (ReportSizes& s : c.scaling) {  // each within its size parameter's range
@@ -310,9 +296,7 @@ ReportConfig report_config_from_json(const Json& user, const ReportConfig& base)
   s.dt_min = num(so["dt_min"], "stiff_order.dt_min", Bound::Positive);
   s.points = count(so["points"], "stiff_order.points", 3, 1000);
   s.t_end = num(so["t_end"], "stiff_order.t_end", Bound::Positive);
-  if (s.dt_min >= s.dt_max || s.dt_max > s.t_end)
-    throw UsageError("config: stiff_order's steps are not dt_min < dt_max <= t_end; accepted: such a range");
-  step_count(s.t_end, s.dt_min);
+  check_sweep(s.dt_min, s.dt_max, s.t_end, config_names("stiff_order"));
   const Json& fg = j["figures"];
   c.cannonball_dt = num(fg["cannonball_dt"], "figures.cannonball_dt", Bound::Positive);
   c.cannonball_t_end = num(fg["cannonball_t_end"], "figures.cannonball_t_end", Bound::Positive);

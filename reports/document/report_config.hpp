@@ -12,6 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/studies/collision.hpp"
+#include "analysis/studies/convergence.hpp"
 #include "analysis/studies/defaults.hpp"
 
 namespace steplab {
@@ -52,9 +54,8 @@ struct ReportConfig {
   std::array<const ReportScene*, 4> scenes() const { return {&oscillator, &projectile, &rebound, &body}; }
   std::array<ReportScene*, 4> scenes() { return {&oscillator, &projectile, &rebound, &body}; }
   double damping() const;  // the oscillator's damping parameter
-  // convergence (every scene with an exact solution)
-  double conv_dt_max = 0.1, conv_dt_min = 1e-4, conv_t_end = 10;
-  int conv_points = 16;
+  // convergence (every scene with an exact solution): its step sweep (convergence_params())
+  ConvergenceConfig convergence;
   // work-precision (spring and chain): dt sweep points, the stiffness sweep's k2, and whether runs
   // are timed (else costed by force evaluations alone, reproducible byte for byte)
   int wp_points = 14;
@@ -67,9 +68,8 @@ struct ReportConfig {
   double map_dt_min = 0.01, map_dt_max = 10;
   // the sheet's two stability tests: a large step (with the spring's damping), and no damping
   double large_dt = 0.05, small_dt = 0.01;
-  // collision
-  std::vector<double> collision_dts{0.001, 0.002, 0.004};
-  double collision_t_end = 10, triangle_dt = 0.001;
+  // collision: its steps and time (collision_params())
+  CollisionConfig collision;
   // as the system grows: every scene of run-time size with modes, its defaults at these sizes
   std::vector<ReportSizes> scaling;
   double scaling_error = 1e-4, scaling_t_end = 2;

@@ -25,18 +25,13 @@ std::vector<double> with_values(std::vector<double> v, std::initializer_list<dou
 // On a scene the report's own roles do not name (a user's), its default parameters; the methods
 // that run on it (not the exact flow on a scene without an exact solution).
 ConvergenceConfig convergence_config(const ReportData& d, std::size_t scene) {
-  ConvergenceConfig cc;
+  ConvergenceConfig cc = d.config.convergence;  // its step sweep
   cc.scene = scene;
   cc.params = default_param_values(scene);
   for (const ReportScene* s : d.config.scenes())
     if (s->scene == scene) cc.params = s->params;
   for (std::size_t m : d.methods)
     if (applies(m, scene)) cc.methods.push_back(m);
-  const ReportConfig& c = d.config;
-  cc.t_end = c.conv_t_end;
-  cc.dt_max = c.conv_dt_max;
-  cc.dt_min = c.conv_dt_min;
-  cc.points = c.conv_points;
   cc.workers = d.workers;
   return cc;
 }
@@ -133,15 +128,12 @@ ReportData run_report_studies(const ReportConfig& c, unsigned studies, ProgressH
     d.map = stability_map(sc);
   }
 
-  CollisionConfig cc;
+  CollisionConfig cc = c.collision;  // its steps and time
   cc.rebound_scene = c.rebound.scene;
   cc.rebound_params = c.rebound.params;
   cc.body_scene = c.body.scene;
   cc.body_params = c.body.params;
   cc.methods = d.numerical_methods();
-  cc.dts = c.collision_dts;
-  cc.t_end = c.collision_t_end;
-  cc.triangle_dt = c.triangle_dt;
   cc.workers = d.workers;
   if (studies & kCollisionStudy) d.collision = collision_study(cc);
 

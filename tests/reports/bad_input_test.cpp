@@ -10,6 +10,7 @@
 #include <ostream>
 
 #include "cli_helpers.hpp"
+#include "reports/data/study_output.hpp"
 
 namespace steplab {
 namespace {
@@ -210,6 +211,49 @@ INSTANTIATE_TEST_SUITE_P(
                  R"({"stiff_order": {"stiffnesses": [1, -5]}})"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "config: target.stiffness",
                  R"({"target": {"stiffness": 0}})"}));
+
+// One rule whichever way a value arrives: for every parameter of the studies' tables, a value
+// just outside its range is refused typed and in a configuration, each message naming the value's
+// origin and accepting the same range, and one inside it is taken both ways.
+template <class C>
+void one_rule_each_way(std::span<const StudyParam<C>> table, const char* section) {
+  for (const StudyParam<C>& p : table) {
+    const double outside = p.range.lo_open ? p.range.lo : p.range.lo - 1, inside = p.range.lo_open ? p.range.lo + 1 : p.range.lo;
+    const std::string name(p.name), key = config_key(p.name);
+    const bool list = std::holds_alternative<std::vector<double> C::*>(p.field) || std::holds_alternative<std::vector<int> C::*>(p.field);
+    const auto message = [&](auto&& f) {
+      try {
+        f();
+      } catch (const UsageError& e) {
+        return std::string(e.what());
+      }
+      return std::string();
+    };
+    C typed, read;
+    std::map<std::string, std::string> text;
+    for (const StudyParam<C>& q : table) text[std::string(q.name)] = "";
+    text[name] = fmt::format("{}", outside);
+    const std::string from_option = message([&] { read_params(table, text, typed); });
+    nlohmann::ordered_json j;
+    j[key] = list ? nlohmann::ordered_json::array({outside}) : nlohmann::ordered_json(outside);
+    const std::string from_config = message([&] { params_from_json(table, j, section, read); });
+    const std::string accepted = "accepted: " + range_text(p.range);
+    EXPECT_EQ(from_option, fmt::format("--{} {} is out of range; {}", name, outside, accepted)) << name;
+    EXPECT_EQ(from_config, fmt::format("config: {}.{} {} is out of range; {}", section, key, outside, accepted)) << name;
+    text[name] = fmt::format("{}", inside);
+    j[key] = list ? nlohmann::ordered_json::array({inside}) : nlohmann::ordered_json(inside);
+    EXPECT_EQ(message([&] { read_params(table, text, typed); }), "") << name;
+    EXPECT_EQ(message([&] { params_from_json(table, j, section, read); }), "") << name;
+    EXPECT_EQ(params_json(table, typed)[key], params_json(table, read)[key]) << name;
+  }
+}
+
+TEST(StudyParams, OneRuleEachWay) {
+  one_rule_each_way(convergence_params(), "convergence");
+  one_rule_each_way(collision_params(), "collision");
+  one_rule_each_way(dense_output_params(), "dense_output");
+  one_rule_each_way(long_time_params(), "long_time");
+}
 
 }  // namespace
 }  // namespace steplab

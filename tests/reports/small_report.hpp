@@ -20,15 +20,15 @@ inline std::vector<int>& sizes_of(ReportConfig& c, std::string_view scene) {
 // Small studies, so the whole pipeline runs in about a second.
 inline ReportConfig small_config() {
   ReportConfig c = default_report_config();
-  c.conv_points = 8;
-  c.conv_dt_min = 1e-3;
+  c.convergence.points = 8;
+  c.convergence.dt_min = 1e-3;
   c.timing = false;
   c.wp_points = 4;
   c.wp_stiffnesses = {5, 5e4};
   c.map_dt_points = 6;
   c.map_damping_points = 4;
-  c.collision_dts = {0.002};
-  c.collision_t_end = 2;
+  c.collision.dts = {0.002};
+  c.collision.t_end = 2;
   c.energy_t_end = 10;
   c.cannonball_t_end = 5;
   sizes_of(c, "rope") = {4, 8};

@@ -43,7 +43,7 @@ class Collision : public Section {
     std::string md = "## " + title() + "\n\n";
     md += fmt::format("The slides' contact: a penalty spring pushes a body back above the ground y = -1. The undamped bounce ({}; "
                       "dropped from y = 0) should keep its energy from bounce to bounce; over {} s, by method and step:\n\n",
-                      params_text(c.rebound.scene, c.rebound.params), c.collision_t_end);
+                      params_text(c.rebound.scene, c.rebound.params), c.collision.t_end);
     md += "| method | bounces |";
     std::string rule = "|------------|--|";
     for (double dt : r.config.dts) md += fmt::format(" E/E0 after the last, dt {} |", dt), rule += "-----|";
@@ -104,7 +104,7 @@ class Collision : public Section {
     std::string md = fmt::format(
         "The falling triangle ({}; the slides' problem 3) at dt {} over {} s: its deepest point goes {:.3g} m into the ground "
         "with `{}` and {:.3g} m with `{}`", params_text(d.config.body.scene, d.config.body.params), r.config.triangle_dt,
-        d.config.collision_t_end, shallow->max_penetration, name(shallow->method), deep->max_penetration, name(deep->method));
+        d.config.collision.t_end, shallow->max_penetration, name(shallow->method), deep->max_penetration, name(deep->method));
     if (!diverged.empty()) md += fmt::format("; {} diverge", method_list(diverged));
     return md + ".\n\n";
   }

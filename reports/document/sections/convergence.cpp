@@ -84,7 +84,7 @@ class Convergence : public Section {
         "steps where the local slopes have settled, ln e = a + p ln dt + b dt^q^ is fitted with the next error term "
         "modelled. Its *bound* is round-off noise (95 %) plus the truncation left over: a bound on the order, not a "
         "confidence interval (truncation error is smooth, not random).\n\n",
-        c.conv_t_end, shown.dts.size(), c.conv_dt_max, c.conv_dt_min);
+        c.convergence.t_end, shown.dts.size(), c.convergence.dt_max, c.convergence.dt_min);
     for (const ConvergenceResult& r : d.convergence)
       if (r.uses_reference)
         md += fmt::format("{} has no exact solution: its errors are final-position errors against a reference solution "

@@ -37,7 +37,7 @@ class Reproduce : public Section {
     const std::string numerical = d.methods.size() == method_count() ? "" : " --methods " + comma_names(d.methods, true);
     for (const ConvergenceResult& r : d.convergence)
       md += wrapped(fmt::format("build/steplab study convergence --scene {} --dt-max {} --dt-min {} --points {} --t-end {}{}",
-                                scene_name(r.config.scene), c.conv_dt_max, c.conv_dt_min, c.conv_points, c.conv_t_end, methods));
+                                scene_name(r.config.scene), c.convergence.dt_max, c.convergence.dt_min, c.convergence.points, c.convergence.t_end, methods));
     if (d.studies & kStabilityStudy) {
       md += wrapped(fmt::format("build/steplab study stability --threshold-dampings {} --map-dt-points {} --map-damping-points {} "
                                 "--map-dt-min {} --map-dt-max {}{}", join(c.threshold_dampings), c.map_dt_points,
@@ -45,8 +45,8 @@ class Reproduce : public Section {
       md += wrapped(fmt::format("build/steplab study damping --dts {}{}", join(c.sweep_dts), methods));
     }
     if (d.studies & kCollisionStudy)
-      md += wrapped(fmt::format("build/steplab study collision --dts {} --t-end {} --triangle-dt {}{}", join(c.collision_dts),
-                                c.collision_t_end, c.triangle_dt, numerical));
+      md += wrapped(fmt::format("build/steplab study collision --dts {} --t-end {} --triangle-dt {}{}", join(c.collision.dts),
+                                c.collision.t_end, c.collision.triangle_dt, numerical));
     if (d.studies & kWorkPrecisionStudy)
       md += wrapped(fmt::format("build/steplab study work-precision --points {} --stiffnesses {}{}{}", c.wp_points,
                                 join(c.wp_stiffnesses), c.timing ? "" : " --no-timing", numerical));
