@@ -119,7 +119,7 @@ std::string_view value_kind(std::string_view command, std::string_view option) {
       {"--scene", "NAME"},            {"--testcase", "NAME"},         {"--json", "FILE"},
       {"--config", "FILE"},           {"--out", "FOLDER"},            {"--scenes", "NAME,..."},
       {"--sweep", "NAME=NUMBER,..."}, {"--sections", "NAME,..."},     {"--sweeps", "WHOLE"},
-      {"--cg-iterations", "WHOLE"},   {"--budget", "WHOLE"}};
+      {"--cg-iterations", "WHOLE"}};
   for (const auto& [name, kind] : kinds)
     if (name == option) return kind;
   return "NUMBER";  // steps, times, ranges and every scene parameter

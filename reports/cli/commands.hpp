@@ -147,7 +147,7 @@ int collision_command(CollisionArgs& args, Context& ctx);
 struct FramesArgs {
   SceneArgs scene;  // add_frames_command makes the rope the default, with the study's 32 masses and stiffness 5000
   std::string methods;  // empty: analysis/studies/defaults.hpp, kFramesMethods
-  std::string fps = "60", t_end = "2", budget = "30";
+  std::map<std::string, std::string> params;  // as typed, by name (frames_params())
   std::string threads = "0";
   bool no_timing = false, no_orders = false;
   std::string shard;  // --shard i/N (reports/cli/parts.hpp)
@@ -205,8 +205,7 @@ int scaling_command(ScalingArgs& args, Context& ctx);
 
 struct WorkPrecisionArgs {
   std::string methods;  // empty: every numerical method
-  std::string points = "14";                              // dt sweep points per scene
-  std::string stiffnesses = "5,50,500,5000,50000,5e5,5e6";  // k2 of the stiffness sweep
+  std::map<std::string, std::string> params;  // as typed, by name (work_precision_params())
   std::string threads = "0";
   std::string lanes;  // the pack width: auto, 1, 2, 4 or 8 (add_lanes_option)
   std::string shard;  // i/N: write part i of N to --json (reports/cli/parts.hpp)

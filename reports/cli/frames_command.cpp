@@ -70,10 +70,7 @@ CLI::App* add_frames_command(CLI::App* study, FramesArgs& a) {
   a.scene.add_to(cmd, mass_spring);
   cmd->add_option("--methods", a.methods, "comma-separated methods (default xpbd, pbd, baraff_witkin, symplectic_euler, "
                                           "implicit_euler, rk4)");
-  cmd->add_option("--fps", a.fps, "frames a second")->capture_default_str();
-  cmd->add_option("--t-end", a.t_end, "simulated time (a whole number of frames)")->capture_default_str();
-  cmd->add_option("--budget", a.budget, "substeps x sweeps (or CG iterations) a frame: every divisor of it as the substeps "
-                                        "(1 .. 10000)")->capture_default_str();
+  add_params(cmd, frames_params(), a.params, default_frames_config());
   add_threads_option(cmd, a.threads, "worker threads (timings run one at a time)");
   cmd->add_flag("--no-timing", a.no_timing, "cost by spring visits a frame only (reproducible byte for byte)");
   cmd->add_flag("--no-orders", a.no_orders, "leave out the order in h of the methods on springs");
@@ -95,12 +92,8 @@ int frames_command(FramesArgs& a, Context& ctx) {
   if (!a.methods.empty()) c.methods = resolve_methods(a.methods, false, c.scene);
   else
     std::erase_if(c.methods, [&](std::size_t m) { return !applies(m, c.scene); });
-  c.fps = parse_number("--fps", a.fps, Bound::Positive);
-  c.t_end = parse_number("--t-end", a.t_end, Bound::Positive);
-  if (const double frames = c.t_end * c.fps; std::abs(frames - std::round(frames)) > 1e-9 * frames || std::round(frames) < 1)
-    throw UsageError(fmt::format("--t-end {} at --fps {} is {} frames; accepted: a whole number of frames, at least 1", a.t_end,
-                                 a.fps, frames));
-  c.budget = static_cast<int>(parse_count("--budget", a.budget, 1, 10'000));
+  read_params(frames_params(), a.params, c);
+  check_frames(c);
   c.timing = !a.no_timing;
   c.orders = !a.no_orders;
   c.workers = ctx.workers(resolve_thread_count(a.threads));

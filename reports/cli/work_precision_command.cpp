@@ -25,9 +25,7 @@ CLI::App* add_work_precision_command(CLI::App* study, WorkPrecisionArgs& a) {
   cmd->add_option("--methods", a.methods,
                   fmt::format("comma-separated methods and adaptive solvers ({}; default every numerical method, and every "
                               "adaptive solver where the list names none)", fmt::join(peer_names(PeerScenes::FixedSize), ", ")));
-  cmd->add_option("--points", a.points, "fixed-step methods: steps in each scene's dt sweep, 3 .. 100")->capture_default_str();
-  cmd->add_option("--stiffnesses", a.stiffnesses, "comma-separated k2 of the stiffness sweep (the chain's k1 is 5)")
-      ->capture_default_str();
+  add_params(cmd, work_precision_params(), a.params, WorkPrecisionConfig{});
   add_threads_option(cmd, a.threads, "worker threads for the error runs (timings run one at a time)");
   add_lanes_option(cmd, a.lanes);
   add_shard_option(cmd, a.shard);
@@ -41,8 +39,7 @@ int work_precision_command(WorkPrecisionArgs& a, Context& ctx) {
   Solvers solvers = resolve_solvers(a.methods, adaptive_solvers(), "spring and chain", false);
   c.methods = std::move(solvers.methods);
   c.adaptive = std::move(solvers.adaptive);
-  c.points = static_cast<int>(parse_count("--points", a.points, 3, 100));
-  c.stiffnesses = number_list("--stiffnesses", a.stiffnesses, Bound::Positive);
+  read_params(work_precision_params(), a.params, c);
   c.workers = ctx.workers(resolve_thread_count(a.threads));
   resolve_lanes(a.lanes);  // checked; the work-precision runs go one at a time
   c.timing = !a.no_timing;

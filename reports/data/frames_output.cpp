@@ -24,6 +24,25 @@ std::string frame_setup_text(const FrameSetup& s) {
   return fmt::format("{} substep{}", s.substeps, s.substeps == 1 ? "" : "s");
 }
 
+namespace {
+
+constexpr StudyParam<FramesConfig> kFramesStudyParams[] = {
+    {"fps", "frames a second", kPositive, &FramesConfig::fps},
+    {"t-end", "simulated time (a whole number of frames)", kPositive, &FramesConfig::t_end},
+    {"budget", "substeps x sweeps (or CG iterations) a frame: every divisor of it as the substeps", {1, 10'000},
+     &FramesConfig::budget},
+};
+
+}  // namespace
+
+std::span<const StudyParam<FramesConfig>> frames_params() { return kFramesStudyParams; }
+
+void check_frames(const FramesConfig& c) {
+  if (const double frames = c.t_end * c.fps; std::abs(frames - std::round(frames)) > 1e-9 * frames || std::round(frames) < 1)
+    throw UsageError(fmt::format("--t-end {} at --fps {} is {} frames; accepted: a whole number of frames, at least 1",
+                                 short_number(c.t_end), short_number(c.fps), frames));
+}
+
 Json frames_json(const FramesResult& r) {
   const FramesConfig& c = r.config;
   Json j;

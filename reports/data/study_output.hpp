@@ -100,6 +100,8 @@ void check_collision(const CollisionConfig& c);
 namespace steplab {
 Json work_precision_json(const WorkPrecisionResult& r);   // schema steplab.work_precision/1
 std::string work_precision_table(const WorkPrecisionResult& r);
+// Its parameters (the command's options, the report's work_precision keys).
+std::span<const StudyParam<WorkPrecisionConfig>> work_precision_params();
 // "427 steps, 1708 forces": a run's counts (analysis/kernel/counts.hpp), with the rejected steps,
 // Jacobians and factorisations where it has them.
 std::string counts_text(const Counts& n);
@@ -110,6 +112,9 @@ std::string counts_text(const Counts& n);
 namespace steplab {
 Json frames_json(const FramesResult& r);  // schema steplab.frames/1 (reports/data/frames_output.cpp)
 std::string frames_table(const FramesResult& r);
+// Its parameters (the command's options) and their rule: a whole number of frames, at least 1.
+std::span<const StudyParam<FramesConfig>> frames_params();
+void check_frames(const FramesConfig& c);
 // "30 x 1 sweep", "5 x 6 CG", "10 substeps": a set-up's substeps a frame and its settings.
 std::string frame_setup_text(const FrameSetup& s);
 // "1 sweep", "1000 CG", "": its settings alone.

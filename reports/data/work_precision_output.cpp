@@ -30,6 +30,17 @@ Json point_counts(const SceneWork& w, std::ptrdiff_t i) { return i < 0 ? Json(nu
 
 }  // namespace
 
+namespace {
+
+constexpr StudyParam<WorkPrecisionConfig> kWorkPrecisionParams[] = {
+    {"points", "fixed-step methods: steps in each scene's dt sweep", {3, 100}, &WorkPrecisionConfig::points},
+    {"stiffnesses", "comma-separated k2 of the stiffness sweep (the chain's k1 is 5)", kPositive, &WorkPrecisionConfig::stiffnesses},
+};
+
+}  // namespace
+
+std::span<const StudyParam<WorkPrecisionConfig>> work_precision_params() { return kWorkPrecisionParams; }
+
 Json work_precision_json(const WorkPrecisionResult& r) {
   const WorkPrecisionConfig& c = r.config;
   Json j;

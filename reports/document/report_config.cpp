@@ -206,7 +206,8 @@ Json report_config_json(const ReportConfig& c) {
   j["sections"] = c.sections;
   for (const ReportScene* s : c.scenes()) j[std::string(scene_name(s->scene))] = scene_params_json(s->scene, s->params);
   j["convergence"] = params_json(convergence_params(), c.convergence);
-  j["work_precision"] = {{"points", c.wp_points}, {"stiffnesses", c.wp_stiffnesses}, {"timing", c.timing}};
+  j["work_precision"] = params_json(work_precision_params(), c.work_precision);
+  j["work_precision"]["timing"] = c.timing;
   j["stability"] = {{"threshold_dampings", c.threshold_dampings}, {"sweep_dts", c.sweep_dts},
                     {"map_dt_points", c.map_dt_points},           {"map_damping_points", c.map_damping_points},
                     {"map_dt_min", c.map_dt_min},                 {"map_dt_max", c.map_dt_max},
@@ -246,8 +247,7 @@ ReportConfig report_config_from_json(const Json& user, const ReportConfig& base)
   params_from_json(convergence_params(), j["convergence"], "convergence", c.convergence);
   check_convergence(c.convergence, config_names("convergence"));
   const Json& wp = j["work_precision"];
-  c.wp_points = count(wp["points"], "work_precision.points", 3, 100);
-  c.wp_stiffnesses = nums(wp["stiffnesses"], "work_precision.stiffnesses", Bound::Positive);
+  params_from_json(work_precision_params(), wp, "work_precision", c.work_precision);
   c.timing = wp["timing"].get<bool>();
   const Json& st = j["stability"];
   c.threshold_dampings = nums(st["threshold_dampings"], "stability.threshold_dampings", Bound::NonNegative);

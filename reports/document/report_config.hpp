@@ -15,6 +15,7 @@
 #include "analysis/studies/collision.hpp"
 #include "analysis/studies/convergence.hpp"
 #include "analysis/studies/defaults.hpp"
+#include "analysis/studies/work_precision.hpp"
 
 namespace steplab {
 
@@ -56,10 +57,10 @@ struct ReportConfig {
   double damping() const;  // the oscillator's damping parameter
   // convergence (every scene with an exact solution): its step sweep (convergence_params())
   ConvergenceConfig convergence;
-  // work-precision (spring and chain): dt sweep points, the stiffness sweep's k2, and whether runs
-  // are timed (else costed by force evaluations alone, reproducible byte for byte)
-  int wp_points = 14;
-  std::vector<double> wp_stiffnesses{5, 5e1, 5e2, 5e3, 5e4, 5e5, 5e6};
+  // work-precision (spring and chain): its dt sweep points and the stiffness sweep's k2
+  // (work_precision_params()); whether the report's runs are timed (else costed by counts alone,
+  // reproducible byte for byte), keyed in the configuration beside them
+  WorkPrecisionConfig work_precision;
   bool timing = true;
   // stability (spring)
   std::vector<double> threshold_dampings{0, 0.1, 1, 4};

@@ -137,10 +137,8 @@ ReportData run_report_studies(const ReportConfig& c, unsigned studies, ProgressH
   cc.workers = d.workers;
   if (studies & kCollisionStudy) d.collision = collision_study(cc);
 
-  WorkPrecisionConfig wc;
+  WorkPrecisionConfig wc = c.work_precision;  // its sweeps
   wc.methods = d.numerical_methods();
-  wc.points = c.wp_points;
-  wc.stiffnesses = c.wp_stiffnesses;
   wc.timing = c.timing;
   wc.workers = d.workers;
   if (studies & kWorkPrecisionStudy) d.work = work_precision_study(wc);

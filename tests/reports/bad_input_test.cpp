@@ -253,6 +253,8 @@ TEST(StudyParams, OneRuleEachWay) {
   one_rule_each_way(collision_params(), "collision");
   one_rule_each_way(dense_output_params(), "dense_output");
   one_rule_each_way(long_time_params(), "long_time");
+  one_rule_each_way(work_precision_params(), "work_precision");
+  one_rule_each_way(frames_params(), "frames");
 }
 
 }  // namespace

@@ -23,8 +23,8 @@ inline ReportConfig small_config() {
   c.convergence.points = 8;
   c.convergence.dt_min = 1e-3;
   c.timing = false;
-  c.wp_points = 4;
-  c.wp_stiffnesses = {5, 5e4};
+  c.work_precision.points = 4;
+  c.work_precision.stiffnesses = {5, 5e4};
   c.map_dt_points = 6;
   c.map_damping_points = 4;
   c.collision.dts = {0.002};

@@ -48,8 +48,8 @@ class Reproduce : public Section {
       md += wrapped(fmt::format("build/steplab study collision --dts {} --t-end {} --triangle-dt {}{}", join(c.collision.dts),
                                 c.collision.t_end, c.collision.triangle_dt, numerical));
     if (d.studies & kWorkPrecisionStudy)
-      md += wrapped(fmt::format("build/steplab study work-precision --points {} --stiffnesses {}{}{}", c.wp_points,
-                                join(c.wp_stiffnesses), c.timing ? "" : " --no-timing", numerical));
+      md += wrapped(fmt::format("build/steplab study work-precision --points {} --stiffnesses {}{}{}", c.work_precision.points,
+                                join(c.work_precision.stiffnesses), c.timing ? "" : " --no-timing", numerical));
     if (c.has_section("stiff_order") && c.covers(c.stiffened.scene))
       md += wrapped(fmt::format("build/steplab study convergence --scene {} --error max --dt-max {} --dt-min {} --points {} --t-end {} "
                                 "--sweep {}={}{}", scene_name(c.stiffened.scene), c.stiff_order.dt_max, c.stiff_order.dt_min,
