@@ -43,8 +43,11 @@ std::string legacy_testcases() {
   return out;
 }
 
-// The collision study's scenes: the rebound scene and the contact body (analysis/studies/defaults.hpp).
-bool collision_scene(const SceneKernel& s) { return s.name == kReboundScene || s.name == kContactBodyScene; }
+// The studies, in `steplab study --help`'s order: a new study is its file's maker and one line here.
+constexpr StudyCommand (*kStudies[])(CLI::App*) = {
+    convergence_command, damping_command, stability_command, work_precision_command, collision_command,
+    scaling_command,     frames_command,  long_time_command, dense_output_command,
+};
 
 // Its defaults: step 0.003, mass 0.1, stiffness 10, damping 0.01, rest length 1.
 struct LegacyArgs {
@@ -258,51 +261,8 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
 
   CLI::App* study = app.add_subcommand("study", "a study over many runs; prints a table, --json writes its data");
   study->require_subcommand(1);
-  ConvergenceArgs conv;
-  CLI::App* conv_cmd = study->add_subcommand("convergence", "errors against the exact solution over a dt sweep, fitted orders");
-  conv.scene.add_to(conv_cmd);
-  conv_cmd->add_option("--methods", conv.methods, "comma-separated methods (default every numerical method)");
-  add_params(conv_cmd, convergence_params(), conv.params, ConvergenceConfig{});
-  conv_cmd->add_flag("--reference", conv.reference,
-                     "errors against a reference solution (dopri5 at rtol 1e-13) even where an exact one exists; "
-                     "a scene without one always uses it");
-  conv_cmd->add_option("--error", conv.error, "error the order is fitted to: final, max, rms")->capture_default_str();
-  add_threads_option(conv_cmd, conv.threads);
-  add_lanes_option(conv_cmd, conv.lanes);
-  add_shard_option(conv_cmd, conv.shard);
-  conv.settings.add_to(conv_cmd);
-  conv_cmd->add_flag("--timing", conv.timing, "also time every run (work-precision; not reproducible byte for byte)");
-  conv_cmd->add_option("--sweep", conv.sweep, "NAME=V1,V2,...: the study at each value of the scene's parameter NAME "
-                      "(increasing), each method's order read against it (e.g. --scene target --sweep stiffness=1,1e2,1e4)");
-  conv_cmd->add_option("--json", conv.json, fmt::format("write JSON (schema {}; with --sweep {}) to this file", schema::convergence,
-                                                        schema::convergence_sweep));
-
-  StabilityArgs damp, stab;
-  CLI::App* damp_cmd = study->add_subcommand("damping", "spring: energy growth rate measured and predicted over damping and dt");
-  add_stability_options(damp_cmd, damp, true, false);
-  CLI::App* stab_cmd = study->add_subcommand("stability", "stability thresholds dt* predicted and measured: the spring (and a (dt, damping) map) "
-                                                          "or any scene that declares its modes (the rope of N masses)");
-  add_stability_options(stab_cmd, stab, false, true);
-
-  WorkPrecisionArgs wp;
-  CLI::App* wp_cmd = add_work_precision_command(study, wp);
-  CollisionArgs coll;
-  CLI::App* coll_cmd = study->add_subcommand("collision", "the bounce and the falling triangle on the penalty ground");
-  coll.scene.add_to(coll_cmd, collision_scene, false);
-  coll_cmd->add_option("--methods", coll.methods, "comma-separated methods (default every numerical method)");
-  add_params(coll_cmd, collision_params(), coll.params, CollisionConfig{});
-  add_threads_option(coll_cmd, coll.threads);
-  add_shard_option(coll_cmd, coll.shard);
-  coll_cmd->add_option("--json", coll.json, fmt::format("write JSON (schema {}) to this file", schema::collision));
-
-  ScalingArgs scaling;
-  CLI::App* scaling_cmd = add_scaling_command(study, scaling);
-  FramesArgs frames;
-  CLI::App* frames_cmd = add_frames_command(study, frames);
-  LongTimeArgs long_time;
-  CLI::App* long_time_cmd = add_long_time_command(study, long_time);
-  DenseOutputArgs dense;
-  CLI::App* dense_cmd = add_dense_output_command(study, dense);
+  std::vector<StudyCommand> studies;
+  for (StudyCommand (*make)(CLI::App*) : kStudies) studies.push_back(make(study));
 
   ReportArgs rep;
   CLI::App* rep_cmd = app.add_subcommand("report", "run every study and write report.md, report.pdf, figures/ and data/ into one folder");
@@ -325,7 +285,9 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   add_merge_command(app, merge);
 
   bool progress = false;
-  for (CLI::App* cmd : {conv_cmd, damp_cmd, stab_cmd, wp_cmd, coll_cmd, scaling_cmd, long_time_cmd, dense_cmd, rep_cmd, check_cmd})
+  std::vector<CLI::App*> with_progress{rep_cmd, check_cmd};
+  for (const StudyCommand& s : studies) with_progress.push_back(s.app);
+  for (CLI::App* cmd : with_progress)
     cmd->add_flag("--progress", progress, "progress on stderr also where it is not a terminal (a log): runs done, time spent and left");
 
   name_value_kinds(app);
@@ -342,15 +304,8 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
     check_no_empty_values(app);
     if (progress) ctx.progress = log_progress;
     if (run_cmd->parsed()) return run_command(run, ctx);
-    if (conv_cmd->parsed()) return convergence_command(conv, ctx);
-    if (damp_cmd->parsed()) return damping_command(damp, ctx);
-    if (stab_cmd->parsed()) return stability_command(stab, ctx);
-    if (coll_cmd->parsed()) return collision_command(coll, ctx);
-    if (wp_cmd->parsed()) return work_precision_command(wp, ctx);
-    if (scaling_cmd->parsed()) return scaling_command(scaling, ctx);
-    if (frames_cmd->parsed()) return frames_command(frames, ctx);
-    if (long_time_cmd->parsed()) return long_time_command(long_time, ctx);
-    if (dense_cmd->parsed()) return dense_output_command(dense, ctx);
+    for (const StudyCommand& s : studies)
+      if (s.app->parsed()) return s.run(ctx);
     if (rep_cmd->parsed()) {
       rep.methods_given = rep_methods->count() > 0, rep.scenes_given = rep_scenes->count() > 0,
       rep.sections_given = rep_sections->count() > 0;

@@ -2,7 +2,9 @@
 // (before writing anything) and returns the exit status.
 #pragma once
 
+#include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -60,26 +62,36 @@ struct RunArgs {
 
 int run_command(RunArgs& args, Context& ctx);
 
+// A study's command: its subcommand of `steplab study` with its options (their values held by the
+// command), and how it runs once parsed. Each study's own file gives its maker; the list of them
+// is reports/cli/cli.cpp's kStudies.
+struct StudyCommand {
+  CLI::App* app;
+  std::function<int(Context&)> run;
+};
+// A study's command from its two parts: `add` adds the subcommand and its options to `study`,
+// bound to arguments of type A that the command holds; `run` runs it on them once parsed.
+template <class A>
+StudyCommand study_command(CLI::App* study, CLI::App* (*add)(CLI::App*, A&), int (*run)(A&, Context&)) {
+  auto args = std::make_shared<A>();
+  CLI::App* app = add(study, *args);
+  return {app, [args, run](Context& ctx) { return run(*args, ctx); }};
+}
+StudyCommand convergence_command(CLI::App* study);    // reports/cli/study_commands.cpp
+StudyCommand damping_command(CLI::App* study);        // reports/cli/study_commands.cpp
+StudyCommand stability_command(CLI::App* study);      // reports/cli/study_commands.cpp
+StudyCommand collision_command(CLI::App* study);      // reports/cli/study_commands.cpp
+StudyCommand work_precision_command(CLI::App* study);  // reports/cli/work_precision_command.cpp
+StudyCommand scaling_command(CLI::App* study);        // reports/cli/scaling_command.cpp
+StudyCommand frames_command(CLI::App* study);         // reports/cli/frames_command.cpp
+StudyCommand long_time_command(CLI::App* study);      // reports/cli/long_time_command.cpp
+StudyCommand dense_output_command(CLI::App* study);   // reports/cli/dense_output_command.cpp
+// The old framework's amplitude table (`-testcase amplitude`), the spring's.
+int amplitude_command(const std::vector<double>& spring_params, double step, const Context& ctx);
+
 }  // namespace steplab
 
 namespace steplab {
-
-struct ConvergenceArgs {
-  SceneArgs scene;
-  SettingsArgs settings;  // of the methods on springs, for every run of theirs
-  std::string methods;  // comma-separated; empty: every numerical method
-  std::map<std::string, std::string> params;  // as typed, by name (convergence_params(); t-end empty: the study's)
-  std::string error = "final";
-  std::string sweep;  // NAME=V1,V2,...: the study at each value of one scene parameter
-  bool reference = false;
-  std::string threads = "0";
-  std::string lanes;  // the pack width: auto, 1, 2, 4 or 8 (add_lanes_option)
-  std::string shard;  // i/N: write part i of N to --json (reports/cli/parts.hpp)
-  bool timing = false;
-  std::string json;
-};
-
-int convergence_command(ConvergenceArgs& args, Context& ctx);
 
 // Shared by the commands.
 std::size_t resolve_method(std::string_view name);
@@ -103,118 +115,6 @@ int resolve_lanes(const std::string& text);
 void add_lanes_option(CLI::App* app, std::string& lanes);
 // --threads on a command (`help`: where a study times its runs one at a time, it says so).
 void add_threads_option(CLI::App* app, std::string& threads, const std::string& help = "worker threads, 0 = all cores");
-
-}  // namespace steplab
-
-namespace steplab {
-
-// `study damping` and `study stability` share these (the spring only).
-struct StabilityArgs {
-  SceneArgs scene;
-  std::string methods;
-  std::string dts = "0.01,0.05,0.2";         // damping sweep
-  std::string dampings;                      // damping sweep; empty: 0 .. 2 x critical (21) + 0.1
-  std::string threshold_dampings = "0,0.1,1,4";
-  std::string map_dt_points = "64", map_damping_points = "64", map_dt_min = "0.01", map_dt_max = "10";
-  std::string threads = "0";
-  std::string lanes;  // the pack width: auto, 1, 2, 4 or 8 (add_lanes_option)
-  std::string shard;  // i/N: write part i of N to --json (reports/cli/parts.hpp)
-  std::string json;
-};
-
-int damping_command(StabilityArgs& args, Context& ctx);
-int stability_command(StabilityArgs& args, Context& ctx);
-void add_stability_options(CLI::App* app, StabilityArgs& args, bool sweep, bool map);
-int amplitude_command(const std::vector<double>& spring_params, double step, const Context& ctx);
-
-}  // namespace steplab
-
-namespace steplab {
-
-struct CollisionArgs {
-  SceneArgs scene;  // parameters shared by the bounce and the triangle (ground, mass, gravity)
-  std::string methods;
-  std::map<std::string, std::string> params;  // as typed, by name (collision_params())
-  std::string threads = "0";
-  std::string shard;
-  std::string json;
-};
-
-int collision_command(CollisionArgs& args, Context& ctx);
-
-// `study frames` (reports/cli/frames_command.cpp): a mass-spring scene at a frame rate, each
-// method at substeps x sweeps (or CG iterations) = budget (analysis/studies/frames.hpp).
-struct FramesArgs {
-  SceneArgs scene;  // add_frames_command makes the rope the default, with the study's 32 masses and stiffness 5000
-  std::string methods;  // empty: analysis/studies/defaults.hpp, kFramesMethods
-  std::map<std::string, std::string> params;  // as typed, by name (frames_params())
-  std::string threads = "0";
-  bool no_timing = false, no_orders = false;
-  std::string shard;  // --shard i/N (reports/cli/parts.hpp)
-  std::string json;
-};
-CLI::App* add_frames_command(CLI::App* study, FramesArgs& args);
-int frames_command(FramesArgs& args, Context& ctx);
-
-// `study long-time` (reports/cli/long_time_command.cpp): a scene with invariants over many
-// periods, each invariant's error and its growth exponent (analysis/studies/long_time.hpp).
-struct LongTimeArgs {
-  SceneArgs scene;  // add_long_time_command makes Kepler's orbit the default
-  SettingsArgs settings;
-  std::string methods;  // empty: every ODE method that runs on the scene
-  std::map<std::string, std::string> params;  // as typed, by name (long_time_params())
-  std::string threads = "0";
-  std::string shard;  // --shard i/N (reports/cli/parts.hpp)
-  std::string json;
-};
-CLI::App* add_long_time_command(CLI::App* study, LongTimeArgs& args);
-int long_time_command(LongTimeArgs& args, Context& ctx);
-
-// `study dense-output` (reports/cli/dense_output_command.cpp): the order of each method's output
-// between steps beside its steps' (analysis/studies/dense_output.hpp).
-struct DenseOutputArgs {
-  SceneArgs scene;  // the spring by default
-  std::string methods;
-  std::map<std::string, std::string> params;  // as typed, by name (dense_output_params())
-  std::string threads = "0";
-  std::string shard;  // --shard i/N (reports/cli/parts.hpp)
-  std::string json;
-};
-CLI::App* add_dense_output_command(CLI::App* study, DenseOutputArgs& args);
-int dense_output_command(DenseOutputArgs& args, Context& ctx);
-
-// `study scaling` (reports/cli/scaling_command.cpp): cost against the number of masses of the rope or the soft body.
-struct ScalingArgs {
-  SceneArgs scene;  // the scene's parameters (--masses, --grid replaced by each size); add_scaling_command makes rope the default
-  std::string methods;
-  std::string sizes;  // empty: the scene's default sizes (scaling_command.cpp)
-  std::string error = "1e-4,1%";  // targets: absolute, or N% of the body's extent
-  std::string t_end = "2";
-  std::string frames = "100";
-  bool steps_divide_frames = false;
-  std::string max_steps;  // empty: the scene's default (scaling_command.cpp)
-  std::string threads = "0";
-  bool no_timing = false;
-  bool no_peers = false;
-  std::string shard;
-  std::string json;
-};
-
-CLI::App* add_scaling_command(CLI::App* study, ScalingArgs& args);
-int scaling_command(ScalingArgs& args, Context& ctx);
-
-struct WorkPrecisionArgs {
-  std::string methods;  // empty: every numerical method
-  std::map<std::string, std::string> params;  // as typed, by name (work_precision_params())
-  std::string threads = "0";
-  std::string lanes;  // the pack width: auto, 1, 2, 4 or 8 (add_lanes_option)
-  std::string shard;  // i/N: write part i of N to --json (reports/cli/parts.hpp)
-  bool no_timing = false;  // cost by evaluations only: reproducible byte for byte
-  std::string json;
-};
-
-CLI::App* add_work_precision_command(CLI::App* study, WorkPrecisionArgs& args);
-int work_precision_command(WorkPrecisionArgs& args, Context& ctx);
 
 }  // namespace steplab
 

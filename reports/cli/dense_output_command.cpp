@@ -19,9 +19,18 @@ namespace {
 
 bool has_exact(const SceneKernel& s) { return s.exact != nullptr && s.dim != Eigen::Dynamic; }
 
-}  // namespace
+// `study dense-output`: the order of each method's output
+// between steps beside its steps' (analysis/studies/dense_output.hpp).
+struct DenseOutputArgs {
+  SceneArgs scene;  // the spring by default
+  std::string methods;
+  std::map<std::string, std::string> params;  // as typed, by name (dense_output_params())
+  std::string threads = "0";
+  std::string shard;  // --shard i/N (reports/cli/parts.hpp)
+  std::string json;
+};
 
-CLI::App* add_dense_output_command(CLI::App* study, DenseOutputArgs& a) {
+CLI::App* add_dense_output(CLI::App* study, DenseOutputArgs& a) {
   CLI::App* cmd = study->add_subcommand("dense-output", "output between steps: each method's error inside its steps and its "
                                                         "order, beside the order at the steps");
   a.scene.scene = "spring";
@@ -34,7 +43,7 @@ CLI::App* add_dense_output_command(CLI::App* study, DenseOutputArgs& a) {
   return cmd;
 }
 
-int dense_output_command(DenseOutputArgs& a, Context& ctx) {
+int run_dense_output(DenseOutputArgs& a, Context& ctx) {
   const std::size_t scene = a.scene.scene_index();
   if (!has_exact(scene_kernel(scene)))
     throw UsageError(fmt::format("--scene {} has no exact solution to measure against; accepted: {}", scene_name(scene),
@@ -52,5 +61,9 @@ int dense_output_command(DenseOutputArgs& a, Context& ctx) {
   return run_study(ctx, a.shard, a.json, false, [&] { return dense_output_study(c); },
                    [](const DenseOutputResult& r) { return dense_output_table(r); }, [](const DenseOutputResult& r) { return dense_output_json(r); });
 }
+
+}  // namespace
+
+StudyCommand dense_output_command(CLI::App* study) { return study_command(study, add_dense_output, run_dense_output); }
 
 }  // namespace steplab

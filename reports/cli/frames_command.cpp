@@ -63,7 +63,21 @@ MethodSettings SettingsArgs::resolve(const std::vector<std::size_t>& methods) co
   return s;
 }
 
-CLI::App* add_frames_command(CLI::App* study, FramesArgs& a) {
+namespace {
+
+// `study frames`: a mass-spring scene at a frame rate, each
+// method at substeps x sweeps (or CG iterations) = budget (analysis/studies/frames.hpp).
+struct FramesArgs {
+  SceneArgs scene;  // frames_command makes the rope the default, with the study's 32 masses and stiffness 5000
+  std::string methods;  // empty: analysis/studies/defaults.hpp, kFramesMethods
+  std::map<std::string, std::string> params;  // as typed, by name (frames_params())
+  std::string threads = "0";
+  bool no_timing = false, no_orders = false;
+  std::string shard;  // --shard i/N (reports/cli/parts.hpp)
+  std::string json;
+};
+
+CLI::App* add_frames(CLI::App* study, FramesArgs& a) {
   CLI::App* cmd = study->add_subcommand("frames", "a mass-spring scene at a frame rate: substeps or sweeps, XPBD or large steps, "
                                                   "at what cost a frame");
   a.scene.scene = std::string(kFramesScene);
@@ -79,7 +93,7 @@ CLI::App* add_frames_command(CLI::App* study, FramesArgs& a) {
   return cmd;
 }
 
-int frames_command(FramesArgs& a, Context& ctx) {
+int run_frames(FramesArgs& a, Context& ctx) {
   FramesConfig c = default_frames_config();
   c.scene = a.scene.scene_index();
   if (!mass_spring(scene_kernel(c.scene)))
@@ -100,5 +114,9 @@ int frames_command(FramesArgs& a, Context& ctx) {
   return run_study(ctx, a.shard, a.json, c.timing, [&] { return frames_study(c); },
                    [](const FramesResult& r) { return frames_table(r); }, [](const FramesResult& r) { return frames_json(r); });
 }
+
+}  // namespace
+
+StudyCommand frames_command(CLI::App* study) { return study_command(study, add_frames, run_frames); }
 
 }  // namespace steplab

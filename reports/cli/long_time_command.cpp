@@ -21,9 +21,19 @@ namespace {
 
 bool has_invariants(const SceneKernel& s) { return s.period != nullptr; }
 
-}  // namespace
+// `study long-time`: a scene with invariants over many
+// periods, each invariant's error and its growth exponent (analysis/studies/long_time.hpp).
+struct LongTimeArgs {
+  SceneArgs scene;  // long_time_command makes Kepler's orbit the default
+  SettingsArgs settings;
+  std::string methods;  // empty: every ODE method that runs on the scene
+  std::map<std::string, std::string> params;  // as typed, by name (long_time_params())
+  std::string threads = "0";
+  std::string shard;  // --shard i/N (reports/cli/parts.hpp)
+  std::string json;
+};
 
-CLI::App* add_long_time_command(CLI::App* study, LongTimeArgs& a) {
+CLI::App* add_long_time(CLI::App* study, LongTimeArgs& a) {
   CLI::App* cmd = study->add_subcommand("long-time", "stable for how long? A scene's invariants (energy, angular momentum) "
                                                      "over many periods, their growth exponents, the phase error");
   a.scene.scene = std::string(kLongTimeScene);
@@ -37,7 +47,7 @@ CLI::App* add_long_time_command(CLI::App* study, LongTimeArgs& a) {
   return cmd;
 }
 
-int long_time_command(LongTimeArgs& a, Context& ctx) {
+int run_long_time(LongTimeArgs& a, Context& ctx) {
   const std::size_t scene = a.scene.scene_index();
   if (!has_invariants(scene_kernel(scene)))
     throw UsageError(fmt::format("--scene {} declares no invariants; accepted: {}", scene_name(scene), scene_list(has_invariants)));
@@ -55,5 +65,9 @@ int long_time_command(LongTimeArgs& a, Context& ctx) {
   return run_study(ctx, a.shard, a.json, false, [&] { return long_time_study(c); },
                    [](const LongTimeResult& r) { return long_time_table(r); }, [](const LongTimeResult& r) { return long_time_json(r); });
 }
+
+}  // namespace
+
+StudyCommand long_time_command(CLI::App* study) { return study_command(study, add_long_time, run_long_time); }
 
 }  // namespace steplab

@@ -21,7 +21,26 @@
 
 namespace steplab {
 
-CLI::App* add_scaling_command(CLI::App* study, ScalingArgs& a) {
+namespace {
+
+// `study scaling`: cost against the number of masses of the rope or the soft body.
+struct ScalingArgs {
+  SceneArgs scene;  // the scene's parameters (--masses, --grid replaced by each size); scaling_command makes rope the default
+  std::string methods;
+  std::string sizes;  // empty: the scene's default sizes (scaling_command.cpp)
+  std::string error = "1e-4,1%";  // targets: absolute, or N% of the body's extent
+  std::string t_end = "2";
+  std::string frames = "100";
+  bool steps_divide_frames = false;
+  std::string max_steps;  // empty: the scene's default (scaling_command.cpp)
+  std::string threads = "0";
+  bool no_timing = false;
+  bool no_peers = false;
+  std::string shard;
+  std::string json;
+};
+
+CLI::App* add_scaling(CLI::App* study, ScalingArgs& a) {
   CLI::App* cmd = study->add_subcommand("scaling", "rope of N masses or soft body of n x n: cost of a step and of a run at a "
                                                    "given error, largest stable step, against N; fitted exponents, crossover");
   a.scene.scene = std::string(kDefaultSizedScene);  // any scene that scales() (analysis/studies/scaling.hpp)
@@ -58,6 +77,8 @@ CLI::App* add_scaling_command(CLI::App* study, ScalingArgs& a) {
   return cmd;
 }
 
+}  // namespace
+
 // --error's list: each a positive number, or a percentage of the body's extent ("1%").
 std::vector<ErrorTarget> error_targets(const std::string& text) {
   std::vector<ErrorTarget> out;
@@ -76,7 +97,9 @@ std::vector<ErrorTarget> error_targets(const std::string& text) {
   return out;
 }
 
-int scaling_command(ScalingArgs& a, Context& ctx) {
+namespace {
+
+int run_scaling(ScalingArgs& a, Context& ctx) {
   const SceneKernel& scene = scene_kernel(a.scene.scene_index());
   if (!scales(scene)) {
     throw UsageError(fmt::format("--scene '{}' is not accepted by study scaling; accepted: {} (a scene of run-time size "
@@ -112,5 +135,9 @@ int scaling_command(ScalingArgs& a, Context& ctx) {
   return run_study(ctx, a.shard, a.json, c.timing, [&] { return scaling_study(c); },
                    [](const ScalingResult& r) { return scaling_table(r); }, [](const ScalingResult& r) { return scaling_json(r); });
 }
+
+}  // namespace
+
+StudyCommand scaling_command(CLI::App* study) { return study_command(study, add_scaling, run_scaling); }
 
 }  // namespace steplab

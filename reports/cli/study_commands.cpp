@@ -105,6 +105,21 @@ void add_lanes_option(CLI::App* app, std::string& lanes) {
 
 namespace {
 
+struct ConvergenceArgs {
+  SceneArgs scene;
+  SettingsArgs settings;  // of the methods on springs, for every run of theirs
+  std::string methods;  // comma-separated; empty: every numerical method
+  std::map<std::string, std::string> params;  // as typed, by name (convergence_params(); t-end empty: the study's)
+  std::string error = "final";
+  std::string sweep;  // NAME=V1,V2,...: the study at each value of one scene parameter
+  bool reference = false;
+  std::string threads = "0";
+  std::string lanes;  // the pack width: auto, 1, 2, 4 or 8 (add_lanes_option)
+  std::string shard;  // i/N: write part i of N to --json (reports/cli/parts.hpp)
+  bool timing = false;
+  std::string json;
+};
+
 // --sweep NAME=V1,V2,...: a parameter of the scene (not a count: those set its size) and its
 // values, each within the parameter's bound, strictly increasing.
 std::pair<std::size_t, std::vector<double>> parse_sweep(const std::string& text, std::size_t scene) {
@@ -125,9 +140,7 @@ std::pair<std::size_t, std::vector<double>> parse_sweep(const std::string& text,
   return {static_cast<std::size_t>(it - params.begin()), values};
 }
 
-}  // namespace
-
-int convergence_command(ConvergenceArgs& a, Context& ctx) {
+int run_convergence(ConvergenceArgs& a, Context& ctx) {
   ConvergenceConfig c;
   c.scene = a.scene.scene_index();
   const bool has_exact = scene_kernel(c.scene).has_exact;
@@ -163,12 +176,51 @@ int convergence_command(ConvergenceArgs& a, Context& ctx) {
                    [](const ConvergenceResult& r) { return convergence_table(r); }, [](const ConvergenceResult& r) { return convergence_json(r); });
 }
 
+CLI::App* add_convergence(CLI::App* study, ConvergenceArgs& a) {
+  CLI::App* cmd = study->add_subcommand("convergence", "errors against the exact solution over a dt sweep, fitted orders");
+  a.scene.add_to(cmd);
+  cmd->add_option("--methods", a.methods, "comma-separated methods (default every numerical method)");
+  add_params(cmd, convergence_params(), a.params, ConvergenceConfig{});
+  cmd->add_flag("--reference", a.reference,
+                "errors against a reference solution (dopri5 at rtol 1e-13) even where an exact one exists; "
+                "a scene without one always uses it");
+  cmd->add_option("--error", a.error, "error the order is fitted to: final, max, rms")->capture_default_str();
+  add_threads_option(cmd, a.threads);
+  add_lanes_option(cmd, a.lanes);
+  add_shard_option(cmd, a.shard);
+  a.settings.add_to(cmd);
+  cmd->add_flag("--timing", a.timing, "also time every run (work-precision; not reproducible byte for byte)");
+  cmd->add_option("--sweep", a.sweep, "NAME=V1,V2,...: the study at each value of the scene's parameter NAME "
+                  "(increasing), each method's order read against it (e.g. --scene target --sweep stiffness=1,1e2,1e4)");
+  cmd->add_option("--json", a.json, fmt::format("write JSON (schema {}; with --sweep {}) to this file", schema::convergence,
+                                                schema::convergence_sweep));
+  return cmd;
+}
+
+}  // namespace
+
+StudyCommand convergence_command(CLI::App* study) { return study_command(study, add_convergence, run_convergence); }
+
 }  // namespace steplab
 
 #include "analysis/studies/stability.hpp"
 
 namespace steplab {
 namespace {
+
+// `study damping` and `study stability` share these (the spring only).
+struct StabilityArgs {
+  SceneArgs scene;
+  std::string methods;
+  std::string dts = "0.01,0.05,0.2";         // damping sweep
+  std::string dampings;                      // damping sweep; empty: 0 .. 2 x critical (21) + 0.1
+  std::string threshold_dampings = "0,0.1,1,4";
+  std::string map_dt_points = "64", map_damping_points = "64", map_dt_min = "0.01", map_dt_max = "10";
+  std::string threads = "0";
+  std::string lanes;  // the pack width: auto, 1, 2, 4 or 8 (add_lanes_option)
+  std::string shard;  // i/N: write part i of N to --json (reports/cli/parts.hpp)
+  std::string json;
+};
 
 StabilityConfig stability_config(StabilityArgs& a, Context& ctx) {
   StabilityConfig c;
@@ -179,16 +231,10 @@ StabilityConfig stability_config(StabilityArgs& a, Context& ctx) {
   return c;
 }
 
-}  // namespace
-
-namespace {
-
 // The scenes each stability command takes: damping the spring's alone; stability the spring's
 // (thresholds over dampings, the map) or a scene's that declares its modes.
 bool spring_scene(const SceneKernel& s) { return runs_spring_study(s); }
 bool stability_scene(const SceneKernel& s) { return runs_spring_study(s) || s.modes != nullptr; }
-
-}  // namespace
 
 void add_stability_options(CLI::App* app, StabilityArgs& a, bool sweep, bool map) {
   // study stability: the spring or a scene with modes; study damping: the spring
@@ -214,7 +260,7 @@ void add_stability_options(CLI::App* app, StabilityArgs& a, bool sweep, bool map
                                         : fmt::format("write JSON (schema {}) to this file", schema::stability));
 }
 
-int damping_command(StabilityArgs& a, Context& ctx) {
+int run_damping(StabilityArgs& a, Context& ctx) {
   StabilityConfig c = stability_config(a, ctx);
   c.sweep_dts = number_list("--dts", a.dts, Bound::Positive);
   if (!a.dampings.empty()) c.sweep_dampings = number_list("--dampings", a.dampings, Bound::NonNegative);
@@ -222,8 +268,6 @@ int damping_command(StabilityArgs& a, Context& ctx) {
   return run_study(ctx, a.shard, a.json, false, [&] { return damping_sweep(c); }, [](const Rows& r) { return sweep_table(r); },
                    [&](const Rows& r) { return stability_json(c.params, {}, r, nullptr); });
 }
-
-namespace {
 
 // The spring's study (thresholds over dampings, the map: analysis/studies/stability.hpp) on the spring;
 // the modes' study on any other scene that declares its modes (core/scene.hpp).
@@ -247,9 +291,7 @@ int mode_stability_command(StabilityArgs& a, Context& ctx) {
                    [&](const Rows& r) { return mode_stability_json(c, r); });
 }
 
-}  // namespace
-
-int stability_command(StabilityArgs& a, Context& ctx) {
+int run_stability(StabilityArgs& a, Context& ctx) {
   const SceneKernel& scene = scene_kernel(a.scene.scene_index());
   if (!runs_spring_study(scene)) {
     if (modes_study(scene)) return mode_stability_command(a, ctx);
@@ -271,6 +313,24 @@ int stability_command(StabilityArgs& a, Context& ctx) {
                    [&](const Result& r) { return stability_json(c.params, r.first, {}, &r.second); });
 }
 
+CLI::App* add_damping(CLI::App* study, StabilityArgs& a) {
+  CLI::App* cmd = study->add_subcommand("damping", "spring: energy growth rate measured and predicted over damping and dt");
+  add_stability_options(cmd, a, true, false);
+  return cmd;
+}
+
+CLI::App* add_stability(CLI::App* study, StabilityArgs& a) {
+  CLI::App* cmd = study->add_subcommand("stability", "stability thresholds dt* predicted and measured: the spring (and a (dt, "
+                                                     "damping) map) or any scene that declares its modes (the rope of N masses)");
+  add_stability_options(cmd, a, false, true);
+  return cmd;
+}
+
+}  // namespace
+
+StudyCommand damping_command(CLI::App* study) { return study_command(study, add_damping, run_damping); }
+StudyCommand stability_command(CLI::App* study) { return study_command(study, add_stability, run_stability); }
+
 int amplitude_command(const std::vector<double>& spring_params, double step, const Context& ctx) {
   if (ctx.dry_run) return 0;
   std::vector<std::size_t> methods = resolve_methods("", true);
@@ -286,7 +346,21 @@ int amplitude_command(const std::vector<double>& spring_params, double step, con
 
 namespace steplab {
 
-int collision_command(CollisionArgs& a, Context& ctx) {
+namespace {
+
+struct CollisionArgs {
+  SceneArgs scene;  // parameters shared by the bounce and the triangle (ground, mass, gravity)
+  std::string methods;
+  std::map<std::string, std::string> params;  // as typed, by name (collision_params())
+  std::string threads = "0";
+  std::string shard;
+  std::string json;
+};
+
+// The collision study's scenes: the rebound scene and the contact body (analysis/studies/defaults.hpp).
+bool collision_scene(const SceneKernel& s) { return s.name == kReboundScene || s.name == kContactBodyScene; }
+
+int run_collision(CollisionArgs& a, Context& ctx) {
   CollisionConfig c;
   // A parameter given applies to each scene that has it (--ground-stiffness to both, --stiffness
   // to the triangle's springs).
@@ -315,6 +389,21 @@ int collision_command(CollisionArgs& a, Context& ctx) {
   return run_study(ctx, a.shard, a.json, false, [&] { return collision_study(c); },
                    [](const CollisionResult& r) { return collision_table(r); }, [](const CollisionResult& r) { return collision_json(r); });
 }
+
+CLI::App* add_collision(CLI::App* study, CollisionArgs& a) {
+  CLI::App* cmd = study->add_subcommand("collision", "the bounce and the falling triangle on the penalty ground");
+  a.scene.add_to(cmd, collision_scene, false);
+  cmd->add_option("--methods", a.methods, "comma-separated methods (default every numerical method)");
+  add_params(cmd, collision_params(), a.params, CollisionConfig{});
+  add_threads_option(cmd, a.threads);
+  add_shard_option(cmd, a.shard);
+  cmd->add_option("--json", a.json, fmt::format("write JSON (schema {}) to this file", schema::collision));
+  return cmd;
+}
+
+}  // namespace
+
+StudyCommand collision_command(CLI::App* study) { return study_command(study, add_collision, run_collision); }
 
 }  // namespace steplab
 

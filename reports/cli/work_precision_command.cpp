@@ -19,7 +19,19 @@
 
 namespace steplab {
 
-CLI::App* add_work_precision_command(CLI::App* study, WorkPrecisionArgs& a) {
+namespace {
+
+struct WorkPrecisionArgs {
+  std::string methods;  // empty: every numerical method
+  std::map<std::string, std::string> params;  // as typed, by name (work_precision_params())
+  std::string threads = "0";
+  std::string lanes;  // the pack width: auto, 1, 2, 4 or 8 (add_lanes_option)
+  std::string shard;  // i/N: write part i of N to --json (reports/cli/parts.hpp)
+  bool no_timing = false;  // cost by evaluations only: reproducible byte for byte
+  std::string json;
+};
+
+CLI::App* add_work_precision(CLI::App* study, WorkPrecisionArgs& a) {
   CLI::App* cmd = study->add_subcommand("work-precision", "cost against error on the spring and the stiff chain; "
                                                           "cheapest method per error level; stiffness crossover");
   cmd->add_option("--methods", a.methods,
@@ -34,7 +46,7 @@ CLI::App* add_work_precision_command(CLI::App* study, WorkPrecisionArgs& a) {
   return cmd;
 }
 
-int work_precision_command(WorkPrecisionArgs& a, Context& ctx) {
+int run_work_precision(WorkPrecisionArgs& a, Context& ctx) {
   WorkPrecisionConfig c;
   Solvers solvers = resolve_solvers(a.methods, adaptive_solvers(), "spring and chain", false);
   c.methods = std::move(solvers.methods);
@@ -46,5 +58,9 @@ int work_precision_command(WorkPrecisionArgs& a, Context& ctx) {
   return run_study(ctx, a.shard, a.json, c.timing, [&] { return work_precision_study(c); },
                    [](const WorkPrecisionResult& r) { return work_precision_table(r); }, [](const WorkPrecisionResult& r) { return work_precision_json(r); });
 }
+
+}  // namespace
+
+StudyCommand work_precision_command(CLI::App* study) { return study_command(study, add_work_precision, run_work_precision); }
 
 }  // namespace steplab
