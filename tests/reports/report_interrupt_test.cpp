@@ -47,7 +47,7 @@ int interrupted_report(const std::string& config, const std::string& out, int si
 }
 
 // A report with small studies (about a second), then gnuplot and pandoc; returns the config's path.
-std::string small_config(const TempDir& dir) {
+std::string small_config_file(const TempDir& dir) {
   const std::string path = dir.path("small.json");
   std::ofstream(path) << R"({"convergence": {"points": 8, "dt_min": 0.001},
                              "work_precision": {"points": 4, "stiffnesses": [5, 5e4], "timing": false},
@@ -60,7 +60,7 @@ std::string small_config(const TempDir& dir) {
 
 TEST(ReportInterrupted, PreviousReportStaysIntact) {
   TempDir dir;
-  const std::string config = small_config(dir), out = dir.path("report");
+  const std::string config = small_config_file(dir), out = dir.path("report");
   const Result first = run_steplab("report --config " + config + " --out " + out);
   ASSERT_EQ(first.status, 0) << first.err;
   const auto before = snapshot(out);

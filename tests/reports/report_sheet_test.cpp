@@ -41,7 +41,6 @@ double number_after(const std::string& md, const std::string& key) {
   return at == std::string::npos ? NAN : std::stod(md.substr(at + key.size()));
 }
 
-std::string markdown(const ReportConfig& c) { return report_markdown(build_report(c), "png", ""); }
 
 TEST(ReportSheet, IsTheSheetsMethodsScenesAndSections) {
   const ReportConfig c = sheet_report_config();

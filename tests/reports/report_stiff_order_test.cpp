@@ -10,7 +10,6 @@
 namespace steplab {
 namespace {
 
-std::string markdown(const ReportConfig& c) { return report_markdown(build_report(c), "png", ""); }
 
 ReportConfig stiff_only() {
   ReportConfig c = small_config();

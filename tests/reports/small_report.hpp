@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "analysis/kernel/kernel.hpp"
+#include "reports/document/report.hpp"
 #include "reports/document/report_config.hpp"
 
 namespace steplab {
@@ -38,5 +39,8 @@ inline ReportConfig small_config() {
   c.long_time_periods = 100;
   return c;
 }
+
+// The report's Markdown for `c`, its figures named as PNG, no source link.
+inline std::string markdown(const ReportConfig& c) { return report_markdown(build_report(c), "png", ""); }
 
 }  // namespace steplab
