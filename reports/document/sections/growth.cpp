@@ -52,9 +52,9 @@ std::string exponents_table(const ScalingResult& r) {
           fmt::format("\nExponents with their 95 % intervals, where the interval is at most +-{:g}; {}.\n\n", kExponentHalfWidth,
                       exponent_rule_text());
   if (!none.empty())
-    md += fmt::format("{} at these sizes {} (fewer than {} sizes, under {:g} decades of N, or an interval wider than +-{:g}).\n\n",
-                      rows.empty() ? "No exponent is a finding" : "No exponent is a finding either for",
-                      rows.empty() ? "" : and_list(none), kFitSizes, kFitDecades, kExponentHalfWidth);
+    md += fmt::format("No exponent is a finding {}at these sizes (fewer than {} sizes, under {:g} decades of N, or an interval wider "
+                      "than +-{:g}).\n\n",
+                      rows.empty() ? "" : fmt::format("either for {} ", and_list(none)), kFitSizes, kFitDecades, kExponentHalfWidth);
   return md;
 }
 

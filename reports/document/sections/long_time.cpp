@@ -36,10 +36,13 @@ void write_long_time_data(const LongTimeResult& r, const DataDir& dat) {
   }
 }
 
+// How a run that did not reach its end stopped: "blew up" (its energy or state beyond bound) or
+// "Newton gave up" (an implicit step's iteration did not converge); the text and the table alike.
+std::string stop_words(const LongTimeRow& r) { return r.status == RunStatus::NoConvergence ? "Newton gave up" : "blew up"; }
+
 // What became of a run that lost its orbit: how it ended, or its energy's change at the end.
 std::string fate(const LongTimeRow& r) {
-  if (r.status == RunStatus::Diverged) return fmt::format("blew up after {:.3g} periods", r.ended);
-  if (r.status == RunStatus::NoConvergence) return fmt::format("its Newton iteration gave up after {:.3g} periods", r.ended);
+  if (r.status != RunStatus::Ok) return fmt::format("{} after {:.3g} periods", stop_words(r), r.ended);
   const double c = r.change.empty() ? 0 : r.change[0];
   if (c > 1) return fmt::format("energy error {:.2g} times its start", c);
   return fmt::format("energy {}{:.3g} % at the end", c > 0 ? "+" : "", 100 * c);
@@ -219,13 +222,13 @@ class LongTime : public Section {
       for (const LongTimeRow& s : swing_.rows)
         if (s.method == row.method) sw = &s;
       const bool ok = row.status == RunStatus::Ok && !row.error.empty() && !row.error[0].empty();
-      const std::string blew = fmt::format("blew up at {:.3g}", row.ended);
+      const std::string blew = row.status == RunStatus::Ok ? "-" : fmt::format("{} at {:.3g}", stop_words(row), row.ended);
       md += fmt::format("| `{}` | {} | {} | {} | {} | {} | {} | {} | {} |\n", i.name, i.order, i.symplectic ? "yes" : "no",
                         ok ? growth_text(row.growth[0]) : blew, ok ? fmt::format("{}{}", g2(row.error[0].back()), row.round_off[0] ? " (R)" : "") : "-",
                         ok && row.error.size() > 1 ? fmt::format("{}{}", g2(row.error[1].back()), row.round_off[1] ? " (R)" : "") : "-",
                         growth_text(row.position_growth),
                         row.out_of_phase > 0 ? fmt::format("{:.3g}{}", row.out_of_phase, row.out_of_phase_extrapolated ? " (extr.)" : "") : "-",
-                        sw && sw->status == RunStatus::Ok ? growth_text(sw->growth[0]) : sw ? fmt::format("blew up at {:.3g}", sw->ended) : "-");
+                        sw && sw->status == RunStatus::Ok ? growth_text(sw->growth[0]) : sw ? fmt::format("{} at {:.3g}", stop_words(*sw), sw->ended) : "-");
     }
     return md + fmt::format("\nGrowth: exponent [95 % interval] from {:g} periods on. Sym.: symplectic. (R): within round-off's level. Out of phase: when the "
                             "position error reaches the orbit's semi-major axis ({}: extrapolated from the fitted growth past the run).\n\n",
