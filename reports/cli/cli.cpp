@@ -114,11 +114,11 @@ std::string_view value_kind(std::string_view command, std::string_view option) {
   for (const auto& [name, kind] : by_command)
     if (name.substr(0, name.find(' ')) == command && name.substr(name.find(' ') + 1) == option) return kind;
   static constexpr std::pair<std::string_view, std::string_view> kinds[] = {
-      {"--samples", "WHOLE"},         {"--error-every", "WHOLE"},     {"--points", "WHOLE"},          {"--threads", "WHOLE"},
+      {"--samples", "WHOLE"},         {"--error-every", "WHOLE"},     {"--threads", "WHOLE"},
       {"--lanes", "auto|1|2|4|8"},    {"--shard", "i/N"},             {"--frames", "WHOLE"},
       {"--max-steps", "WHOLE"},       {"--map-dt-points", "WHOLE"},   {"--map-damping-points", "WHOLE"},
       {"--methods", "NAME,..."},      {"--dts", "NUMBER,..."},        {"--threshold-dampings", "NUMBER,..."},
-      {"--dampings", "NUMBER,..."},   {"--stiffnesses", "NUMBER,..."}, {"--method", "NAME"},
+      {"--dampings", "NUMBER,..."},   {"--method", "NAME"},
       {"--scene", "NAME"},            {"--testcase", "NAME"},         {"--json", "FILE"},
       {"--config", "FILE"},           {"--out", "FOLDER"},            {"--scenes", "NAME,..."},
       {"--sweep", "NAME=NUMBER,..."}, {"--sections", "NAME,..."},     {"--sweeps", "WHOLE"},

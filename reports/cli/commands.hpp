@@ -80,7 +80,7 @@ StudyCommand study_command(CLI::App* study, CLI::App* (*add)(CLI::App*, A&), int
 StudyCommand convergence_command(CLI::App* study);    // reports/cli/study_commands.cpp
 StudyCommand damping_command(CLI::App* study);        // reports/cli/study_commands.cpp
 StudyCommand stability_command(CLI::App* study);      // reports/cli/study_commands.cpp
-StudyCommand collision_command(CLI::App* study);      // reports/cli/study_commands.cpp
+StudyCommand collision_command(CLI::App* study);      // reports/cli/collision_command.cpp
 StudyCommand work_precision_command(CLI::App* study);  // reports/cli/work_precision_command.cpp
 StudyCommand scaling_command(CLI::App* study);        // reports/cli/scaling_command.cpp
 StudyCommand frames_command(CLI::App* study);         // reports/cli/frames_command.cpp

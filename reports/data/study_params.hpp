@@ -110,17 +110,16 @@ void add_params(CLI::App* cmd, std::span<const StudyParam<C>> table, std::map<st
   for (const StudyParam<C>& p : table) {
     std::string& t = text[std::string(p.name)];
     std::string help = fmt::format("{} ({})", p.help, range_text(p.range)), kind = "NUMBER";
-    if (const auto* d = std::get_if<double C::*>(&p.field)) t = short_number(c.**d);
-    if (const auto* i = std::get_if<int C::*>(&p.field)) t = fmt::format("{}", c.**i), kind = "WHOLE";
-    if (const auto* l = std::get_if<std::vector<double> C::*>(&p.field)) {
+    if (std::holds_alternative<int C::*>(p.field)) kind = "WHOLE";
+    if (std::holds_alternative<std::vector<double> C::*>(p.field)) kind = "NUMBER,...";
+    if (std::holds_alternative<std::vector<int> C::*>(p.field)) kind = "WHOLE,...";
+    if (!p.default_help.empty()) help += fmt::format(" (default {})", p.default_help);
+    else if (const auto* d = std::get_if<double C::*>(&p.field)) t = short_number(c.**d);
+    else if (const auto* i = std::get_if<int C::*>(&p.field)) t = fmt::format("{}", c.**i);
+    else if (const auto* l = std::get_if<std::vector<double> C::*>(&p.field))
       for (double v : c.**l) t += fmt::format("{}{}", t.empty() ? "" : ",", short_number(v));
-      kind = "NUMBER,...";
-    }
-    if (const auto* l = std::get_if<std::vector<int> C::*>(&p.field)) {
-      for (int v : c.**l) t += fmt::format("{}{}", t.empty() ? "" : ",", v);
-      kind = "WHOLE,...";
-    }
-    if (!p.default_help.empty()) t.clear(), help += fmt::format(" (default {})", p.default_help);
+    else
+      for (int v : c.*std::get<std::vector<int> C::*>(p.field)) t += fmt::format("{}{}", t.empty() ? "" : ",", v);
     CLI::Option* o = cmd->add_option(option_name(p.name), t, help)->type_name(kind);
     if (!t.empty()) o->capture_default_str();
   }
@@ -138,15 +137,16 @@ void read_params(std::span<const StudyParam<C>> table, const std::map<std::strin
       check_param(p, where, v, item);
       return v;
     };
+    const auto whole = [&](const std::string& item) { return whole_param(p, where, item, parse_number(where, item, Bound::Any)); };
     if (const auto* d = std::get_if<double C::*>(&p.field)) c.**d = one(t);
-    else if (const auto* i = std::get_if<int C::*>(&p.field)) c.**i = whole_param(p, where, t, parse_number(where, t, Bound::Any));
+    else if (const auto* i = std::get_if<int C::*>(&p.field)) c.**i = whole(t);
     else if (const auto* l = std::get_if<std::vector<double> C::*>(&p.field)) {
       (c.**l).clear();
       for (const std::string& item : split_list(t)) (c.**l).push_back(one(item));
     } else {
       std::vector<int>& list = c.*std::get<std::vector<int> C::*>(p.field);
       list.clear();
-      for (const std::string& item : split_list(t)) list.push_back(whole_param(p, where, item, parse_number(where, item, Bound::Any)));
+      for (const std::string& item : split_list(t)) list.push_back(whole(item));
     }
   }
 }
@@ -180,21 +180,19 @@ void params_from_json(std::span<const StudyParam<C>> table, const nlohmann::orde
     const bool list = std::holds_alternative<std::vector<double> C::*>(p.field) || std::holds_alternative<std::vector<int> C::*>(p.field);
     if (list && (!value.is_array() || value.empty()))
       throw UsageError(fmt::format("{} is not a non-empty array; accepted: numbers {}", where, range_text(p.range)));
+    const auto whole = [&](const nlohmann::ordered_json& x) {
+      const double v = one(x);
+      return whole_param(p, where, short_number(v), v);
+    };
     if (const auto* d = std::get_if<double C::*>(&p.field)) c.**d = one(value);
-    else if (const auto* i = std::get_if<int C::*>(&p.field)) {
-      const double v = one(value);
-      c.**i = whole_param(p, where, short_number(v), v);
-    }
+    else if (const auto* i = std::get_if<int C::*>(&p.field)) c.**i = whole(value);
     else if (const auto* l = std::get_if<std::vector<double> C::*>(&p.field)) {
       (c.**l).clear();
       for (const auto& x : value) (c.**l).push_back(one(x));
     } else {
       std::vector<int>& out = c.*std::get<std::vector<int> C::*>(p.field);
       out.clear();
-      for (const auto& x : value) {
-        const double v = one(x);
-        out.push_back(whole_param(p, where, short_number(v), v));
-      }
+      for (const auto& x : value) out.push_back(whole(x));
     }
   }
 }
