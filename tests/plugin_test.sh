@@ -352,7 +352,7 @@ for r in scal["rows"]:
 print("beads: run, convergence, stability and scaling ok")
 EOF
 # ... and the report's "As the system grows", which refines every scene of run-time size with
-# modes: its paragraph, its exponents from its own study (data/growth/scaling_beads.json).
+# modes: its paragraph, its exponents from its own study (data/scaling/scaling_beads.json).
 cat > small.json <<'EOF'
 {"convergence": {"points": 4, "dt_min": 0.01}, "work_precision": {"points": 3, "stiffnesses": [5], "timing": false},
  "stability": {"map_dt_points": 4, "map_damping_points": 4}, "collision": {"t_end": 1, "dts": [0.004]},
@@ -361,11 +361,11 @@ cat > small.json <<'EOF'
 EOF
 "$tool" report --print-config | python3 -c 'import json, sys; assert "beads" in json.load(sys.stdin)["scaling"]'
 "$tool" report --config small.json --out rep >/dev/null
-python3 - rep/report.md rep/data/growth/scaling_beads.json <<'EOF'
+python3 - rep/report.md rep/data/scaling/scaling_beads.json <<'EOF'
 import sys, json
 md, scal = open(sys.argv[1]).read(), json.load(open(sys.argv[2]))
-growth = md[md.index("## As the system grows"):]
-beads = growth[growth.index("String of N beads**"):]
+scaling = md[md.index("## As the system grows"):]
+beads = scaling[scaling.index("String of N beads**"):]
 beads = beads[:beads.index("\n**")] if "\n**" in beads else beads
 table = beads[beads.index("| solver | cost ~"):].split("\n\n")[0] if "| solver | cost ~" in beads else ""
 assert [r["beads"] for r in scal["rows"] if r["solver"] == "rk4"] == [4, 8]

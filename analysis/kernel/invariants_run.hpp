@@ -1,4 +1,4 @@
-// The long run of method M on a scene with invariants (PairKernel::long_run, analysis/kernel/
+// A run of method M that reads a scene's invariants at every step (PairKernel::invariants_run, analysis/kernel/
 // kernel.hpp), instantiated by the generated translation units alone (kernel_impl.hpp).
 #pragma once
 
@@ -16,13 +16,13 @@ namespace steplab {
 // Every step's invariants read, their largest distance from the start kept; the state checked
 // every step as a run's is (finite, its energy within the blow-up bound of core/simulate.hpp): a
 // blow-up ends the run, its samples after it left out.
-template <class M, HasInvariants S> LongRun long_run(Params p, const LongRunSpec& spec) {
+template <class M, HasInvariants S> InvariantsRun invariants_run(Params p, const InvariantsRunSpec& spec) {
   const S s(p);
   constexpr std::size_t ni = S::invariant_names.size();
   State<S::dim> y = s.initial();
   const std::array<double, ni> i0 = s.invariants(y.x, y.v);
   std::array<double, ni> largest{}, now = i0;
-  LongRun out;
+  InvariantsRun out;
   out.invariant0.assign(i0.begin(), i0.end());
   out.largest.assign(ni, {});
   const double e0 = s.energy(y.x, y.v), blow_up = blow_up_energy(s, y, e0);

@@ -60,16 +60,16 @@ struct Observed {
   std::vector<BounceEvent> bounces;
 };
 
-// A long run on a scene with invariants (core/invariants.hpp; analysis/studies/long_time.hpp):
+// A run that reads the invariants (core/invariants.hpp; analysis/studies/long_time.hpp):
 // steps of dt up to the last of `at`, and at each of those step counts, for each invariant, the
 // largest |I - I0| over the steps so far (every step is read: an oscillating error is caught at
 // its peak), and the position error against the exact solution where the scene has one.
-struct LongRunSpec {
+struct InvariantsRunSpec {
   double dt = 0.01;
   std::vector<long long> at;  // ascending step counts
   MethodSettings settings{};
 };
-struct LongRun {
+struct InvariantsRun {
   RunStatus status = RunStatus::Ok;
   long long steps = 0;                        // steps completed with a finite state
   std::vector<double> invariant0, last;       // each invariant's value at the start and at the last step
@@ -109,8 +109,8 @@ struct PairKernel {
   // methods that core/batch.hpp's PackedStep admits); null elsewhere. Keeps
   // no samples (run_all gives runs that ask for them to run()).
   void (*run_batch)(std::span<const BatchRun> runs, AnyResult* out, int width) = nullptr;
-  // Scenes with invariants (core/invariants.hpp): the long run (LongRunSpec above).
-  LongRun (*long_run)(Params, const LongRunSpec&) = nullptr;
+  // Scenes with invariants (core/invariants.hpp): a run that reads them (InvariantsRunSpec above).
+  InvariantsRun (*invariants_run)(Params, const InvariantsRunSpec&) = nullptr;
 };
 
 // One method, whatever the scene.

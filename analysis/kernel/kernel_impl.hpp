@@ -13,7 +13,7 @@
 #include <string_view>
 
 #include "analysis/kernel/kernel.hpp"
-#include "analysis/kernel/long_run.hpp"
+#include "analysis/kernel/invariants_run.hpp"
 #include "analysis/kernel/step_map.hpp"
 #include "analysis/kernel/timing.hpp"
 #include "core/batch.hpp"
@@ -258,7 +258,7 @@ template <class M, Scene S> constexpr PairKernel make_pair() {
   if constexpr (PackedStep<M, S>) k.run_batch = &BatchCode<M, S>::run_batch;
   if constexpr (HasExact<S> || S::dim == Eigen::Dynamic) k.run_counted = &C::run_counted;
   if constexpr ((HasContact<S> && S::dim != Eigen::Dynamic) || S::dim == 1) k.run_observed = &C::run_observed;
-  if constexpr (HasInvariants<S>) k.long_run = &long_run<M, S>;
+  if constexpr (HasInvariants<S>) k.invariants_run = &invariants_run<M, S>;
   if constexpr (S::dim == 1) {
     k.step_flat = &C::step_flat;
     k.at_rest_flat = &C::at_rest_flat;

@@ -102,11 +102,11 @@ LongTimeResult long_time_study(const LongTimeConfig& c) {
   // One task a row, through study_map: a shard (analysis/kernel/shard.hpp) runs its part of them.
   out.rows = study_map<LongTimeRow>(out.rows.size(), c.workers, [&](std::size_t i) {
     LongTimeRow r = out.rows[i];
-    LongRunSpec spec;
+    InvariantsRunSpec spec;
     spec.dt = r.dt;
     spec.at = sample_steps(c.periods, c.samples_per_decade, r.steps_per_period);
     spec.settings = c.settings;
-    const LongRun run = pair_kernel(r.method, c.scene).long_run(c.params, spec);
+    const InvariantsRun run = pair_kernel(r.method, c.scene).invariants_run(c.params, spec);
     r.status = run.status;
     r.ended = static_cast<double>(run.steps) / r.steps_per_period;
     const std::size_t reached = run.largest.empty() ? 0 : run.largest[0].size();

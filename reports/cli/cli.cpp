@@ -18,9 +18,9 @@
 #include "reports/cli/input_checks.hpp"
 #include "analysis/kernel/kernel.hpp"
 #include "reports/data/inputs.hpp"
-#include "reports/cli/parts.hpp"
+#include "reports/cli/shards.hpp"
 #include "reports/data/schemas.hpp"
-#include "reports/data/study_output.hpp"
+#include "reports/data/studies.hpp"
 #include "analysis/kernel/parallel.hpp"
 #include "analysis/studies/local_error.hpp"
 #include "analysis/studies/defaults.hpp"
@@ -43,11 +43,10 @@ std::string legacy_testcases() {
   return out;
 }
 
-// The studies, in `steplab study --help`'s order: a new study is its file's maker and one line here.
-constexpr StudyCommand (*kStudies[])(CLI::App*) = {
-    convergence_command, damping_command, stability_command, work_precision_command, collision_command,
-    scaling_command,     frames_command,  long_time_command, dense_output_command,
-};
+// The studies, in `steplab study --help`'s order (STEPLAB_STUDIES, reports/data/studies.hpp).
+#define STEPLAB_STUDY_MAKER(name) name##_command,
+constexpr StudyCommand (*kStudies[])(CLI::App*) = {STEPLAB_STUDIES(STEPLAB_STUDY_MAKER)};
+#undef STEPLAB_STUDY_MAKER
 
 // Its defaults: step 0.003, mass 0.1, stiffness 10, damping 0.01, rest length 1.
 struct LegacyArgs {

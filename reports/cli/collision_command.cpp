@@ -7,10 +7,9 @@
 #include "analysis/studies/collision.hpp"
 #include "analysis/studies/defaults.hpp"
 #include "reports/cli/commands.hpp"
-#include "reports/cli/parts.hpp"
+#include "reports/cli/shards.hpp"
 #include "reports/data/inputs.hpp"
-#include "reports/data/schemas.hpp"
-#include "reports/data/study_output.hpp"
+#include "reports/data/studies.hpp"
 
 namespace steplab {
 namespace {

@@ -15,6 +15,7 @@
 #include "analysis/peers/peers.hpp"
 #include "analysis/kernel/shard.hpp"
 #include "reports/cli/scene_args.hpp"
+#include "reports/data/studies.hpp"
 
 namespace steplab {
 
@@ -64,7 +65,7 @@ int run_command(RunArgs& args, Context& ctx);
 
 // A study's command: its subcommand of `steplab study` with its options (their values held by the
 // command), and how it runs once parsed. Each study's own file gives its maker; the list of them
-// is reports/cli/cli.cpp's kStudies.
+// is STEPLAB_STUDIES (reports/data/studies.hpp).
 struct StudyCommand {
   CLI::App* app;
   std::function<int(Context&)> run;
@@ -77,15 +78,12 @@ StudyCommand study_command(CLI::App* study, CLI::App* (*add)(CLI::App*, A&), int
   CLI::App* app = add(study, *args);
   return {app, [args, run](Context& ctx) { return run(*args, ctx); }};
 }
-StudyCommand convergence_command(CLI::App* study);    // reports/cli/study_commands.cpp
-StudyCommand damping_command(CLI::App* study);        // reports/cli/study_commands.cpp
-StudyCommand stability_command(CLI::App* study);      // reports/cli/study_commands.cpp
-StudyCommand collision_command(CLI::App* study);      // reports/cli/collision_command.cpp
-StudyCommand work_precision_command(CLI::App* study);  // reports/cli/work_precision_command.cpp
-StudyCommand scaling_command(CLI::App* study);        // reports/cli/scaling_command.cpp
-StudyCommand frames_command(CLI::App* study);         // reports/cli/frames_command.cpp
-StudyCommand long_time_command(CLI::App* study);      // reports/cli/long_time_command.cpp
-StudyCommand dense_output_command(CLI::App* study);   // reports/cli/dense_output_command.cpp
+// Each study's command, `<name>_command`, for each name of the list of studies
+// (reports/data/studies.hpp): reports/cli/<name>_command.cpp (convergence, damping and stability:
+// reports/cli/study_commands.cpp).
+#define STEPLAB_STUDY_COMMAND(name) StudyCommand name##_command(CLI::App* study);
+STEPLAB_STUDIES(STEPLAB_STUDY_COMMAND)
+#undef STEPLAB_STUDY_COMMAND
 // The old framework's amplitude table (`-testcase amplitude`), the spring's.
 int amplitude_command(const std::vector<double>& spring_params, double step, const Context& ctx);
 

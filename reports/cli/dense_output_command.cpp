@@ -8,11 +8,10 @@
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/studies/dense_output.hpp"
 #include "reports/cli/commands.hpp"
-#include "reports/cli/parts.hpp"
+#include "reports/cli/shards.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/data/output.hpp"
-#include "reports/data/schemas.hpp"
-#include "reports/data/study_output.hpp"
+#include "reports/data/studies.hpp"
 
 namespace steplab {
 namespace {
@@ -26,7 +25,7 @@ struct DenseOutputArgs {
   std::string methods;
   std::map<std::string, std::string> params;  // as typed, by name (dense_output_params())
   std::string threads = "0";
-  std::string shard;  // --shard i/N (reports/cli/parts.hpp)
+  std::string shard;  // --shard i/N (reports/cli/shards.hpp)
   std::string json;
 };
 

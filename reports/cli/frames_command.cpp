@@ -11,11 +11,10 @@
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/studies/frames.hpp"
 #include "reports/cli/commands.hpp"
-#include "reports/cli/parts.hpp"
+#include "reports/cli/shards.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/data/output.hpp"
-#include "reports/data/schemas.hpp"
-#include "reports/data/study_output.hpp"
+#include "reports/data/studies.hpp"
 
 namespace steplab {
 namespace {
@@ -73,7 +72,7 @@ struct FramesArgs {
   std::map<std::string, std::string> params;  // as typed, by name (frames_params())
   std::string threads = "0";
   bool no_timing = false, no_orders = false;
-  std::string shard;  // --shard i/N (reports/cli/parts.hpp)
+  std::string shard;  // --shard i/N (reports/cli/shards.hpp)
   std::string json;
 };
 

@@ -10,11 +10,10 @@
 #include "analysis/studies/defaults.hpp"
 #include "analysis/studies/long_time.hpp"
 #include "reports/cli/commands.hpp"
-#include "reports/cli/parts.hpp"
+#include "reports/cli/shards.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/data/output.hpp"
-#include "reports/data/schemas.hpp"
-#include "reports/data/study_output.hpp"
+#include "reports/data/studies.hpp"
 
 namespace steplab {
 namespace {
@@ -29,7 +28,7 @@ struct LongTimeArgs {
   std::string methods;  // empty: every ODE method that runs on the scene
   std::map<std::string, std::string> params;  // as typed, by name (long_time_params())
   std::string threads = "0";
-  std::string shard;  // --shard i/N (reports/cli/parts.hpp)
+  std::string shard;  // --shard i/N (reports/cli/shards.hpp)
   std::string json;
 };
 

@@ -15,9 +15,8 @@
 #include "reports/data/inputs.hpp"
 #include "reports/data/output.hpp"
 #include "reports/data/run_json.hpp"
-#include "reports/cli/parts.hpp"
-#include "reports/data/study_output.hpp"
-#include "reports/data/schemas.hpp"
+#include "reports/cli/shards.hpp"
+#include "reports/data/studies.hpp"
 
 namespace steplab {
 
@@ -29,10 +28,8 @@ struct ScalingArgs {
   std::string methods;
   std::string sizes;  // empty: the scene's default sizes (scaling_command.cpp)
   std::string error = "1e-4,1%";  // targets: absolute, or N% of the body's extent
-  std::string t_end = "2";
-  std::string frames = "100";
+  std::map<std::string, std::string> params;  // scaling_params(), as typed (max-steps empty: the scene's)
   bool steps_divide_frames = false;
-  std::string max_steps;  // empty: the scene's default (scaling_command.cpp)
   std::string threads = "0";
   bool no_timing = false;
   bool no_peers = false;
@@ -62,13 +59,9 @@ CLI::App* add_scaling(CLI::App* study, ScalingArgs& a) {
   cmd->add_option("--error", a.error, "comma-separated target position errors (the largest over the coordinates and the "
                                       "frames), each a number or a percentage of the body's extent at rest (1% the visual one)")
       ->capture_default_str();
-  cmd->add_option("--t-end", a.t_end, "simulated time")->capture_default_str();
-  cmd->add_option("--frames", a.frames, "output frames up to t_end where the error is measured (1 .. 10000); a fixed-step "
-                                        "method interpolates each inside its step (its output between steps)")->capture_default_str();
+  add_params(cmd, scaling_params(), a.params, ScalingConfig{});
   cmd->add_flag("--steps-divide-frames", a.steps_divide_frames, "a fixed step divides the frame interval and each frame is a "
                                                                 "step's state (no output between steps), as in an animation loop");
-  cmd->add_option("--max-steps", a.max_steps, "a search tries no step that needs more steps than this (default 2000000 "
-                                              "on the rope, 200000 on the soft body, whose implicit steps cost a sparse solve each)");
   add_threads_option(cmd, a.threads, "worker threads for the searches (timings run one at a time)");
   cmd->add_flag("--no-timing", a.no_timing, "cost by force evaluations only (reproducible byte for byte)");
   cmd->add_flag("--no-peers", a.no_peers, "steplab's fixed-step methods only (no dopri5, CVODE, Boost.Odeint)");
@@ -126,10 +119,8 @@ int run_scaling(ScalingArgs& a, Context& ctx) {
     check_distinct("--sizes", std::vector<double>(c.sizes.begin(), c.sizes.end()));
   }
   c.targets = error_targets(a.error);
-  c.t_end = parse_number("--t-end", a.t_end, Bound::Positive);
-  c.frames = static_cast<int>(parse_count("--frames", a.frames, 1, 10'000));
+  read_params(scaling_params(), a.params, c);
   c.steps_divide_frames = a.steps_divide_frames;
-  if (!a.max_steps.empty()) c.max_steps = parse_count("--max-steps", a.max_steps, 1, 1'000'000'000);
   c.workers = ctx.workers(resolve_thread_count(a.threads));
   c.timing = !a.no_timing;
   return run_study(ctx, a.shard, a.json, c.timing, [&] { return scaling_study(c); },

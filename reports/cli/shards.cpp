@@ -1,4 +1,4 @@
-#include "reports/cli/parts.hpp"
+#include "reports/cli/shards.hpp"
 
 #include <cstdio>
 #include <fstream>

@@ -12,9 +12,8 @@
 #include "reports/cli/commands.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/data/output.hpp"
-#include "reports/cli/parts.hpp"
-#include "reports/data/schemas.hpp"
-#include "reports/data/study_output.hpp"
+#include "reports/cli/shards.hpp"
+#include "reports/data/studies.hpp"
 
 namespace steplab {
 
@@ -115,7 +114,7 @@ struct ConvergenceArgs {
   bool reference = false;
   std::string threads = "0";
   std::string lanes;  // the pack width: auto, 1, 2, 4 or 8 (add_lanes_option)
-  std::string shard;  // i/N: write part i of N to --json (reports/cli/parts.hpp)
+  std::string shard;  // i/N: write part i of N to --json (reports/cli/shards.hpp)
   bool timing = false;
   std::string json;
 };
@@ -212,13 +211,11 @@ namespace {
 struct StabilityArgs {
   SceneArgs scene;
   std::string methods;
-  std::string dts = "0.01,0.05,0.2";         // damping sweep
-  std::string dampings;                      // damping sweep; empty: 0 .. 2 x critical (21) + 0.1
-  std::string threshold_dampings = "0,0.1,1,4";
-  std::string map_dt_points = "64", map_damping_points = "64", map_dt_min = "0.01", map_dt_max = "10";
+  std::map<std::string, std::string> params;  // stability_params(), as typed
+  std::string dampings;                       // damping sweep; empty: 0 .. 2 x critical (21) + 0.1
   std::string threads = "0";
   std::string lanes;  // the pack width: auto, 1, 2, 4 or 8 (add_lanes_option)
-  std::string shard;  // i/N: write part i of N to --json (reports/cli/parts.hpp)
+  std::string shard;  // i/N: write part i of N to --json (reports/cli/shards.hpp)
   std::string json;
 };
 
@@ -240,17 +237,12 @@ void add_stability_options(CLI::App* app, StabilityArgs& a, bool sweep, bool map
   // study stability: the spring or a scene with modes; study damping: the spring
   a.scene.add_to(app, map ? stability_scene : spring_scene, map);
   app->add_option("--methods", a.methods, "comma-separated methods (default every numerical method)");
+  // damping: the sweep's steps (and its dampings); stability: the thresholds' dampings and the map
   if (sweep) {
-    app->add_option("--dts", a.dts, "comma-separated steps of the sweep")->capture_default_str();
+    add_params(app, stability_params(), a.params, StabilityConfig{}, [](std::string_view p) { return p == "dts"; });
     app->add_option("--dampings", a.dampings, "comma-separated dampings (default 0 to twice critical in 21 steps, and 0.1)");
   } else {
-    app->add_option("--threshold-dampings", a.threshold_dampings, "dampings at which to find dt*")->capture_default_str();
-  }
-  if (map) {
-    app->add_option("--map-dt-points", a.map_dt_points, "map: steps, log-spaced")->capture_default_str();
-    app->add_option("--map-damping-points", a.map_damping_points, "map: dampings, 0 to twice critical")->capture_default_str();
-    app->add_option("--map-dt-min", a.map_dt_min, "map: smallest step")->capture_default_str();
-    app->add_option("--map-dt-max", a.map_dt_max, "map: largest step")->capture_default_str();
+    add_params(app, stability_params(), a.params, StabilityConfig{}, [](std::string_view p) { return p != "dts"; });
   }
   add_threads_option(app, a.threads);
   add_lanes_option(app, a.lanes);
@@ -262,7 +254,7 @@ void add_stability_options(CLI::App* app, StabilityArgs& a, bool sweep, bool map
 
 int run_damping(StabilityArgs& a, Context& ctx) {
   StabilityConfig c = stability_config(a, ctx);
-  c.sweep_dts = number_list("--dts", a.dts, Bound::Positive);
+  read_params(stability_params(), a.params, c);
   if (!a.dampings.empty()) c.sweep_dampings = number_list("--dampings", a.dampings, Bound::NonNegative);
   using Rows = std::vector<SweepRow>;
   return run_study(ctx, a.shard, a.json, false, [&] { return damping_sweep(c); }, [](const Rows& r) { return sweep_table(r); },
@@ -300,13 +292,8 @@ int run_stability(StabilityArgs& a, Context& ctx) {
                                  "that declares its modes)", a.scene.scene, accepted));
   }
   StabilityConfig c = stability_config(a, ctx);
-  c.threshold_dampings = number_list("--threshold-dampings", a.threshold_dampings, Bound::NonNegative);
-  c.map_dt_points = static_cast<int>(parse_count("--map-dt-points", a.map_dt_points, 2, 4096));
-  c.map_damping_points = static_cast<int>(parse_count("--map-damping-points", a.map_damping_points, 2, 4096));
-  c.map_dt_min = parse_number("--map-dt-min", a.map_dt_min, Bound::Positive);
-  c.map_dt_max = parse_number("--map-dt-max", a.map_dt_max, Bound::Positive);
-  if (c.map_dt_min >= c.map_dt_max)
-    throw UsageError(fmt::format("--map-dt-min {} is not below --map-dt-max {}; accepted: min < max", c.map_dt_min, c.map_dt_max));
+  read_params(stability_params(), a.params, c);
+  check_stability(c, option_names());
   using Result = std::pair<std::vector<ThresholdRow>, StabilityMap>;
   return run_study(ctx, a.shard, a.json, false, [&] { return Result{threshold_study(c), stability_map(c)}; },
                    [](const Result& r) { return thresholds_table(r.first) + "\n" + map_summary(r.second); },

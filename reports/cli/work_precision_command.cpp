@@ -12,10 +12,9 @@
 #include "reports/cli/commands.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/data/output.hpp"
-#include "reports/cli/parts.hpp"
+#include "reports/cli/shards.hpp"
 #include "reports/data/run_json.hpp"
-#include "reports/data/study_output.hpp"
-#include "reports/data/schemas.hpp"
+#include "reports/data/studies.hpp"
 
 namespace steplab {
 
@@ -26,7 +25,7 @@ struct WorkPrecisionArgs {
   std::map<std::string, std::string> params;  // as typed, by name (work_precision_params())
   std::string threads = "0";
   std::string lanes;  // the pack width: auto, 1, 2, 4 or 8 (add_lanes_option)
-  std::string shard;  // i/N: write part i of N to --json (reports/cli/parts.hpp)
+  std::string shard;  // i/N: write part i of N to --json (reports/cli/shards.hpp)
   bool no_timing = false;  // cost by evaluations only: reproducible byte for byte
   std::string json;
 };

@@ -1,6 +1,6 @@
 // The convergence study's and the local error's output: JSON and tables, the order fits' caveats
 // marked beside them.
-#include "reports/data/study_output.hpp"
+#include "reports/data/studies.hpp"
 
 #include <array>
 #include <cmath>
@@ -9,7 +9,6 @@
 
 #include "analysis/kernel/kernel.hpp"
 #include "reports/data/run_json.hpp"
-#include "reports/data/schemas.hpp"
 
 namespace steplab {
 

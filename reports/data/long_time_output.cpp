@@ -8,8 +8,7 @@
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/studies/long_time.hpp"
 #include "reports/data/run_json.hpp"
-#include "reports/data/schemas.hpp"
-#include "reports/data/study_output.hpp"
+#include "reports/data/studies.hpp"
 
 namespace steplab {
 namespace {

@@ -4,8 +4,7 @@
 
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/studies/stability.hpp"
-#include "reports/data/study_output.hpp"
-#include "reports/data/schemas.hpp"
+#include "reports/data/studies.hpp"
 
 namespace steplab {
 

@@ -9,10 +9,21 @@
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/studies/scaling.hpp"
 #include "reports/data/run_json.hpp"
-#include "reports/data/schemas.hpp"
-#include "reports/data/study_output.hpp"
+#include "reports/data/studies.hpp"
 
 namespace steplab {
+
+// Its measure's parameters (the sizes, targets and stiffnesses depend on the scene: its command
+// reads them); t-end is also the report's scaling.t_end.
+constexpr StudyParam<ScalingConfig> kScalingParams[] = {
+    {"t-end", "simulated time", kPositive, &ScalingConfig::t_end},
+    {"frames", "output frames up to t_end where the error is measured; a fixed-step method interpolates each inside its "
+               "step (its output between steps)", {1, 10'000}, &ScalingConfig::frames},
+    {"max-steps", "a search tries no step that needs more steps than this", {1, 1e9}, &ScalingConfig::max_steps,
+     "2000000 on the rope, 200000 on the soft body, whose implicit steps cost a sparse solve each"},
+};
+
+std::span<const StudyParam<ScalingConfig>> scaling_params() { return kScalingParams; }
 
 Json scaling_json(const ScalingResult& r) {
   const ScalingConfig& c = r.config;

@@ -1,7 +1,25 @@
-// JSON documents and printed tables of the studies. Field names are an interface (docs/json.md).
+// The studies of `steplab study`: their list, and each one's JSON document, printed table,
+// parameters and schema name. Field names are an interface (docs/json.md).
+//
+// A new study: analysis/studies/<name>.{hpp,cpp} (its runs); reports/data/<name>_output.cpp (its
+// JSON, table and StudyParam table, declared below with its schema name); its command,
+// reports/cli/<name>_command.cpp, defining `StudyCommand <name>_command(CLI::App* study)`
+// (reports/cli/commands.hpp); and X(<name>) in this list, in `steplab study --help`'s order.
 #pragma once
 
+#define STEPLAB_STUDIES(X) \
+  X(convergence)           \
+  X(damping)               \
+  X(stability)             \
+  X(work_precision)        \
+  X(collision)             \
+  X(scaling)               \
+  X(frames)                \
+  X(long_time)             \
+  X(dense_output)
+
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -21,13 +39,17 @@ Json fit_caveats(const OrderFit& f);
 // optimised, flags}], in every study's JSON that has peers.
 Json peer_builds_json();
 
-Json convergence_json(const ConvergenceResult& r);   // schema steplab.convergence/2
+namespace schema {
+inline constexpr std::string_view convergence = "steplab.convergence/2";              // study convergence
+inline constexpr std::string_view convergence_sweep = "steplab.convergence_sweep/1";  // ... --sweep
+}  // namespace schema
+Json convergence_json(const ConvergenceResult& r);
 std::string convergence_table(const ConvergenceResult& r);
 // Its step sweep's parameters (the command's options, the report's convergence keys) and their
 // rule (check_sweep; and at least 3 distinct steps). `name`: as the user wrote it.
 std::span<const StudyParam<ConvergenceConfig>> convergence_params();
 void check_convergence(const ConvergenceConfig& c, const ParamNamer& name);
-// Order against stiffness: schema steplab.convergence_sweep/1 (each method's theory and its two
+// Order against stiffness: schema::convergence_sweep (each method's theory and its two
 // limits checked, the fits by method and value, and each value's whole convergence study), and
 // the table of fitted orders with the theory beside them (reports/data/sweep_output.cpp).
 Json order_reduction_json(const OrderReduction& r);
@@ -47,6 +69,17 @@ std::string local_error_tables(const LocalErrorResult& r);
 #include "analysis/studies/stability.hpp"
 
 namespace steplab {
+namespace schema {
+// study stability and study damping on the spring: "unbounded" for a dt* of every step, "never"
+// where a method is not stable again beyond dt* (version 1 wrote "inf" for both)
+inline constexpr std::string_view stability = "steplab.stability/2";
+// study stability on any other scene that declares its modes (version 1 was named after the rope)
+inline constexpr std::string_view mode_stability = "steplab.mode_stability/1";
+}  // namespace schema
+// The spring's study's parameters (study stability's and study damping's options, the report's
+// stability keys) and their rule: map-dt-min below map-dt-max.
+std::span<const StudyParam<StabilityConfig>> stability_params();
+void check_stability(const StabilityConfig& c, const ParamNamer& name);
 // schema::stability; a study fills the parts it computed, the others are empty.
 Json stability_json(const std::vector<double>& params, const std::vector<ThresholdRow>& thresholds,
                     const std::vector<SweepRow>& sweep, const StabilityMap* map);
@@ -71,7 +104,13 @@ std::string mode_thresholds_table(std::string_view scene, const std::vector<Mode
 #include "analysis/studies/scaling.hpp"
 
 namespace steplab {
-// `study scaling` (reports/data/scaling_output.cpp): schema steplab.scaling/5.
+namespace schema {
+// study scaling: "unbounded" for a stable step of every size (version 3 wrote "inf")
+inline constexpr std::string_view scaling = "steplab.scaling/5";
+}  // namespace schema
+// `study scaling` (reports/data/scaling_output.cpp). Its parameters
+// that do not depend on the scene (t-end, frames, max-steps; the first is the report's scaling.t_end).
+std::span<const StudyParam<ScalingConfig>> scaling_params();
 Json scaling_json(const ScalingResult& r);
 std::string scaling_table(const ScalingResult& r);
 // The map alone: per target, stiffness and size the cheapest solver and its margins.
@@ -87,7 +126,10 @@ std::string exponent_rule_text();
 #include "analysis/studies/collision.hpp"
 
 namespace steplab {
-Json collision_json(const CollisionResult& r);   // schema steplab.collision/1
+namespace schema {
+inline constexpr std::string_view collision = "steplab.collision/1";  // study collision
+}  // namespace schema
+Json collision_json(const CollisionResult& r);
 std::string collision_table(const CollisionResult& r);
 // Its parameters (the command's options, the report's collision keys) and their rule: at most
 // max_steps steps a run.
@@ -98,7 +140,12 @@ void check_collision(const CollisionConfig& c);
 #include "analysis/studies/work_precision.hpp"
 
 namespace steplab {
-Json work_precision_json(const WorkPrecisionResult& r);   // schema steplab.work_precision/1
+namespace schema {
+// study work-precision: the untimed cost is force evaluations, the Jacobians beside (version 1 added
+// them in): by_forces, forces, explicit_forces, implicit_forces where it had *evaluations*
+inline constexpr std::string_view work_precision = "steplab.work_precision/2";
+}  // namespace schema
+Json work_precision_json(const WorkPrecisionResult& r);
 std::string work_precision_table(const WorkPrecisionResult& r);
 // Its parameters (the command's options, the report's work_precision keys).
 std::span<const StudyParam<WorkPrecisionConfig>> work_precision_params();
@@ -110,7 +157,10 @@ std::string counts_text(const Counts& n);
 #include "analysis/studies/frames.hpp"
 
 namespace steplab {
-Json frames_json(const FramesResult& r);  // schema steplab.frames/1 (reports/data/frames_output.cpp)
+namespace schema {
+inline constexpr std::string_view frames = "steplab.frames/1";  // study frames
+}  // namespace schema
+Json frames_json(const FramesResult& r);  // reports/data/frames_output.cpp
 std::string frames_table(const FramesResult& r);
 // Its parameters (the command's options) and their rule: a whole number of frames, at least 1.
 std::span<const StudyParam<FramesConfig>> frames_params();
@@ -124,7 +174,10 @@ std::string frame_settings_text(const FrameSetup& s);
 #include "analysis/studies/long_time.hpp"
 
 namespace steplab {
-Json long_time_json(const LongTimeResult& r);  // schema steplab.long_time/1 (reports/data/long_time_output.cpp)
+namespace schema {
+inline constexpr std::string_view long_time = "steplab.long_time/1";  // study long-time
+}  // namespace schema
+Json long_time_json(const LongTimeResult& r);  // reports/data/long_time_output.cpp
 std::string long_time_table(const LongTimeResult& r);
 // Its parameters (the command's options, the report's long_time keys) and the rules between
 // them: fit-from below periods, at most 1e10 steps a run. `name` gives a parameter's name as
@@ -138,7 +191,10 @@ std::string growth_text(const GrowthFit& g);
 #include "analysis/studies/dense_output.hpp"
 
 namespace steplab {
-Json dense_output_json(const DenseOutputResult& r);  // schema steplab.dense_output/1 (reports/data/dense_output_output.cpp)
+namespace schema {
+inline constexpr std::string_view dense_output = "steplab.dense_output/1";  // study dense-output
+}  // namespace schema
+Json dense_output_json(const DenseOutputResult& r);  // reports/data/dense_output_output.cpp
 std::string dense_output_table(const DenseOutputResult& r);
 // Its parameters (the command's options); their rule is check_sweep's.
 std::span<const StudyParam<DenseOutputConfig>> dense_output_params();

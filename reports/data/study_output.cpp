@@ -1,4 +1,4 @@
-#include "reports/data/study_output.hpp"
+#include "reports/data/studies.hpp"
 
 #include <cmath>
 
@@ -8,7 +8,6 @@
 #include "analysis/peers/peers.hpp"
 #include "core/scenes/spring.hpp"
 #include "reports/data/run_json.hpp"
-#include "reports/data/schemas.hpp"
 
 namespace steplab {
 
@@ -36,6 +35,25 @@ Json again_json(double again, double dt) {
 }
 
 }  // namespace
+
+// The spring's study: thresholds over dampings and the (dt, damping) map (`study stability`), the
+// energy's rate over a sweep of steps (`study damping`, whose key in a configuration is sweep_dts).
+constexpr StudyParam<StabilityConfig> kStabilityParams[] = {
+    {"threshold-dampings", "dampings at which to find dt*", kNonNegative, &StabilityConfig::threshold_dampings},
+    {"dts", "steps of the damping sweep", kPositive, &StabilityConfig::sweep_dts, {}, "sweep_dts"},
+    {"map-dt-points", "map: steps, log-spaced", {2, 4096}, &StabilityConfig::map_dt_points},
+    {"map-damping-points", "map: dampings, 0 to twice critical", {2, 4096}, &StabilityConfig::map_damping_points},
+    {"map-dt-min", "map: smallest step", kPositive, &StabilityConfig::map_dt_min},
+    {"map-dt-max", "map: largest step", kPositive, &StabilityConfig::map_dt_max},
+};
+
+std::span<const StudyParam<StabilityConfig>> stability_params() { return kStabilityParams; }
+
+void check_stability(const StabilityConfig& c, const ParamNamer& name) {
+  if (!(c.map_dt_min < c.map_dt_max))
+    throw UsageError(fmt::format("{}{} {} is not below {} {}; accepted: min < max", name.origin, name("map-dt-min"),
+                                 short_number(c.map_dt_min), name("map-dt-max"), short_number(c.map_dt_max)));
+}
 
 // JSON has no infinity: a threshold of every step is the string "unbounded".
 Json threshold_json(double x) { return std::isinf(x) ? Json("unbounded") : Json(x); }

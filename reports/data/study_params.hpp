@@ -39,11 +39,15 @@ struct StudyParam {
   std::string_view help;  // the table adds the range accepted and the default
   Range range;
   // A list is comma-separated on the command line, an array in a configuration file.
-  std::variant<double C::*, int C::*, std::vector<int> C::*, std::vector<double> C::*> field;
+  std::variant<double C::*, int C::*, long long C::*, std::vector<int> C::*, std::vector<double> C::*> field;
   // Where the study chooses the default itself (it depends on other input): that choice in words,
   // and the option starts empty.
   std::string_view default_help = {};
+  std::string_view key = {};  // its configuration key where that is not the name's (stability's sweep_dts: --dts)
 };
+
+// Which rows a command offers, where two commands share a table (`study damping`, `study stability`).
+using ParamFilter = bool (*)(std::string_view name);
 
 inline std::string option_name(std::string_view name) { return fmt::format("--{}", name); }
 inline std::string config_key(std::string_view name) {
@@ -51,6 +55,8 @@ inline std::string config_key(std::string_view name) {
   for (char& ch : key) ch = ch == '-' ? '_' : ch;
   return key;
 }
+template <class C>
+std::string config_key(const StudyParam<C>& p) { return p.key.empty() ? config_key(p.name) : std::string(p.key); }
 
 // How a rule names a parameter: "--dt-min" typed, "convergence.dt_min" in a configuration, whose
 // messages begin with its origin, "config: ".
@@ -94,28 +100,32 @@ void check_param(const StudyParam<C>& p, std::string_view where, double value, s
     throw UsageError(fmt::format("{} {} is out of range; accepted: {}", where, shown, range_text(p.range)));
 }
 
-// A whole number for an int field (`shown` as typed or read), checked by the rule.
+// A whole number for an int field (`shown` as typed or read), checked by the rule (whose range
+// an int field's holds).
 template <class C>
-int whole_param(const StudyParam<C>& p, std::string_view where, std::string_view shown, double value) {
+long long whole_param(const StudyParam<C>& p, std::string_view where, std::string_view shown, double value) {
   if (value != std::floor(value))
     throw UsageError(fmt::format("{} {} is not a whole number; accepted: {}", where, shown, range_text(p.range)));
   check_param(p, where, value, shown);
-  return static_cast<int>(value);
+  return static_cast<long long>(value);
 }
 
-// The command's options, each with its value kind, its range and the default `c` holds (a list's
-// default is its values); `text` receives what is typed, by name.
+// The command's options (the rows `keep` keeps), each with its value kind, its range and the
+// default `c` holds (a list's default is its values); `text` receives what is typed, by name.
 template <class C>
-void add_params(CLI::App* cmd, std::span<const StudyParam<C>> table, std::map<std::string, std::string>& text, const C& c) {
+void add_params(CLI::App* cmd, std::span<const StudyParam<C>> table, std::map<std::string, std::string>& text, const C& c,
+                ParamFilter keep = nullptr) {
   for (const StudyParam<C>& p : table) {
+    if (keep && !keep(p.name)) continue;
     std::string& t = text[std::string(p.name)];
     std::string help = fmt::format("{} ({})", p.help, range_text(p.range)), kind = "NUMBER";
-    if (std::holds_alternative<int C::*>(p.field)) kind = "WHOLE";
+    if (std::holds_alternative<int C::*>(p.field) || std::holds_alternative<long long C::*>(p.field)) kind = "WHOLE";
     if (std::holds_alternative<std::vector<double> C::*>(p.field)) kind = "NUMBER,...";
     if (std::holds_alternative<std::vector<int> C::*>(p.field)) kind = "WHOLE,...";
     if (!p.default_help.empty()) help += fmt::format(" (default {})", p.default_help);
     else if (const auto* d = std::get_if<double C::*>(&p.field)) t = short_number(c.**d);
     else if (const auto* i = std::get_if<int C::*>(&p.field)) t = fmt::format("{}", c.**i);
+    else if (const auto* n = std::get_if<long long C::*>(&p.field)) t = fmt::format("{}", c.**n);
     else if (const auto* l = std::get_if<std::vector<double> C::*>(&p.field))
       for (double v : c.**l) t += fmt::format("{}{}", t.empty() ? "" : ",", short_number(v));
     else
@@ -125,12 +135,14 @@ void add_params(CLI::App* cmd, std::span<const StudyParam<C>> table, std::map<st
   }
 }
 
-// The values typed into `c`, each checked by its rule (an option left empty keeps `c`'s value).
+// The values typed into `c`, each checked by its rule (an option left empty, or not offered,
+// keeps `c`'s value).
 template <class C>
 void read_params(std::span<const StudyParam<C>> table, const std::map<std::string, std::string>& text, C& c) {
   for (const StudyParam<C>& p : table) {
-    const std::string& t = text.at(std::string(p.name));
-    if (t.empty()) continue;
+    const auto typed = text.find(std::string(p.name));
+    if (typed == text.end() || typed->second.empty()) continue;
+    const std::string& t = typed->second;
     const std::string where = option_name(p.name);
     const auto one = [&](const std::string& item) {
       const double v = parse_number(where, item, Bound::Any);
@@ -139,14 +151,15 @@ void read_params(std::span<const StudyParam<C>> table, const std::map<std::strin
     };
     const auto whole = [&](const std::string& item) { return whole_param(p, where, item, parse_number(where, item, Bound::Any)); };
     if (const auto* d = std::get_if<double C::*>(&p.field)) c.**d = one(t);
-    else if (const auto* i = std::get_if<int C::*>(&p.field)) c.**i = whole(t);
+    else if (const auto* i = std::get_if<int C::*>(&p.field)) c.**i = static_cast<int>(whole(t));
+    else if (const auto* n = std::get_if<long long C::*>(&p.field)) c.**n = whole(t);
     else if (const auto* l = std::get_if<std::vector<double> C::*>(&p.field)) {
       (c.**l).clear();
       for (const std::string& item : split_list(t)) (c.**l).push_back(one(item));
     } else {
       std::vector<int>& list = c.*std::get<std::vector<int> C::*>(p.field);
       list.clear();
-      for (const std::string& item : split_list(t)) list.push_back(whole(item));
+      for (const std::string& item : split_list(t)) list.push_back(static_cast<int>(whole(item)));
     }
   }
 }
@@ -156,7 +169,7 @@ template <class C>
 nlohmann::ordered_json params_json(std::span<const StudyParam<C>> table, const C& c) {
   nlohmann::ordered_json j = nlohmann::ordered_json::object();
   for (const StudyParam<C>& p : table)
-    std::visit([&](auto field) { j[config_key(p.name)] = c.*field; }, p.field);
+    std::visit([&](auto field) { j[config_key(p)] = c.*field; }, p.field);
   return j;
 }
 
@@ -165,12 +178,11 @@ nlohmann::ordered_json params_json(std::span<const StudyParam<C>> table, const C
 // non-empty array.
 template <class C>
 void params_from_json(std::span<const StudyParam<C>> table, const nlohmann::ordered_json& j, const std::string& section, C& c) {
-  const ParamNamer name = config_names(section);
   for (const StudyParam<C>& p : table) {
-    const std::string key = config_key(p.name);
+    const std::string key = config_key(p);
     if (!j.contains(key)) continue;
     const nlohmann::ordered_json& value = j[key];
-    const std::string where = name.origin + name(p.name);
+    const std::string where = fmt::format("config: {}.{}", section, key);
     const auto one = [&](const nlohmann::ordered_json& x) {
       if (!x.is_number()) throw UsageError(fmt::format("{} is not a number; accepted: {}", where, range_text(p.range)));
       const double v = x.get<double>();
@@ -185,14 +197,15 @@ void params_from_json(std::span<const StudyParam<C>> table, const nlohmann::orde
       return whole_param(p, where, short_number(v), v);
     };
     if (const auto* d = std::get_if<double C::*>(&p.field)) c.**d = one(value);
-    else if (const auto* i = std::get_if<int C::*>(&p.field)) c.**i = whole(value);
+    else if (const auto* i = std::get_if<int C::*>(&p.field)) c.**i = static_cast<int>(whole(value));
+    else if (const auto* n = std::get_if<long long C::*>(&p.field)) c.**n = whole(value);
     else if (const auto* l = std::get_if<std::vector<double> C::*>(&p.field)) {
       (c.**l).clear();
       for (const auto& x : value) (c.**l).push_back(one(x));
     } else {
       std::vector<int>& out = c.*std::get<std::vector<int> C::*>(p.field);
       out.clear();
-      for (const auto& x : value) out.push_back(whole(x));
+      for (const auto& x : value) out.push_back(static_cast<int>(whole(x)));
     }
   }
 }

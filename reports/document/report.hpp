@@ -77,7 +77,7 @@ struct MethodFinding {
   bool stable_large_dt;       // at config.large_dt with the spring's damping
   bool stable_undamped;       // at config.small_dt with damping 0
   double dt_theory, dt_measured;  // at the spring's damping
-  double growth_large_dt;     // measured d ln E / dt at config.large_dt
+  double energy_rate_large_dt;     // measured d ln E / dt at config.large_dt
   double again_measured;      // stable again from here (at the spring's damping; inf: never)
   double dt_undamped_theory, dt_undamped_measured;  // at damping 0
   // At damping 0, where the method is stable again beyond dt* (predicted / measured; inf: at no

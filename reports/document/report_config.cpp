@@ -13,7 +13,7 @@
 #include "analysis/studies/scaling.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/data/run_json.hpp"
-#include "reports/data/study_output.hpp"
+#include "reports/data/studies.hpp"
 #include "reports/document/section.hpp"
 
 namespace steplab {
@@ -208,10 +208,9 @@ Json report_config_json(const ReportConfig& c) {
   j["convergence"] = params_json(convergence_params(), c.convergence);
   j["work_precision"] = params_json(work_precision_params(), c.work_precision);
   j["work_precision"]["timing"] = c.timing;
-  j["stability"] = {{"threshold_dampings", c.threshold_dampings}, {"sweep_dts", c.sweep_dts},
-                    {"map_dt_points", c.map_dt_points},           {"map_damping_points", c.map_damping_points},
-                    {"map_dt_min", c.map_dt_min},                 {"map_dt_max", c.map_dt_max},
-                    {"large_dt", c.large_dt},                     {"small_dt", c.small_dt}};
+  j["stability"] = params_json(stability_params(), c.stability);
+  j["stability"]["large_dt"] = c.large_dt;
+  j["stability"]["small_dt"] = c.small_dt;
   j["collision"] = params_json(collision_params(), c.collision);
   j["long_time"] = {{"periods", c.long_time_periods}};
   Json scaling;  // the sizes of each scene by its name, then the measure
@@ -250,13 +249,8 @@ ReportConfig report_config_from_json(const Json& user, const ReportConfig& base)
   params_from_json(work_precision_params(), wp, "work_precision", c.work_precision);
   c.timing = wp["timing"].get<bool>();
   const Json& st = j["stability"];
-  c.threshold_dampings = nums(st["threshold_dampings"], "stability.threshold_dampings", Bound::NonNegative);
-  c.sweep_dts = nums(st["sweep_dts"], "stability.sweep_dts", Bound::Positive);
-  c.map_dt_points = count(st["map_dt_points"], "stability.map_dt_points", 2, 4096);
-  c.map_damping_points = count(st["map_damping_points"], "stability.map_damping_points", 2, 4096);
-  c.map_dt_min = num(st["map_dt_min"], "stability.map_dt_min", Bound::Positive);
-  c.map_dt_max = num(st["map_dt_max"], "stability.map_dt_max", Bound::Positive);
-  if (c.map_dt_min >= c.map_dt_max) throw UsageError("config: stability.map_dt_min is not below map_dt_max; accepted: min < max");
+  params_from_json(stability_params(), st, "stability", c.stability);
+  check_stability(c.stability, config_names("stability"));
   c.large_dt = num(st["large_dt"], "stability.large_dt", Bound::Positive);
   c.small_dt = num(st["small_dt"], "stability.small_dt", Bound::Positive);
   params_from_json(collision_params(), j["collision"], "collision", c.collision);
@@ -276,7 +270,10 @@ ReportConfig report_config_from_json(const Json& user, const ReportConfig& base)
     for (const Json& n : sc[key]) s.sizes.push_back(count(n, "scaling." + key, 1, static_cast<int>(size.max_count)));
   }
   c.scaling_error = num(sc["error"], "scaling.error", Bound::Positive);
-  c.scaling_t_end = num(sc["t_end"], "scaling.t_end", Bound::Positive);
+  ScalingConfig measure;  // scaling.t_end by the study's rule, as its command has it
+  measure.t_end = c.scaling_t_end;
+  params_from_json(scaling_params().first(1), sc, "scaling", measure);
+  c.scaling_t_end = measure.t_end;
   c.scaling_map_sizes.clear();
   if (!c.scaling.empty()) {  // within the first scene's size range
     const SceneKernel& k = scene_kernel(c.scaling.front().scene);

@@ -15,6 +15,7 @@
 #include "analysis/studies/collision.hpp"
 #include "analysis/studies/convergence.hpp"
 #include "analysis/studies/defaults.hpp"
+#include "analysis/studies/stability.hpp"
 #include "analysis/studies/work_precision.hpp"
 
 namespace steplab {
@@ -62,12 +63,11 @@ struct ReportConfig {
   // reproducible byte for byte), keyed in the configuration beside them
   WorkPrecisionConfig work_precision;
   bool timing = true;
-  // stability (spring)
-  std::vector<double> threshold_dampings{0, 0.1, 1, 4};
-  std::vector<double> sweep_dts{0.01, 0.05, 0.2};
-  int map_dt_points = 64, map_damping_points = 64;
-  double map_dt_min = 0.01, map_dt_max = 10;
-  // the sheet's two stability tests: a large step (with the spring's damping), and no damping
+  // stability (spring): its thresholds' dampings, the damping sweep's steps and the map
+  // (stability_params()); the report's study runs on the oscillator's parameters
+  StabilityConfig stability;
+  // the sheet's two stability tests: a large step (with the spring's damping), and no damping,
+  // keyed in the configuration beside them
   double large_dt = 0.05, small_dt = 0.01;
   // collision: its steps and time (collision_params())
   CollisionConfig collision;

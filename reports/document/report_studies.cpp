@@ -111,16 +111,12 @@ ReportData run_report_studies(const ReportConfig& c, unsigned studies, ProgressH
 
   // The stability study is the damped spring's (analysis/studies/stability.hpp): the oscillator is one.
   const Spring spring(c.oscillator.params);
-  StabilityConfig sc;
+  StabilityConfig sc = c.stability;  // its dampings and steps with the sheet's, and the map
   sc.params = c.oscillator.params;
   sc.methods = d.methods;
-  sc.threshold_dampings = with_values(c.threshold_dampings, {0.0, gamma});
-  sc.sweep_dts = with_values(c.sweep_dts, {c.large_dt, c.small_dt});
+  sc.threshold_dampings = with_values(c.stability.threshold_dampings, {0.0, gamma});
+  sc.sweep_dts = with_values(c.stability.sweep_dts, {c.large_dt, c.small_dt});
   sc.sweep_dampings = with_values(default_dampings(spring), {0.0, gamma});
-  sc.map_dt_points = c.map_dt_points;
-  sc.map_damping_points = c.map_damping_points;
-  sc.map_dt_min = c.map_dt_min;
-  sc.map_dt_max = c.map_dt_max;
   sc.workers = d.workers;
   if (studies & kStabilityStudy) {
     d.thresholds = threshold_study(sc);
@@ -255,7 +251,7 @@ Findings compute_findings(const ReportData& d) {
     const SweepRow* undamped = sweep_row(m, c.small_dt, 0.0);
     const ThresholdRow* th = find_threshold(d, m, gamma);
     row.stable_large_dt = large && large->run.stable();
-    row.growth_large_dt = large ? large->run.rate : NAN;
+    row.energy_rate_large_dt = large ? large->run.rate : NAN;
     row.stable_undamped = undamped && undamped->run.stable();
     row.dt_theory = th ? th->dt_theory : NAN;
     row.dt_measured = th ? th->dt_measured : NAN;

@@ -10,7 +10,7 @@
 #include <ostream>
 
 #include "cli_helpers.hpp"
-#include "reports/data/study_output.hpp"
+#include "reports/data/studies.hpp"
 
 namespace steplab {
 namespace {
@@ -219,7 +219,7 @@ template <class C>
 void one_rule_each_way(std::span<const StudyParam<C>> table, const char* section) {
   for (const StudyParam<C>& p : table) {
     const double outside = p.range.lo_open ? p.range.lo : p.range.lo - 1, inside = p.range.lo_open ? p.range.lo + 1 : p.range.lo;
-    const std::string name(p.name), key = config_key(p.name);
+    const std::string name(p.name), key = config_key(p);
     const bool list = std::holds_alternative<std::vector<double> C::*>(p.field) || std::holds_alternative<std::vector<int> C::*>(p.field);
     const auto message = [&](auto&& f) {
       try {
@@ -255,6 +255,8 @@ TEST(StudyParams, OneRuleEachWay) {
   one_rule_each_way(long_time_params(), "long_time");
   one_rule_each_way(work_precision_params(), "work_precision");
   one_rule_each_way(frames_params(), "frames");
+  one_rule_each_way(stability_params(), "stability");
+  one_rule_each_way(scaling_params(), "scaling");
 }
 
 }  // namespace

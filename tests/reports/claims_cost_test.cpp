@@ -11,7 +11,7 @@
 
 #include "analysis/peers/peers.hpp"
 #include "claims.hpp"
-#include "reports/data/study_output.hpp"
+#include "reports/data/studies.hpp"
 #include "reports/document/findings.hpp"
 
 namespace steplab::claims {

@@ -45,7 +45,7 @@ void expect_same_numbers(const ReportData& a, const Findings& fa, const ReportDa
     EXPECT_EQ(x.bound_hi, y.bound_hi) << n;
     EXPECT_EQ(x.local_slopes, y.local_slopes) << n;
   }
-  for (const double damping : a.config.threshold_dampings) {
+  for (const double damping : a.config.stability.threshold_dampings) {
     const ThresholdRow* ra = find_threshold(a, m, damping);
     const ThresholdRow* rb = find_threshold(b, m, damping);
     ASSERT_TRUE(ra && rb) << n << " at damping " << damping;
@@ -54,7 +54,7 @@ void expect_same_numbers(const ReportData& a, const Findings& fa, const ReportDa
   }
   EXPECT_EQ(fa.rows[i].stable_large_dt, fb.rows[j].stable_large_dt) << n;
   EXPECT_EQ(fa.rows[i].stable_undamped, fb.rows[j].stable_undamped) << n;
-  EXPECT_EQ(fa.rows[i].growth_large_dt, fb.rows[j].growth_large_dt) << n;
+  EXPECT_EQ(fa.rows[i].energy_rate_large_dt, fb.rows[j].energy_rate_large_dt) << n;
 }
 
 TEST(ReportChoice, AChosenMethodHasTheFullReportsNumbers) {
@@ -101,7 +101,7 @@ TEST(ReportChoice, AFamilyWithOneChosenMethodClaimsNoTrend) {
 }
 
 TEST(ReportChoice, ACrossoverNeedsBothKinds) {  // no explicit method chosen: no claim that implicit pays
-  ReportConfig c = chosen({"implicit_euler", "bdf2"}, {"growth"});
+  ReportConfig c = chosen({"implicit_euler", "bdf2"}, {"scaling"});
   c.scaling_t_end = 0.5;
   const std::string md = report_markdown(build_report(c), "png", "");
   EXPECT_NE(md.find("This report has no explicit fixed-step method here, so where implicit pays is not read."), std::string::npos)

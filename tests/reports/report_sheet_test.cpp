@@ -94,7 +94,7 @@ TEST(ReportSheet, NumbersAreTheFullReports) {
     EXPECT_EQ(a.dt_measured, b.dt_measured) << method_info(a.method).name;
     EXPECT_EQ(a.dt_undamped_measured, b.dt_undamped_measured) << method_info(a.method).name;
     EXPECT_EQ(a.stable_large_dt, b.stable_large_dt);
-    EXPECT_EQ(a.growth_large_dt, b.growth_large_dt);
+    EXPECT_EQ(a.energy_rate_large_dt, b.energy_rate_large_dt);
   }
 }
 

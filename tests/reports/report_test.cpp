@@ -13,7 +13,7 @@
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/studies/scaling.hpp"
 #include "reports/data/inputs.hpp"
-#include "reports/data/study_output.hpp"
+#include "reports/data/studies.hpp"
 #include "reports/document/figure_styles.hpp"
 #include "reports/document/report.hpp"
 #include "small_report.hpp"
@@ -63,7 +63,7 @@ namespace {
 // (re-derived here from their rows): an exponent shown only where it is a finding (fitted, its
 // interval at most +-0.5), the crossover, and the map's clear wins and ties (a margin below 1.2 a
 // tie; untimed here, so only an exact equality), under two settings.
-std::string expect_growth_follows_data(const ReportConfig& c) {
+std::string expect_scaling_follows_data(const ReportConfig& c) {
   const Report report = build_report(c);
   const std::string all = report_markdown(report, "png", "");
   const std::size_t at = all.find("## As the system grows");
@@ -131,14 +131,14 @@ std::string expect_growth_follows_data(const ReportConfig& c) {
   return md;
 }
 
-TEST(ReportGrowth, FollowsTheDataUnderChangedParameters) {
+TEST(ReportScaling, FollowsTheDataUnderChangedParameters) {
   ReportConfig c = small_config();
-  const std::string a = expect_growth_follows_data(c);
+  const std::string a = expect_scaling_follows_data(c);
   sizes_of(c, "rope") = {4, 16, 128};  // 1.5 decades: the exponents fitted
   sizes_of(c, "softbody") = {3, 4};
   c.scaling_error = 1e-3;
   c.scaling_stiffening = {1, 30, 1000};
-  const std::string b = expect_growth_follows_data(c);
+  const std::string b = expect_scaling_follows_data(c);
   // The section's words changed with the data: the exponents fitted only over 1.5 decades of N.
   EXPECT_EQ(a.find("| solver | cost ~ N^p^"), std::string::npos) << a;
   EXPECT_NE(b.find("| solver | cost ~ N^p^"), std::string::npos) << b;

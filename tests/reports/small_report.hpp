@@ -26,8 +26,8 @@ inline ReportConfig small_config() {
   c.timing = false;
   c.work_precision.points = 4;
   c.work_precision.stiffnesses = {5, 5e4};
-  c.map_dt_points = 6;
-  c.map_damping_points = 4;
+  c.stability.map_dt_points = 6;
+  c.stability.map_damping_points = 4;
   c.collision.dts = {0.002};
   c.collision.t_end = 2;
   c.energy_t_end = 10;

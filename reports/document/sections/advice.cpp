@@ -11,7 +11,7 @@
 #include "reports/document/figure_styles.hpp"
 #include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"
-#include "reports/data/study_output.hpp"
+#include "reports/data/studies.hpp"
 #include "reports/document/section.hpp"
 #include "reports/document/sections/long_time.hpp"
 

@@ -8,7 +8,7 @@
 #include "analysis/kernel/kernel.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
-#include "reports/data/study_output.hpp"
+#include "reports/data/studies.hpp"
 
 namespace steplab {
 namespace {

@@ -40,9 +40,10 @@ class Reproduce : public Section {
                                 scene_name(r.config.scene), c.convergence.dt_max, c.convergence.dt_min, c.convergence.points, c.convergence.t_end, methods));
     if (d.studies & kStabilityStudy) {
       md += wrapped(fmt::format("build/steplab study stability --threshold-dampings {} --map-dt-points {} --map-damping-points {} "
-                                "--map-dt-min {} --map-dt-max {}{}", join(c.threshold_dampings), c.map_dt_points,
-                                c.map_damping_points, c.map_dt_min, c.map_dt_max, methods));
-      md += wrapped(fmt::format("build/steplab study damping --dts {}{}", join(c.sweep_dts), methods));
+                                "--map-dt-min {} --map-dt-max {}{}", join(c.stability.threshold_dampings),
+                                c.stability.map_dt_points, c.stability.map_damping_points, c.stability.map_dt_min,
+                                c.stability.map_dt_max, methods));
+      md += wrapped(fmt::format("build/steplab study damping --dts {}{}", join(c.stability.sweep_dts), methods));
     }
     if (d.studies & kCollisionStudy)
       md += wrapped(fmt::format("build/steplab study collision --dts {} --t-end {} --triangle-dt {}{}", join(c.collision.dts),
@@ -56,7 +57,7 @@ class Reproduce : public Section {
                                 c.stiff_order.points, c.stiff_order.t_end,
                                 scene_kernel(c.stiffened.scene).params[static_cast<std::size_t>(scene_kernel(c.stiffened.scene).stiffness_param)].name,
                                 join(c.stiff_order.stiffnesses), numerical));
-    if (c.has_section("growth"))
+    if (c.has_section("scaling"))
       for (const ReportSizes& s : c.scaling)
         if (c.covers(s.scene))
           md += wrapped(fmt::format("build/steplab study scaling --scene {} --sizes {} --error {} --t-end {}{}{}", scene_name(s.scene),

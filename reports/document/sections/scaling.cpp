@@ -12,7 +12,7 @@
 
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/peers/peers.hpp"
-#include "reports/data/study_output.hpp"
+#include "reports/data/studies.hpp"
 #include "reports/document/figure_styles.hpp"
 #include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"
@@ -237,7 +237,7 @@ std::string map_markdown(const ScalingResult& r, Page& page) {
   return md;
 }
 
-class Growth : public Section {
+class ScalingSection : public Section {
  public:
   std::string title() const override { return "As the system grows"; }
   unsigned needs() const override { return kScalingStudy; }
@@ -304,6 +304,6 @@ class Growth : public Section {
 
 }  // namespace
 
-std::unique_ptr<Section> make_growth_section() { return std::make_unique<Growth>(); }
+std::unique_ptr<Section> make_scaling_section() { return std::make_unique<ScalingSection>(); }
 
 }  // namespace steplab

@@ -21,7 +21,7 @@
   X(stability, true)               \
   X(cost, true)                    \
   X(collision, true)               \
-  X(growth, true)                  \
+  X(scaling, true)                 \
   X(frames, true)                  \
   X(long_time, true)               \
   X(advice, true)                  \

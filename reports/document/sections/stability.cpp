@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
-#include "reports/data/study_output.hpp"
+#include "reports/data/studies.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
 
@@ -108,7 +108,7 @@ class Stability : public Section {
     const std::size_t cells = d.map.methods.size() * d.map.damping.size() * d.map.dt.size();
     md += fmt::format("Over a grid of {} steps from {} to {} and {} dampings from 0 to {:.3g}, each cell a run: {} of its {} cells "
                       "disagree with the step map's prediction at that cell.\n\n",
-                      d.map.dt.size(), c.map_dt_min, c.map_dt_max, d.map.damping.size(), d.map.damping.back(), disagree, cells);
+                      d.map.dt.size(), c.stability.map_dt_min, c.stability.map_dt_max, d.map.damping.size(), d.map.damping.back(), disagree, cells);
     if (page.has("maps"))
       md += page.figure("maps", "The edge of stability over (dt, damping): the measured dt* of each damping's row of runs "
                                 "(points: the largest step of the grid with every smaller one stable), the predicted one "

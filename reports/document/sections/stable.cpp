@@ -40,7 +40,7 @@ class Stable : public Section {
     if (!f.never_stable_undamped.empty())
       md += fmt::format("- Without damping no step is stable for {}: the step map's spectral radius exceeds 1 at every "
                         "small h, and neither the threshold search nor the map (up to dt = {}) finds a stable step.\n",
-                        methods(f.never_stable_undamped), c.map_dt_max);
+                        methods(f.never_stable_undamped), c.stability.map_dt_max);
     if (!again.empty())
       md += fmt::format("- Without damping no small step is stable for {}, but a larger one is: {} stable steps are not one "
                         "interval from 0.\n",
