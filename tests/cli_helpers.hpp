@@ -41,12 +41,10 @@ inline std::string slurp(const std::string& path) {
   return s.str();
 }
 
-// Runs `steplab <args>` through the shell with `dir` as its working directory, stdin from /dev/null.
-inline Result run_steplab_in(const std::string& dir, const std::string& args) {
+// Runs `cmd` through the shell, stdin from /dev/null, its output kept.
+inline Result run_shell(const std::string& cmd) {
   TempDir io;
-  const std::string cmd = "cd '" + dir + "' && " + std::string(STEPLAB_EXE) + " " + args + " </dev/null >" + io.path("out") +
-                          " 2>" + io.path("err");
-  const int raw = std::system(cmd.c_str());
+  const int raw = std::system((cmd + " </dev/null >" + io.path("out") + " 2>" + io.path("err")).c_str());
   Result r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   r.out = slurp(io.path("out"));
@@ -54,8 +52,19 @@ inline Result run_steplab_in(const std::string& dir, const std::string& args) {
   return r;
 }
 
+// Runs `steplab <args>` through the shell with `dir` as its working directory.
+inline Result run_steplab_in(const std::string& dir, const std::string& args) {
+  return run_shell("cd '" + dir + "' && " + std::string(STEPLAB_EXE) + " " + args);
+}
+
 // Runs `steplab <args>` from the tests' own working directory.
 inline Result run_steplab(const std::string& args) { return run_steplab_in(".", args); }
+
+// The report's claims (data/claims.json) re-evaluated by tools/verify_claims.py, which shares no
+// code with the report: status 0 if every claim holds; `out` names each one that does not.
+inline Result verify_claims(const std::string& report_dir) {
+  return run_shell("python3 '" + std::string(STEPLAB_SOURCE_DIR) + "/tools/verify_claims.py' '" + report_dir + "'");
+}
 
 inline std::vector<std::string> split_lines(const std::string& s) {
   std::vector<std::string> lines;

@@ -27,6 +27,7 @@
 #include "analysis/kernel/parallel.hpp"
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/studies/defaults.hpp"
+#include "reports/document/claims.hpp"
 #include "reports/document/figure_styles.hpp"
 #include "reports/document/gnuplot_scripts.hpp"
 #include "reports/data/output.hpp"
@@ -155,7 +156,7 @@ Report build_report(const ReportConfig& config, ProgressHook progress) {
   return r;
 }
 
-std::string report_markdown(const Report& r, const std::string& ext, const std::string& footer) {
+std::string report_markdown(const Report& r, const std::string& ext, const std::string& footer, Ledger* ledger) {
   std::string md = r.data.config.has_section("sheet")
                        ? "# Time integration: the exercise's hand-in, measured by steplab\n\n"
                        : "# steplab report: how time integrators behave, family by family, on the course's scenes\n\n";
@@ -164,6 +165,7 @@ std::string report_markdown(const Report& r, const std::string& ext, const std::
   md += "Every number below was measured by the commands at the end of this report; every sentence that states a finding was "
         "generated from those numbers.\n\n";
   Page page(r.data, r.findings, ext, figure_order(r));
+  page.ledger = ledger;
   for (const auto& s : r.sections) md += s->markdown(page);
   return md + "---\n\n" + footer + "\n";
 }
@@ -328,7 +330,16 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force, 
         }
       }
     const std::string footer = machine_footer() + fmt::format(" · studies {:.1f} s", study_seconds);
-    write_atomic((staging / "report.md").string(), report_markdown(report, "png", footer));
+    Ledger ledger(d.methods);
+    write_atomic((staging / "report.md").string(), report_markdown(report, "png", footer, &ledger));
+    // The claims, and each data document they cite that no section wrote (the same document:
+    // the claims' and the section's come from one function).
+    for (const auto& [file, doc] : ledger.documents())
+      if (!fs::exists(staging / "data" / file)) {
+        fs::create_directories((staging / "data" / file).parent_path());
+        data.write(file, doc.dump(1) + "\n");
+      }
+    data.write("claims.json", ledger.json().dump(1) + "\n");
     write_atomic((staging / "report-pdf.md").string(), report_markdown(report, "pdf", footer));
     const std::string pandoc = fmt::format(
         "cd '{}' && pandoc report-pdf.md -o report.pdf --pdf-engine=pdflatex -V geometry:margin=1.8cm -V fontsize=10pt "

@@ -130,7 +130,9 @@ Report build_report(const ReportConfig& config, ProgressHook progress = nullptr)
 // The report's figures (their scripts) in the order its sections list them: figure n is the n-th.
 std::vector<std::string> figure_order(const Report& r);
 
-std::string report_markdown(const Report& r, const std::string& figure_ext, const std::string& footer);
+class Ledger;
+// The report's Markdown; with `ledger`, the findings its sections state are recorded there.
+std::string report_markdown(const Report& r, const std::string& figure_ext, const std::string& footer, Ledger* ledger = nullptr);
 
 // The whole report into `out_dir`, atomically: built in a staging folder beside it and swapped
 // in at the end, so an interrupted run leaves the previous report as it was. Skips all work if

@@ -15,6 +15,10 @@
 #include "reports/document/report.hpp"
 
 namespace steplab {
+class Ledger;
+}
+
+namespace steplab {
 
 // The report's data/ folder.
 class DataDir {
@@ -59,6 +63,9 @@ class Page {
       : data(d), findings(f), ext_(std::move(ext)), order_(std::move(figures)) {}
   const ReportData& data;
   const Findings& findings;
+  // Where the findings a section states are recorded (reports/document/claims.hpp): set while the
+  // report's Markdown is rendered for data/claims.json, null otherwise.
+  Ledger* ledger = nullptr;
   // ![caption](figures/fig<n>_<script>.<ext>): numbered "Figure n:" in the Markdown; LaTeX numbers
   // the PDF's alike. std::logic_error if `script` is not the next figure of the report's order.
   std::string figure(const std::string& script, const std::string& caption);

@@ -123,18 +123,19 @@ TEST(ReportSheet, ConstantsFollowTheParameters) {
 }
 
 // The second question's answer follows the measured dt*: undamped, explicit Euler and explicit
-// midpoint are both unstable at every step (dt* = 0), so within their family dt* no longer grows.
+// midpoint are both unstable at every step (dt* = 0), so within their family dt* stays the same
+// (the family table's words and rule: reports/document/findings.hpp, trend).
 TEST(ReportSheet, OrderAnswerFollowsTheData) {
   ReportConfig c = small_sheet();
   c.sections = {"order"};
   std::string md = markdown(c);
   EXPECT_NE(md.find("**Not as a rule.**"), std::string::npos) << md;  // order 1: 0.02, 0.87, inf
-  EXPECT_NE(md.find("in the explicit Runge-Kutta family dt* grows with the order (`explicit_euler` 0.02, `explicit_midpoint` 0.2649)"),
+  EXPECT_NE(md.find("in the explicit Runge-Kutta family dt* rises with the order (`explicit_euler` 0.02, `explicit_midpoint` 0.2649)"),
             std::string::npos) << md;
 
   c.oscillator.params[static_cast<std::size_t>(scene_kernel(c.oscillator.scene).damping_param)] = 0;
   md = markdown(c);
-  EXPECT_NE(md.find("dt* stays about the same with the order (`explicit_euler` 0, `explicit_midpoint` 0)"), std::string::npos) << md;
+  EXPECT_NE(md.find("dt* stays the same with the order (`explicit_euler` 0, `explicit_midpoint` 0)"), std::string::npos) << md;
 
   choose_methods(c, {"explicit_euler", "explicit_midpoint"}, "methods");
   md = markdown(c);
@@ -179,6 +180,8 @@ TEST(ReportSheet, HandInIsAtMostFivePages) {
                              "hand-in/figures/fig4_convergence.pdf", "hand-in/figures/fig5_long_time.pdf"})
     EXPECT_TRUE(std::filesystem::exists(dir.path(figure))) << figure;
   EXPECT_NE(slurp(dir.path("hand-in/report.md")).find("## The exercise"), std::string::npos);
+  const Result claims = verify_claims(dir.path("hand-in"));
+  EXPECT_EQ(claims.status, 0) << claims.out << claims.err;
   for (const auto& e : std::filesystem::directory_iterator(dir.path("hand-in/figures")))
     if (e.path().extension() == ".pdf") {
       EXPECT_GE(smallest_text_pt(e.path().string(), dir), 7.95) << e.path();
@@ -206,6 +209,8 @@ TEST(ReportPages, DefaultWithinItsBudget) {
     EXPECT_NE(md.find("figures/" + stem + ".png"), std::string::npos) << stem;
   }
   EXPECT_GE(figures, 8);
+  const Result claims = verify_claims(dir.path("report"));
+  EXPECT_EQ(claims.status, 0) << claims.out << claims.err;
 }
 
 TEST(ReportScenes, ASectionThatNeedsASceneNotChosenIsLeftOutWithOneLine) {

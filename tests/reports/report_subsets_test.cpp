@@ -76,6 +76,8 @@ TEST(ReportSubsets, EveryMethodAloneAndPairsAcrossFamiliesMakeWholeReports) {
         EXPECT_TRUE(headings.insert(line).second) << line << " twice";
       }
     EXPECT_TRUE(std::filesystem::exists(out + "/report.pdf"));
+    const Result claims = verify_claims(out);
+    EXPECT_EQ(claims.status, 0) << claims.out << claims.err;
   }
 }
 

@@ -10,6 +10,7 @@
 #include "analysis/studies/defaults.hpp"
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/peers/peers.hpp"
+#include "reports/document/claims.hpp"
 #include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
@@ -44,7 +45,14 @@ std::string stable_answer(const Page& page) {
                                                   f.unstable_undamped.size() == 1 ? "its" : "their");
   if (!f.always_stable.empty())
     md += fmt::format(" Stable at every step tried: {}.", method_list(methods_of(f, f.always_stable)));
-  return md + fmt::format(" Each method's largest stable step dt* is in the summary table{}.\n", see(page, "regions"));
+  md += fmt::format(" Each method's largest stable step dt* is in the summary table{}.", see(page, "regions"));
+  if (Ledger* l = page.ledger) {
+    claim_unstable_at(*l, page.data, "answers.unstable_at_large_dt", "answers", md, c.large_dt, c.damping(), methods_of(f, f.unstable_large));
+    claim_unstable_at(*l, page.data, "answers.unstable_undamped", "answers", md, c.small_dt, 0.0, methods_of(f, f.unstable_undamped));
+    if (!f.always_stable.empty())
+      claim_unbounded_at(*l, page.data, "answers.stable_at_every_step", "answers", md, c.damping(), methods_of(f, f.always_stable));
+  }
+  return md + "\n";
 }
 
 // Stable for how long: the orbit's runs by their energy error, and whether the structure or the order decides.
@@ -72,9 +80,10 @@ std::string order_answer(const Page& page) {
                       std::abs(f.spearman) < 0.3 ? "Not as a rule" : "Only loosely", f.spearman_n, c.damping(), f.spearman,
                       correlation_words(f.spearman));
   std::vector<std::string> ways;
+  const std::vector<FamilyTrend> trends = family_trends(page.data, c.damping());
   for (Trend t : {Trend::Rises, Trend::Falls, Trend::StaysInfinite, Trend::Mixed, Trend::StaysTheSame, Trend::NotMeasured}) {
     std::vector<std::string> fams;
-    for (const FamilyTrend& ft : family_trends(page.data, c.damping()))
+    for (const FamilyTrend& ft : trends)
       if (ft.trend == t) fams.emplace_back(to_string(ft.family));
     if (!fams.empty()) ways.push_back(fmt::format("{} in {}", to_text(t), and_list(fams)));
   }
@@ -82,6 +91,11 @@ std::string order_answer(const Page& page) {
     md += fmt::format(" Within a family, where the methods differ in order alone, dt* {}{}: how a method is built sets its "
                       "stability more than its order does.",
                       and_list(ways), see(page, "regions"));
+  if (Ledger* l = page.ledger) {
+    if (f.spearman_n >= 3) claim_spearman(*l, page.data, f, "answers.order_correlation", "answers", md, 2);
+    for (const FamilyTrend& ft : trends)
+      claim_family_trend(*l, page.data, fmt::format("answers.trend.{}", id_word(to_string(ft.family))), "answers", md, ft, c.damping());
+  }
   return md + "\n";
 }
 
@@ -203,7 +217,11 @@ class Answers : public Section {
                       "and the ones a simulation asks next, are computed from this report's measurements; the sections after "
                       "them show the data.\n\n",
                       method_list(sheet));
-    if ((d.studies & kFindings) == kFindings) md += stable_answer(page) + order_answer(page) + energy_answer(page);
+    if ((d.studies & kFindings) == kFindings) {  // one at a time: each records its claims in the page's order
+      md += stable_answer(page);
+      md += order_answer(page);
+      md += energy_answer(page);
+    }
     if (d.studies & kStiffOrderStudy) md += stiff_answer(page);
     if (d.studies & kWorkPrecisionStudy) md += cost_answer(page);
     if (d.studies & kScalingStudy) md += implicit_answer(page);

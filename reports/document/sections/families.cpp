@@ -14,6 +14,7 @@
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/studies/regions.hpp"
 #include "core/scenes/spring.hpp"
+#include "reports/document/claims.hpp"
 #include "reports/document/figure_styles.hpp"
 #include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"
@@ -92,7 +93,7 @@ class Families : public Section {
     std::string md = "## " + title() + "\n\n";
     md += "Within a family the methods share their construction and differ in order, so a family's dt* against its orders "
           "is the measured answer to the sheet's question; across families the construction dominates. ";
-    md += trend_table(d, dampings);
+    md += trend_table(d, dampings, page.ledger);
     md += dahlquist(d, dampings);
     md += pooled(page.findings, gamma);
     if (page.has("regions")) {
@@ -114,7 +115,7 @@ class Families : public Section {
   RegionResult regions_;
 
   // A row per family, a column per damping: how dt* moves with the order.
-  static std::string trend_table(const ReportData& d, const std::vector<double>& dampings) {
+  static std::string trend_table(const ReportData& d, const std::vector<double>& dampings, Ledger* ledger) {
     std::string md = "How the measured dt* (the summary's, and at further dampings) moves along each family's orders:\n\n| family |", rule = "|--------|";
     for (double g : dampings) md += fmt::format(" damping {} |", g), rule += "------|";
     md += "\n" + rule + "\n";
@@ -122,7 +123,14 @@ class Families : public Section {
     for (double g : dampings) at.push_back(family_trends(d, g));
     for (std::size_t i = 0; !at.empty() && i < at.front().size(); ++i) {
       md += fmt::format("| {} |", to_string(at.front()[i].family));
-      for (const auto& trends : at) md += fmt::format(" {} |", to_text(trends[i].trend));
+      for (std::size_t g = 0; g < at.size(); ++g) {
+        const FamilyTrend& t = at[g][i];
+        md += fmt::format(" {} |", to_text(t.trend));
+        if (ledger)
+          claim_family_trend(*ledger, d, fmt::format("families.trend.{}.damping_{}", id_word(to_string(t.family)), dampings[g]), "families",
+                             fmt::format("the family table's {} row at damping {}: {}", to_string(t.family), dampings[g], to_text(t.trend)),
+                             t, dampings[g]);
+      }
       md += "\n";
     }
     std::vector<std::string> lone;  // a family of several methods of which the report has one

@@ -223,16 +223,21 @@ class LongTime : public Section {
         if (s.method == row.method) sw = &s;
       const bool ok = row.status == RunStatus::Ok && !row.error.empty() && !row.error[0].empty();
       const std::string blew = row.status == RunStatus::Ok ? "-" : fmt::format("{} at {:.3g}", stop_words(row), row.ended);
+      // an error that has saturated (the orbit lost) grows no more: its exponent is no measure
+      const auto growth = [](const LongTimeRow& r) {
+        return energy_verdict(r, kLostAt) == EnergyVerdict::Lost ? std::string("lost") : growth_text(r.growth[0]);
+      };
       md += fmt::format("| `{}` | {} | {} | {} | {} | {} | {} | {} | {} |\n", i.name, i.order, i.symplectic ? "yes" : "no",
-                        ok ? growth_text(row.growth[0]) : blew, ok ? fmt::format("{}{}", g2(row.error[0].back()), row.round_off[0] ? " (R)" : "") : "-",
+                        ok ? growth(row) : blew, ok ? fmt::format("{}{}", g2(row.error[0].back()), row.round_off[0] ? " (R)" : "") : "-",
                         ok && row.error.size() > 1 ? fmt::format("{}{}", g2(row.error[1].back()), row.round_off[1] ? " (R)" : "") : "-",
                         growth_text(row.position_growth),
                         row.out_of_phase > 0 ? fmt::format("{:.3g}{}", row.out_of_phase, row.out_of_phase_extrapolated ? " (extr.)" : "") : "-",
-                        sw && sw->status == RunStatus::Ok ? growth_text(sw->growth[0]) : sw ? fmt::format("{} at {:.3g}", stop_words(*sw), sw->ended) : "-");
+                        sw && sw->status == RunStatus::Ok ? growth(*sw) : sw ? fmt::format("{} at {:.3g}", stop_words(*sw), sw->ended) : "-");
     }
-    return md + fmt::format("\nGrowth: exponent [95 % interval] from {:g} periods on. Sym.: symplectic. (R): within round-off's level. Out of phase: when the "
+    return md + fmt::format("\nGrowth: exponent [95 % interval] from {:g} periods on; lost: energy error {:g} or more, where the error has "
+                            "saturated and its exponent measures nothing. Sym.: symplectic. (R): within round-off's level. Out of phase: when the "
                             "position error reaches the orbit's semi-major axis ({}: extrapolated from the fitted growth past the run).\n\n",
-                            orbit_.config.fit_from, "extr.");
+                            orbit_.config.fit_from, kLostAt, "extr.");
   }
 };
 

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
+#include "reports/document/claims.hpp"
 #include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
@@ -54,14 +55,13 @@ class Order : public Section {
         for (const MethodFinding* b : rows) same_order_differ |= differ(a->dt_measured, b->dt_measured);
     }
     md += "\n";
-    // Each family's methods among these, by order: how dt* moves from its lowest order to its highest.
+    // Each family's methods among these, by order: how dt* moves along them (trend: the family
+    // table's words and rule, findings.hpp).
     std::vector<std::string> trends;
-    for (const FamilyTrend& t : family_trends(page.data, gamma)) {
-      const double lo = t.dt.front(), hi = t.dt.back();
-      const char* way = !differ(lo, hi) ? "stays about the same" : (hi > lo ? "grows" : "shrinks");
-      trends.push_back(fmt::format("in the {} family dt* {} with the order (`{}` {}, `{}` {})", to_string(t.family), way,
-                                   name(t.members.front()), dt_words(lo), name(t.members.back()), dt_words(hi)));
-    }
+    const std::vector<FamilyTrend> families = family_trends(page.data, gamma);
+    for (const FamilyTrend& t : families)
+      trends.push_back(fmt::format("in the {} family dt* {} with the order (`{}` {}, `{}` {})", to_string(t.family), to_text(t.trend),
+                                   name(t.members.front()), dt_words(t.dt.front()), name(t.members.back()), dt_words(t.dt.back())));
     if (same_order_differ)
       md += "**Not as a rule.** Methods of the same order are stable up to very different steps: how a method is built "
             "(explicit, symplectic, implicit) sets its stability, not its order.";
@@ -70,10 +70,16 @@ class Order : public Section {
             "construction.";
     else
       md += "No two of these methods share an order, so only a family's methods set side by side can answer it.";
-    if (!trends.empty()) md += fmt::format(" Within one construction the order does move it: {}.", and_list(trends));
+    if (!trends.empty()) md += fmt::format(" Within one construction, where only the order changes: {}.", and_list(trends));
     if (page.findings.spearman_n >= 3)
       md += fmt::format(" Over these {} methods, Spearman's rank correlation between order and dt* is {:.2f} ({}).",
                         page.findings.spearman_n, page.findings.spearman, correlation_words(page.findings.spearman));
+    if (Ledger* l = page.ledger) {
+      const std::string said = md.substr(md.rfind("\n\n") + 2);  // the paragraph
+      if (page.findings.spearman_n >= 3) claim_spearman(*l, page.data, page.findings, "order.correlation", "order", said, 2);
+      for (const FamilyTrend& t : families)
+        claim_family_trend(*l, page.data, fmt::format("order.trend.{}", id_word(to_string(t.family))), "order", said, t, gamma);
+    }
     md += "\n\n";
     return md;
   }

@@ -8,6 +8,7 @@
 
 #include "analysis/kernel/kernel.hpp"
 #include "reports/data/studies.hpp"
+#include "reports/document/claims.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
 
@@ -19,7 +20,7 @@ class Stability : public Section {
   std::string title() const override { return "Stability in detail"; }
   unsigned needs() const override { return kStabilityStudy; }
   void write_data(const ReportData& d, const DataDir& dat) const override {
-    dat.write("stability.json", stability_json(d.config.oscillator.params, d.thresholds, d.sweep, &d.map).dump(1) + "\n");
+    dat.write("stability.json", stability_document(d).dump(1) + "\n");  // the claims cite it (claims.hpp)
     for (std::size_t i = 0; i < d.methods.size(); ++i) {
       const std::string m = name(d.methods[i]);
       std::string s = "# damping rate_measured\n";

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "reports/document/claims.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
 
@@ -18,16 +19,22 @@ class Stable : public Section {
   std::string markdown(Page& page) const override {
     const Findings& f = page.findings;
     const ReportConfig& c = page.data.config;
-    const auto methods = [&](const std::vector<std::size_t>& rows) {
+    const auto rows_methods = [&](const std::vector<std::size_t>& rows) {
       std::vector<std::size_t> m;
       for (std::size_t i : rows) m.push_back(f.rows[i].method);
-      return method_list(m);
+      return m;
     };
+    const auto methods = [&](const std::vector<std::size_t>& rows) { return method_list(rows_methods(rows)); };
     std::string md = "## " + title() + "\n\n";
-    md += fmt::format("- At the sheet's large step dt = {} (damping {}): stable: {}; unstable: {}.\n", c.large_dt, c.damping(),
-                      methods(f.stable_large), methods(f.unstable_large));
-    md += fmt::format("- Without damping (dt = {}): stable: {}; unstable: {}.\n", c.small_dt, methods(f.stable_undamped),
-                      methods(f.unstable_undamped));
+    const std::string large = fmt::format("- At the sheet's large step dt = {} (damping {}): stable: {}; unstable: {}.", c.large_dt,
+                                          c.damping(), methods(f.stable_large), methods(f.unstable_large));
+    const std::string undamped = fmt::format("- Without damping (dt = {}): stable: {}; unstable: {}.", c.small_dt,
+                                             methods(f.stable_undamped), methods(f.unstable_undamped));
+    md += large + "\n" + undamped + "\n";
+    if (Ledger* l = page.ledger) {
+      claim_unstable_at(*l, page.data, "stable.unstable_at_large_dt", "stable", large, c.large_dt, c.damping(), rows_methods(f.unstable_large));
+      claim_unstable_at(*l, page.data, "stable.unstable_undamped", "stable", undamped, c.small_dt, 0.0, rows_methods(f.unstable_undamped));
+    }
     // Unstable at every small step undamped (predicted dt* = 0): at every step tried, or stable again further out.
     std::vector<std::string> again;
     for (std::size_t i : f.unstable_small_undamped)
@@ -45,8 +52,12 @@ class Stable : public Section {
       md += fmt::format("- Without damping no small step is stable for {}, but a larger one is: {} stable steps are not one "
                         "interval from 0.\n",
                         and_list(again), again.size() == 1 ? "its" : "their");
-    if (!f.always_stable.empty())
-      md += fmt::format("- Stable at every step tried (dt* = $\\infty$ at damping {}): {}.\n", c.damping(), methods(f.always_stable));
+    if (!f.always_stable.empty()) {
+      const std::string every = fmt::format("- Stable at every step tried (dt* = $\\infty$ at damping {}): {}.", c.damping(), methods(f.always_stable));
+      md += every + "\n";
+      if (page.ledger)
+        claim_unbounded_at(*page.ledger, page.data, "stable.stable_at_every_step", "stable", every, c.damping(), rows_methods(f.always_stable));
+    }
     return md + "\n";
   }
 };
