@@ -62,6 +62,15 @@ std::string correlation_words(double rho) {
   return std::string(strength) + (rho >= 0 ? " positive" : " negative");
 }
 
+double spearman_chance(std::size_t n) { return 1.96 / std::sqrt(static_cast<double>(n) - 1); }
+
+std::string chance_words(double rho, std::size_t n) {
+  const double limit = spearman_chance(n);
+  if (limit >= 1) return fmt::format("no evidence either way, since no ranking of {} methods reaches the 5 % level", n);
+  if (std::abs(rho) <= limit) return fmt::format("within chance for {} methods (beyond it from |rho| > {:.2f})", n, limit);
+  return fmt::format("beyond chance at the 5 % level (|rho| > {:.2f})", limit);
+}
+
 std::string_view to_text(EnergyKind k) {
   switch (k) {
     case EnergyKind::Bounded: return "bounded";

@@ -45,6 +45,13 @@ std::vector<FamilyTrend> family_trends(const ReportData& d, double damping);
 
 // Spearman's rho in words: "weak positive", "strong negative", ...: |rho| < 0.3 weak, < 0.7 moderate.
 std::string correlation_words(double rho);
+// Whether rho over n points is evidence of a correlation, at the 5 % level: with none, rho
+// sqrt(n - 1) is about standard normal, so |rho| must exceed 1.96 / sqrt(n - 1); from 1 up (n
+// <= 4) no ranking of so few points is evidence either way. "within chance for 15 methods (beyond
+// it from |rho| > 0.52)", "beyond chance at the 5 % level (|rho| > 0.52)", or "no evidence either way,
+// since no ranking of 4 methods reaches the 5 % level".
+double spearman_chance(std::size_t n);
+std::string chance_words(double rho, std::size_t n);
 
 // The undamped spring over the long run (the energy figure): E/E0's range, the largest
 // |E/E0 - 1| over the run's first and second halves, and what that says.

@@ -109,6 +109,12 @@ void correlation_claim(const ReportData& d, const std::string& md) {
                                 "{:.2f}", order.size(), d.config.damping(), rho)),
             std::string::npos)
       << rho << "\n" << md;
+  // Evidence at the 5 % level: under no correlation (and no ties) Spearman's rho has mean 0 and
+  // variance exactly 1 / (n - 1), and is close to normal: evidence beyond 1.96 standard deviations.
+  const double sd = 1 / std::sqrt(static_cast<double>(order.size()) - 1);
+  const bool beyond = std::abs(rho) > 1.96 * sd;
+  EXPECT_NE(md.find(beyond ? "beyond chance at the 5 % level" : fmt::format("within chance for {} methods", order.size())),
+            std::string::npos) << rho << "\n" << md;
   if (d.config.has_section("families")) {
     EXPECT_NE(md.find(fmt::format("Pooled over the {} numerical methods, Spearman's rank correlation between order and measured dt* "
                                   "(damping {}) is **{:.2f}**", order.size(), d.config.damping(), rho)),
@@ -326,6 +332,9 @@ TEST(Claims, TheHandInsCorrelationLeavesTheExactFlowOut) {
   EXPECT_EQ(m.report.findings.spearman_n, 4u);
   EXPECT_NEAR(m.report.findings.spearman, -1 / std::sqrt(15.0), 1e-12);
   EXPECT_NE(m.md.find("Spearman's rank correlation between order and dt* is -0.26"), std::string::npos) << m.md;
+  // Four methods: |rho| is at most 1, below 1.96 / sqrt(3) = 1.13, so no ranking of them is
+  // evidence either way, whatever the data.
+  EXPECT_NE(m.md.find("no evidence either way, since no ranking of 4 methods reaches the 5 % level"), std::string::npos) << m.md;
   stability_claims(m.report.data, m.md);
   energy_claims(m.report.data, m.md);
 }

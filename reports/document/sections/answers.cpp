@@ -76,9 +76,9 @@ std::string order_answer(const Page& page) {
   std::string md = "- **Is stability correlated with the order?** ";
   if (f.spearman_n >= 3)
     md += fmt::format("{}: over the {} numerical methods, Spearman's rank correlation between the order and dt* (damping {}) is "
-                      "{:.2f}, {}.",
+                      "{:.2f}, {}, {}.",
                       std::abs(f.spearman) < 0.3 ? "Not as a rule" : "Only loosely", f.spearman_n, c.damping(), f.spearman,
-                      correlation_words(f.spearman));
+                      correlation_words(f.spearman), chance_words(f.spearman, f.spearman_n));
   std::vector<std::string> ways;
   const std::vector<FamilyTrend> trends = family_trends(page.data, c.damping());
   for (Trend t : {Trend::Rises, Trend::Falls, Trend::StaysInfinite, Trend::Mixed, Trend::StaysTheSame, Trend::NotMeasured}) {
@@ -88,7 +88,7 @@ std::string order_answer(const Page& page) {
     if (!fams.empty()) ways.push_back(fmt::format("{} in {}", to_text(t), and_list(fams)));
   }
   if (!ways.empty())
-    md += fmt::format(" Within a family, where the methods differ in order alone, dt* {}{}: how a method is built sets its "
+    md += fmt::format(" Within a family, whose methods share a construction, dt* {}{}: how a method is built sets its "
                       "stability more than its order does.",
                       and_list(ways), see(page, "regions"));
   if (Ledger* l = page.ledger) {

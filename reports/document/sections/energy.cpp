@@ -70,8 +70,10 @@ class Energy : public Section {
     for (const EnergyBehaviour& b : e)
       if (method_info(b.method).symplectic && b.kind != EnergyKind::Bounded) symplectic_drift.push_back(b.method);
     md += symplectic_drift.empty()
-              ? "\nEvery symplectic method here keeps its energy bounded, whatever its order: a symplectic step keeps a "
-                "modified energy exactly, which stays within O(dt^p^) of the true one.\n\n"
+              ? "\nEvery symplectic method here keeps its energy bounded, whatever its order: on this linear spring a "
+                "symplectic step keeps a modified quadratic energy exactly, which stays within O(dt^p^) of the true one (on a "
+                "nonlinear system only up to terms exponentially small in 1/dt, over exponentially long times: Hairer, Lubich "
+                "and Wanner, *Geometric Numerical Integration*, IX.8).\n\n"
               : fmt::format("\nA symplectic method that is not bounded here ({}) is past its stability limit at this step.\n\n",
                             method_list(symplectic_drift));
     if (page.has("energy"))

@@ -181,9 +181,9 @@ class Families : public Section {
   static std::string pooled(const Findings& f, double gamma) {
     if (f.spearman_n < 3) return {};
     return fmt::format("Pooled over the {} numerical methods, Spearman's rank correlation between order and measured dt* "
-                       "(damping {}) is **{:.2f}**, {}. One number mixes families whose dt* moves in different directions "
+                       "(damping {}) is **{:.2f}**, {}, {}. One number mixes families whose dt* moves in different directions "
                        "with the order (the table above), so it answers none of them.\n\n",
-                       f.spearman_n, gamma, f.spearman, correlation_words(f.spearman));
+                       f.spearman_n, gamma, f.spearman, correlation_words(f.spearman), chance_words(f.spearman, f.spearman_n));
   }
 
   // The splitting methods have no scalar R(z); on the test equation x'' = -omega^2 x their step

@@ -88,7 +88,9 @@ std::string structure_answer(const LongTimeResult& r) {
                       and_list(lost));
   if (s.not_by_order)
     md += fmt::format(" Every bounded one is symplectic and every drifting one is not, whatever the order: `{}` of order {} drifts "
-                      "while `{}` of order {} stays bounded. The structure decides, not the order.",
+                      "while `{}` of order {} stays bounded. The structure decides, not the order; whether symmetry without "
+                      "symplecticity would do as well is not asked here: none of steplab's methods is symmetric without being "
+                      "symplectic (the trapezoidal rule would be one).",
                       name(*s.high_drift), method_info(*s.high_drift).order, name(*s.low_bounded), method_info(*s.low_bounded).order);
   else if (s.by_structure)
     md += " Every bounded one is symplectic and every drifting one is not.";
