@@ -238,12 +238,9 @@ void add_stability_options(CLI::App* app, StabilityArgs& a, bool sweep, bool map
   a.scene.add_to(app, map ? stability_scene : spring_scene, map);
   app->add_option("--methods", a.methods, "comma-separated methods (default every numerical method)");
   // damping: the sweep's steps (and its dampings); stability: the thresholds' dampings and the map
-  if (sweep) {
-    add_params(app, stability_params(), a.params, StabilityConfig{}, [](std::string_view p) { return p == "dts"; });
-    app->add_option("--dampings", a.dampings, "comma-separated dampings (default 0 to twice critical in 21 steps, and 0.1)");
-  } else {
-    add_params(app, stability_params(), a.params, StabilityConfig{}, [](std::string_view p) { return p != "dts"; });
-  }
+  const ParamFilter sweep_steps = [](std::string_view p) { return p == "dts"; }, the_rest = [](std::string_view p) { return p != "dts"; };
+  add_params(app, stability_params(), a.params, StabilityConfig{}, sweep ? sweep_steps : the_rest);
+  if (sweep) app->add_option("--dampings", a.dampings, "comma-separated dampings (default 0 to twice critical in 21 steps, and 0.1)");
   add_threads_option(app, a.threads);
   add_lanes_option(app, a.lanes);
   add_shard_option(app, a.shard);

@@ -1,6 +1,7 @@
 #include "reports/document/claims.hpp"
 
 #include <cctype>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -68,15 +69,25 @@ Json names(const std::vector<std::size_t>& methods) {
   return out;
 }
 
-// The row of the stability document's `table` (thresholds, sweep) whose fields equal `where`, or -1.
-long find_row(const Json& doc, const char* table, const Json& where) {
-  const Json& rows = doc.at(table);
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    bool all = true;
-    for (const auto& [k, v] : where.items()) all = all && rows[i].at(k) == v;
-    if (all) return static_cast<long>(i);
-  }
-  return -1;
+// The stability document the claims about stability cite, made once per ledger.
+const Json& stability_doc(Ledger& l, const ReportData& d) {
+  return l.document(kStabilityDocument, [&] { return stability_document(d); });
+}
+
+// Whether every field of `where` has its value in `row`.
+bool matches(const Json& row, const Json& where) {
+  for (const auto& [k, v] : where.items())
+    if (row.at(k) != v) return false;
+  return true;
+}
+
+// The measured dt* of `method` at `damping` (its thresholds row), or none where the study has no such row.
+std::optional<Evidence> measured_dt(Ledger& l, const ReportData& d, std::size_t method, double damping) {
+  const Json& rows = stability_doc(l, d).at("thresholds");
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    if (matches(rows[i], {{"method", name(method)}, {"damping", damping}}))
+      return l.at(kStabilityDocument, fmt::format("/thresholds/{}/dt_measured", i));
+  return std::nullopt;
 }
 
 bool numerical(const std::string& method) {
@@ -88,13 +99,10 @@ bool numerical(const std::string& method) {
 // numerical methods, whose `field` equals `equals`, are `set`.
 void membership(Ledger& l, const ReportData& d, Claim c, const char* table, Json where, const char* field, Json equals,
                 const std::vector<std::size_t>& set) {
-  const Json& doc = l.document(kStabilityDocument, [&] { return stability_document(d); });
-  const Json& rows = doc.at(table);
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    bool all = numerical(rows[i].at("method").get<std::string>());
-    for (const auto& [k, v] : where.items()) all = all && rows[i].at(k) == v;
-    if (all) c.evidence.push_back(l.at(kStabilityDocument, fmt::format("/{}/{}/{}", table, i, field)));
-  }
+  const Json& rows = stability_doc(l, d).at(table);
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    if (numerical(rows[i].at("method").get<std::string>()) && matches(rows[i], where))
+      c.evidence.push_back(l.at(kStabilityDocument, fmt::format("/{}/{}/{}", table, i, field)));
   c.kind = "membership";
   c.rule = {{"file", kStabilityDocument}, {"rows", fmt::format("/{}", table)}, {"where", std::move(where)}, {"key", "method"},
             {"over", "numerical"}, {"field", field}, {"equals", std::move(equals)}, {"set", names(set)}};
@@ -117,12 +125,11 @@ void claim_unbounded_at(Ledger& l, const ReportData& d, std::string id, std::str
 
 void claim_family_trend(Ledger& l, const ReportData& d, std::string id, std::string section, std::string sentence,
                         const FamilyTrend& t, double damping) {
-  const Json& doc = l.document(kStabilityDocument, [&] { return stability_document(d); });
   Claim c{std::move(id), std::move(section), std::move(sentence), "trend", {}, {}};
   for (std::size_t m : t.members) {
-    const long row = find_row(doc, "thresholds", {{"method", name(m)}, {"damping", damping}});
-    if (row < 0) return;  // not measured: no claim
-    c.evidence.push_back(l.at(kStabilityDocument, fmt::format("/thresholds/{}/dt_measured", row)));
+    const std::optional<Evidence> dt = measured_dt(l, d, m, damping);
+    if (!dt) return;  // not measured: no claim
+    c.evidence.push_back(*dt);
   }
   c.rule = {{"along", names(t.members)}, {"relative", kSameThreshold}, {"trend", to_text(t.trend)}};
   l.add(std::move(c));
@@ -130,18 +137,15 @@ void claim_family_trend(Ledger& l, const ReportData& d, std::string id, std::str
 
 void claim_spearman(Ledger& l, const ReportData& d, const Findings& f, std::string id, std::string section, std::string sentence,
                     int decimals) {
-  const Json& doc = l.document(kStabilityDocument, [&] { return stability_document(d); });
-  const double gamma = d.config.damping();
   Claim c{std::move(id), std::move(section), std::move(sentence), "statistic", {}, {}};
   Json x = Json::array(), y = Json::array();
-  for (std::size_t i : f.numerical) {
-    const std::size_t m = f.rows[i].method;
-    const long row = find_row(doc, "thresholds", {{"method", name(m)}, {"damping", gamma}});
-    if (row < 0) return;  // a point not measured: no claim
+  for (std::size_t m : methods_of(f, f.numerical)) {
+    const std::optional<Evidence> dt = measured_dt(l, d, m, d.config.damping());
+    if (!dt) return;  // a point not measured: no claim
     x.push_back(c.evidence.size());
     c.evidence.push_back(l.order_of(m));
     y.push_back(c.evidence.size());
-    c.evidence.push_back(l.at(kStabilityDocument, fmt::format("/thresholds/{}/dt_measured", row)));
+    c.evidence.push_back(*dt);
   }
   c.rule = {{"statistic", "spearman"}, {"x", std::move(x)},          {"y", std::move(y)},
             {"value", std::stod(fmt::format("{:.{}f}", f.spearman, decimals))},  // as printed

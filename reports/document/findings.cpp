@@ -11,6 +11,12 @@
 
 namespace steplab {
 
+std::vector<std::size_t> methods_of(const Findings& f, const std::vector<std::size_t>& rows) {
+  std::vector<std::size_t> out;
+  for (std::size_t i : rows) out.push_back(f.rows[i].method);
+  return out;
+}
+
 bool tied(double margin, bool timed) { return timed ? margin < kTieMargin : margin == 1; }
 
 std::string_view to_text(Trend t) {

@@ -16,6 +16,9 @@
 
 namespace steplab {
 
+// The methods of Findings rows (indices into f.rows: f.numerical, f.stable_large, ...).
+std::vector<std::size_t> methods_of(const Findings& f, const std::vector<std::size_t>& rows);
+
 // Whether a margin of one cost over another is a tie: below kTieMargin (analysis/kernel/timing.hpp)
 // where the costs are times, only at 1 where they are counts.
 bool tied(double margin, bool timed);

@@ -272,7 +272,7 @@ ReportConfig report_config_from_json(const Json& user, const ReportConfig& base)
   c.scaling_error = num(sc["error"], "scaling.error", Bound::Positive);
   ScalingConfig measure;  // scaling.t_end by the study's rule, as its command has it
   measure.t_end = c.scaling_t_end;
-  params_from_json(scaling_params().first(1), sc, "scaling", measure);
+  params_from_json(scaling_params(), sc, "scaling", measure);  // of its rows, only t_end is a report key
   c.scaling_t_end = measure.t_end;
   c.scaling_map_sizes.clear();
   if (!c.scaling.empty()) {  // within the first scene's size range

@@ -25,12 +25,6 @@ std::string see(const Page& page, const std::string& figure) {
   return n ? fmt::format(" (figure {})", n) : "";
 }
 
-std::vector<std::size_t> methods_of(const Findings& f, const std::vector<std::size_t>& rows) {
-  std::vector<std::size_t> out;
-  for (std::size_t i : rows) out.push_back(f.rows[i].method);
-  return out;
-}
-
 std::string stable_answer(const Page& page) {
   const Findings& f = page.findings;
   const ReportConfig& c = page.data.config;

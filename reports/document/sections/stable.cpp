@@ -19,12 +19,7 @@ class Stable : public Section {
   std::string markdown(Page& page) const override {
     const Findings& f = page.findings;
     const ReportConfig& c = page.data.config;
-    const auto rows_methods = [&](const std::vector<std::size_t>& rows) {
-      std::vector<std::size_t> m;
-      for (std::size_t i : rows) m.push_back(f.rows[i].method);
-      return m;
-    };
-    const auto methods = [&](const std::vector<std::size_t>& rows) { return method_list(rows_methods(rows)); };
+    const auto methods = [&](const std::vector<std::size_t>& rows) { return method_list(methods_of(f, rows)); };
     std::string md = "## " + title() + "\n\n";
     const std::string large = fmt::format("- At the sheet's large step dt = {} (damping {}): stable: {}; unstable: {}.", c.large_dt,
                                           c.damping(), methods(f.stable_large), methods(f.unstable_large));
@@ -32,8 +27,8 @@ class Stable : public Section {
                                              methods(f.stable_undamped), methods(f.unstable_undamped));
     md += large + "\n" + undamped + "\n";
     if (Ledger* l = page.ledger) {
-      claim_unstable_at(*l, page.data, "stable.unstable_at_large_dt", "stable", large, c.large_dt, c.damping(), rows_methods(f.unstable_large));
-      claim_unstable_at(*l, page.data, "stable.unstable_undamped", "stable", undamped, c.small_dt, 0.0, rows_methods(f.unstable_undamped));
+      claim_unstable_at(*l, page.data, "stable.unstable_at_large_dt", "stable", large, c.large_dt, c.damping(), methods_of(f, f.unstable_large));
+      claim_unstable_at(*l, page.data, "stable.unstable_undamped", "stable", undamped, c.small_dt, 0.0, methods_of(f, f.unstable_undamped));
     }
     // Unstable at every small step undamped (predicted dt* = 0): at every step tried, or stable again further out.
     std::vector<std::string> again;
@@ -56,7 +51,7 @@ class Stable : public Section {
       const std::string every = fmt::format("- Stable at every step tried (dt* = $\\infty$ at damping {}): {}.", c.damping(), methods(f.always_stable));
       md += every + "\n";
       if (page.ledger)
-        claim_unbounded_at(*page.ledger, page.data, "stable.stable_at_every_step", "stable", every, c.damping(), rows_methods(f.always_stable));
+        claim_unbounded_at(*page.ledger, page.data, "stable.stable_at_every_step", "stable", every, c.damping(), methods_of(f, f.always_stable));
     }
     return md + "\n";
   }
