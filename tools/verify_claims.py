@@ -19,7 +19,11 @@ RULE_FIELDS = {
     "membership": ("file", "rows", "where", "key", "over", "field", "equals", "set"),
     "trend": ("along", "relative", "trend"),
     "statistic": ("statistic", "x", "y", "value", "decimals", "words"),
+    "comparison": ("a", "others", "relation", "margin", "noise"),
+    "threshold": ("op", "limit"),
 }
+THRESHOLD_OPS = {"<": lambda v, l: v < l, "<=": lambda v, l: v <= l,
+                 ">": lambda v, l: v > l, ">=": lambda v, l: v >= l}
 
 class Fail(Exception): pass  # a reason a claim does not hold
 class BadClaimsFile(Exception): pass  # claims.json itself is unusable: exit status 2
@@ -231,6 +235,63 @@ def check_statistic(rule, values):
                         % (rho, show(words), show(rule["words"])))
     return problems
 
+def check_comparison(rule, values):
+    """a = evidence[i], B the least of `others` (+infinity where empty), M = max(margin, product
+    of the `noise` values) (the margin where `noise` is empty).  Holds when no value is null,
+    a <= every other, and "less": B >= M a and B > a; "tie": B < M a or B == a, and
+    evidence[others[0]] == B."""
+    i, others, noise, m = rule["a"], rule["others"], rule["noise"], rule["margin"]
+    index = lambda k: isinstance(k, int) and not isinstance(k, bool) and 0 <= k < len(values)
+    if not isinstance(others, list) or not isinstance(noise, list) \
+            or not all(index(k) for k in [i] + others + noise):
+        raise Fail("a %s, others %s or noise %s is not an index into the %d evidence values"
+                   % (show(i), show(others), show(noise), len(values)))
+    if rule["relation"] not in ("less", "tie"):
+        raise Fail("relation is %s, not \"less\" or \"tie\"" % show(rule["relation"]))
+    if not is_number(m):
+        raise Fail("margin is %s, not a number" % show(m))
+    x = {k: to_number(values[k], "evidence %d" % k) for k in [i] + others + noise}
+    nulls = sorted(k for k, v in x.items() if v is None)
+    if nulls:
+        raise Fail("evidence %s null (not measured)" % ", ".join(map(str, nulls)))
+    a, big_m = x[i], max(m, math.prod(x[k] for k in noise)) if noise else m
+    b, ma = min((x[k] for k in others), default=math.inf), big_m * a
+    problems = ["a (evidence %d) is %s, above evidence %d (%s)" % (i, show(a), k, show(x[k]))
+                for k in others if not a <= x[k]]
+    if rule["relation"] == "less" and not (b >= ma and b > a):
+        problems.append("less: the least other %s is not >= M a = %s x %s = %s and > a"
+                        % (show(b), show(big_m), show(a), show(ma)))
+    if rule["relation"] == "tie":
+        if not (b < ma or b == a):
+            problems.append("tie: the least other %s is neither < M a = %s x %s = %s nor == a"
+                            % (show(b), show(big_m), show(a), show(ma)))
+        if not others:
+            problems.append("tie: others is empty, nothing to tie with")
+        elif x[others[0]] != b:
+            problems.append("tie: the first of others (evidence %d) is %s, not the least, %s"
+                            % (others[0], show(x[others[0]]), show(b)))
+    return problems
+
+def check_threshold(rule, values):
+    """Evidence not empty and every value v (+infinity for "unbounded"/"never") has v op limit;
+    a null value fails."""
+    op, limit = rule["op"], rule["limit"]
+    if not isinstance(op, str) or op not in THRESHOLD_OPS:
+        raise Fail("op is %s, not one of %s"
+                   % (show(op), ", ".join(map(json.dumps, THRESHOLD_OPS))))
+    if not is_number(limit):
+        raise Fail("limit is %s, not a number" % show(limit))
+    if not values:
+        raise Fail("the evidence is empty")
+    problems = []
+    for k, v in enumerate(values):
+        x = to_number(v, "evidence %d" % k)
+        if x is None:
+            problems.append("evidence %d is null (not measured), not %s %s" % (k, op, show(limit)))
+        elif not THRESHOLD_OPS[op](x, limit):
+            problems.append("evidence %d is %s, not %s %s" % (k, show(x), op, show(limit)))
+    return problems
+
 # --- a claim and the file -----------------------------------------------------------------
 def check_claim(report, doc, claim):
     if any(f not in claim for f in CLAIM_FIELDS):
@@ -258,7 +319,9 @@ def check_claim(report, doc, claim):
         if kind == "membership":
             problems += check_membership(report, doc, rule, evidence)
         elif len(values) == len(evidence):  # the other rules read the evidence's values
-            problems += (check_trend if kind == "trend" else check_statistic)(rule, values)
+            check = {"trend": check_trend, "statistic": check_statistic,
+                     "comparison": check_comparison, "threshold": check_threshold}[kind]
+            problems += check(rule, values)
     except Fail as why:
         problems.append(str(why))
     return problems

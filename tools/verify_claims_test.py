@@ -41,6 +41,13 @@ STABILITY = {
 # Spearman points: x = [1, 2, 2, unbounded], y = [0.5, never, 0.1, 0.3]
 STATS = {"x": [1, 2, 2, "unbounded"], "y": [0.5, "never", 0.1, 0.3]}
 SF = "stability/stability.json"
+# Each solver's cheapest run reaching an error level: run time and the two runs' spread
+COST = {"cheapest": [  # 0..4
+    {"method": "rk4", "seconds": 1.0, "seconds_spread": 1.1},
+    {"method": "trapezoid", "seconds": 1.5, "seconds_spread": 1.2},
+    {"method": "backward_euler", "seconds": 1.05, "seconds_spread": 1.02},
+    {"method": "forward_euler", "seconds": None, "seconds_spread": None},
+    {"method": "leapfrog", "seconds": "never", "seconds_spread": 1.0}]}
 
 
 def ev(pointer, value, file=SF):
@@ -68,6 +75,23 @@ def spearman(cid="S1", value=-0.32, decimals=2, words="moderate negative"):
             "evidence": [ev("/%s/%d" % (k, i), STATS[k][i], "stats.json") for k in "xy" for i in range(4)]}
 
 
+def threshold(cid, rows, op, limit, field="dt_measured"):
+    return {"id": cid, "section": "stability", "sentence": "dt* ...", "kind": "threshold",
+            "rule": {"op": op, "limit": limit},
+            "evidence": [ev("/thresholds/%d/%s" % (i, field), STABILITY["thresholds"][i][field]) for i in rows]}
+
+
+def comparison(cid, relation, margin, a, others, noise=()):
+    """Evidence: row a's seconds, then each of others' seconds, then each of noise's spreads."""
+    rows = [a] + list(others)
+    return {"id": cid, "section": "cost", "sentence": "cheapest ...", "kind": "comparison",
+            "rule": {"a": 0, "others": list(range(1, len(rows))), "relation": relation, "margin": margin,
+                     "noise": list(range(len(rows), len(rows) + len(noise)))},
+            "evidence": [ev("/cheapest/%d/seconds" % r, COST["cheapest"][r]["seconds"], "cost.json") for r in rows]
+            + [ev("/cheapest/%d/seconds_spread" % r, COST["cheapest"][r]["seconds_spread"], "cost.json")
+               for r in noise]}
+
+
 class Folder(unittest.TestCase):
     def setUp(self):
         self.tmp = tempfile.TemporaryDirectory()
@@ -76,17 +100,17 @@ class Folder(unittest.TestCase):
     def tearDown(self):
         self.tmp.cleanup()
 
-    def write(self, claims, stability=STABILITY, raw=None):
+    def write(self, claims, stability=STABILITY, raw=None, cost=COST):
         os.makedirs(os.path.join(self.dir, "data", "stability"), exist_ok=True)
-        for name, doc in [(SF, stability), ("stats.json", STATS)]:
+        for name, doc in [(SF, stability), ("stats.json", STATS), ("cost.json", cost)]:
             with open(os.path.join(self.dir, "data", name), "w") as f:
                 json.dump(doc, f)
         with open(os.path.join(self.dir, "data", "claims.json"), "w") as f:
             f.write(raw if raw is not None else
                     json.dumps({"schema": "steplab.claims/1", "methods": METHODS, "claims": claims}))
 
-    def problems(self, *claims, stability=STABILITY):
-        self.write(list(claims), stability)
+    def problems(self, *claims, stability=STABILITY, cost=COST):
+        self.write(list(claims), stability, cost=cost)
         return dict(vc.verify(self.dir))
 
     def run_cli(self):
@@ -174,6 +198,98 @@ class Spearman(Folder):
         self.assertTrue(p["S4"] and p["S5"])
 
 
+class Threshold(Folder):
+    def test_claims(self):
+        # dt_measured: forward_euler 0.2, backward_euler unbounded, trapezoid unbounded, rk4 0.2183;
+        # stable_again_measured: forward_euler never, backward_euler null
+        p = self.problems(threshold("H1", [0, 3], "<", 0.25),  # 0.2, 0.2183 < 0.25
+                          threshold("H2", [0, 3], ">", 0.21),  # 0.2 is not > 0.21
+                          threshold("H3", [0, 1], ">", 0.1, field="stable_again_measured"),  # never, null
+                          threshold("H4", [], "<", 0.25),  # empty evidence
+                          threshold("H5", [1, 2], ">", 1e300),  # unbounded, unbounded: +infinity
+                          threshold("H6", [1, 3], "<", 0.25),  # unbounded is not < 0.25
+                          threshold("H7", [0], "<=", 0.2),  # 0.2 <= 0.2
+                          threshold("H8", [0], "<", 0.2),  # 0.2 is not < 0.2
+                          threshold("H9", [0], ">=", 1e300, field="stable_again_measured"),  # never
+                          threshold("H10", [0, 3], "==", 0.25),  # unknown op
+                          threshold("H11", [0, 3], "<", "unbounded"))  # limit not a number
+        for cid in ("H1", "H5", "H7", "H9"):
+            self.assertEqual(p[cid], [], cid)
+        self.assertEqual(p["H2"], ["evidence 0 is 0.2, not > 0.21"])
+        self.assertEqual(len(p["H3"]), 1, p["H3"])
+        self.assertIn("evidence 1 is null", p["H3"][0])
+        self.assertIn("empty", p["H4"][0])
+        self.assertEqual(p["H6"], ["evidence 0 is inf, not < 0.25"])
+        self.assertEqual(p["H8"], ["evidence 0 is 0.2, not < 0.2"])
+        self.assertIn('op is "=="', p["H10"][0])
+        self.assertIn("limit", p["H11"][0])
+
+    def test_mutation(self):
+        # forward_euler's dt_measured in the file becomes 0.3: past the limit 0.25, and no longer
+        # the recorded 0.2
+        moved = copy.deepcopy(STABILITY)
+        moved["thresholds"][0]["dt_measured"] = 0.3
+        p = self.problems(threshold("H1", [0, 3], "<", 0.25), stability=moved)["H1"]
+        self.assertIn("recorded 0.2, the file holds 0.3", p[0])
+        self.assertEqual(p[1], "evidence 0 is 0.3, not < 0.25")
+        self.write([threshold("H1", [0, 3], "<", 0.25), trend("T1", [1, 2], "stays unbounded")], moved)
+        out = self.run_cli()
+        self.assertEqual(out.returncode, 1)
+        self.assertTrue(out.stdout.startswith("H1: "), out.stdout)
+        self.assertNotIn("T1", out.stdout)
+        self.assertIn("claims: 2, hold: 1, do not hold: 1", out.stdout)
+
+
+class Comparison(Folder):
+    def test_claims(self):
+        # seconds: rk4 1.0, trapezoid 1.5, backward_euler 1.05, forward_euler null, leapfrog never;
+        # spreads: rk4 1.1, trapezoid 1.2, backward_euler 1.02
+        bad_index = comparison("C12", "less", 1.3, 0, [1])
+        bad_index["rule"]["others"] = [1, 2]  # two evidence values only
+        p = self.problems(comparison("C1", "less", 1.3, 0, [1], noise=[0, 2]),  # noise 1.122 < 1.3 = M <= 1.5
+                          comparison("C2", "less", 1.2, 0, [1], noise=[0, 1]),  # M = noise 1.32 <= 1.5
+                          comparison("C3", "less", 1.01, 0, [2], noise=[0, 2]),  # 1.05 < M = 1.122
+                          comparison("C4", "tie", 1.1, 0, [2, 1]),  # 1.05 < 1.1, the first is least
+                          comparison("C5", "tie", 1.1, 0, [1, 2]),  # the least is the second
+                          comparison("C6", "less", 1.01, 2, [0, 1]),  # a 1.05 is above rk4's 1.0
+                          comparison("C7", "less", 1.01, 3, [1]),  # a is null
+                          comparison("C8", "less", 1.3, 0, [1, 3]),  # an other is null
+                          comparison("C9", "less", 1.3, 0, []),  # B = +infinity
+                          comparison("C10", "tie", 1.3, 0, []),  # nothing to tie with
+                          comparison("C11", "tie", 1.0, 4, [4]),  # never == never: B == a
+                          bad_index,
+                          comparison("C13", "more", 1.3, 0, [1]),  # unknown relation
+                          comparison("C14", "less", 1.3, 0, [1, 4]))  # never is above 1.5
+        for cid in ("C1", "C2", "C4", "C9", "C11", "C14"):
+            self.assertEqual(p[cid], [], cid)
+        self.assertEqual(len(p["C3"]), 1, p["C3"])
+        self.assertIn("1.05 is not >= M a = 1.122", p["C3"][0])
+        self.assertEqual(p["C5"], ["tie: the first of others (evidence 1) is 1.5, not the least, 1.05"])
+        self.assertEqual(p["C6"][0], "a (evidence 0) is 1.05, above evidence 1 (1.0)")  # and B < M a
+        self.assertEqual(p["C7"], ["evidence 0 null (not measured)"])
+        self.assertEqual(p["C8"], ["evidence 2 null (not measured)"])
+        self.assertIn("tie: others is empty, nothing to tie with", p["C10"])
+        self.assertIn("not an index", p["C12"][0])
+        self.assertIn('relation is "more"', p["C13"][0])
+        # the margin alone would let C3 hold: the noise product decides
+        self.assertEqual(self.problems(comparison("C3", "less", 1.01, 0, [2]))["C3"], [])
+
+    def test_mutation(self):
+        # trapezoid's run time in the file becomes 1.2: below M a = 1.32, and not the recorded 1.5
+        moved = copy.deepcopy(COST)
+        moved["cheapest"][1]["seconds"] = 1.2
+        p = self.problems(comparison("C2", "less", 1.2, 0, [1], noise=[0, 1]), cost=moved)["C2"]
+        self.assertIn("recorded 1.5, the file holds 1.2", p[0])
+        self.assertIn("less: the least other 1.2 is not >= M a", p[1])
+        self.write([comparison("C2", "less", 1.2, 0, [1], noise=[0, 1]),
+                    comparison("C4", "tie", 1.1, 0, [2])], cost=moved)  # reads no trapezoid value
+        out = self.run_cli()
+        self.assertEqual(out.returncode, 1)
+        self.assertTrue(out.stdout.startswith("C2: "), out.stdout)
+        self.assertNotIn("C4", out.stdout)
+        self.assertIn("claims: 2, hold: 1, do not hold: 1", out.stdout)
+
+
 class Evidence(Folder):
     def test_pointer(self):
         doc = {"a/b": {"m~n": [10, 20]}, "": 3}
@@ -210,9 +326,10 @@ class Evidence(Folder):
 
 class CommandLine(Folder):
     def test_exit_statuses(self):
-        self.write([membership(), trend("T1", [1, 2], "stays unbounded"), spearman()])
+        self.write([membership(), trend("T1", [1, 2], "stays unbounded"), spearman(),
+                    threshold("H1", [0, 3], "<", 0.25), comparison("C1", "less", 1.3, 0, [1])])
         out = self.run_cli()
-        self.assertEqual((out.returncode, out.stdout), (0, "claims: 3, hold: 3, do not hold: 0\n"))
+        self.assertEqual((out.returncode, out.stdout), (0, "claims: 5, hold: 5, do not hold: 0\n"))
         self.write([membership(), trend("T1", [1, 2], "rises")])
         out = self.run_cli()
         self.assertEqual(out.returncode, 1)

@@ -1,5 +1,6 @@
 // Wall-clock timings of a run, repeated one after another (no other run competing for the core):
-// at least `repeats` of them and `seconds` in all. A study keeps the median or the minimum.
+// at least `repeats` of them and `seconds` in all. A study keeps the median or the minimum; when
+// two timings are told apart: analysis/kernel/noise.hpp.
 #pragma once
 
 #include <chrono>
@@ -7,11 +8,6 @@
 #include <vector>
 
 namespace steplab {
-
-// A margin of one solver's cost over another's below this is within the noise of timing runs this
-// short (the minimum of repeats moves by up to 10-20 % from one report to the next on a 2-core
-// machine): a tie, not a win. Exact counts (an untimed study) tie only when equal.
-inline constexpr double kTieMargin = 1.2;
 
 template <class F> std::vector<double> repeated_timings(F&& run, std::size_t repeats, double seconds) {
   std::vector<double> times;

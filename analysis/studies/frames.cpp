@@ -6,7 +6,7 @@
 
 #include "analysis/fits/fit.hpp"
 #include "analysis/kernel/shard.hpp"
-#include "analysis/kernel/timing.hpp"
+#include "analysis/kernel/noise.hpp"
 #include "analysis/studies/defaults.hpp"
 
 namespace steplab {
@@ -94,7 +94,7 @@ FrameRun measure(const FramesConfig& c, const Reference& ref, const FrameSetup& 
 
 // Whether run a dominates run b: no dearer and more accurate, on each cost the study has. Spring
 // visits are counts: a dearer by any amount is dearer, equal ones are equal. Times within the
-// timing's noise (kTieMargin, analysis/kernel/timing.hpp) are not told apart: of two set-ups of
+// timing's noise (kTieMargin, analysis/kernel/noise.hpp) are not told apart: of two set-ups of
 // (nearly) equal cost the more accurate dominates, whichever timed a little faster.
 bool dominates(const FrameRun& a, const FrameRun& b, bool timed) {
   if (!(a.error < b.error)) return false;

@@ -16,6 +16,7 @@
 #include "analysis/studies/mode_stability.hpp"
 #include "analysis/kernel/shard.hpp"
 #include "analysis/peers/sized_peers.hpp"
+#include "analysis/kernel/noise.hpp"
 #include "analysis/kernel/timing.hpp"
 
 namespace steplab {
@@ -29,7 +30,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 template <class F> void encode_fields(ScalingRow& r, F&& f) {
   f(r.solver), f(r.target), f(r.stiffness), f(r.implicit), f(r.adaptive), f(r.n), f(r.masses), f(r.dt_stable), f(r.dt);
   f(r.capped), f(r.error), f(r.steps), f(r.forces), f(r.jacobians), f(r.rejected), f(r.factorisations), f(r.solves);
-  f(r.newton), f(r.seconds), f(r.runs);
+  f(r.newton), f(r.seconds), f(r.spread), f(r.runs);
 }
 
 namespace {
@@ -358,14 +359,21 @@ ScalingResult scaling_study(const ScalingConfig& c) {
   // as empty rows, so that every index below holds; a shard writes its tasks' results, not these.
   for (std::size_t t = 0; t < nt; ++t)
     for (std::size_t task = 0; task < tasks; ++task) out.rows.push_back(found[task].empty() ? ScalingRow{} : found[task][t]);
-  if (c.timing) {  // a run timed once: the rows of other targets that chose the same run share its time
-    std::map<std::tuple<std::string, int, double, double>, double> timed;
+  if (c.timing) {  // a run timed once, in two passes (the second in reverse: its spread, noise.hpp); the
+                   // rows of other targets that chose the same run share its time
+    using Key = std::tuple<std::string, int, double, double>;
+    const auto key = [](const ScalingRow& r) { return Key{r.solver, r.n, r.stiffness, r.adaptive ? r.dt : static_cast<double>(r.steps)}; };
+    std::map<Key, std::pair<double, double>> timed;  // seconds, spread
+    std::vector<const ScalingRow*> first;            // each run's first row, in the first pass's order
+    for (const ScalingRow& r : out.rows)
+      if (r.reached() && timed.emplace(key(r), std::pair{run_seconds(c, r), 1.0}).second) first.push_back(&r);
+    for (auto r = first.rbegin(); r != first.rend(); ++r) {
+      auto& [seconds, spread] = timed.at(key(**r));
+      const double again = run_seconds(c, **r);
+      spread = spread_of(seconds, again), seconds = std::min(seconds, again);
+    }
     for (ScalingRow& r : out.rows)
-      if (r.reached()) {
-        const auto key = std::tuple{r.solver, r.n, r.stiffness, r.adaptive ? r.dt : static_cast<double>(r.steps)};
-        const auto it = timed.find(key);
-        r.seconds = it != timed.end() ? it->second : timed.emplace(key, run_seconds(c, r)).first->second;
-      }
+      if (r.reached()) std::tie(r.seconds, r.spread) = timed.at(key(r));
   }
   for (std::size_t b = 0; b < nt * nk; ++b) {
     ScalingBlock block;

@@ -43,6 +43,7 @@
 
 #include "analysis/kernel/parallel.hpp"
 #include "analysis/kernel/counts.hpp"
+#include "analysis/kernel/noise.hpp"
 #include "analysis/studies/defaults.hpp"
 #include "core/simulate.hpp"
 
@@ -93,6 +94,7 @@ struct ScalingRow {
   long long steps = 0, forces = 0, jacobians = 0;
   long long rejected = 0, factorisations = 0, solves = 0, newton = 0;  // analysis/kernel/counts.hpp
   double seconds = 0;    // the whole run (0 without timing)
+  double spread = 1;     // its two timing passes' minima, larger over smaller (analysis/kernel/noise.hpp)
   int runs = 0;          // runs the search took
   Counts counts() const { return {steps, rejected, forces, jacobians, factorisations, solves, newton}; }
   bool reached() const { return dt == dt; }
@@ -139,6 +141,7 @@ struct ScalingCell {
   int n = 0, masses = 0;
   std::string cheapest, next, best_implicit, best_explicit, best_implicit_peer;
   double margin = 0, explicit_over_implicit = 0, implicit_peer_over_implicit = 0;
+  double required = kTieMargin;  // timed: the margin a win needs, noise_margin of the two runs' spreads
   double motion = 0;
 };
 

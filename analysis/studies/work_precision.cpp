@@ -11,6 +11,7 @@
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/kernel/shard.hpp"
 #include "analysis/peers/peers.hpp"
+#include "analysis/kernel/noise.hpp"
 #include "analysis/kernel/timing.hpp"
 
 namespace steplab {
@@ -134,9 +135,15 @@ std::vector<WorkPoint> scene_points(const Where& w, const WorkPrecisionConfig& c
   }, order);
   std::vector<WorkPoint> points;
   for (const auto& part : parts) points.insert(points.end(), part.begin(), part.end());
-  if (c.timing)
+  if (c.timing) {  // two passes, the second in reverse order: each point's spread (noise.hpp)
     for (WorkPoint& p : points)
       if (p.status == RunStatus::Ok) p.seconds = time_point(w, p, t_end);
+    for (auto p = points.rbegin(); p != points.rend(); ++p)
+      if (p->status == RunStatus::Ok) {
+        const double again = time_point(w, *p, t_end);
+        p->spread = spread_of(p->seconds, again), p->seconds = std::min(p->seconds, again);
+      }
+  }
   return points;
 }
 
@@ -301,13 +308,13 @@ WorkPrecisionResult work_precision_study(const WorkPrecisionConfig& config) {
   }
   if (stiff) out.stiffness = stiffness_rows(config, *stiff);
   // The crossover: the smallest ratio from which on, at every larger one, the best implicit run is
-  // cheaper than the best explicit one.
+  // cheaper than the best explicit one: timed, by more than the timing's noise (kTieMargin).
   for (std::size_t i = out.stiffness.size(); i-- > 0;) {
     const StiffnessRow& r = out.stiffness[i];
     const bool implicit_wins =
         !r.best_implicit.empty() &&
-        (r.best_explicit.empty() || cheaper(config.timing, r.implicit_seconds, r.implicit_forces,
-                                            r.explicit_seconds, r.explicit_forces));
+        (r.best_explicit.empty() || (config.timing ? kTieMargin * r.implicit_seconds < r.explicit_seconds
+                                                   : r.implicit_forces < r.explicit_forces));
     if (!implicit_wins) break;
     out.crossover_ratio = r.ratio;
   }

@@ -43,12 +43,13 @@ struct WorkPoint {
   long long steps = 0, force_evaluations = 0, jacobian_evaluations = 0;
   long long rejected = 0, factorisations = 0, solves = 0, newton = 0;  // analysis/kernel/counts.hpp
   double seconds = -1;   // minimum of the timings; -1 without timing
+  double spread = 1;     // its two timing passes' minima, larger over smaller (analysis/kernel/noise.hpp)
   Counts counts() const { return {steps, rejected, force_evaluations, jacobian_evaluations, factorisations, solves, newton}; }
 };
 
 template <class F> void encode_fields(WorkPoint& p, F&& f) {  // analysis/kernel/shard.hpp
   f(p.method), f(p.adaptive), f(p.setting), f(p.status), f(p.error), f(p.steps), f(p.force_evaluations);
-  f(p.jacobian_evaluations), f(p.rejected), f(p.factorisations), f(p.solves), f(p.newton), f(p.seconds);
+  f(p.jacobian_evaluations), f(p.rejected), f(p.factorisations), f(p.solves), f(p.newton), f(p.seconds), f(p.spread);
 }
 
 // "Evaluations" in steplab are force evaluations F(x, v): the study's cost untimed. Jacobian
@@ -108,7 +109,7 @@ struct WorkPrecisionResult {
   std::ptrdiff_t stiff = -1;           // the scene (in `scenes`) with the stiff limit; -1: none
   std::vector<StableStep> limits;      // the stiff scene's explicit methods
   std::vector<StiffnessRow> stiffness; // empty: no scene with a stiff limit
-  double crossover_ratio = -1;         // smallest k2/k1 from which on implicit is cheaper; -1: never
+  double crossover_ratio = -1;         // smallest k2/k1 from which on implicit is cheaper (timed: by more than kTieMargin); -1: never
 };
 
 WorkPrecisionResult work_precision_study(const WorkPrecisionConfig& config);

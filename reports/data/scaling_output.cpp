@@ -56,7 +56,8 @@ Json scaling_json(const ScalingResult& r) {
     Json row = {{"solver", w.solver}, {"target", w.target}, {"stiffness", num(w.stiffness)}, {"implicit", w.implicit},
                 {"adaptive", w.adaptive}, {size_key, w.n}, {"dt_stable", num(w.dt_stable)}, {w.adaptive ? "tolerance" : "dt", num(w.dt)},
                 {"error", w.reached() ? Json(w.error) : Json(nullptr)}, {"counts", counts_json(w.counts())},
-                {"seconds", w.reached() && c.timing ? Json(w.seconds) : Json(nullptr)}, {"search_runs", w.runs}};
+                {"seconds", w.reached() && c.timing ? Json(w.seconds) : Json(nullptr)},
+                {"seconds_spread", w.reached() && c.timing ? Json(w.spread) : Json(nullptr)}, {"search_runs", w.runs}};
     if (!w.adaptive) row["dt_capped_at_stable"] = w.capped;
     row["masses"] = w.masses;
     rows.push_back(std::move(row));
@@ -77,7 +78,7 @@ Json scaling_json(const ScalingResult& r) {
     Json map = Json::array();
     for (const ScalingCell& m : b.cells)
       map.push_back({{size_key, m.n}, {"masses", m.masses}, {"cheapest", name(m.cheapest)}, {"next", name(m.next)},
-                     {"margin", num(m.margin)}, {"best_implicit", name(m.best_implicit)}, {"best_explicit", name(m.best_explicit)},
+                     {"margin", num(m.margin)}, {"required_margin", c.timing ? Json(m.required) : Json(nullptr)}, {"best_implicit", name(m.best_implicit)}, {"best_explicit", name(m.best_explicit)},
                      {"best_implicit_peer", name(m.best_implicit_peer)}, {"explicit_over_implicit", num(m.explicit_over_implicit)},
                      {"implicit_peer_over_implicit", num(m.implicit_peer_over_implicit)}, {"motion", m.motion}});
     blocks.push_back({{"target", b.target}, {"error", b.error}, {"stiffness", num(b.stiffness)},

@@ -62,6 +62,7 @@ Json work_precision_json(const WorkPrecisionResult& r) {
                     {"error_max", std::isfinite(p.error) ? Json(p.error) : Json(nullptr)}};
       point.update(counts_json(p.counts()));
       point["seconds"] = null_if_negative(p.seconds);
+      point["seconds_spread"] = p.seconds >= 0 ? Json(p.spread) : Json(nullptr);
       pts.push_back(std::move(point));
     }
     s["points"] = std::move(pts);

@@ -1,5 +1,6 @@
 #include "reports/document/claims.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <optional>
 #include <stdexcept>
@@ -69,9 +70,9 @@ Json names(const std::vector<std::size_t>& methods) {
   return out;
 }
 
-// The stability document the claims about stability cite, made once per ledger.
-const Json& stability_doc(Ledger& l, const ReportData& d) {
-  return l.document(kStabilityDocument, [&] { return stability_document(d); });
+// The stability document of a source, made once per ledger.
+const Json& stability_doc(Ledger& l, StabilitySource s) {
+  return l.document(s.file, [&] { return stability_document(s.data); });
 }
 
 // Whether every field of `where` has its value in `row`.
@@ -82,11 +83,11 @@ bool matches(const Json& row, const Json& where) {
 }
 
 // The measured dt* of `method` at `damping` (its thresholds row), or none where the study has no such row.
-std::optional<Evidence> measured_dt(Ledger& l, const ReportData& d, std::size_t method, double damping) {
-  const Json& rows = stability_doc(l, d).at("thresholds");
+std::optional<Evidence> measured_dt(Ledger& l, StabilitySource s, std::size_t method, double damping) {
+  const Json& rows = stability_doc(l, s).at("thresholds");
   for (std::size_t i = 0; i < rows.size(); ++i)
     if (matches(rows[i], {{"method", name(method)}, {"damping", damping}}))
-      return l.at(kStabilityDocument, fmt::format("/thresholds/{}/dt_measured", i));
+      return l.at(s.file, fmt::format("/thresholds/{}/dt_measured", i));
   return std::nullopt;
 }
 
@@ -97,37 +98,76 @@ bool numerical(const std::string& method) {
 
 // Membership over the stability document's `table`: the rows whose fields equal `where`, of the
 // numerical methods, whose `field` equals `equals`, are `set`.
-void membership(Ledger& l, const ReportData& d, Claim c, const char* table, Json where, const char* field, Json equals,
+void membership(Ledger& l, StabilitySource s, Claim c, const char* table, Json where, const char* field, Json equals,
                 const std::vector<std::size_t>& set) {
-  const Json& rows = stability_doc(l, d).at(table);
+  const Json& rows = stability_doc(l, s).at(table);
   for (std::size_t i = 0; i < rows.size(); ++i)
     if (numerical(rows[i].at("method").get<std::string>()) && matches(rows[i], where))
-      c.evidence.push_back(l.at(kStabilityDocument, fmt::format("/{}/{}/{}", table, i, field)));
+      c.evidence.push_back(l.at(s.file, fmt::format("/{}/{}/{}", table, i, field)));
   c.kind = "membership";
-  c.rule = {{"file", kStabilityDocument}, {"rows", fmt::format("/{}", table)}, {"where", std::move(where)}, {"key", "method"},
+  c.rule = {{"file", s.file}, {"rows", fmt::format("/{}", table)}, {"where", std::move(where)}, {"key", "method"},
             {"over", "numerical"}, {"field", field}, {"equals", std::move(equals)}, {"set", names(set)}};
   l.add(std::move(c));
 }
 
 }  // namespace
 
-void claim_unstable_at(Ledger& l, const ReportData& d, std::string id, std::string section, std::string sentence, double dt,
+void claim_unstable_at(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence, double dt,
                        double damping, const std::vector<std::size_t>& set) {
-  membership(l, d, {std::move(id), std::move(section), std::move(sentence), {}, {}, {}}, "sweep", {{"dt", dt}, {"damping", damping}},
+  membership(l, s, {std::move(id), std::move(section), std::move(sentence), {}, {}, {}}, "sweep", {{"dt", dt}, {"damping", damping}},
              "stable", false, set);
 }
 
-void claim_unbounded_at(Ledger& l, const ReportData& d, std::string id, std::string section, std::string sentence,
+void claim_unbounded_at(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
                         double damping, const std::vector<std::size_t>& set) {
-  membership(l, d, {std::move(id), std::move(section), std::move(sentence), {}, {}, {}}, "thresholds", {{"damping", damping}},
+  membership(l, s, {std::move(id), std::move(section), std::move(sentence), {}, {}, {}}, "thresholds", {{"damping", damping}},
              "dt_theory", "unbounded", set);
 }
 
-void claim_family_trend(Ledger& l, const ReportData& d, std::string id, std::string section, std::string sentence,
+void claim_rate(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence, double dt,
+                double damping, const std::vector<std::size_t>& methods, const char* op, double limit) {
+  if (methods.empty()) return;
+  Claim c{std::move(id), std::move(section), std::move(sentence), "threshold", {{"op", op}, {"limit", limit}}, {}};
+  const Json& rows = stability_doc(l, s).at("sweep");
+  for (std::size_t m : methods)
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      if (matches(rows[i], {{"method", name(m)}, {"dt", dt}, {"damping", damping}}))
+        c.evidence.push_back(l.at(s.file, fmt::format("/sweep/{}/rate_measured", i)));
+  if (c.evidence.size() != methods.size()) throw std::logic_error("claim_rate: a method without its sweep row");
+  l.add(std::move(c));
+}
+
+void claim_cheapest(Ledger& l, const ReportData& d, std::string id, std::string section, std::string sentence, const SceneWork& w,
+                    double level, bool timed, const LevelWinner& win) {
+  if (!win.point || !win.undecided.empty()) return;
+  l.document(kWorkDocument, [&] { return work_precision_json(d.work); });
+  const std::size_t s = static_cast<std::size_t>(&w - d.work.scenes.data());
+  const auto at = [&](const WorkPoint* p, const char* field) {
+    return l.at(kWorkDocument, fmt::format("/scenes/{}/points/{}/{}", s, p - w.points.data(), field));
+  };
+  const char* cost = timed ? "seconds" : "force_evaluations";
+  Claim c{std::move(id), std::move(section), std::move(sentence), "comparison", {}, {}};
+  std::vector<const WorkPoint*> others;  // the runner-up first, then every other solver's cheapest run
+  for (const WorkPoint& p : w.points)
+    if (p.method != win.point->method && cheapest_point(w, p.method, level, timed) == &p)  // once per solver
+      others.insert(p.method == win.next ? others.begin() : others.end(), &p);
+  c.evidence.push_back(at(win.point, cost));
+  Json ids = Json::array(), noise = Json::array();
+  for (const WorkPoint* p : others) ids.push_back(c.evidence.size()), c.evidence.push_back(at(p, cost));
+  if (timed && !others.empty()) {
+    noise.push_back(c.evidence.size()), c.evidence.push_back(at(win.point, "seconds_spread"));
+    noise.push_back(c.evidence.size()), c.evidence.push_back(at(others.front(), "seconds_spread"));
+  }
+  c.rule = {{"a", 0}, {"others", std::move(ids)}, {"relation", win.tie ? "tie" : "less"}, {"margin", timed ? kTieMargin : 1.0},
+            {"noise", std::move(noise)}};
+  l.add(std::move(c));
+}
+
+void claim_family_trend(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
                         const FamilyTrend& t, double damping) {
   Claim c{std::move(id), std::move(section), std::move(sentence), "trend", {}, {}};
   for (std::size_t m : t.members) {
-    const std::optional<Evidence> dt = measured_dt(l, d, m, damping);
+    const std::optional<Evidence> dt = measured_dt(l, s, m, damping);
     if (!dt) return;  // not measured: no claim
     c.evidence.push_back(*dt);
   }
@@ -135,21 +175,27 @@ void claim_family_trend(Ledger& l, const ReportData& d, std::string id, std::str
   l.add(std::move(c));
 }
 
-void claim_spearman(Ledger& l, const ReportData& d, const Findings& f, std::string id, std::string section, std::string sentence,
-                    int decimals) {
+std::vector<StabilityPoint> spearman_points(StabilitySource s, const Findings& f) {
+  std::vector<StabilityPoint> out;
+  for (std::size_t m : methods_of(f, f.numerical)) out.push_back({s, m});
+  return out;
+}
+
+void claim_spearman(Ledger& l, const std::vector<StabilityPoint>& points, double value, std::string id, std::string section,
+                    std::string sentence, int decimals) {
   Claim c{std::move(id), std::move(section), std::move(sentence), "statistic", {}, {}};
   Json x = Json::array(), y = Json::array();
-  for (std::size_t m : methods_of(f, f.numerical)) {
-    const std::optional<Evidence> dt = measured_dt(l, d, m, d.config.damping());
+  for (const StabilityPoint& p : points) {
+    const std::optional<Evidence> dt = measured_dt(l, p.source, p.method, p.source.data.config.damping());
     if (!dt) return;  // a point not measured: no claim
     x.push_back(c.evidence.size());
-    c.evidence.push_back(l.order_of(m));
+    c.evidence.push_back(l.order_of(p.method));
     y.push_back(c.evidence.size());
     c.evidence.push_back(*dt);
   }
   c.rule = {{"statistic", "spearman"}, {"x", std::move(x)},          {"y", std::move(y)},
-            {"value", std::stod(fmt::format("{:.{}f}", f.spearman, decimals))},  // as printed
-            {"decimals", decimals},    {"words", correlation_words(f.spearman)}};
+            {"value", std::stod(fmt::format("{:.{}f}", value, decimals))},  // as printed
+            {"decimals", decimals},    {"words", correlation_words(value)}};
   l.add(std::move(c));
 }
 

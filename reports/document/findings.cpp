@@ -17,7 +17,7 @@ std::vector<std::size_t> methods_of(const Findings& f, const std::vector<std::si
   return out;
 }
 
-bool tied(double margin, bool timed) { return timed ? margin < kTieMargin : margin == 1; }
+bool tied(double margin, bool timed, double required) { return timed ? margin < required : margin == 1; }
 
 std::string_view to_text(Trend t) {
   switch (t) {
@@ -175,13 +175,76 @@ LevelWinner level_winner(const SceneWork& w, double level, bool timed) {
     else if (!second || point_cost(*p, timed) < point_cost(*second, timed)) second = p;
   }
   if (!out.point) return out;
-  if (second) out.next = second->method, out.margin = point_cost(*second, timed) / point_cost(*out.point, timed);
-  out.tie = second && tied(out.margin, timed);
+  if (second) {
+    out.next = second->method, out.margin = point_cost(*second, timed) / point_cost(*out.point, timed);
+    out.required = noise_margin(out.point->spread, second->spread);
+  }
+  out.tie = second && tied(out.margin, timed, out.required);
+  if (!timed && !out.tie && solves(out.point->method)) {
+    const WorkPoint* against = nullptr;  // the cheapest explicit solver's run at the level
+    for (const std::string& s : solvers)
+      if (!solves(s))
+        if (const WorkPoint* p = cheapest_point(w, s, level, false); p && (!against || point_cost(*p, false) < point_cost(*against, false)))
+          against = p;
+    if (against) out.undecided = against->method;
+  }
   double edge = 0;  // the largest step or the loosest tolerance the winner's sweep tried
   for (const WorkPoint& p : w.points)
     if (p.method == out.point->method) edge = std::max(edge, p.setting);
   out.at_edge = out.point->setting == edge;
   return out;
+}
+
+std::vector<MethodRate> rates_of(const Findings& f, const std::vector<std::size_t>& rows, bool undamped) {
+  std::vector<MethodRate> out;
+  for (std::size_t i : rows) out.push_back({f.rows[i].method, undamped ? f.rows[i].energy_rate_undamped : f.rows[i].energy_rate_large_dt});
+  return out;
+}
+
+std::vector<std::size_t> weakly(const std::vector<MethodRate>& runs) {
+  std::vector<std::size_t> out;
+  for (const MethodRate& r : runs)
+    if (r.rate < kWeakRate) out.push_back(r.method);
+  return out;
+}
+
+std::vector<std::size_t> strongly(const std::vector<MethodRate>& runs) {
+  std::vector<std::size_t> out;
+  for (const MethodRate& r : runs)
+    if (std::isfinite(r.rate) && r.rate >= kWeakRate) out.push_back(r.method);
+  return out;
+}
+
+std::string unstable_words(const std::vector<MethodRate>& runs) {
+  std::vector<std::size_t> strong, weak;
+  std::vector<std::string> rates;
+  for (const MethodRate& r : runs) {
+    (r.rate < kWeakRate ? weak : strong).push_back(r.method);
+    if (r.rate < kWeakRate) rates.push_back(fmt::format("{:.2g}", r.rate));
+  }
+  if (weak.empty()) return method_list(strong);
+  const std::string w = fmt::format("weakly (energy growing {} per unit time) {}", and_list(rates), method_list(weak));
+  return strong.empty() ? w : fmt::format("{}, and {}", method_list(strong), w);
+}
+
+std::string winner_words(const LevelWinner& w) {
+  if (w.tie) return fmt::format("a tie of `{}` and `{}`", w.point->method, w.next);
+  if (!w.undecided.empty())
+    return fmt::format("`{}` or `{}` (undecided: force evaluations leave out the implicit one's solves)", w.point->method, w.undecided);
+  return "`" + w.point->method + "`";
+}
+
+bool solves(const std::string& solver) {
+  if (const auto m = find_method(solver)) return method_info(*m).implicit;
+  const PeerInfo* peer = find_peer(solver);
+  return peer && peer->implicit;
+}
+
+CellVerdict cell_verdict(const ScalingCell& m, double error, bool timed) {
+  if (m.cheapest.empty()) return CellVerdict::None;
+  if (m.motion < error) return CellVerdict::Still;
+  if (!timed && solves(m.cheapest) && !m.best_explicit.empty()) return CellVerdict::Undecided;
+  return tied(m.margin, timed, m.required) ? CellVerdict::Tie : CellVerdict::Win;
 }
 
 std::vector<PeerComparison> implicit_against_peers(const WorkPrecisionResult& r, const SceneWork& w, double level, bool timed) {

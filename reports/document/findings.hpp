@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "analysis/kernel/timing.hpp"
+#include "analysis/kernel/noise.hpp"
 #include "core/method.hpp"
 #include "reports/document/report.hpp"
 
@@ -19,9 +19,10 @@ namespace steplab {
 // The methods of Findings rows (indices into f.rows: f.numerical, f.stable_large, ...).
 std::vector<std::size_t> methods_of(const Findings& f, const std::vector<std::size_t>& rows);
 
-// Whether a margin of one cost over another is a tie: below kTieMargin (analysis/kernel/timing.hpp)
-// where the costs are times, only at 1 where they are counts.
-bool tied(double margin, bool timed);
+// Whether a margin of one cost over another is a tie: below `required` where the costs are times
+// (kTieMargin, or the two timings' measured noise: noise_margin in analysis/kernel/noise.hpp),
+// only at 1 where they are counts.
+bool tied(double margin, bool timed, double required = kTieMargin);
 
 // Whether two measured values are the same within `relative` of the larger: equal, or both finite
 // and |a - b| <= relative max(|a|, |b|). Infinity is the same as infinity only, never as a number
@@ -55,6 +56,23 @@ std::string correlation_words(double rho);
 // since no ranking of 4 methods reaches the 5 % level".
 double spearman_chance(std::size_t n);
 std::string chance_words(double rho, std::size_t n);
+
+// An unstable run whose energy grows slower than this per unit time is weakly unstable: E doubles
+// in more than ln 2 / kWeakRate = 690 time units, 69 times the sheet's 10 s, where a run shows no
+// growth; the rate is stated beside it. (Stable is at most kStableRate, 1e-6.)
+inline constexpr double kWeakRate = 1e-3;
+// A method with its measured energy growth rate (d ln E / dt) at one of the sheet's tests.
+struct MethodRate {
+  std::size_t method;
+  double rate;
+};
+// The methods of `rows` with their rate at the sheet's large step (undamped: at its small step without damping).
+std::vector<MethodRate> rates_of(const Findings& f, const std::vector<std::size_t>& rows, bool undamped);
+// "`a`, and weakly (energy growing 6e-06 and 1.2e-05 per unit time) `b` and `c`": the methods,
+// those below kWeakRate last with their rates.
+std::string unstable_words(const std::vector<MethodRate>& runs);
+std::vector<std::size_t> weakly(const std::vector<MethodRate>& runs);    // below kWeakRate
+std::vector<std::size_t> strongly(const std::vector<MethodRate>& runs);  // the others with a finite rate (a blown-up run has none)
 
 // The undamped spring over the long run (the energy figure): E/E0's range, the largest
 // |E/E0 - 1| over the run's first and second halves, and what that says.
@@ -112,13 +130,32 @@ const WorkPoint* cheapest_point(const SceneWork& w, const std::string& solver, d
 // The cheapest solver at an error level, its margin over the next solver's cheapest run, whether
 // that is a tie (kTieMargin), and whether its winning run is at the edge of its sweep (its largest
 // step or loosest tolerance: a larger one, not tried, might be cheaper still).
+// Untimed, an implicit winner is undecided against the cheapest explicit solver that reached the
+// level (`undecided`): its force evaluations leave out its Jacobians, factorisations and solves, so
+// fewer of them is no win over a method that does nothing else.
 struct LevelWinner {
   const WorkPoint* point = nullptr;  // null: no run reached the level
   std::string next;                  // the runner-up solver ("" if none)
   double margin = INFINITY;          // the runner-up's cost over the winner's
+  double required = kTieMargin;      // timed: the margin a win needs (noise_margin of the two runs' spreads)
   bool tie = false, at_edge = false;
+  std::string undecided;             // the explicit solver it is not told from ("" if decided)
+  bool decided() const { return !tie && undecided.empty(); }
 };
 LevelWinner level_winner(const SceneWork& w, double level, bool timed);
+// "`rk4`", "a tie of `a` and `b`", or "`radau_iia5` or `adams_bashforth3` (undecided: force
+// evaluations leave out the implicit one's solves)".
+std::string winner_words(const LevelWinner& w);
+
+// Whether a solver (a table method, dopri5 or a peer) solves for its step: an implicit method or
+// peer, whose force evaluations leave out its Jacobians, factorisations and linear solves.
+bool solves(const std::string& solver);
+
+// A cell of the scaling map: no solver reached the target; the body moves less than the target
+// there (a run at rest meets it: a win for no one); untimed, an implicit cheapest is undecided
+// against an explicit solver (solves uncounted); a tie (tied()); or a clear win.
+enum class CellVerdict { None, Still, Undecided, Tie, Win };
+CellVerdict cell_verdict(const ScalingCell& m, double error, bool timed);
 
 // On a scene at an error level: steplab's cheapest implicit fixed-step run against each CVODE
 // set-up's cheapest (either may be null where it does not reach the level).

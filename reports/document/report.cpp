@@ -151,7 +151,20 @@ Report build_report(const ReportConfig& config, ProgressHook progress) {
   unsigned studies = 0;
   for (const auto& s : r.sections) studies |= s->needs();
   r.data = run_report_studies(config, studies, progress);
-  if ((studies & kFindings) == kFindings) r.findings = compute_findings(r.data);
+  if ((studies & kFindings) == kFindings) {
+    r.findings = compute_findings(r.data);
+    if (config.has_section("frames")) {
+      ReportConfig c = config;
+      c.methods.clear();
+      for (std::size_t m = 0; m < method_count(); ++m)
+        if (method_info(m).on_springs && applies(m, c.oscillator.scene)) c.methods.push_back(m);
+      c.covered = {c.oscillator.scene};
+      if (!c.methods.empty()) {
+        r.springs = run_report_studies(c, kFindings, progress);
+        r.springs_findings = compute_findings(*r.springs);
+      }
+    }
+  }
   for (const auto& s : r.sections) s->study(r.data);
   return r;
 }
@@ -163,10 +176,11 @@ std::string report_markdown(const Report& r, const std::string& ext, const std::
   const ReportScene& spring = r.data.config.oscillator;
   if (r.data.config.covers(spring.scene)) md += fmt::format("The hanging spring: {}. ", params_text(spring.scene, spring.params));
   md += "Every number below was measured by the commands at the end of this report; every sentence that states a measured "
-        "finding was generated from those numbers, and data/claims.json lists the sheet's answers "
-        "with the values they rest on.\n\n";
+        "finding was generated from those numbers, and data/claims.json lists the sheet's answers and the "
+        "cheapest runs with the values they rest on.\n\n";
   Page page(r.data, r.findings, ext, figure_order(r));
   page.ledger = ledger;
+  if (r.springs) page.springs = &*r.springs, page.springs_findings = &*r.springs_findings;
   for (const auto& s : r.sections) md += s->markdown(page);
   return md + "---\n\n" + footer + "\n";
 }
@@ -331,7 +345,9 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force, 
         }
       }
     const std::string footer = machine_footer() + fmt::format(" · studies {:.1f} s", study_seconds);
-    Ledger ledger(d.methods);
+    std::vector<std::size_t> cited = d.methods;  // the methods the claims may name, with their declared order
+    if (report.springs) cited.insert(cited.end(), report.springs->methods.begin(), report.springs->methods.end());
+    Ledger ledger(cited);
     write_atomic((staging / "report.md").string(), report_markdown(report, "png", footer, &ledger));
     // The claims, and each data document they cite that no section wrote (the same document:
     // the claims' and the section's come from one function).

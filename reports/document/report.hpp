@@ -78,6 +78,7 @@ struct MethodFinding {
   bool stable_undamped;       // at config.small_dt with damping 0
   double dt_theory, dt_measured;  // at the spring's damping
   double energy_rate_large_dt;     // measured d ln E / dt at config.large_dt
+  double energy_rate_undamped;     // measured d ln E / dt at config.small_dt, damping 0
   double again_measured;      // stable again from here (at the spring's damping; inf: never)
   double dt_undamped_theory, dt_undamped_measured;  // at damping 0
   // At damping 0, where the method is stable again beyond dt* (predicted / measured; inf: at no
@@ -120,6 +121,11 @@ class Section;
 struct Report {
   ReportData data;
   Findings findings;
+  // The methods on springs (MethodInfo::on_springs) measured on the sheet's spring by the findings'
+  // studies, run for them alone where the report has its frame-budget section: the summary table
+  // shows them beside the others and the answers count them.
+  std::optional<ReportData> springs;
+  std::optional<Findings> springs_findings;
   std::vector<std::unique_ptr<Section>> sections;
   Report();
   Report(Report&&) noexcept;

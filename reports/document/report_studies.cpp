@@ -246,13 +246,14 @@ Findings compute_findings(const ReportData& d) {
   const auto undamped_row = std::find(d.map.damping.begin(), d.map.damping.end(), 0.0);
   for (std::size_t i = 0; i < d.methods.size(); ++i) {
     const std::size_t m = d.methods[i];
-    MethodFinding row{m, &conv.fits[i], false, false, 0, 0, 0, 0, 0, 0, INFINITY, INFINITY, false};
+    MethodFinding row{m, &conv.fits[i], false, false, 0, 0, 0, 0, 0, 0, 0, INFINITY, INFINITY, false};
     const SweepRow* large = sweep_row(m, c.large_dt, gamma);
     const SweepRow* undamped = sweep_row(m, c.small_dt, 0.0);
     const ThresholdRow* th = find_threshold(d, m, gamma);
     row.stable_large_dt = large && large->run.stable();
     row.energy_rate_large_dt = large ? large->run.rate : NAN;
     row.stable_undamped = undamped && undamped->run.stable();
+    row.energy_rate_undamped = undamped ? undamped->run.rate : NAN;
     row.dt_theory = th ? th->dt_theory : NAN;
     row.dt_measured = th ? th->dt_measured : NAN;
     row.again_measured = th ? th->again_measured : NAN;

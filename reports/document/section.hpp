@@ -66,6 +66,9 @@ class Page {
   // Where the findings a section states are recorded (reports/document/claims.hpp): set while the
   // report's Markdown is rendered for data/claims.json, null otherwise.
   Ledger* ledger = nullptr;
+  // The methods on springs on the sheet's spring (Report::springs), where the report measured them.
+  const ReportData* springs = nullptr;
+  const Findings* springs_findings = nullptr;
   // ![caption](figures/fig<n>_<script>.<ext>): numbered "Figure n:" in the Markdown; LaTeX numbers
   // the PDF's alike. std::logic_error if `script` is not the next figure of the report's order.
   std::string figure(const std::string& script, const std::string& caption);

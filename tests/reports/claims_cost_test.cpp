@@ -32,12 +32,29 @@ void cost_claims(const ReportData& d, const std::string& md) {
         for (const auto& [solver, p] : best) sorted.push_back(p);
         std::stable_sort(sorted.begin(), sorted.end(), [&](auto a, auto b) { return cost(*a) < cost(*b); });
         const WorkPoint& win = *sorted.front();
-        const bool tie = sorted.size() > 1 && (timed ? cost(*sorted[1]) / cost(win) < 1.2 : cost(*sorted[1]) == cost(win));
+        // timed: a tie within 1.5 times or within the product of the two runs' measured spreads
+        const bool tie = sorted.size() > 1 && (timed ? cost(*sorted[1]) / cost(win) < std::max(1.5, win.spread * sorted[1]->spread)
+                                                     : cost(*sorted[1]) == cost(win));
+        // untimed, an implicit winner against an explicit run that reached the level is undecided
+        const auto solves = [](const std::string& s) {
+          const auto m = find_method(s);
+          return m ? method_info(*m).implicit : find_peer(s) && find_peer(s)->implicit;
+        };
+        const WorkPoint* against = nullptr;
+        if (!timed && !tie && solves(win.method))
+          for (const WorkPoint* p : sorted)
+            if (!solves(p->method)) {
+              against = p;
+              break;
+            }
         double edge = 0;
         for (const WorkPoint& p : w.points)
           if (p.method == win.method) edge = std::max(edge, p.setting);
         const std::string cell = fmt::format("`{}` {}{}{}", win.method, timed ? cost_text(true, win.seconds, 0) : std::to_string(win.force_evaluations),
-                                             tie ? fmt::format(" (tie: `{}`)", sorted[1]->method) : "", win.setting == edge ? " $\\dagger$" : "");
+                                             tie       ? fmt::format(" (tie: `{}`)", sorted[1]->method)
+                                             : against ? fmt::format(" (undecided: `{}`)", against->method)
+                                                       : "",
+                                             win.setting == edge ? " $\\dagger$" : "");
         const std::string row = line_with(md, fmt::format("| {:.0e} |", level));
         EXPECT_NE(row.find("| " + cell + " |"), std::string::npos) << cell << "\n" << row;
       }
@@ -83,15 +100,18 @@ void peer_claims(const ReportData& d, const std::string& md) {
 }
 
 // 11: the crossover: the smallest stiffness ratio from which on the cheapest implicit run beats
-// every explicit one.
+// every explicit one by more than 1.5 times its run time; untimed, not read (force evaluations
+// leave out the implicit methods' solves).
 void crossover_claim(const ReportData& d, const std::string& md) {
   const WorkPrecisionResult& r = d.work;
-  const bool timed = d.config.timing;
+  if (!d.config.timing) {
+    EXPECT_NE(md.find("- The crossover is not read untimed"), std::string::npos) << md;
+    return;
+  }
   double crossover = -1;
   for (std::size_t i = r.stiffness.size(); i-- > 0;) {
     const StiffnessRow& s = r.stiffness[i];
-    const bool cheaper = !s.best_implicit.empty() &&
-                         (s.best_explicit.empty() || (timed ? s.implicit_seconds < s.explicit_seconds : s.implicit_forces < s.explicit_forces));
+    const bool cheaper = !s.best_implicit.empty() && (s.best_explicit.empty() || 1.5 * s.implicit_seconds < s.explicit_seconds);
     if (!cheaper) break;
     crossover = s.ratio;
   }
@@ -99,20 +119,22 @@ void crossover_claim(const ReportData& d, const std::string& md) {
   else EXPECT_NE(md.find("- No stiffness ratio of the sweep"), std::string::npos);
 }
 
-// 12: the bounce's orders: named only where the bound is at most +-0.5 wide.
+// 12: the bounce's orders: a finding only where the bound is at most +-0.5 wide; kept where the
+// declared order is within 0.15 of the fit or inside its bound, lost otherwise; the others named
+// as not findings.
 void bounce_claims(const ReportData& d, const std::string& md) {
-  Names found;
-  std::size_t loose = 0;
+  Names kept, lost, loose;
   for (const ConvergenceFit& f : d.convergence_on(d.config.rebound.scene).fits) {
     if (exact(f.method) || !f.fit.fitted) continue;
-    if (f.fit.bound_hi - f.fit.bound_lo > 1) ++loose;
-    else found.insert(nm(f.method));
+    const double p = method_info(f.method).order;
+    if (f.fit.bound_hi - f.fit.bound_lo > 1) loose.insert(nm(f.method));
+    else (std::abs(f.fit.order - p) <= 0.15 || (f.fit.bound_lo <= p && p <= f.fit.bound_hi) ? kept : lost).insert(nm(f.method));
   }
   const std::string line = line_with(md, "Against the exact bounce");
-  EXPECT_EQ(names(line, "Against the exact bounce"), found) << line;
-  if (loose) {
-    EXPECT_NE(line.find(fmt::format("the other {} bounds are wider than +-0.5", loose)), std::string::npos) << line;
-  }
+  EXPECT_EQ(names(line, "the contact costs order to", ";"), lost) << line;
+  if (kept.empty()) EXPECT_EQ(line.find(" keep their order"), std::string::npos) << line;
+  else EXPECT_EQ(names_until(line, lost.empty() ? "fitted over the dt sweep:" : ";", {" keep their order"}), kept) << line;
+  EXPECT_EQ(names(line, "the fits of", " have bounds wider"), loose) << line;
 }
 
 // 15: the contact advice: the methods within 1 % of the bounce's energy at the largest step.
@@ -145,7 +167,7 @@ TEST(Claims, ATieIsNoWinAndAnEdgeIsMarked) {
   LevelWinner win = level_winner(w, 1e-4, true);
   ASSERT_TRUE(win.point);
   EXPECT_EQ(win.point->method, "rk4");
-  EXPECT_TRUE(win.tie);  // dopri5 within x1.1
+  EXPECT_TRUE(win.tie);  // dopri5 within x1.1, below the margin of 1.5
   EXPECT_EQ(win.next, "dopri5");
   EXPECT_TRUE(win.at_edge);  // rk4's largest step
   win = level_winner(w, 1e-6, true);
@@ -153,6 +175,32 @@ TEST(Claims, ATieIsNoWinAndAnEdgeIsMarked) {
   EXPECT_FALSE(win.at_edge);  // at dt 0.05, below its sweep's largest
   win = level_winner(w, 1e-4, false);  // by force evaluations: dopri5 and bdf2 equal, a tie
   EXPECT_TRUE(win.tie);
+}
+
+// A timed win needs a margin of 1.5 and above the product of the two runs' measured spreads;
+// untimed, an implicit run fewest in force evaluations is undecided against an explicit one.
+TEST(Claims, NoiseMakesTiesAndSolvesUncountedAreUndecided) {
+  SceneWork w{*find_scene("spring"), {}, {}, {}};
+  const auto point = [](std::string m, double seconds, double spread, long long forces) {
+    WorkPoint p;
+    p.method = std::move(m), p.setting = 0.1, p.error = 1e-5, p.seconds = seconds, p.spread = spread, p.force_evaluations = forces;
+    return p;
+  };
+  w.points = {point("rk4", 1.0e-6, 1.0, 400), point("dopri5", 1.6e-6, 1.0, 500)};
+  EXPECT_FALSE(level_winner(w, 1e-4, true).tie);  // 1.6 >= 1.5
+  w.points = {point("rk4", 1.0e-6, 1.2, 400), point("dopri5", 1.6e-6, 1.2, 500)};
+  EXPECT_FALSE(level_winner(w, 1e-4, true).tie);  // 1.2 x 1.2 = 1.44 < 1.6
+  w.points = {point("rk4", 1.0e-6, 1.3, 400), point("dopri5", 1.6e-6, 1.3, 500)};
+  EXPECT_TRUE(level_winner(w, 1e-4, true).tie);  // 1.3 x 1.3 = 1.69 > 1.6: within the measured noise
+  w.points = {point("rk4", 1.0e-6, 1.0, 400), point("dopri5", 1.4e-6, 1.0, 500)};
+  EXPECT_TRUE(level_winner(w, 1e-4, true).tie);  // 1.4 < 1.5
+  w.points = {point("bdf2", 1e-6, 1, 200), point("rk4", 1e-6, 1, 400), point("radau_iia5", 1e-6, 1, 300)};
+  const LevelWinner win = level_winner(w, 1e-4, false);
+  EXPECT_EQ(win.point->method, "bdf2");
+  EXPECT_EQ(win.undecided, "rk4");  // bdf2's Newton solves are not in its 200
+  EXPECT_FALSE(win.decided());
+  w.points = {point("rk4", 1e-6, 1, 200), point("bdf2", 1e-6, 1, 400)};
+  EXPECT_TRUE(level_winner(w, 1e-4, false).decided());  // an explicit winner: the implicit one's uncounted work only adds
 }
 
 }  // namespace

@@ -35,14 +35,28 @@ namespace {
 
 using namespace claims;
 
-// 1, 2, 3: the stable lists, from the damping sweep's runs and the thresholds.
-void stability_claims(const ReportData& d, const std::string& md) {
+// 1, 2, 3: the stable lists, from the damping sweep's runs and the thresholds; the answers' with
+// the methods on springs (`springs`, measured on the same spring where the report has them). An
+// unstable run whose energy grows slower than 1e-3 per unit time is named "weakly" unstable.
+void stability_claims(const ReportData& d, const std::string& md, const ReportData* springs = nullptr) {
   const ReportConfig& c = d.config;
-  Names unstable_large, unstable_undamped, always, never, again;
-  for (const SweepRow& r : d.sweep) {
-    if (exact(r.method)) continue;
-    if (r.dt == c.large_dt && r.damping == c.damping() && !r.run.stable()) unstable_large.insert(nm(r.method));
-    if (r.dt == c.small_dt && r.damping == 0 && !r.run.stable()) unstable_undamped.insert(nm(r.method));
+  Names unstable_large, unstable_undamped, always, never, again, weak_large, weak_undamped;
+  for (const ReportData* data : {&d, springs}) {
+    if (!data) continue;
+    for (const SweepRow& r : data->sweep) {
+      if (exact(r.method)) continue;
+      if (r.dt == c.large_dt && r.damping == c.damping() && !r.run.stable()) {
+        unstable_large.insert(nm(r.method));
+        if (r.run.rate < 1e-3) weak_large.insert(nm(r.method));
+      }
+      if (r.dt == c.small_dt && r.damping == 0 && !r.run.stable()) {
+        unstable_undamped.insert(nm(r.method));
+        if (r.run.rate < 1e-3) weak_undamped.insert(nm(r.method));
+      }
+    }
+    for (std::size_t m : data->methods)
+      if (const ThresholdRow* t = threshold(*data, m, c.damping()); t && !exact(m) && std::isinf(t->dt_theory) && data != &d)
+        always.insert(nm(m));
   }
   const auto zero = std::find(d.map.damping.begin(), d.map.damping.end(), 0.0);
   for (std::size_t m : d.methods) {
@@ -63,6 +77,9 @@ void stability_claims(const ReportData& d, const std::string& md) {
   EXPECT_EQ(names(answer, "is stable but", "; without damping"), unstable_large) << answer;
   EXPECT_EQ(names(answer, "; without damping", "Stable at every step"), unstable_undamped) << answer;
   EXPECT_EQ(names(answer, "Stable at every step tried:", "."), always) << answer;
+  const std::size_t split = answer.find("; without damping");
+  EXPECT_EQ(names(answer.substr(0, split), "weakly"), weak_large) << answer;
+  EXPECT_EQ(names(answer.substr(split), "weakly", " not:"), weak_undamped) << answer;
   // the hand-in's section, where chosen
   if (!c.has_section("stable")) return;
   if (const std::string never_line = line_with(md, "- Without damping no step is stable for"); !never.empty() || !never_line.empty()) {
@@ -98,17 +115,27 @@ double rank_correlation(const std::vector<double>& a, const std::vector<double>&
   return ab / std::sqrt(aa * bb);
 }
 
-// 4: the correlation over the numerical methods, in the answers and the families section.
-void correlation_claim(const ReportData& d, const std::string& md) {
+// 4: the correlation over the ODE methods, in the answers and the families section; in the
+// answers also with the methods on springs that claim an order (PBD claims none).
+void correlation_claim(const ReportData& d, const std::string& md, const ReportData* springs = nullptr) {
   std::vector<double> order, dt;
   for (std::size_t m : d.methods)
     if (!exact(m)) order.push_back(method_info(m).order), dt.push_back(threshold(d, m, d.config.damping())->dt_measured);
   if (order.size() < 3) return;
   const double rho = rank_correlation(order, dt);
-  EXPECT_NE(md.find(fmt::format("over the {} numerical methods, Spearman's rank correlation between the order and dt* (damping {}) is "
+  EXPECT_NE(md.find(fmt::format("over the {} ODE methods, Spearman's rank correlation between the order and dt* (damping {}) is "
                                 "{:.2f}", order.size(), d.config.damping(), rho)),
             std::string::npos)
       << rho << "\n" << md;
+  if (springs) {
+    std::vector<double> all_order = order, all_dt = dt;
+    for (std::size_t m : springs->methods)
+      if (method_info(m).order > 0)
+        all_order.push_back(method_info(m).order), all_dt.push_back(threshold(*springs, m, d.config.damping())->dt_measured);
+    EXPECT_NE(md.find(fmt::format("with the {} methods on springs that claim an order, over {}, it is {:.2f}", all_order.size() - order.size(),
+                                  all_order.size(), rank_correlation(all_order, all_dt))),
+              std::string::npos) << md;
+  }
   // Evidence at the 5 % level: under no correlation (and no ties) Spearman's rho has mean 0 and
   // variance exactly 1 / (n - 1), and is close to normal: evidence beyond 1.96 standard deviations.
   const double sd = 1 / std::sqrt(static_cast<double>(order.size()) - 1);
@@ -116,7 +143,7 @@ void correlation_claim(const ReportData& d, const std::string& md) {
   EXPECT_NE(md.find(beyond ? "beyond chance at the 5 % level" : fmt::format("within chance for {} methods", order.size())),
             std::string::npos) << rho << "\n" << md;
   if (d.config.has_section("families")) {
-    EXPECT_NE(md.find(fmt::format("Pooled over the {} numerical methods, Spearman's rank correlation between order and measured dt* "
+    EXPECT_NE(md.find(fmt::format("Pooled over the {} ODE methods, Spearman's rank correlation between order and measured dt* "
                                   "(damping {}) is **{:.2f}**", order.size(), d.config.damping(), rho)),
               std::string::npos) << md;
   }
@@ -291,7 +318,10 @@ void claims_follow_data(const ReportConfig& c) {
   const Made m = make(c);
   const ReportData& d = m.report.data;
   using Claim = void (*)(const ReportData&, const std::string&);
-  for (const Claim claim : {stability_claims, correlation_claim, family_claims, energy_claims, stiff_claims_follow, cost_claims,
+  const ReportData* springs = m.report.springs ? &*m.report.springs : nullptr;
+  stability_claims(d, m.md, springs);
+  correlation_claim(d, m.md, springs);
+  for (const Claim claim : {family_claims, energy_claims, stiff_claims_follow, cost_claims,
                             peer_claims, crossover_claim, bounce_claims, cannonball_claim, detail_claim, contact_claim})
     claim(d, m.md);
 }

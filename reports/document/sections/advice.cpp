@@ -58,8 +58,7 @@ std::string cheapest_at(const ReportData& d, const SceneWork& w, std::string_vie
   for (double level : {levels.front(), d.work.config.crossover_error, levels.back()}) {
     const LevelWinner win = level_winner(w, level, timed);
     if (!win.point) continue;
-    parts.push_back(fmt::format("to error {:.0e} {}", level,
-                                win.tie ? fmt::format("`{}` or `{}` (a tie)", win.point->method, win.next) : "`" + win.point->method + "`"));
+    parts.push_back(fmt::format("to error {:.0e} {}", level, winner_words(win)));
   }
   if (parts.empty()) return {};
   return fmt::format("- **{}** ({}): {}, the cheapest by {} of every fixed-step method and adaptive solver tried.\n", what,
@@ -71,7 +70,7 @@ std::string accuracy(const ReportData& d) {
   std::string md;
   for (std::size_t i = 0; i < r.scenes.size(); ++i)
     md += cheapest_at(d, r.scenes[i], static_cast<int>(i) == r.stiff ? "A stiff system" : "A smooth, non-stiff system");
-  if (r.crossover_ratio > 0)
+  if (r.crossover_ratio > 0 && d.config.timing)  // untimed, force evaluations cannot weigh an implicit method's solves
     md += fmt::format("- **How stiff before implicit pays**: on the chain, from stiffness ratio {:g} on an implicit method is "
                       "the cheaper at error {:.0e}.\n", r.crossover_ratio, r.config.crossover_error);
   return md;
@@ -90,7 +89,7 @@ std::string large_systems(const ReportData& d) {
     for (std::size_t k = 0; k < nk; ++k)
       for (const ScalingCell& m : r.blocks[t * nk + k].cells) {
         ++cells;
-        if (!m.cheapest.empty() && !tied(m.margin, c.timing)) ++wins[solver_group(m.cheapest)];
+        if (cell_verdict(m, r.blocks[t * nk + k].error, c.timing) == CellVerdict::Win) ++wins[solver_group(m.cheapest)];
       }
     if (wins.empty()) continue;
     const auto top = std::max_element(wins.begin(), wins.end(), [](const auto& a, const auto& b) { return a.second < b.second; });

@@ -25,27 +25,64 @@ std::string see(const Page& page, const std::string& figure) {
   return n ? fmt::format(" (figure {})", n) : "";
 }
 
+// The stability studies the answers read: the report's, and the methods on springs' where the
+// report measured them (the summary table shows both).
+struct Source {
+  const ReportData& data;
+  const Findings& f;
+  const char* file;
+  const char* id;  // appended to a claim's id
+};
+std::vector<Source> sources(const Page& page) {
+  std::vector<Source> out{{page.data, page.findings, kStabilityDocument, ""}};
+  if (page.springs) out.push_back({*page.springs, *page.springs_findings, kSpringsStabilityDocument, ".springs"});
+  return out;
+}
+// One list of Findings rows (`Findings::unstable_large`, ...) over the sources, as methods.
+std::vector<std::size_t> over(const std::vector<Source>& s, std::vector<std::size_t> Findings::*list) {
+  std::vector<std::size_t> out;
+  for (const Source& x : s)
+    for (std::size_t m : methods_of(x.f, x.f.*list)) out.push_back(m);
+  return out;
+}
+
+std::vector<MethodRate> rates_over(const std::vector<Source>& s, std::vector<std::size_t> Findings::*list, bool undamped) {
+  std::vector<MethodRate> out;
+  for (const Source& x : s)
+    for (const MethodRate& r : rates_of(x.f, x.f.*list, undamped)) out.push_back(r);
+  return out;
+}
+
 std::string stable_answer(const Page& page) {
-  const Findings& f = page.findings;
+  const std::vector<Source> src = sources(page);
   const ReportConfig& c = page.data.config;
+  const std::vector<std::size_t> unstable_large = over(src, &Findings::unstable_large),
+                                 stable_large = over(src, &Findings::stable_large),
+                                 unstable_undamped = over(src, &Findings::unstable_undamped),
+                                 always = over(src, &Findings::always_stable);
   std::string md = fmt::format("- **Which method is stable?** On the sheet's spring at its step dt = {} (damping {}) ", c.large_dt, c.damping());
-  md += f.unstable_large.empty() ? "every method is stable"
-        : f.stable_large.empty() ? "no method is stable"
-                                 : fmt::format("every method is stable but {}", method_list(methods_of(f, f.unstable_large)));
+  md += unstable_large.empty() ? "every method is stable"
+        : stable_large.empty() ? "no method is stable"
+                               : fmt::format("every method is stable but {}", unstable_words(rates_over(src, &Findings::unstable_large, false)));
   md += fmt::format("; without damping, at dt = {}, ", c.small_dt);
-  md += f.unstable_undamped.empty() ? "every one is."
-                                    : fmt::format("{} {} not: {} energy grows.", method_list(methods_of(f, f.unstable_undamped)),
-                                                  f.unstable_undamped.size() == 1 ? "is" : "are",
-                                                  f.unstable_undamped.size() == 1 ? "its" : "their");
-  if (!f.always_stable.empty())
-    md += fmt::format(" Stable at every step tried: {}.", method_list(methods_of(f, f.always_stable)));
+  md += unstable_undamped.empty() ? "every one is."
+                                  : fmt::format("{} {} not: {} energy grows.", unstable_words(rates_over(src, &Findings::unstable_undamped, true)),
+                                                unstable_undamped.size() == 1 ? "is" : "are", unstable_undamped.size() == 1 ? "its" : "their");
+  if (!always.empty()) md += fmt::format(" Stable at every step tried: {}.", method_list(always));
   md += fmt::format(" Each method's largest stable step dt* is in the summary table{}.", see(page, "regions"));
-  if (Ledger* l = page.ledger) {
-    claim_unstable_at(*l, page.data, "answers.unstable_at_large_dt", "answers", md, c.large_dt, c.damping(), methods_of(f, f.unstable_large));
-    claim_unstable_at(*l, page.data, "answers.unstable_undamped", "answers", md, c.small_dt, 0.0, methods_of(f, f.unstable_undamped));
-    if (!f.always_stable.empty())
-      claim_unbounded_at(*l, page.data, "answers.stable_at_every_step", "answers", md, c.damping(), methods_of(f, f.always_stable));
-  }
+  if (Ledger* l = page.ledger)
+    for (const Source& x : src) {
+      const StabilitySource s{x.data, x.file};
+      claim_unstable_at(*l, s, fmt::format("answers.unstable_at_large_dt{}", x.id), "answers", md, c.large_dt, c.damping(),
+                        methods_of(x.f, x.f.unstable_large));
+      claim_unstable_at(*l, s, fmt::format("answers.unstable_undamped{}", x.id), "answers", md, c.small_dt, 0.0,
+                        methods_of(x.f, x.f.unstable_undamped));
+      const std::vector<MethodRate> large = rates_of(x.f, x.f.unstable_large, false), undamped = rates_of(x.f, x.f.unstable_undamped, true);
+      claim_rate(*l, s, fmt::format("answers.weakly_unstable_at_large_dt{}", x.id), "answers", md, c.large_dt, c.damping(), weakly(large), "<", kWeakRate);
+      claim_rate(*l, s, fmt::format("answers.weakly_unstable_undamped{}", x.id), "answers", md, c.small_dt, 0.0, weakly(undamped), "<", kWeakRate);
+      claim_unbounded_at(*l, s, fmt::format("answers.stable_at_every_step{}", x.id), "answers", md, c.damping(),
+                         methods_of(x.f, x.f.always_stable));
+    }
   return md + "\n";
 }
 
@@ -68,11 +105,28 @@ std::string order_answer(const Page& page) {
   const Findings& f = page.findings;
   const ReportConfig& c = page.data.config;
   std::string md = "- **Is stability correlated with the order?** ";
-  if (f.spearman_n >= 3)
-    md += fmt::format("{}: over the {} numerical methods, Spearman's rank correlation between the order and dt* (damping {}) is "
-                      "{:.2f}, {}, {}.",
+  // With the methods on springs that claim an order (PBD claims none: its stiffness is set at one step).
+  std::vector<StabilityPoint> pooled = spearman_points({page.data}, f);
+  std::vector<double> order, dt;
+  for (const Source& x : sources(page))
+    for (std::size_t i : x.f.numerical)
+      if (&x.f == &f || method_info(x.f.rows[i].method).order > 0) {
+        if (&x.f != &f) pooled.push_back({{x.data, x.file}, x.f.rows[i].method});
+        order.push_back(method_info(x.f.rows[i].method).order);
+        dt.push_back(x.f.rows[i].dt_measured);
+      }
+  const bool with_springs = pooled.size() > f.spearman_n;
+  const double rho_all = with_springs ? spearman(order, dt) : NAN;
+  if (f.spearman_n >= 3) {
+    md += fmt::format("{}: over the {} ODE methods, Spearman's rank correlation between the order and dt* (damping {}) is "
+                      "{:.2f}, {}, {}",
                       std::abs(f.spearman) < 0.3 ? "Not as a rule" : "Only loosely", f.spearman_n, c.damping(), f.spearman,
                       correlation_words(f.spearman), chance_words(f.spearman, f.spearman_n));
+    if (with_springs)
+      md += fmt::format("; with the {} methods on springs that claim an order, over {}, it is {:.2f}, {}", pooled.size() - f.spearman_n,
+                        pooled.size(), rho_all, correlation_words(rho_all));
+    md += ".";
+  }
   std::vector<std::string> ways;
   const std::vector<FamilyTrend> trends = family_trends(page.data, c.damping());
   for (Trend t : {Trend::Rises, Trend::Falls, Trend::StaysInfinite, Trend::Mixed, Trend::StaysTheSame, Trend::NotMeasured}) {
@@ -86,9 +140,10 @@ std::string order_answer(const Page& page) {
                       "stability more than its order does.",
                       and_list(ways), see(page, "regions"));
   if (Ledger* l = page.ledger) {
-    if (f.spearman_n >= 3) claim_spearman(*l, page.data, f, "answers.order_correlation", "answers", md, 2);
+    if (f.spearman_n >= 3) claim_spearman(*l, spearman_points({page.data}, f), f.spearman, "answers.order_correlation", "answers", md, 2);
+    if (f.spearman_n >= 3 && with_springs) claim_spearman(*l, pooled, rho_all, "answers.order_correlation.with_springs", "answers", md, 2);
     for (const FamilyTrend& ft : trends)
-      claim_family_trend(*l, page.data, fmt::format("answers.trend.{}", id_word(to_string(ft.family))), "answers", md, ft, c.damping());
+      claim_family_trend(*l, {page.data}, fmt::format("answers.trend.{}", id_word(to_string(ft.family))), "answers", md, ft, c.damping());
   }
   return md + "\n";
 }
@@ -147,11 +202,13 @@ std::string cost_answer(const Page& page) {
   const bool timed = page.data.config.timing;
   const double level = r.config.crossover_error;
   std::vector<std::string> parts;
+  std::vector<std::pair<const SceneWork*, LevelWinner>> wins;
   for (const SceneWork& w : r.scenes) {
     const LevelWinner win = level_winner(w, level, timed);
     if (!win.point) continue;
+    wins.emplace_back(&w, win);
     parts.push_back(fmt::format("{} the {} the cheapest run to error {:.0e} is {} ({})", parts.empty() ? "On" : "on", scene_name(w.scene), level,
-                                win.tie ? fmt::format("a tie of `{}` and `{}`", win.point->method, win.next) : "`" + win.point->method + "`",
+                                winner_words(win),
                                 cost_text(timed, win.point->seconds, win.point->force_evaluations)));
   }
   if (parts.empty()) return {};
@@ -168,7 +225,11 @@ std::string cost_answer(const Page& page) {
                         best->steplab->method, best->steplab->steps, best->peer, find_peer(best->peer)->library(), best->run->steps,
                         point_cost(*best->run, timed) / point_cost(*best->steplab, timed));
   }
-  return md + fmt::format("{}.\n", see(page, "work_precision"));
+  md += fmt::format("{}.\n", see(page, "work_precision"));
+  if (page.ledger)
+    for (const auto& [w, win] : wins)
+      claim_cheapest(*page.ledger, page.data, fmt::format("answers.cheapest.{}", scene_name(w->scene)), "answers", md, *w, level, timed, win);
+  return md;
 }
 
 std::string implicit_answer(const Page& page) {
@@ -178,16 +239,22 @@ std::string implicit_answer(const Page& page) {
   const std::size_t nk = r.blocks.size() / c.targets.size();
   std::vector<std::string> parts;
   for (std::size_t t = 0; t < c.targets.size(); ++t) {
-    int cells = 0, implicit = 0, ties = 0;
+    int cells = 0, implicit = 0, ties = 0, still = 0;
     for (std::size_t k = 0; k < nk; ++k)
       for (const ScalingCell& m : r.blocks[t * nk + k].cells) {
         ++cells;
-        if (m.cheapest.empty()) continue;
-        if (tied(m.margin, c.timing)) ++ties;
-        else if (m.cheapest == m.best_implicit) ++implicit;
+        switch (cell_verdict(m, r.blocks[t * nk + k].error, c.timing)) {
+          case CellVerdict::Win: implicit += m.cheapest == m.best_implicit; break;
+          case CellVerdict::Tie: case CellVerdict::Undecided: ++ties; break;
+          case CellVerdict::Still: ++still; break;
+          case CellVerdict::None: break;
+        }
       }
+    std::vector<std::string> aside;
+    if (ties) aside.push_back(fmt::format("{} more are ties{}", ties, c.timing ? "" : " or undecided"));
+    if (still) aside.push_back(fmt::format("in {} the body moves less than the target, a win for no one", still));
     parts.push_back(fmt::format("at error {}, in {} of {} cells{}", target_text(c, r.blocks[t * nk]), implicit, cells,
-                                ties ? fmt::format(" ({} more are ties)", ties) : ""));
+                                aside.empty() ? "" : fmt::format(" ({})", fmt::join(aside, "; "))));
   }
   std::string title(scene_kernel(scene_index(c.scene)).title);
   title[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(title[0])));

@@ -12,6 +12,7 @@
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/peers/peers.hpp"
 #include "reports/data/studies.hpp"
+#include "reports/document/claims.hpp"
 #include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
@@ -28,7 +29,10 @@ std::string winner_cell(const SceneWork& w, double level, bool timed) {
   if (!win.point) return "none";
   return fmt::format("`{}` {}{}{}", win.point->method,
                      timed ? cost_text(true, win.point->seconds, 0) : std::to_string(win.point->force_evaluations),
-                     win.tie ? fmt::format(" (tie: `{}`)", win.next) : "", win.at_edge ? " $\\dagger$" : "");
+                     win.tie                  ? fmt::format(" (tie: `{}`)", win.next)
+                     : !win.undecided.empty() ? fmt::format(" (undecided: `{}`)", win.undecided)
+                                              : "",
+                     win.at_edge ? " $\\dagger$" : "");
 }
 
 // A run's counts in a table cell: "46 steps, 276 F, 138 J, 46 LU".
@@ -109,7 +113,7 @@ class Cost : public Section {
       md += fmt::format("The {} ({}) has a slow mode near the sheet's spring and a stiff, damped one about {:.0f} times faster.\n\n",
                         scene_word(stiff), params_text(stiff.scene, stiff.params), fast_over_slow(stiff));
     }
-    md += cheapest_table(r, timed);
+    md += cheapest_table(page, timed);
     if (page.has("work_precision"))
       md += page.figure("work_precision", fmt::format("Work against precision: the largest error along a run against its {}, a "
                                                       "row per scene; the explicit fixed-step methods, the implicit ones and the "
@@ -143,7 +147,18 @@ class Cost : public Section {
     return md + "\n";
   }
 
-  static std::string cheapest_table(const WorkPrecisionResult& r, bool timed) {
+  // Each cell a claim (claim_cheapest): the winner, tied or by its margin.
+  static std::string cheapest_table(const Page& page, bool timed) {
+    const WorkPrecisionResult& r = page.data.work;
+    const auto cell = [&](const SceneWork& w, double level, bool by_time) {
+      if (page.ledger)
+        claim_cheapest(*page.ledger, page.data,
+                       fmt::format("cost.cheapest.{}.{}.{:.0e}", scene_word(w), by_time ? "time" : "forces", level), "cost",
+                       fmt::format("the cheapest run table, error {:.0e}, {} by {}: {}", level, scene_word(w),
+                                   by_time ? "run time" : "force evaluations", winner_cell(w, level, by_time)),
+                       w, level, by_time, level_winner(w, level, by_time));
+      return winner_cell(w, level, by_time);
+    };
     std::string md = "The cheapest run at each error level:\n\n| error at most |";
     for (const SceneWork& w : r.scenes)
       md += timed ? fmt::format(" {0}: by run time | {0}: by force evaluations |", scene_word(w)) : fmt::format(" {}: by force evaluations |", scene_word(w));
@@ -151,12 +166,16 @@ class Cost : public Section {
     for (const double level : r.config.error_levels) {
       md += fmt::format("| {:.0e} |", level);
       for (const SceneWork& w : r.scenes) {
-        if (timed) md += fmt::format(" {} |", winner_cell(w, level, true));
-        md += fmt::format(" {} |", winner_cell(w, level, false));
+        if (timed) md += fmt::format(" {} |", cell(w, level, true));
+        md += fmt::format(" {} |", cell(w, level, false));
       }
       md += "\n";
     }
-    return md + fmt::format("\nTie: the runner-up within {:g} times the winner's run time, the timing's noise on runs this short. "
+    return md + fmt::format("\nTie: the runner-up within {:g} times the winner's run time, or within the two runs' measured noise "
+                            "where that is larger (each run is timed in two passes apart in time; the noise is the product of "
+                            "the two runs' ratios between their passes). "
+                            "Undecided: an implicit method fewest in force evaluations against the cheapest explicit one, "
+                            "whose force evaluations are all its work while the implicit one's Jacobians and solves go uncounted. "
                             "$\\dagger$: the winning run is its sweep's largest step or loosest tolerance; a larger one, not "
                             "tried, might be cheaper still.\n\n", kTieMargin);
   }
@@ -211,28 +230,43 @@ class Cost : public Section {
   static std::string limits_text(const WorkPrecisionResult& r) {
     std::string md = fmt::format(
         "On the chain an explicit method's step is bounded by the stiff mode's stability as well as by accuracy. The largest "
-        "stable step of each (in the dt sweep) against the step at which it reaches error {:.0e} on the slow mode alone "
-        "(the masses moving as one, the limit of an infinitely stiff link):\n\n"
-        "| method | largest stable dt | dt for {:.0e} on the slow mode | ratio |\n|---|---|---|---|\n",
+        "stable step of each in the dt sweep (its limit lies between that step and the next one tried, which diverged) "
+        "against the step at which it reaches error {:.0e} on the slow mode alone (the masses moving as one, the limit of "
+        "an infinitely stiff link); the ratio's range is over where in that interval the limit lies:\n\n"
+        "| method | largest stable dt (next tried) | dt for {:.0e} on the slow mode | ratio |\n|---|---|---|---|\n",
         kLimitErrorLevel, kLimitErrorLevel);
+    const SceneWork* stiff = r.stiff >= 0 ? &r.scenes[static_cast<std::size_t>(r.stiff)] : nullptr;
+    const auto next_tried = [&](const StableStep& l) {  // the sweep's next step above the largest stable one
+      double next = INFINITY;
+      if (stiff)
+        for (const WorkPoint& p : stiff->points)
+          if (p.method == l.method && p.setting > l.largest_stable_dt) next = std::min(next, p.setting);
+      return next;
+    };
+    const auto ratio = [](double accuracy, double lo, double hi) {  // accuracy / (the limit in [lo, hi))
+      return std::isfinite(hi) ? fmt::format("{:.3g} .. {:.3g}", accuracy / hi, accuracy / lo) : fmt::format("<= {:.3g}", accuracy / lo);
+    };
     std::vector<std::string> held;
     const StableStep* most = nullptr;
     for (const StableStep& l : r.limits) {
       const bool reached = l.accuracy_dt > 0;
-      md += fmt::format("| `{}` | {} | {} | {} |\n", l.method, dt_text(l.largest_stable_dt),
-                        reached ? dt_text(l.accuracy_dt) : "below the sweep",
-                        reached ? fmt::format("{:.3g}", l.accuracy_dt / l.largest_stable_dt) : "-");
-      if (reached && l.accuracy_dt > l.largest_stable_dt) {
+      const double next = next_tried(l);
+      md += fmt::format("| `{}` | {} ({}) | {} | {} |\n", l.method, dt_text(l.largest_stable_dt),
+                        std::isfinite(next) ? dt_text(next) : "none", reached ? dt_text(l.accuracy_dt) : "below the sweep",
+                        reached ? ratio(l.accuracy_dt, l.largest_stable_dt, next) : "-");
+      if (reached && std::isfinite(next) && l.accuracy_dt > next) {  // held back wherever in the interval its limit lies
         held.push_back("`" + l.method + "`");
-        if (!most || l.accuracy_dt / l.largest_stable_dt > most->accuracy_dt / most->largest_stable_dt) most = &l;
+        if (!most || l.accuracy_dt / next > most->accuracy_dt / next_tried(*most)) most = &l;
       }
     }
     md += "\n";
     if (most)
-      md += fmt::format("- Held below the step accuracy would allow by stability: {} of {} explicit methods ({}); the most, `{}`, "
-                        "stable to dt {} where {} would do ({:.3g} times larger).\n",
+      md += fmt::format("- Held below the step accuracy would allow by stability, wherever in its interval the limit lies: {} of "
+                        "{} explicit methods ({}); the most, `{}`, stable to between dt {} and {} where {} would do ({} times "
+                        "larger).\n",
                         held.size(), r.limits.size(), and_list(held), most->method, dt_text(most->largest_stable_dt),
-                        dt_text(most->accuracy_dt), most->accuracy_dt / most->largest_stable_dt);
+                        dt_text(next_tried(*most)), dt_text(most->accuracy_dt),
+                        ratio(most->accuracy_dt, most->largest_stable_dt, next_tried(*most)));
     else
       md += "- No explicit method's stable step is below the step its accuracy alone would need.\n";
     return md;
@@ -252,13 +286,16 @@ class Cost : public Section {
                         s.best_implicit.empty() ? "none" : "`" + s.best_implicit + "`",
                         s.best_implicit.empty() ? "-" : cost_text(timed, s.implicit_seconds, s.implicit_forces));
     md += "\n";
-    if (r.crossover_ratio > 0)
+    if (!timed)
+      md += "- The crossover is not read untimed: force evaluations leave out the implicit methods' Jacobians, factorisations "
+            "and solves (counted in the work-precision data), so fewer of them is no win over an explicit method.\n\n";
+    else if (r.crossover_ratio > 0)
       md += fmt::format("- The crossover: from stiffness ratio k2 / k1 = {:g} on, an implicit method is cheaper than every "
-                        "explicit one at error {:.0e} (by {}).\n\n",
-                        r.crossover_ratio, r.config.crossover_error, timed ? "run time" : "force evaluations");
+                        "explicit one at error {:.0e}, by more than {:g} times its run time, the timing's noise.\n\n",
+                        r.crossover_ratio, r.config.crossover_error, kTieMargin);
     else
       md += fmt::format("- No stiffness ratio of the sweep makes an implicit method cheaper than every explicit one at error "
-                        "{:.0e}.\n\n", r.config.crossover_error);
+                        "{:.0e} by more than {:g} times its run time.\n\n", r.config.crossover_error, kTieMargin);
     return md;
   }
 };

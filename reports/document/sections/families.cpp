@@ -127,7 +127,7 @@ class Families : public Section {
         const FamilyTrend& t = at[g][i];
         md += fmt::format(" {} |", to_text(t.trend));
         if (ledger)
-          claim_family_trend(*ledger, d, fmt::format("families.trend.{}.damping_{}", id_word(to_string(t.family)), dampings[g]), "families",
+          claim_family_trend(*ledger, {d}, fmt::format("families.trend.{}.damping_{}", id_word(to_string(t.family)), dampings[g]), "families",
                              fmt::format("the family table's {} row at damping {}: {}", to_string(t.family), dampings[g], to_text(t.trend)),
                              t, dampings[g]);
       }
@@ -180,7 +180,7 @@ class Families : public Section {
   // The pooled correlation over the numerical methods, and why it misleads.
   static std::string pooled(const Findings& f, double gamma) {
     if (f.spearman_n < 3) return {};
-    return fmt::format("Pooled over the {} numerical methods, Spearman's rank correlation between order and measured dt* "
+    return fmt::format("Pooled over the {} ODE methods, Spearman's rank correlation between order and measured dt* "
                        "(damping {}) is **{:.2f}**, {}, {}. One number mixes families whose dt* moves in different directions "
                        "with the order (the table above), so it answers none of them.\n\n",
                        f.spearman_n, gamma, f.spearman, correlation_words(f.spearman), chance_words(f.spearman, f.spearman_n));

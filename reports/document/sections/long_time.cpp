@@ -126,13 +126,14 @@ class LongTime : public Section {
     const LongTimeConfig& c = orbit_.config;
     std::string md = fmt::format("## {}\n\n", title());
     md += fmt::format(
-        "The linear spring cannot tell the structures apart: there every A-stable or symplectic method looks alike. A long run of a "
-        "nonlinear system can. {} ({}) and the sheet's spring swinging in a plane ({}) run for {:g} periods at {} steps a "
-        "period with each method; every step's energy (and the orbit's angular momentum) is read, and the largest relative error "
-        "up to t is fitted against t on log-log axes from {:g} periods on: the growth exponent with its 95 % interval (near 0: "
-        "bounded; near 1: a drift linear in t; near 0.5: round-off's random walk).\n\n",
-        scene_kernel(c.scene).title, params_text(c.scene, c.params), params_text(swing_.config.scene, swing_.config.params), c.periods, c.steps_per_period.front(),
-        c.fit_from);
+        "On the linear spring a method's energy is a quadratic form its step maps exactly: it damps, stays bounded or grows "
+        "geometrically, and nothing else can happen. A nonlinear system asks more: whether a bounded error stays bounded where "
+        "no such form is kept. {} ({}, {} steps a period) and the sheet's spring swinging in a plane ({}, {} steps a period) run "
+        "for {:g} periods with each method; every step's energy (and the orbit's angular momentum) is read, and the largest "
+        "relative error up to t is fitted against t on log-log axes from {:g} periods on: the growth exponent with its 95 % "
+        "interval (near 0: bounded; near 1: a drift linear in t; near 0.5: round-off's random walk).\n\n",
+        scene_kernel(c.scene).title, params_text(c.scene, c.params), c.steps_per_period.front(),
+        params_text(swing_.config.scene, swing_.config.params), swing_.config.steps_per_period.front(), c.periods, c.fit_from);
     md += fmt::format("- **{}.** {}\n- **The swinging spring.** {}\n", scene_kernel(c.scene).title, structure_answer(orbit_),
                       structure_answer(swing_));
     md += angular_momentum() + phase() + crossing() + "\n";

@@ -70,16 +70,16 @@ class Order : public Section {
             "construction.";
     else
       md += "No two of these methods share an order, so only a family's methods set side by side can answer it.";
-    if (!trends.empty()) md += fmt::format(" Within one construction, where only the order changes: {}.", and_list(trends));
+    if (!trends.empty()) md += fmt::format(" Within one family, whose methods share a construction: {}.", and_list(trends));
     if (page.findings.spearman_n >= 3)
       md += fmt::format(" Over these {} methods, Spearman's rank correlation between order and dt* is {:.2f} ({}): {}.",
                         page.findings.spearman_n, page.findings.spearman, correlation_words(page.findings.spearman),
                         chance_words(page.findings.spearman, page.findings.spearman_n));
     if (Ledger* l = page.ledger) {
       const std::string said = md.substr(md.rfind("\n\n") + 2);  // the paragraph
-      if (page.findings.spearman_n >= 3) claim_spearman(*l, page.data, page.findings, "order.correlation", "order", said, 2);
+      if (page.findings.spearman_n >= 3) claim_spearman(*l, spearman_points({page.data}, page.findings), page.findings.spearman, "order.correlation", "order", said, 2);
       for (const FamilyTrend& t : families)
-        claim_family_trend(*l, page.data, fmt::format("order.trend.{}", id_word(to_string(t.family))), "order", said, t, gamma);
+        claim_family_trend(*l, {page.data}, fmt::format("order.trend.{}", id_word(to_string(t.family))), "order", said, t, gamma);
     }
     md += "\n\n";
     return md;

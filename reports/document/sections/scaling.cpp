@@ -52,9 +52,9 @@ std::string exponents_table(const ScalingResult& r) {
           fmt::format("\nExponents with their 95 % intervals, where the interval is at most +-{:g}; {}.\n\n", kExponentHalfWidth,
                       exponent_rule_text());
   if (!none.empty())
-    md += fmt::format("No exponent is a finding {}at these sizes (fewer than {} sizes, under {:g} decades of N, or an interval wider "
-                      "than +-{:g}).\n\n",
-                      rows.empty() ? "" : fmt::format("either for {} ", and_list(none)), kFitSizes, kFitDecades, kExponentHalfWidth);
+    md += fmt::format("{} no exponent is a finding at these sizes (fewer than {} sizes, under {:g} decades of N, or an interval "
+                      "wider than +-{:g}).\n\n",
+                      rows.empty() ? "For every solver" : fmt::format("For {}", and_list(none)), kFitSizes, kFitDecades, kExponentHalfWidth);
   return md;
 }
 
@@ -69,6 +69,9 @@ std::string findings(const ScalingResult& r) {
   std::string md = !explicit_ones || !implicit_ones  // a crossover needs both among the report's methods
                        ? fmt::format("This report has no {} fixed-step method here, so where implicit pays is not read.",
                                      explicit_ones ? "implicit" : "explicit")
+                   : !c.timing
+                       ? std::string("Untimed, where implicit pays is not read: the counts leave out the implicit methods' "
+                                     "factorisations and solves (in the data), so fewer evaluations is no win over an explicit method.")
                    : r.blocks.front().crossover == 0
                        ? std::string("At none of these sizes is an implicit method's whole run cheaper than every explicit one's.")
                        : fmt::format("From N = {} on (of these sizes), `{}` is cheaper than every explicit method.",
@@ -132,10 +135,18 @@ std::string map_data(const ScalingResult& r) {
     for (std::size_t k = 0; k < nk; ++k)
       for (std::size_t n = 0; n < c.sizes.size(); ++n) {
         const ScalingCell& m = r.blocks[target * nk + k].cells[n];
-        const bool tie = !m.cheapest.empty() && tied(m.margin, c.timing);
-        const std::string hue = m.cheapest.empty() || tie ? "#FFFFFF" : solver_hue(m.cheapest);
-        const std::string first = m.cheapest.empty() ? "none" : tie ? "tie" : m.cheapest;
-        const std::string second = m.cheapest.empty() ? "" : tie ? m.cheapest + " " + m.next : fmt::format("x{:.2f}", m.margin);
+        const CellVerdict v = cell_verdict(m, r.blocks[target * nk + k].error, c.timing);
+        const bool win = v == CellVerdict::Win;
+        const std::string hue = win ? solver_hue(m.cheapest) : "#FFFFFF";
+        const std::string first = v == CellVerdict::None        ? "none"
+                                  : v == CellVerdict::Still     ? "at rest"
+                                  : v == CellVerdict::Undecided ? "undecided"
+                                  : v == CellVerdict::Tie       ? "tie"
+                                                                : m.cheapest;
+        const std::string second = v == CellVerdict::None || v == CellVerdict::Still ? ""
+                                   : v == CellVerdict::Undecided ? m.cheapest + " " + m.best_explicit
+                                   : v == CellVerdict::Tie       ? m.cheapest + " " + m.next
+                                                                 : fmt::format("x{:.2f}", m.margin);
         t += fmt::format("{} {} {} \"{}\" \"{}\"\n", n, k, std::stoi(hue.substr(1), nullptr, 16), first, second);
       }
   }
@@ -176,11 +187,9 @@ std::string map_findings(const ScalingResult& r) {
       if (motion < b.error) still.push_back(fmt::format("{:g}", b.stiffness)), still_motion = std::max(still_motion, motion);
       for (const ScalingCell& m : b.cells) {
         ++cells;
-        if (m.cheapest.empty()) continue;
-        if (tied(m.margin, c.timing)) {
-          ++ties;
-          continue;
-        }
+        const CellVerdict v = cell_verdict(m, b.error, c.timing);
+        if (v == CellVerdict::Tie || v == CellVerdict::Undecided) ++ties;
+        if (v != CellVerdict::Win) continue;
         ++wins[solver_group(m.cheapest)];
         if (m.cheapest == m.best_implicit) implicit_cells.push_back(fmt::format("{:g}/{}", b.stiffness, m.masses));
       }
@@ -188,7 +197,8 @@ std::string map_findings(const ScalingResult& r) {
     std::string tally;
     for (const auto& [group, n] : wins) tally += fmt::format("{}{} {}", tally.empty() ? "" : ", ", group, n);
     md += fmt::format("- At error {}, of {} cells: {}{}.", target_text(c, *stiffest), cells,
-                      tally.empty() ? "no clear win" : "clear wins " + tally, ties ? fmt::format("; {} tie{}", ties, ties == 1 ? "" : "s") : "");
+                      tally.empty() ? "no clear win" : "clear wins " + tally,
+                      ties ? fmt::format("; {} tie{}{}", ties, ties == 1 ? "" : "s", c.timing ? "" : " or undecided") : "");
     md += implicit_cells.empty() ? " No implicit fixed-step method is clearly the cheapest anywhere."
                                  : fmt::format(" An implicit fixed-step method is clearly the cheapest in {} (stiffness/N: {}).",
                                                implicit_cells.size(), fmt::join(implicit_cells, ", "));
@@ -202,7 +212,7 @@ std::string map_findings(const ScalingResult& r) {
                         far.best_implicit_peer.empty() ? "none reached" : far.best_implicit_peer, times(far.implicit_peer_over_implicit));
     if (!still.empty())
       md += fmt::format(" At stiffness {} the body moves less than this target (at most {:.2g}): a run that stays at rest "
-                        "meets it, and only stability tells the solvers apart.",
+                        "meets it, so those cells are a win for no one.",
                         fmt::join(still, ", "), still_motion);
     md += "\n";
   }
@@ -223,9 +233,13 @@ std::string map_markdown(const ScalingResult& r, Page& page) {
       "study with every method and the peers but CVODE's BDF of orders up to 5 (its orders 1-2 stand for it; a search tries "
       "no step that needs more than {} steps), at the error above and at a visual one ({}). Each cell is coloured by the "
       "group of its cheapest solver (a family; CVODE; ARKODE; RADAU5; the explicit adaptive solvers) and labelled with it and its margin "
-      "over the next; a margin below {:g} is a tie (white, both named), counted for neither. `steplab study scaling --scene "
+      "over the next; a margin below {:g}, or below the two runs' measured timing noise where larger (each run timed in two "
+      "passes apart in time), is a tie (white, both named), counted for neither; so is a cell where the body moves less "
+      "than the target (\"at rest\"){}. `steplab study scaling --scene "
       "{} --sizes {} --stiffness {} --error {:g},{:g}% --max-steps {}` gives the map with every peer and count.\n\n",
       s.name, join(masses), stiffness_name, fmt::join(stiff, ", "), c.max_steps, target_text(c, r.blocks.back()), kTieMargin,
+      c.timing ? "" : ", and, untimed, one whose cheapest is implicit against an explicit solver that reached the target "
+                      "(\"undecided\": the counts leave out its solves)",
       s.name, join(c.sizes), fmt::join(stiff, ","), c.targets.front().value, 100 * c.targets.back().value, c.max_steps);
   md += map_findings(r);
   if (page.has("map"))

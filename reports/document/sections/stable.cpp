@@ -21,14 +21,19 @@ class Stable : public Section {
     const ReportConfig& c = page.data.config;
     const auto methods = [&](const std::vector<std::size_t>& rows) { return method_list(methods_of(f, rows)); };
     std::string md = "## " + title() + "\n\n";
+    const std::vector<MethodRate> large_rates = rates_of(f, f.unstable_large, false), undamped_rates = rates_of(f, f.unstable_undamped, true);
     const std::string large = fmt::format("- At the sheet's large step dt = {} (damping {}): stable: {}; unstable: {}.", c.large_dt,
-                                          c.damping(), methods(f.stable_large), methods(f.unstable_large));
-    const std::string undamped = fmt::format("- Without damping (dt = {}): stable: {}; unstable: {}.", c.small_dt,
-                                             methods(f.stable_undamped), methods(f.unstable_undamped));
+                                          c.damping(), methods(f.stable_large), f.unstable_large.empty() ? "none" : unstable_words(large_rates));
+    const std::string undamped = fmt::format("- Without damping (dt = {}): stable: {}; unstable: {}.", c.small_dt, methods(f.stable_undamped),
+                                             f.unstable_undamped.empty() ? "none" : unstable_words(undamped_rates));
     md += large + "\n" + undamped + "\n";
     if (Ledger* l = page.ledger) {
-      claim_unstable_at(*l, page.data, "stable.unstable_at_large_dt", "stable", large, c.large_dt, c.damping(), methods_of(f, f.unstable_large));
-      claim_unstable_at(*l, page.data, "stable.unstable_undamped", "stable", undamped, c.small_dt, 0.0, methods_of(f, f.unstable_undamped));
+      claim_unstable_at(*l, {page.data}, "stable.unstable_at_large_dt", "stable", large, c.large_dt, c.damping(), methods_of(f, f.unstable_large));
+      claim_rate(*l, {page.data}, "stable.weakly_unstable_at_large_dt", "stable", large, c.large_dt, c.damping(), weakly(large_rates), "<", kWeakRate);
+      claim_rate(*l, {page.data}, "stable.strongly_unstable_at_large_dt", "stable", large, c.large_dt, c.damping(), strongly(large_rates), ">=", kWeakRate);
+      claim_unstable_at(*l, {page.data}, "stable.unstable_undamped", "stable", undamped, c.small_dt, 0.0, methods_of(f, f.unstable_undamped));
+      claim_rate(*l, {page.data}, "stable.weakly_unstable_undamped", "stable", undamped, c.small_dt, 0.0, weakly(undamped_rates), "<", kWeakRate);
+      claim_rate(*l, {page.data}, "stable.strongly_unstable_undamped", "stable", undamped, c.small_dt, 0.0, strongly(undamped_rates), ">=", kWeakRate);
     }
     // Unstable at every small step undamped (predicted dt* = 0): at every step tried, or stable again further out.
     std::vector<std::string> again;
@@ -51,7 +56,7 @@ class Stable : public Section {
       const std::string every = fmt::format("- Stable at every step tried (dt* = $\\infty$ at damping {}): {}.", c.damping(), methods(f.always_stable));
       md += every + "\n";
       if (page.ledger)
-        claim_unbounded_at(*page.ledger, page.data, "stable.stable_at_every_step", "stable", every, c.damping(), methods_of(f, f.always_stable));
+        claim_unbounded_at(*page.ledger, {page.data}, "stable.stable_at_every_step", "stable", every, c.damping(), methods_of(f, f.always_stable));
     }
     return md + "\n";
   }

@@ -2,9 +2,8 @@
 // (declared and fitted), its largest stable step dt* undamped and at the spring's damping, and
 // whether it is stable at the sheet's two tests. Where the report has its frame-budget section,
 // the methods on springs join the table: measured on the sheet's spring by the same studies (run
-// here for them alone), their frame-budget answer in that section.
+// here for them alone: Report::springs), their frame-budget answer in that section.
 #include <algorithm>
-#include <optional>
 
 #include <fmt/format.h>
 
@@ -34,17 +33,6 @@ class Summary : public Section {
  public:
   std::string title() const override { return "Summary"; }
   unsigned needs() const override { return kFindings; }
-  void study(const ReportData& d) override {
-    if (!d.config.has_section("frames")) return;
-    ReportConfig c = d.config;
-    c.methods.clear();
-    for (std::size_t m = 0; m < method_count(); ++m)
-      if (method_info(m).on_springs && applies(m, c.oscillator.scene)) c.methods.push_back(m);
-    if (c.methods.empty()) return;
-    c.covered = {c.oscillator.scene};
-    springs_ = run_report_studies(c, kFindings, d.workers.progress);
-    springs_findings_ = compute_findings(*springs_);
-  }
   std::string markdown(Page& page) const override {
     const ReportConfig& c = page.data.config;
     const double gamma = c.damping();
@@ -55,8 +43,8 @@ class Summary : public Section {
                       gamma, c.large_dt, c.small_dt);
     std::vector<const MethodFinding*> rows;
     for (const MethodFinding& r : page.findings.rows) rows.push_back(&r);
-    if (springs_findings_)
-      for (const MethodFinding& r : springs_findings_->rows) rows.push_back(&r);
+    if (page.springs_findings)
+      for (const MethodFinding& r : page.springs_findings->rows) rows.push_back(&r);
     std::sort(rows.begin(), rows.end(),
               [](const MethodFinding* a, const MethodFinding* b) { return family_order_less(a->method, b->method); });
     const auto yes = [](bool b) { return b ? "yes" : "**no**"; };
@@ -73,19 +61,15 @@ class Summary : public Section {
         "largest step with every smaller step stable, measured ($\\infty$: every step tried is stable); where a method is "
         "stable again beyond it, from where. Stable: energy growing by at most {:g} per unit time over {} steps.{}\n\n",
         c.convergence.t_end, kStableRate, kRateSteps, c.has_section("physics") ? " The terms: the appendix." : "");
-    if (springs_findings_)
+    if (page.springs)
       md += fmt::format("The methods on springs ({}) are measured here on the sheet's spring, a single spring, where one XPBD "
                         "sweep or one CG iteration solves the step: at a frame budget on a rope of many springs they are the "
                         "frame-budget section's. PBD claims no order: its stiffness is set at a frame of 1/60 s, so at other "
                         "steps it is another material, and its rest is not the spring's equilibrium (about which dt* is predicted): its dt* "
                         "is the runs' alone.\n\n",
-                        method_list(springs_->methods));
+                        method_list(page.springs->methods));
     return md;
   }
-
- private:
-  std::optional<ReportData> springs_;  // the methods on springs, on the sheet's spring
-  std::optional<Findings> springs_findings_;
 };
 
 }  // namespace
