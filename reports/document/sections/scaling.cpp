@@ -246,7 +246,7 @@ std::string map_markdown(const ScalingResult& r, Page& page) {
     md += page.figure("map", fmt::format("{}: the cheapest solver in each cell (masses N, {}); colour by group: explicit "
                                          "Runge-Kutta blue, symplectic splitting vermillion, implicit Runge-Kutta green, "
                                          "Adams-Bashforth purple, BDF orange, CVODE sky blue, ARKODE teal, RADAU5 rose, explicit "
-                                         "adaptive grey, a tie white",
+                                         "adaptive grey, a tie or a cell at rest white",
                                          s.title, stiffness_name));
   return md;
 }
