@@ -2,6 +2,9 @@
 // kernel compiles (timing.hpp), so that the rule can change without rebuilding the kernels.
 #pragma once
 
+#include <algorithm>
+#include <vector>
+
 namespace steplab {
 
 // A margin of one solver's time over another's below this is within the noise of a report's
@@ -23,6 +26,16 @@ inline double spread_of(double a, double b) { return a > b ? a / b : b / a; }
 inline double noise_margin(double spread_a, double spread_b) {
   const double noise = spread_a * spread_b;
   return noise > kTieMargin ? noise : kTieMargin;
+}
+
+// The two passes over a study's rows (each with `seconds` and `spread`): `time(row)` is one
+// timing of the row's run (the minimum of its repeats).
+template <class Row, class Time> void time_in_two_passes(const std::vector<Row*>& rows, Time&& time) {
+  for (Row* r : rows) r->seconds = time(*r);
+  for (auto r = rows.rbegin(); r != rows.rend(); ++r) {
+    const double again = time(**r);
+    (*r)->spread = spread_of((*r)->seconds, again), (*r)->seconds = std::min((*r)->seconds, again);
+  }
 }
 
 }  // namespace steplab

@@ -363,17 +363,13 @@ ScalingResult scaling_study(const ScalingConfig& c) {
                    // rows of other targets that chose the same run share its time
     using Key = std::tuple<std::string, int, double, double>;
     const auto key = [](const ScalingRow& r) { return Key{r.solver, r.n, r.stiffness, r.adaptive ? r.dt : static_cast<double>(r.steps)}; };
-    std::map<Key, std::pair<double, double>> timed;  // seconds, spread
-    std::vector<const ScalingRow*> first;            // each run's first row, in the first pass's order
-    for (const ScalingRow& r : out.rows)
-      if (r.reached() && timed.emplace(key(r), std::pair{run_seconds(c, r), 1.0}).second) first.push_back(&r);
-    for (auto r = first.rbegin(); r != first.rend(); ++r) {
-      auto& [seconds, spread] = timed.at(key(**r));
-      const double again = run_seconds(c, **r);
-      spread = spread_of(seconds, again), seconds = std::min(seconds, again);
-    }
+    std::map<Key, ScalingRow*> first;  // each run's first row, timed
+    std::vector<ScalingRow*> runs;
     for (ScalingRow& r : out.rows)
-      if (r.reached()) std::tie(r.seconds, r.spread) = timed.at(key(r));
+      if (r.reached() && first.emplace(key(r), &r).second) runs.push_back(&r);
+    time_in_two_passes(runs, [&](const ScalingRow& r) { return run_seconds(c, r); });
+    for (ScalingRow& r : out.rows)
+      if (r.reached()) r.seconds = first.at(key(r))->seconds, r.spread = first.at(key(r))->spread;
   }
   for (std::size_t b = 0; b < nt * nk; ++b) {
     ScalingBlock block;

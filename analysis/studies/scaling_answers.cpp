@@ -39,22 +39,22 @@ void answer_cell(const ScalingResult& r, std::size_t b, std::size_t k, ScalingCe
   const ScalingConfig& c = r.config;
   constexpr double inf = std::numeric_limits<double>::infinity();
   double cheapest = inf, next = inf, implicit = inf, explicit_ = inf, peer = inf;
-  double spread_cheapest = 1, spread_next = 1;
+  const ScalingRow *first = nullptr, *second = nullptr;  // the cheapest row and the next
   for (std::size_t s = 0; s < r.solvers(); ++s) {
     const ScalingRow& w = r.rows_of(b * r.solvers() + s)[k];
     if (!w.reached()) continue;
     const double cost = scaling_cost(c, w);
-    if (cost < cheapest)
-      next = cheapest, cell.next = cell.cheapest, spread_next = spread_cheapest, cheapest = cost, cell.cheapest = w.solver,
-      spread_cheapest = w.spread;
-    else if (cost < next) next = cost, cell.next = w.solver, spread_next = w.spread;
+    if (cost < cheapest) next = cheapest, second = first, cheapest = cost, first = &w;
+    else if (cost < next) next = cost, second = &w;
     if (!w.adaptive && w.implicit && cost < implicit) implicit = cost, cell.best_implicit = w.solver;
     if (!w.implicit && !is_implicit_peer(w) && cost < explicit_) explicit_ = cost, cell.best_explicit = w.solver;
     if (is_implicit_peer(w) && cost < peer) peer = cost, cell.best_implicit_peer = w.solver;
   }
   const auto ratio = [](double num, double den) { return std::isfinite(num) && std::isfinite(den) ? num / den : kNaN; };
+  if (first) cell.cheapest = first->solver;
+  if (second) cell.next = second->solver;
   cell.margin = ratio(next, cheapest);
-  if (c.timing) cell.required = noise_margin(spread_cheapest, spread_next);
+  if (c.timing && first) cell.required = noise_margin(first->spread, second ? second->spread : 1);
   cell.explicit_over_implicit = ratio(explicit_, implicit);
   cell.implicit_peer_over_implicit = ratio(peer, implicit);
 }

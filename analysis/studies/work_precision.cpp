@@ -135,14 +135,11 @@ std::vector<WorkPoint> scene_points(const Where& w, const WorkPrecisionConfig& c
   }, order);
   std::vector<WorkPoint> points;
   for (const auto& part : parts) points.insert(points.end(), part.begin(), part.end());
-  if (c.timing) {  // two passes, the second in reverse order: each point's spread (noise.hpp)
+  if (c.timing) {  // two passes: each point's spread (noise.hpp)
+    std::vector<WorkPoint*> ok;
     for (WorkPoint& p : points)
-      if (p.status == RunStatus::Ok) p.seconds = time_point(w, p, t_end);
-    for (auto p = points.rbegin(); p != points.rend(); ++p)
-      if (p->status == RunStatus::Ok) {
-        const double again = time_point(w, *p, t_end);
-        p->spread = spread_of(p->seconds, again), p->seconds = std::min(p->seconds, again);
-      }
+      if (p.status == RunStatus::Ok) ok.push_back(&p);
+    time_in_two_passes(ok, [&](const WorkPoint& p) { return time_point(w, p, t_end); });
   }
   return points;
 }

@@ -82,13 +82,17 @@ bool matches(const Json& row, const Json& where) {
   return true;
 }
 
+// `field` of the first row of the stability document's `table` that matches `where`, or none.
+std::optional<Evidence> field_of(Ledger& l, StabilitySource s, const char* table, const Json& where, const char* field) {
+  const Json& rows = stability_doc(l, s).at(table);
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    if (matches(rows[i], where)) return l.at(s.file, fmt::format("/{}/{}/{}", table, i, field));
+  return std::nullopt;
+}
+
 // The measured dt* of `method` at `damping` (its thresholds row), or none where the study has no such row.
 std::optional<Evidence> measured_dt(Ledger& l, StabilitySource s, std::size_t method, double damping) {
-  const Json& rows = stability_doc(l, s).at("thresholds");
-  for (std::size_t i = 0; i < rows.size(); ++i)
-    if (matches(rows[i], {{"method", name(method)}, {"damping", damping}}))
-      return l.at(s.file, fmt::format("/thresholds/{}/dt_measured", i));
-  return std::nullopt;
+  return field_of(l, s, "thresholds", {{"method", name(method)}, {"damping", damping}}, "dt_measured");
 }
 
 bool numerical(const std::string& method) {
@@ -128,12 +132,11 @@ void claim_rate(Ledger& l, StabilitySource s, std::string id, std::string sectio
                 double damping, const std::vector<std::size_t>& methods, const char* op, double limit) {
   if (methods.empty()) return;
   Claim c{std::move(id), std::move(section), std::move(sentence), "threshold", {{"op", op}, {"limit", limit}}, {}};
-  const Json& rows = stability_doc(l, s).at("sweep");
-  for (std::size_t m : methods)
-    for (std::size_t i = 0; i < rows.size(); ++i)
-      if (matches(rows[i], {{"method", name(m)}, {"dt", dt}, {"damping", damping}}))
-        c.evidence.push_back(l.at(s.file, fmt::format("/sweep/{}/rate_measured", i)));
-  if (c.evidence.size() != methods.size()) throw std::logic_error("claim_rate: a method without its sweep row");
+  for (std::size_t m : methods) {
+    const std::optional<Evidence> rate = field_of(l, s, "sweep", {{"method", name(m)}, {"dt", dt}, {"damping", damping}}, "rate_measured");
+    if (!rate) throw std::logic_error("claim_rate: " + name(m) + " without its sweep row");
+    c.evidence.push_back(*rate);
+  }
   l.add(std::move(c));
 }
 
@@ -148,9 +151,13 @@ void claim_cheapest(Ledger& l, const ReportData& d, std::string id, std::string 
   const char* cost = timed ? "seconds" : "force_evaluations";
   Claim c{std::move(id), std::move(section), std::move(sentence), "comparison", {}, {}};
   std::vector<const WorkPoint*> others;  // the runner-up first, then every other solver's cheapest run
+  std::vector<std::string> seen{win.point->method};
   for (const WorkPoint& p : w.points)
-    if (p.method != win.point->method && cheapest_point(w, p.method, level, timed) == &p)  // once per solver
-      others.insert(p.method == win.next ? others.begin() : others.end(), &p);
+    if (std::find(seen.begin(), seen.end(), p.method) == seen.end()) {
+      seen.push_back(p.method);
+      if (const WorkPoint* q = cheapest_point(w, p.method, level, timed))
+        others.insert(p.method == win.next ? others.begin() : others.end(), q);
+    }
   c.evidence.push_back(at(win.point, cost));
   Json ids = Json::array(), noise = Json::array();
   for (const WorkPoint* p : others) ids.push_back(c.evidence.size()), c.evidence.push_back(at(p, cost));

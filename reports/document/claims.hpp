@@ -28,7 +28,7 @@ struct Evidence {
 };
 
 struct Claim {
-  std::string id, section, sentence, kind;  // kind: membership, trend, statistic (docs/json.md)
+  std::string id, section, sentence, kind;  // kind: membership, trend, statistic, threshold, comparison (docs/json.md)
   Json rule;
   std::vector<Evidence> evidence;
 };

@@ -216,12 +216,12 @@ std::vector<std::size_t> strongly(const std::vector<MethodRate>& runs) {
 }
 
 std::string unstable_words(const std::vector<MethodRate>& runs) {
-  std::vector<std::size_t> strong, weak;
+  const std::vector<std::size_t> weak = weakly(runs);
+  std::vector<std::size_t> strong;  // the others, a blown-up run (no finite rate) among them
   std::vector<std::string> rates;
-  for (const MethodRate& r : runs) {
-    (r.rate < kWeakRate ? weak : strong).push_back(r.method);
+  for (const MethodRate& r : runs)
     if (r.rate < kWeakRate) rates.push_back(fmt::format("{:.2g}", r.rate));
-  }
+    else strong.push_back(r.method);
   if (weak.empty()) return method_list(strong);
   const std::string w = fmt::format("weakly (energy growing {} per unit time) {}", and_list(rates), method_list(weak));
   return strong.empty() ? w : fmt::format("{}, and {}", method_list(strong), w);

@@ -28,14 +28,13 @@ std::string see(const Page& page, const std::string& figure) {
 // The stability studies the answers read: the report's, and the methods on springs' where the
 // report measured them (the summary table shows both).
 struct Source {
-  const ReportData& data;
+  StabilitySource study;
   const Findings& f;
-  const char* file;
   const char* id;  // appended to a claim's id
 };
 std::vector<Source> sources(const Page& page) {
-  std::vector<Source> out{{page.data, page.findings, kStabilityDocument, ""}};
-  if (page.springs) out.push_back({*page.springs, *page.springs_findings, kSpringsStabilityDocument, ".springs"});
+  std::vector<Source> out{{{page.data, kStabilityDocument}, page.findings, ""}};
+  if (page.springs) out.push_back({{*page.springs, kSpringsStabilityDocument}, *page.springs_findings, ".springs"});
   return out;
 }
 // One list of Findings rows (`Findings::unstable_large`, ...) over the sources, as methods.
@@ -72,7 +71,7 @@ std::string stable_answer(const Page& page) {
   md += fmt::format(" Each method's largest stable step dt* is in the summary table{}.", see(page, "regions"));
   if (Ledger* l = page.ledger)
     for (const Source& x : src) {
-      const StabilitySource s{x.data, x.file};
+      const StabilitySource s = x.study;
       claim_unstable_at(*l, s, fmt::format("answers.unstable_at_large_dt{}", x.id), "answers", md, c.large_dt, c.damping(),
                         methods_of(x.f, x.f.unstable_large));
       claim_unstable_at(*l, s, fmt::format("answers.unstable_undamped{}", x.id), "answers", md, c.small_dt, 0.0,
@@ -106,12 +105,12 @@ std::string order_answer(const Page& page) {
   const ReportConfig& c = page.data.config;
   std::string md = "- **Is stability correlated with the order?** ";
   // With the methods on springs that claim an order (PBD claims none: its stiffness is set at one step).
-  std::vector<StabilityPoint> pooled = spearman_points({page.data}, f);
-  std::vector<double> order, dt;
+  std::vector<StabilityPoint> pooled;
+  std::vector<double> order, dt;  // of the pooled points
   for (const Source& x : sources(page))
     for (std::size_t i : x.f.numerical)
       if (&x.f == &f || method_info(x.f.rows[i].method).order > 0) {
-        if (&x.f != &f) pooled.push_back({{x.data, x.file}, x.f.rows[i].method});
+        pooled.push_back({x.study, x.f.rows[i].method});
         order.push_back(method_info(x.f.rows[i].method).order);
         dt.push_back(x.f.rows[i].dt_measured);
       }

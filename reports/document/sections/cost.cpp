@@ -24,8 +24,7 @@ std::string scene_word(const SceneWork& w) { return std::string(scene_name(w.sce
 
 // "`rk4` 4.49 µs", with "(tie: `x`)" where the runner-up is within the noise and a dagger where
 // the winning run is at the edge of its sweep.
-std::string winner_cell(const SceneWork& w, double level, bool timed) {
-  const LevelWinner win = level_winner(w, level, timed);
+std::string winner_cell(const LevelWinner& win, bool timed) {
   if (!win.point) return "none";
   return fmt::format("`{}` {}{}{}", win.point->method,
                      timed ? cost_text(true, win.point->seconds, 0) : std::to_string(win.point->force_evaluations),
@@ -151,13 +150,15 @@ class Cost : public Section {
   static std::string cheapest_table(const Page& page, bool timed) {
     const WorkPrecisionResult& r = page.data.work;
     const auto cell = [&](const SceneWork& w, double level, bool by_time) {
+      const LevelWinner win = level_winner(w, level, by_time);
+      const std::string text = winner_cell(win, by_time);
       if (page.ledger)
         claim_cheapest(*page.ledger, page.data,
                        fmt::format("cost.cheapest.{}.{}.{:.0e}", scene_word(w), by_time ? "time" : "forces", level), "cost",
                        fmt::format("the cheapest run table, error {:.0e}, {} by {}: {}", level, scene_word(w),
-                                   by_time ? "run time" : "force evaluations", winner_cell(w, level, by_time)),
-                       w, level, by_time, level_winner(w, level, by_time));
-      return winner_cell(w, level, by_time);
+                                   by_time ? "run time" : "force evaluations", text),
+                       w, level, by_time, win);
+      return text;
     };
     std::string md = "The cheapest run at each error level:\n\n| error at most |";
     for (const SceneWork& w : r.scenes)
@@ -248,6 +249,7 @@ class Cost : public Section {
     };
     std::vector<std::string> held;
     const StableStep* most = nullptr;
+    double most_next = 0;  // its next step tried
     for (const StableStep& l : r.limits) {
       const bool reached = l.accuracy_dt > 0;
       const double next = next_tried(l);
@@ -256,7 +258,7 @@ class Cost : public Section {
                         reached ? ratio(l.accuracy_dt, l.largest_stable_dt, next) : "-");
       if (reached && std::isfinite(next) && l.accuracy_dt > next) {  // held back wherever in the interval its limit lies
         held.push_back("`" + l.method + "`");
-        if (!most || l.accuracy_dt / next > most->accuracy_dt / next_tried(*most)) most = &l;
+        if (!most || l.accuracy_dt / next > most->accuracy_dt / most_next) most = &l, most_next = next;
       }
     }
     md += "\n";
@@ -265,8 +267,7 @@ class Cost : public Section {
                         "{} explicit methods ({}); the most, `{}`, stable to between dt {} and {} where {} would do ({} times "
                         "larger).\n",
                         held.size(), r.limits.size(), and_list(held), most->method, dt_text(most->largest_stable_dt),
-                        dt_text(next_tried(*most)), dt_text(most->accuracy_dt),
-                        ratio(most->accuracy_dt, most->largest_stable_dt, next_tried(*most)));
+                        dt_text(most_next), dt_text(most->accuracy_dt), ratio(most->accuracy_dt, most->largest_stable_dt, most_next));
     else
       md += "- No explicit method's stable step is below the step its accuracy alone would need.\n";
     return md;
