@@ -7,6 +7,7 @@
 
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/peers/peers.hpp"
+#include "reports/document/figure_styles.hpp"
 #include "reports/document/report_text.hpp"
 
 namespace steplab {
@@ -245,6 +246,28 @@ CellVerdict cell_verdict(const ScalingCell& m, double error, bool timed) {
   if (m.motion < error) return CellVerdict::Still;
   if (!timed && solves(m.cheapest) && !m.best_explicit.empty()) return CellVerdict::Undecided;
   return tied(m.margin, timed, m.required) ? CellVerdict::Tie : CellVerdict::Win;
+}
+
+MapTally map_tally(const ScalingResult& r, std::size_t target) {
+  const bool timed = r.config.timing;
+  const std::size_t nk = r.blocks.size() / r.config.targets.size();
+  MapTally out;
+  for (std::size_t k = 0; k < nk; ++k) {
+    const ScalingBlock& b = r.blocks[target * nk + k];
+    for (const ScalingCell& m : b.cells) {
+      ++out.cells;
+      switch (cell_verdict(m, b.error, timed)) {
+        case CellVerdict::Win:
+          ++out.wins[solver_group(m.cheapest)];
+          if (m.cheapest == m.best_implicit) out.implicit.push_back(fmt::format("{:g}/{}", b.stiffness, m.masses));
+          break;
+        case CellVerdict::Tie: case CellVerdict::Undecided: ++out.ties; break;
+        case CellVerdict::Still: ++out.still; break;
+        case CellVerdict::None: break;
+      }
+    }
+  }
+  return out;
 }
 
 std::vector<PeerComparison> implicit_against_peers(const WorkPrecisionResult& r, const SceneWork& w, double level, bool timed) {

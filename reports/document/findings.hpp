@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -156,6 +157,15 @@ bool solves(const std::string& solver);
 // against an explicit solver (solves uncounted); a tie (tied()); or a clear win.
 enum class CellVerdict { None, Still, Undecided, Tie, Win };
 CellVerdict cell_verdict(const ScalingCell& m, double error, bool timed);
+// The map's cells at one target, by verdict: the clear wins by solver group (solver_group), the
+// cells an implicit fixed-step method wins clearly ("stiffness/N"), the ties and undecided ones,
+// the ones at rest.
+struct MapTally {
+  int cells = 0, ties = 0, still = 0;
+  std::map<std::string, int> wins;
+  std::vector<std::string> implicit;
+};
+MapTally map_tally(const ScalingResult& r, std::size_t target);
 
 // On a scene at an error level: steplab's cheapest implicit fixed-step run against each CVODE
 // set-up's cheapest (either may be null where it does not reach the level).

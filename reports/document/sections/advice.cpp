@@ -84,13 +84,9 @@ std::string large_systems(const ReportData& d) {
   const std::size_t nk = r.blocks.size() / c.targets.size();
   std::vector<std::string> parts;
   for (std::size_t t = 0; t < c.targets.size(); ++t) {
-    std::map<std::string, int> wins;
-    int cells = 0;
-    for (std::size_t k = 0; k < nk; ++k)
-      for (const ScalingCell& m : r.blocks[t * nk + k].cells) {
-        ++cells;
-        if (cell_verdict(m, r.blocks[t * nk + k].error, c.timing) == CellVerdict::Win) ++wins[solver_group(m.cheapest)];
-      }
+    const MapTally tally = map_tally(r, t);
+    const std::map<std::string, int>& wins = tally.wins;
+    const int cells = tally.cells;
     if (wins.empty()) continue;
     const auto top = std::max_element(wins.begin(), wins.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
     parts.push_back(fmt::format("at error {} {} ({} of {} cells)", target_text(c, r.blocks[t * nk]), top->first, top->second, cells));

@@ -238,21 +238,11 @@ std::string implicit_answer(const Page& page) {
   const std::size_t nk = r.blocks.size() / c.targets.size();
   std::vector<std::string> parts;
   for (std::size_t t = 0; t < c.targets.size(); ++t) {
-    int cells = 0, implicit = 0, ties = 0, still = 0;
-    for (std::size_t k = 0; k < nk; ++k)
-      for (const ScalingCell& m : r.blocks[t * nk + k].cells) {
-        ++cells;
-        switch (cell_verdict(m, r.blocks[t * nk + k].error, c.timing)) {
-          case CellVerdict::Win: implicit += m.cheapest == m.best_implicit; break;
-          case CellVerdict::Tie: case CellVerdict::Undecided: ++ties; break;
-          case CellVerdict::Still: ++still; break;
-          case CellVerdict::None: break;
-        }
-      }
+    const MapTally m = map_tally(r, t);
     std::vector<std::string> aside;
-    if (ties) aside.push_back(fmt::format("{} more are ties{}", ties, c.timing ? "" : " or undecided"));
-    if (still) aside.push_back(fmt::format("in {} the body moves less than the target, a win for no one", still));
-    parts.push_back(fmt::format("at error {}, in {} of {} cells{}", target_text(c, r.blocks[t * nk]), implicit, cells,
+    if (m.ties) aside.push_back(fmt::format("{} more are ties{}", m.ties, c.timing ? "" : " or undecided"));
+    if (m.still) aside.push_back(fmt::format("in {} the body moves less than the target, a win for no one", m.still));
+    parts.push_back(fmt::format("at error {}, in {} of {} cells{}", target_text(c, r.blocks[t * nk]), m.implicit.size(), m.cells,
                                 aside.empty() ? "" : fmt::format(" ({})", fmt::join(aside, "; "))));
   }
   std::string title(scene_kernel(scene_index(c.scene)).title);

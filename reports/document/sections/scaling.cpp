@@ -174,9 +174,7 @@ std::string map_findings(const ScalingResult& r) {
   const std::size_t nk = r.blocks.size() / c.targets.size();
   std::string md;
   for (std::size_t t = 0; t < c.targets.size(); ++t) {
-    std::map<std::string, int> wins;
-    int ties = 0, cells = 0;
-    std::vector<std::string> implicit_cells;
+    const MapTally counts = map_tally(r, t);
     const ScalingBlock* stiffest = &r.blocks[t * nk + nk - 1];
     std::vector<std::string> still;  // the stiffnesses where the body moves less than the target at every size
     double still_motion = 0;
@@ -185,23 +183,15 @@ std::string map_findings(const ScalingResult& r) {
       double motion = 0;
       for (const ScalingCell& m : b.cells) motion = std::max(motion, m.motion);
       if (motion < b.error) still.push_back(fmt::format("{:g}", b.stiffness)), still_motion = std::max(still_motion, motion);
-      for (const ScalingCell& m : b.cells) {
-        ++cells;
-        const CellVerdict v = cell_verdict(m, b.error, c.timing);
-        if (v == CellVerdict::Tie || v == CellVerdict::Undecided) ++ties;
-        if (v != CellVerdict::Win) continue;
-        ++wins[solver_group(m.cheapest)];
-        if (m.cheapest == m.best_implicit) implicit_cells.push_back(fmt::format("{:g}/{}", b.stiffness, m.masses));
-      }
     }
     std::string tally;
-    for (const auto& [group, n] : wins) tally += fmt::format("{}{} {}", tally.empty() ? "" : ", ", group, n);
-    md += fmt::format("- At error {}, of {} cells: {}{}.", target_text(c, *stiffest), cells,
+    for (const auto& [group, n] : counts.wins) tally += fmt::format("{}{} {}", tally.empty() ? "" : ", ", group, n);
+    md += fmt::format("- At error {}, of {} cells: {}{}.", target_text(c, *stiffest), counts.cells,
                       tally.empty() ? "no clear win" : "clear wins " + tally,
-                      ties ? fmt::format("; {} tie{}{}", ties, ties == 1 ? "" : "s", c.timing ? "" : " or undecided") : "");
-    md += implicit_cells.empty() ? " No implicit fixed-step method is clearly the cheapest anywhere."
-                                 : fmt::format(" An implicit fixed-step method is clearly the cheapest in {} (stiffness/N: {}).",
-                                               implicit_cells.size(), fmt::join(implicit_cells, ", "));
+                      counts.ties ? fmt::format("; {} tie{}{}", counts.ties, counts.ties == 1 ? "" : "s", c.timing ? "" : " or undecided") : "");
+    md += counts.implicit.empty() ? " No implicit fixed-step method is clearly the cheapest anywhere."
+                                  : fmt::format(" An implicit fixed-step method is clearly the cheapest in {} (stiffness/N: {}).",
+                                                counts.implicit.size(), fmt::join(counts.implicit, ", "));
     const ScalingCell& far = stiffest->cells.back();  // the stiffest, largest cell
     const auto times = [](double over) { return std::isnan(over) ? std::string("-") : fmt::format("{:.3g}", over); };
     if (!far.best_implicit.empty())
