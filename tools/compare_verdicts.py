@@ -29,6 +29,10 @@ def verdict(claim):
             return ("comparison", "tie")
         a = rule.get("a")
         return ("comparison", rule.get("relation"), pointers[a] if a is not None and a < len(pointers) else None)
+    if kind == "count":  # how many of its groups hold
+        return ("count", rule.get("count"), len(rule.get("groups", [])))
+    if kind == "equality":  # the pairs it says are equal
+        return ("equality", sorted(pointers))
     return (kind, json.dumps(rule, sort_keys=True))
 
 

@@ -28,6 +28,13 @@ def members(cid, names):
     return {"id": cid, "section": "answers", "sentence": "s", "kind": "membership", "rule": {"set": names}, "evidence": []}
 
 
+def count(cid, n, values):  # a count over comparison groups whose times differ between runs
+    groups = [{"kind": "comparison", "rule": {"a": 2 * i, "others": [2 * i + 1], "relation": "tie", "margin": 1.5, "noise": []}}
+              for i in range(len(values) // 2)]
+    ev = [{"file": "scaling/m.json", "pointer": f"/rows/{i}/seconds", "value": v} for i, v in enumerate(values)]
+    return {"id": cid, "section": "scaling", "sentence": "s", "kind": "count", "rule": {"groups": groups, "count": n}, "evidence": ev}
+
+
 def run(a, b):
     p = subprocess.run([sys.executable, TOOL, a, b], capture_output=True, text=True)
     return p.returncode, p.stdout
@@ -51,6 +58,15 @@ class CompareVerdicts(unittest.TestCase):
             for cid in ("c1", "m1", "c3"):
                 self.assertIn(cid + ":", out)
             self.assertIn("verdicts that differ: 3", out)
+
+    def test_a_count_compares_its_number_not_its_times(self):
+        with tempfile.TemporaryDirectory() as d:
+            a = report(d, "a", [count("k1", 2, [1.0, 1.2, 2.0, 2.1]), count("k2", 1, [1.0, 1.2, 1.0, 3.0])])
+            b = report(d, "b", [count("k1", 2, [1.1, 1.3, 2.2, 2.0]), count("k2", 2, [1.0, 1.2, 1.0, 1.4])])
+            code, out = run(a, b)
+            self.assertEqual(code, 1)
+            self.assertNotIn("k1:", out)
+            self.assertIn("k2: ('count', 1, 2) against ('count', 2, 2)", out)
 
     def test_a_claim_in_one_report_only(self):
         with tempfile.TemporaryDirectory() as d:

@@ -1,120 +1,36 @@
-"""Tests of tools/verify_claims.py: python3 -m unittest tools/verify_claims_test.py
+"""Tests of tools/verify_claims.py: python3 tools/verify_claims_test.py
 
 Each test writes a small report folder (data/claims.json and a made-up data file or two) in a
-temporary directory and runs the verifier's functions or its command line on it.
+temporary directory and runs the verifier's functions or its command line on it: membership claims
+(rows read from a file), evidence and pointers, the claim loop and the command line.  The other
+kinds' rule checks and the row-test language: tools/claims_rules_test.py.
 """
 import copy
-import importlib.util
 import json
-import math
 import os
 import subprocess
 import sys
-import tempfile
 import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-SCRIPT = os.path.join(HERE, "verify_claims.py")
-_spec = importlib.util.spec_from_file_location("verify_claims", SCRIPT)
-vc = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(vc)
-INF = math.inf
+if HERE not in sys.path:
+    sys.path.insert(0, HERE)
+import claims_rules as cr  # the rules, pure functions over values
+import verify_claims as vc  # the files, the claim loop and the command line
+from claims_test_fixtures import (ABOVE, BELOW, SCRIPT, SF, STABILITY, Folder, comparison, count, equality, ev,
+                                  spearman, threshold, trend)
 
-METHODS = [{"name": n, "family": f, "order": o, "symplectic": False, "exact_flow": n == "exact"}
-           for n, f, o in [("forward_euler", "euler", 1), ("backward_euler", "euler", 1),
-                           ("trapezoid", "theta", 2), ("rk4", "rk", 4), ("exact", "exact", 0)]]
-STABILITY = {
-    "schema": "steplab.stability/2",
-    "thresholds": [  # 0..4
-        {"method": "forward_euler", "dt_measured": 0.2, "stable_again_measured": "never"},
-        {"method": "backward_euler", "dt_measured": "unbounded", "stable_again_measured": None},
-        {"method": "trapezoid", "dt_measured": "unbounded", "stable_again_measured": None},
-        {"method": "rk4", "dt_measured": 0.2183, "stable_again_measured": "never"},
-        {"method": "exact", "dt_measured": "unbounded", "stable_again_measured": None}],
-    "sweep": [  # rows 0..3 at dt 0.5, row 4 at dt 0.1
-        {"method": "forward_euler", "dt": 0.5, "stable": False},
-        {"method": "backward_euler", "dt": 0.5, "stable": True},
-        {"method": "trapezoid", "dt": 0.5, "stable": True},
-        {"method": "exact", "dt": 0.5, "stable": True},
-        {"method": "forward_euler", "dt": 0.1, "stable": True}],
-}
-# Spearman points: x = [1, 2, 2, unbounded], y = [0.5, never, 0.1, 0.3]
-STATS = {"x": [1, 2, 2, "unbounded"], "y": [0.5, "never", 0.1, 0.3]}
-SF = "stability/stability.json"
-# Each solver's cheapest run reaching an error level: run time and the two runs' spread
-COST = {"cheapest": [  # 0..4
-    {"method": "rk4", "seconds": 1.0, "seconds_spread": 1.1},
-    {"method": "trapezoid", "seconds": 1.5, "seconds_spread": 1.2},
-    {"method": "backward_euler", "seconds": 1.05, "seconds_spread": 1.02},
-    {"method": "forward_euler", "seconds": None, "seconds_spread": None},
-    {"method": "leapfrog", "seconds": "never", "seconds_spread": 1.0}]}
+STABLE = {"field": "/stable", "op": "==", "value": True}
 
 
-def ev(pointer, value, file=SF):
-    return {"file": file, "pointer": pointer, "value": value}
-
-
-def membership(cid="M1", over="numerical", names=("backward_euler", "trapezoid"), rows=(0, 1, 2)):
+def membership(cid="M1", over="numerical", names=("backward_euler", "trapezoid"), rows=(0, 1, 2),
+               test=STABLE, fields=("stable",)):
+    """Evidence: each of `fields` of each of `rows` that the sweep row has, rows outermost."""
     return {"id": cid, "section": "stability", "sentence": "stable at dt 0.5: ...", "kind": "membership",
             "rule": {"file": SF, "rows": "/sweep", "where": {"dt": 0.5}, "key": "method", "over": over,
-                     "field": "stable", "equals": True, "set": list(names)},
-            "evidence": [ev("/sweep/%d/stable" % i, STABILITY["sweep"][i]["stable"]) for i in rows]}
-
-
-def trend(cid, rows, word, relative=1e-3, field="dt_measured"):
-    return {"id": cid, "section": "stability", "sentence": "dt* ...", "kind": "trend",
-            "rule": {"along": [STABILITY["thresholds"][i]["method"] for i in rows], "relative": relative,
-                     "trend": word},
-            "evidence": [ev("/thresholds/%d/%s" % (i, field), STABILITY["thresholds"][i][field]) for i in rows]}
-
-
-def spearman(cid="S1", value=-0.32, decimals=2, words="moderate negative"):
-    return {"id": cid, "section": "cost", "sentence": "rho ...", "kind": "statistic",
-            "rule": {"statistic": "spearman", "x": [0, 1, 2, 3], "y": [4, 5, 6, 7], "value": value,
-                     "decimals": decimals, "words": words},
-            "evidence": [ev("/%s/%d" % (k, i), STATS[k][i], "stats.json") for k in "xy" for i in range(4)]}
-
-
-def threshold(cid, rows, op, limit, field="dt_measured"):
-    return {"id": cid, "section": "stability", "sentence": "dt* ...", "kind": "threshold",
-            "rule": {"op": op, "limit": limit},
-            "evidence": [ev("/thresholds/%d/%s" % (i, field), STABILITY["thresholds"][i][field]) for i in rows]}
-
-
-def comparison(cid, relation, margin, a, others, noise=()):
-    """Evidence: row a's seconds, then each of others' seconds, then each of noise's spreads."""
-    rows = [a] + list(others)
-    return {"id": cid, "section": "cost", "sentence": "cheapest ...", "kind": "comparison",
-            "rule": {"a": 0, "others": list(range(1, len(rows))), "relation": relation, "margin": margin,
-                     "noise": list(range(len(rows), len(rows) + len(noise)))},
-            "evidence": [ev("/cheapest/%d/seconds" % r, COST["cheapest"][r]["seconds"], "cost.json") for r in rows]
-            + [ev("/cheapest/%d/seconds_spread" % r, COST["cheapest"][r]["seconds_spread"], "cost.json")
-               for r in noise]}
-
-
-class Folder(unittest.TestCase):
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.dir = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
-
-    def write(self, claims, stability=STABILITY, raw=None, cost=COST):
-        os.makedirs(os.path.join(self.dir, "data", "stability"), exist_ok=True)
-        for name, doc in [(SF, stability), ("stats.json", STATS), ("cost.json", cost)]:
-            with open(os.path.join(self.dir, "data", name), "w") as f:
-                json.dump(doc, f)
-        with open(os.path.join(self.dir, "data", "claims.json"), "w") as f:
-            f.write(raw if raw is not None else
-                    json.dumps({"schema": "steplab.claims/1", "methods": METHODS, "claims": claims}))
-
-    def problems(self, *claims, stability=STABILITY, cost=COST):
-        self.write(list(claims), stability, cost=cost)
-        return dict(vc.verify(self.dir))
-
-    def run_cli(self):
-        return subprocess.run([sys.executable, SCRIPT, self.dir], capture_output=True, text=True)
+                     "test": test, "set": list(names)},
+            "evidence": [ev("/sweep/%d/%s" % (i, f), STABILITY["sweep"][i][f]) for i in rows for f in fields
+                         if f in STABILITY["sweep"][i]]}
 
 
 class Membership(Folder):
@@ -132,7 +48,7 @@ class Membership(Folder):
         self.assertEqual(out.returncode, 1)
         self.assertIn("M1: ", out.stdout)
         self.assertIn("forward_euler", out.stdout)
-        self.assertIn("claims: 1, hold: 0, do not hold: 1", out.stdout)
+        self.assertIn("claims: 1, hold: 0, do not hold: 1, theory: 0", out.stdout)
 
     def test_exact_flow_left_out_by_numerical(self):
         # row 3 (exact, stable) passes `where` but not over "numerical": neither set nor evidence
@@ -147,147 +63,111 @@ class Membership(Folder):
     def test_evidence_one_per_row(self):
         self.assertTrue(self.problems(membership(rows=(1, 2)))["M1"])  # row 0 has no item
         self.assertTrue(self.problems(membership(rows=(0, 1, 2, 2)))["M1"])  # row 2 twice
+        self.assertEqual(self.problems(membership(rows=(2, 0, 1)))["M1"], [])  # in any order
 
+    def test_pointer_per_row(self):
+        # "stable and growth < 1": rows 0 (false, 3.2), 1 (true, 0.9), 2 (true, no growth: false)
+        both = {"all": [STABLE, {"field": "/growth", "op": "<", "value": 1}]}
+        full = membership(names=["backward_euler"], test=both, fields=("stable", "growth"))
+        self.assertEqual(len(full["evidence"]), 5)  # row 2 has no growth: no item for it
+        self.assertEqual(self.problems(full)["M1"], [])
+        # the items of one pointer only: the growth of rows 0 and 1 are missing
+        p = self.problems(membership(names=["backward_euler"], test=both))["M1"]
+        self.assertEqual(p, ['evidence should be one item per row: 5 expected, 3 given, missing '
+                             '["/sweep/0/growth", "/sweep/1/growth"], extra []'])
+        # an item for a pointer that finds nothing in its row (also a missing file value)
+        extra = copy.deepcopy(full)
+        extra["evidence"].append(ev("/sweep/2/growth", None))
+        p = self.problems(extra)["M1"]
+        self.assertIn("evidence 5: pointer /sweep/2/growth: no member", p[0])
+        self.assertIn('extra ["/sweep/2/growth"]', p[1])
+        # a pointer twice in the test still asks for one item per row
+        twice = {"any": [STABLE, {"not": STABLE}]}
+        all_three = ["forward_euler", "backward_euler", "trapezoid"]
+        self.assertEqual(self.problems(membership(names=all_three, test=twice))["M1"], [])
+        # another file than the rule's
+        other = membership()
+        other["evidence"][0]["file"] = "stability/../stability/stability.json"
+        self.assertTrue(self.problems(other)["M1"])
 
-class Trend(Folder):
-    def test_words(self):
-        self.assertEqual(vc.trend_of([INF, INF], 1e-3), "stays unbounded")
-        self.assertEqual(vc.trend_of([INF, 0.2183], 1e-3), "falls")  # inf is never a number
-        self.assertEqual(vc.trend_of([0.2183, INF], 1.0), "rises")
-        # |0.5 - 0.50001| = 1e-5 <= 1e-3 * 0.50001
-        self.assertEqual(vc.trend_of([0.5, 0.50001], 1e-3), "stays the same")
-        self.assertEqual(vc.trend_of([0.5, 0.50001], 1e-6), "rises")  # 1e-5 > 5.0001e-7
-        self.assertEqual(vc.trend_of([0.1, 0.2, 0.15], 1e-3), "does not move one way")
-        self.assertEqual(vc.trend_of([1.0, None], 1e-3), "not measured")
-        self.assertEqual(vc.trend_of([INF, None], 1e-3), "not measured")
+    def test_not_with_a_missing_pointer(self):
+        # "not growth > 1": row 0 (3.2) fails, row 1 (0.9) and row 2 (no growth) hold
+        test = {"not": {"field": "/growth", "op": ">", "value": 1}}
+        claim = membership(test=test, fields=("growth",))
+        self.assertEqual([e["pointer"] for e in claim["evidence"]], ["/sweep/0/growth", "/sweep/1/growth"])
+        self.assertEqual(self.problems(claim)["M1"], [])
+        p = self.problems(membership(names=["backward_euler"], test=test, fields=("growth",)))["M1"]
+        self.assertEqual(p, ['set is ["backward_euler"], the rows give ["backward_euler", "trapezoid"]'])
 
-    def test_claims(self):
-        p = self.problems(trend("T1", [1, 2], "stays unbounded"),  # [inf, inf]
-                          trend("T2", [2, 3], "falls"),  # [inf, 0.2183]
-                          trend("T3", [2, 0], "stays the same"),  # [inf, 0.2]: falls
-                          trend("T4", [0, 1], "not measured", field="stable_again_measured"),  # [inf, null]
-                          trend("T5", [2, 3], "falls", relative=-1))
-        self.assertEqual(p["T1"], [])
-        self.assertEqual(p["T2"], [])
-        self.assertIn('is "falls", the claim says "stays the same"', p["T3"][0])
-        self.assertEqual(p["T4"], [])
-        self.assertTrue(p["T5"])
-
-
-class Spearman(Folder):
-    def test_by_hand(self):
-        # x = [1, 2, 2, inf] ranks [1, 2.5, 2.5, 4]; y = [0.5, inf, 0.1, 0.3] ranks [3, 4, 1, 2].
-        # Deviations from 2.5: dx = [-1.5, 0, 0, 1.5], dy = [0.5, 1.5, -1.5, -0.5];
-        # sum dx dy = -1.5, sum dx^2 = 4.5, sum dy^2 = 5: rho = -1.5 / sqrt(22.5) = -1/sqrt(10)
-        # = -0.316228, |rho| in [0.3, 0.7): "moderate negative".
-        rho, words = vc.spearman([1, 2, 2, INF], [0.5, INF, 0.1, 0.3])
-        self.assertAlmostEqual(rho, -1 / math.sqrt(10), places=12)
-        self.assertEqual(words, "moderate negative")
-        self.assertEqual(vc.spearman([1, 1, 1], [3, 1, 2]), (0.0, "weak positive"))  # constant
-        self.assertEqual(vc.spearman([1, 2, 3], [10, 20, INF])[1], "strong positive")  # rho 1
-
-    def test_claims(self):
-        p = self.problems(spearman("S1"),  # |-0.316228 + 0.32| = 0.0038 <= 0.005
-                          spearman("S2", value=-0.3, decimals=1),  # 0.0162 <= 0.05
-                          spearman("S3", value=-0.31),  # 0.0062 > 0.005
-                          spearman("S4", words="weak negative"),
-                          spearman("S5", words="moderate positive"))
-        self.assertEqual(p["S1"], [])
-        self.assertEqual(p["S2"], [])
-        self.assertIn("-0.3162", p["S3"][0])
-        self.assertTrue(p["S4"] and p["S5"])
-
-
-class Threshold(Folder):
-    def test_claims(self):
-        # dt_measured: forward_euler 0.2, backward_euler unbounded, trapezoid unbounded, rk4 0.2183;
-        # stable_again_measured: forward_euler never, backward_euler null
-        p = self.problems(threshold("H1", [0, 3], "<", 0.25),  # 0.2, 0.2183 < 0.25
-                          threshold("H2", [0, 3], ">", 0.21),  # 0.2 is not > 0.21
-                          threshold("H3", [0, 1], ">", 0.1, field="stable_again_measured"),  # never, null
-                          threshold("H4", [], "<", 0.25),  # empty evidence
-                          threshold("H5", [1, 2], ">", 1e300),  # unbounded, unbounded: +infinity
-                          threshold("H6", [1, 3], "<", 0.25),  # unbounded is not < 0.25
-                          threshold("H7", [0], "<=", 0.2),  # 0.2 <= 0.2
-                          threshold("H8", [0], "<", 0.2),  # 0.2 is not < 0.2
-                          threshold("H9", [0], ">=", 1e300, field="stable_again_measured"),  # never
-                          threshold("H10", [0, 3], "==", 0.25),  # unknown op
-                          threshold("H11", [0, 3], "<", "unbounded"))  # limit not a number
-        for cid in ("H1", "H5", "H7", "H9"):
-            self.assertEqual(p[cid], [], cid)
-        self.assertEqual(p["H2"], ["evidence 0 is 0.2, not > 0.21"])
-        self.assertEqual(len(p["H3"]), 1, p["H3"])
-        self.assertIn("evidence 1 is null", p["H3"][0])
-        self.assertIn("empty", p["H4"][0])
-        self.assertEqual(p["H6"], ["evidence 0 is inf, not < 0.25"])
-        self.assertEqual(p["H8"], ["evidence 0 is 0.2, not < 0.2"])
-        self.assertIn('op is "=="', p["H10"][0])
-        self.assertIn("limit", p["H11"][0])
-
-    def test_mutation(self):
-        # forward_euler's dt_measured in the file becomes 0.3: past the limit 0.25, and no longer
-        # the recorded 0.2
+    def test_scaled(self):
+        # "growth < c dt" at dt 0.5: rows 0 (3.2, 0.5), 1 (0.9, 0.5), 2 (no growth: false)
+        test = lambda c: {"scaled": ["/growth", "/dt"], "op": "<", "times": c}
+        claim = membership(names=["backward_euler"], test=test(2), fields=("growth", "dt"))
+        self.assertEqual([e["pointer"] for e in claim["evidence"]],  # row 2: its dt only
+                         ["/sweep/0/growth", "/sweep/0/dt", "/sweep/1/growth", "/sweep/1/dt", "/sweep/2/dt"])
+        self.assertEqual(self.problems(claim)["M1"], [])  # 0.9 < 1 <= 3.2
+        p = self.problems(membership(names=["backward_euler"], test=test(7), fields=("growth", "dt")))["M1"]
+        self.assertEqual(p, ['set is ["backward_euler"], the rows give ["backward_euler", "forward_euler"]'])
+        self.assertEqual(self.problems(membership(names=[], test=test(1.8), fields=("growth", "dt")))["M1"], [])
+        # the scaled test's pointers count in the evidence: its P1 alone is not enough
+        p = self.problems(membership(names=["backward_euler"], test=test(2), fields=("growth",)))["M1"]
+        self.assertEqual(p, ['evidence should be one item per row: 5 expected, 2 given, missing '
+                             '["/sweep/0/dt", "/sweep/1/dt", "/sweep/2/dt"], extra []'])
+        # nested in all: the pointers of both tests, each once per row
+        both = {"all": [STABLE, test(2)]}
+        claim = membership(names=["backward_euler"], test=both, fields=("stable", "growth", "dt"))
+        self.assertEqual(len(claim["evidence"]), 8)
+        self.assertEqual(self.problems(claim)["M1"], [])
+        # a malformed scaled test: the claim does not hold
+        p = self.problems(membership(test={"scaled": ["/growth", "/dt"], "op": "<", "value": 2}))["M1"]
+        self.assertEqual(len(p), 1, p)
+        self.assertIn("or no times", p[0])
+        # the file changes: backward_euler's growth 0.9 becomes 1.1, above 2 x 0.5
         moved = copy.deepcopy(STABILITY)
-        moved["thresholds"][0]["dt_measured"] = 0.3
-        p = self.problems(threshold("H1", [0, 3], "<", 0.25), stability=moved)["H1"]
-        self.assertIn("recorded 0.2, the file holds 0.3", p[0])
-        self.assertEqual(p[1], "evidence 0 is 0.3, not < 0.25")
-        self.write([threshold("H1", [0, 3], "<", 0.25), trend("T1", [1, 2], "stays unbounded")], moved)
+        moved["sweep"][1]["growth"] = 1.1
+        claim = membership(names=["backward_euler"], test=test(2), fields=("growth", "dt"))
+        p = self.problems(claim, stability=moved)["M1"]
+        self.assertIn("recorded 0.9, the file holds 1.1", p[0])
+        self.assertEqual(p[1], 'set is ["backward_euler"], the rows give []')
+        self.write([claim], moved)
         out = self.run_cli()
         self.assertEqual(out.returncode, 1)
-        self.assertTrue(out.stdout.startswith("H1: "), out.stdout)
-        self.assertNotIn("T1", out.stdout)
-        self.assertIn("claims: 2, hold: 1, do not hold: 1", out.stdout)
+        self.assertTrue(out.stdout.startswith("M1: "), out.stdout)
 
+    def test_scaled_infinity_and_null(self):
+        # thresholds, numerical: stable_again_measured > 10 dt_measured: forward_euler (never, 0.2)
+        # and rk4 (never, 0.2183) hold, +infinity; backward_euler and trapezoid (null, unbounded) do not
+        rows = [0, 1, 2, 3]
+        fields = ("stable_again_measured", "dt_measured")
+        claim = {"id": "M2", "section": "stability", "sentence": "...", "kind": "membership",
+                 "rule": {"file": SF, "rows": "/thresholds", "where": {}, "key": "method", "over": "numerical",
+                          "test": {"scaled": list("/" + f for f in fields), "op": ">", "times": 10},
+                          "set": ["rk4", "forward_euler"]},
+                 "evidence": [ev("/thresholds/%d/%s" % (i, f), STABILITY["thresholds"][i][f])
+                              for i in rows for f in fields]}
+        self.assertEqual(self.problems(claim)["M2"], [])
+        # the other way round: dt_measured > 10 stable_again: 0.2 > +infinity fails, null fails
+        swapped = copy.deepcopy(claim)
+        swapped["rule"]["test"]["scaled"].reverse()
+        p = self.problems(swapped)["M2"]
+        self.assertEqual(p, ['set is ["forward_euler", "rk4"], the rows give []'])
+        # over "all": the exact flow's row (4) passes too, and needs its items
+        every = copy.deepcopy(claim)
+        every["rule"]["over"] = "all"
+        p = self.problems(every)["M2"]
+        self.assertEqual(p, ['evidence should be one item per row: 10 expected, 8 given, missing '
+                             '["/thresholds/4/stable_again_measured", "/thresholds/4/dt_measured"], extra []'])
 
-class Comparison(Folder):
-    def test_claims(self):
-        # seconds: rk4 1.0, trapezoid 1.5, backward_euler 1.05, forward_euler null, leapfrog never;
-        # spreads: rk4 1.1, trapezoid 1.2, backward_euler 1.02
-        bad_index = comparison("C12", "less", 1.3, 0, [1])
-        bad_index["rule"]["others"] = [1, 2]  # two evidence values only
-        p = self.problems(comparison("C1", "less", 1.3, 0, [1], noise=[0, 2]),  # noise 1.122 < 1.3 = M <= 1.5
-                          comparison("C2", "less", 1.2, 0, [1], noise=[0, 1]),  # M = noise 1.32 <= 1.5
-                          comparison("C3", "less", 1.01, 0, [2], noise=[0, 2]),  # 1.05 < M = 1.122
-                          comparison("C4", "tie", 1.1, 0, [2, 1]),  # 1.05 < 1.1, the first is least
-                          comparison("C5", "tie", 1.1, 0, [1, 2]),  # the least is the second
-                          comparison("C6", "less", 1.01, 2, [0, 1]),  # a 1.05 is above rk4's 1.0
-                          comparison("C7", "less", 1.01, 3, [1]),  # a is null
-                          comparison("C8", "less", 1.3, 0, [1, 3]),  # an other is null
-                          comparison("C9", "less", 1.3, 0, []),  # B = +infinity
-                          comparison("C10", "tie", 1.3, 0, []),  # nothing to tie with
-                          comparison("C11", "tie", 1.0, 4, [4]),  # never == never: B == a
-                          bad_index,
-                          comparison("C13", "more", 1.3, 0, [1]),  # unknown relation
-                          comparison("C14", "less", 1.3, 0, [1, 4]))  # never is above 1.5
-        for cid in ("C1", "C2", "C4", "C9", "C11", "C14"):
-            self.assertEqual(p[cid], [], cid)
-        self.assertEqual(len(p["C3"]), 1, p["C3"])
-        self.assertIn("1.05 is not >= M a = 1.122", p["C3"][0])
-        self.assertEqual(p["C5"], ["tie: the first of others (evidence 1) is 1.5, not the least, 1.05"])
-        self.assertEqual(p["C6"][0], "a (evidence 0) is 1.05, above evidence 1 (1.0)")  # and B < M a
-        self.assertEqual(p["C7"], ["evidence 0 null (not measured)"])
-        self.assertEqual(p["C8"], ["evidence 2 null (not measured)"])
-        self.assertIn("tie: others is empty, nothing to tie with", p["C10"])
-        self.assertIn("not an index", p["C12"][0])
-        self.assertIn('relation is "more"', p["C13"][0])
-        # the margin alone would let C3 hold: the noise product decides
-        self.assertEqual(self.problems(comparison("C3", "less", 1.01, 0, [2]))["C3"], [])
-
-    def test_mutation(self):
-        # trapezoid's run time in the file becomes 1.2: below M a = 1.32, and not the recorded 1.5
-        moved = copy.deepcopy(COST)
-        moved["cheapest"][1]["seconds"] = 1.2
-        p = self.problems(comparison("C2", "less", 1.2, 0, [1], noise=[0, 1]), cost=moved)["C2"]
-        self.assertIn("recorded 1.5, the file holds 1.2", p[0])
-        self.assertIn("less: the least other 1.2 is not >= M a", p[1])
-        self.write([comparison("C2", "less", 1.2, 0, [1], noise=[0, 1]),
-                    comparison("C4", "tie", 1.1, 0, [2])], cost=moved)  # reads no trapezoid value
-        out = self.run_cli()
-        self.assertEqual(out.returncode, 1)
-        self.assertTrue(out.stdout.startswith("C2: "), out.stdout)
-        self.assertNotIn("C4", out.stdout)
-        self.assertIn("claims: 2, hold: 1, do not hold: 1", out.stdout)
+    def test_malformed_test(self):
+        for bad in [{"field": "/stable", "op": "=~", "value": True}, {"field": "stable", "op": "==", "value": 1},
+                    {"field": "/stable", "op": "=="}, {"difference": ["/dt"], "op": "<", "value": 1},
+                    {"field": "/stable", "op": "==", "value": True, "not": STABLE}, {"any": STABLE},
+                    {"not": {"field": "/a~2", "op": "!=", "value": 0}}, [STABLE]]:
+            p = self.problems(membership(test=bad))["M1"]
+            self.assertEqual(len(p), 1, (bad, p))
+            self.assertIn("test ", p[0])
+        p = self.problems(membership(test={"difference": ["/dt", "/growth"], "op": "==", "value": 0}))["M1"]
+        self.assertIn('op not one of "<", "<=", ">", ">="', p[0])
 
 
 class Evidence(Folder):
@@ -297,7 +177,7 @@ class Evidence(Folder):
         self.assertEqual(vc.resolve(doc, "/"), 3)
         self.assertIs(vc.resolve(doc, ""), doc)
         for bad in ["/a~1b/m~0n/01", "/a~1b/m~0n/2", "/a~2b", "a", "/a~1b/m~0n/-"]:
-            self.assertRaises(vc.Fail, vc.resolve, doc, bad)
+            self.assertRaises(cr.Fail, vc.resolve, doc, bad)
 
     def test_does_not_hold(self):
         wrong = trend("E1", [1, 2], "stays unbounded")
@@ -327,9 +207,10 @@ class Evidence(Folder):
 class CommandLine(Folder):
     def test_exit_statuses(self):
         self.write([membership(), trend("T1", [1, 2], "stays unbounded"), spearman(),
-                    threshold("H1", [0, 3], "<", 0.25), comparison("C1", "less", 1.3, 0, [1])])
+                    threshold("H1", [0, 3], "<", 0.25), comparison("C1", "less", 1.3, 0, [1]),
+                    equality("Q1", [[2, 3]]), count("N1", [BELOW, ABOVE], 1)])
         out = self.run_cli()
-        self.assertEqual((out.returncode, out.stdout), (0, "claims: 5, hold: 5, do not hold: 0\n"))
+        self.assertEqual((out.returncode, out.stdout), (0, "claims: 7, hold: 7, do not hold: 0, theory: 0\n"))
         self.write([membership(), trend("T1", [1, 2], "rises")])
         out = self.run_cli()
         self.assertEqual(out.returncode, 1)
@@ -343,6 +224,38 @@ class CommandLine(Folder):
             out = self.run_cli()
             self.assertEqual(out.returncode, 2)
             self.assertIn("steplab.claims/1", out.stderr)
+
+    def test_theory(self):
+        theory = [{"section": "stability", "sentence": "Backward Euler is A-stable."},
+                  {"section": "methods", "sentence": "RK4 is of order 4.", "source": "textbook"}]
+        self.write([trend("T1", [1, 2], "stays unbounded")], theory=theory)
+        out = self.run_cli()
+        self.assertEqual((out.returncode, out.stdout), (0, "claims: 1, hold: 1, do not hold: 0, theory: 2\n"))
+        self.write([trend("T1", [1, 2], "rises")], theory=[])
+        out = self.run_cli()
+        self.assertEqual(out.returncode, 1)
+        self.assertTrue(out.stdout.endswith("claims: 1, hold: 0, do not hold: 1, theory: 0\n"), out.stdout)
+
+    def test_any_working_directory(self):
+        # the command line finds claims_rules.py beside it from another directory, REPORT_DIR relative
+        self.write([membership(), trend("T1", [1, 2], "stays unbounded")])
+        out = subprocess.run([sys.executable, os.path.relpath(SCRIPT, self.dir), "."], cwd=self.dir,
+                             capture_output=True, text=True)
+        self.assertEqual((out.returncode, out.stdout, out.stderr),
+                         (0, "claims: 2, hold: 2, do not hold: 0, theory: 0\n", ""))
+        out = subprocess.run([sys.executable, SCRIPT, os.path.basename(self.dir)],
+                             cwd=os.path.dirname(self.dir), capture_output=True, text=True)
+        self.assertEqual(out.returncode, 0, out.stderr)
+
+    def test_malformed_theory(self):
+        for theory in [{"section": "s", "sentence": "x"}, "x", None, [["s", "x"]], [{"section": "s"}],
+                       [{"section": "s", "sentence": 3}], [{"section": None, "sentence": "x"}],
+                       [{"section": "s", "sentence": "x"}, 1]]:
+            self.write([trend("T1", [1, 2], "stays unbounded")], theory=theory)
+            out = self.run_cli()
+            self.assertEqual((out.returncode, out.stdout), (2, ""), theory)
+            self.assertIn("theory is not a list of objects with string section and sentence", out.stderr)
+            self.assertRaises(vc.BadClaimsFile, vc.verify, self.dir)
 
 
 if __name__ == "__main__":

@@ -69,7 +69,9 @@ Json long_time_json(const LongTimeResult& r) {
     if (takes_sweeps(info) || takes_cg(info)) e["settings"] = settings_json(info, c.settings);
     Json inv = Json::object();
     for (std::size_t q = 0; q < r.invariants.size() && q < row.error.size(); ++q)
-      inv[r.invariants[q]] = {{"relative_error", row.error[q]}, {"growth", growth_json(row.growth[q])},
+      inv[r.invariants[q]] = {{"relative_error", row.error[q]},
+                              {"error_at_end", row.error[q].empty() ? Json(nullptr) : finite_or_null(row.error[q].back())},
+                              {"growth", growth_json(row.growth[q])},
                               {"round_off", row.round_off[q] != 0}, {"change_at_end", finite_or_null(row.change[q])}};
     e["invariants"] = std::move(inv);
     if (r.has_exact) {

@@ -189,6 +189,7 @@ Json collision_run_json(const CollisionRun& run, bool bounce) {
     for (const BounceEvent& e : run.bounces)
       b.push_back({{"t", e.t}, {"energy_ratio", finite_or_null(e.energy_ratio)}, {"rebound_height", finite_or_null(e.rebound_height)}});
     j["bounces"] = std::move(b);
+    j["energy_ratio_last_bounce"] = run.bounces.empty() ? Json(nullptr) : finite_or_null(run.bounces.back().energy_ratio);
   } else {
     Json p = Json::array();
     for (const auto& s : run.path) p.push_back({{"t", s.t}, {"x", vec_json<6>(s.x)}, {"energy", finite_or_null(s.energy)}});

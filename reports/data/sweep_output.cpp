@@ -90,12 +90,14 @@ Json order_reduction_json(const OrderReduction& r) {
       const ConvergenceFit& f = s.studies[v].fits[m];
       Json e;
       e["method"] = method_info(f.method).name;
+      e["declared_order"] = method_info(f.method).order;
       e["value"] = s.values[v];
       e["exact"] = f.fit.exact;
       e["order"] = f.fit.fitted ? finite_or_null(f.fit.order) : Json(nullptr);
       e["order_bound"] = f.fit.fitted ? Json{finite_or_null(f.fit.bound_lo), finite_or_null(f.fit.bound_hi)} : Json(nullptr);
       e["dt_range"] = f.fit.fitted ? Json{f.fit.dt_lo, f.fit.dt_hi} : Json(nullptr);
       e["h_lambda"] = finite_or_null(r.methods[m].h_lambda[v]);
+      e["past_stable"] = static_cast<bool>(r.methods[m].past_stable[v]);
       e["note"] = f.fit.note;
       fits.push_back(std::move(e));
     }

@@ -35,6 +35,8 @@ void Ledger::add(Claim c) {
   claims_.push_back(std::move(c));
 }
 
+void Ledger::theory(std::string section, std::string sentence) { theory_.emplace_back(std::move(section), std::move(sentence)); }
+
 Json Ledger::json() const {
   Json j;
   j["schema"] = "steplab.claims/1";
@@ -44,6 +46,8 @@ Json Ledger::json() const {
     j["methods"].push_back({{"name", i.name}, {"family", to_string(i.family)}, {"order", i.order}, {"symplectic", i.symplectic},
                             {"exact_flow", i.exact_flow}});
   }
+  j["theory"] = Json::array();
+  for (const auto& [section, sentence] : theory_) j["theory"].push_back({{"section", section}, {"sentence", sentence}});
   j["claims"] = Json::array();
   for (const Claim& c : claims_) {
     Json e = Json::array();
@@ -63,12 +67,6 @@ std::string id_word(std::string_view words) {
 Json stability_document(const ReportData& d) { return stability_json(d.config.oscillator.params, d.thresholds, d.sweep, &d.map); }
 
 namespace {
-
-Json names(const std::vector<std::size_t>& methods) {
-  Json out = Json::array();
-  for (std::size_t m : methods) out.push_back(name(m));
-  return out;
-}
 
 // The stability document of a source, made once per ledger.
 const Json& stability_doc(Ledger& l, StabilitySource s) {
@@ -104,28 +102,53 @@ bool numerical(const std::string& method) {
 // numerical methods, whose `field` equals `equals`, are `set`.
 void membership(Ledger& l, StabilitySource s, Claim c, const char* table, Json where, const char* field, Json equals,
                 const std::vector<std::size_t>& set) {
-  const Json& rows = stability_doc(l, s).at(table);
-  for (std::size_t i = 0; i < rows.size(); ++i)
-    if (numerical(rows[i].at("method").get<std::string>()) && matches(rows[i], where))
-      c.evidence.push_back(l.at(s.file, fmt::format("/{}/{}/{}", table, i, field)));
-  c.kind = "membership";
-  c.rule = {{"file", s.file}, {"rows", fmt::format("/{}", table)}, {"where", std::move(where)}, {"key", "method"},
-            {"over", "numerical"}, {"field", field}, {"equals", std::move(equals)}, {"set", names(set)}};
-  l.add(std::move(c));
+  stability_doc(l, s);
+  claim_members(l, std::move(c), s.file, fmt::format("/{}", table), std::move(where), "method", true,
+                test_field(fmt::format("/{}", field), "==", std::move(equals)), method_names(set));
 }
 
 }  // namespace
 
 void claim_unstable_at(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence, double dt,
                        double damping, const std::vector<std::size_t>& set) {
-  membership(l, s, {std::move(id), std::move(section), std::move(sentence), {}, {}, {}}, "sweep", {{"dt", dt}, {"damping", damping}},
+  membership(l, s, claim_text(std::move(id), std::move(section), std::move(sentence)), "sweep", {{"dt", dt}, {"damping", damping}},
              "stable", false, set);
 }
 
 void claim_unbounded_at(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
                         double damping, const std::vector<std::size_t>& set) {
-  membership(l, s, {std::move(id), std::move(section), std::move(sentence), {}, {}, {}}, "thresholds", {{"damping", damping}},
+  membership(l, s, claim_text(std::move(id), std::move(section), std::move(sentence)), "thresholds", {{"damping", damping}},
              "dt_theory", "unbounded", set);
+}
+
+namespace {
+
+// A method's measured and predicted dt* at `damping`, from its thresholds row.
+std::pair<Evidence, Evidence> measured_and_predicted(Ledger& l, StabilitySource s, std::size_t m, double damping) {
+  const Json where = {{"method", name(m)}, {"damping", damping}};
+  const std::optional<Evidence> measured = field_of(l, s, "thresholds", where, "dt_measured"),
+                                theory = field_of(l, s, "thresholds", where, "dt_theory");
+  if (!measured || !theory) throw std::logic_error(name(m) + " has no thresholds row at that damping");
+  return {*measured, *theory};
+}
+
+}  // namespace
+
+void claim_thresholds_agree(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
+                            const std::vector<std::pair<std::size_t, double>>& cases, double relative, std::size_t agree) {
+  std::vector<ClaimGroup> groups;
+  for (const auto& [m, damping] : cases) {
+    auto [measured, theory] = measured_and_predicted(l, s, m, damping);
+    groups.push_back({"equality", {{"pairs", {{0, 1}}}, {"relative", relative}, {"absolute", 0}}, {std::move(measured), std::move(theory)}});
+  }
+  claim_count(l, claim_text(std::move(id), std::move(section), std::move(sentence)), std::move(groups), static_cast<int>(agree));
+}
+
+void claim_measured_as_predicted(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
+                                 const std::vector<std::size_t>& methods, double damping, double relative) {
+  std::vector<std::pair<Evidence, Evidence>> pairs;
+  for (std::size_t m : methods) pairs.push_back(measured_and_predicted(l, s, m, damping));
+  claim_equal(l, claim_text(std::move(id), std::move(section), std::move(sentence)), pairs, relative, 0);
 }
 
 void claim_rate(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence, double dt,
@@ -170,6 +193,26 @@ void claim_cheapest(Ledger& l, const ReportData& d, std::string id, std::string 
   l.add(std::move(c));
 }
 
+void claim_crossover(Ledger& l, const ReportData& d, std::string id, std::string section, std::string sentence) {
+  const WorkPrecisionResult& r = d.work;
+  if (!d.config.timing || !(r.crossover_ratio > 0)) return;
+  l.document(kWorkDocument, [&] { return work_precision_json(r); });
+  std::vector<ClaimGroup> from, below;  // the rows from the crossover on; the one before it
+  for (std::size_t i = 0; i < r.stiffness.size(); ++i) {
+    const StiffnessRow& row = r.stiffness[i];
+    const bool on = row.ratio >= r.crossover_ratio;
+    if (!on && (i + 1 >= r.stiffness.size() || r.stiffness[i + 1].ratio < r.crossover_ratio)) continue;
+    (on ? from : below)
+        .push_back({"comparison",
+                    {{"a", 0}, {"others", {1}}, {"relation", "less"}, {"margin", kTieMargin}, {"noise", Json::array()}},
+                    {l.at(kWorkDocument, fmt::format("/stiffness_sweep/{}/implicit_seconds", i)),
+                     l.at(kWorkDocument, fmt::format("/stiffness_sweep/{}/explicit_seconds", i))}});
+  }
+  const int n = static_cast<int>(from.size());
+  claim_count(l, claim_text(id + ".from", section, sentence), std::move(from), n);
+  claim_count(l, claim_text(id + ".before", section, sentence), std::move(below), 0);
+}
+
 void claim_family_trend(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
                         const FamilyTrend& t, double damping) {
   Claim c{std::move(id), std::move(section), std::move(sentence), "trend", {}, {}};
@@ -178,7 +221,7 @@ void claim_family_trend(Ledger& l, StabilitySource s, std::string id, std::strin
     if (!dt) return;  // not measured: no claim
     c.evidence.push_back(*dt);
   }
-  c.rule = {{"along", names(t.members)}, {"relative", kSameThreshold}, {"trend", to_text(t.trend)}};
+  c.rule = {{"along", method_names(t.members)}, {"relative", kSameThreshold}, {"trend", to_text(t.trend)}};
   l.add(std::move(c));
 }
 
@@ -203,6 +246,103 @@ void claim_spearman(Ledger& l, const std::vector<StabilityPoint>& points, double
   c.rule = {{"statistic", "spearman"}, {"x", std::move(x)},          {"y", std::move(y)},
             {"value", std::stod(fmt::format("{:.{}f}", value, decimals))},  // as printed
             {"decimals", decimals},    {"words", correlation_words(value)}};
+  l.add(std::move(c));
+}
+
+Json test_field(std::string pointer, const char* op, Json value) {
+  return {{"field", std::move(pointer)}, {"op", op}, {"value", std::move(value)}};
+}
+Json test_difference(std::string p1, std::string p2, const char* op, double value) {
+  return {{"difference", {std::move(p1), std::move(p2)}}, {"op", op}, {"value", value}};
+}
+Json test_scaled(std::string p1, const char* op, double times, std::string p2) {
+  return {{"scaled", {std::move(p1), std::move(p2)}}, {"op", op}, {"times", times}};
+}
+Json test_all(std::vector<Json> tests) { return {{"all", Json(std::move(tests))}}; }
+Json test_any(std::vector<Json> tests) { return {{"any", Json(std::move(tests))}}; }
+Json test_not(Json test) { return {{"not", std::move(test)}}; }
+
+namespace {
+
+// Every row pointer a test reads (its fields, differences and scaled pairs, in any nesting).
+void pointers_of(const Json& test, std::vector<std::string>& out) {
+  if (test.contains("field")) out.push_back(test.at("field").get<std::string>());
+  for (const char* pair : {"difference", "scaled"})
+    if (test.contains(pair))
+      for (const Json& p : test.at(pair)) out.push_back(p.get<std::string>());
+  for (const char* list : {"all", "any"})
+    if (test.contains(list))
+      for (const Json& t : test.at(list)) pointers_of(t, out);
+  if (test.contains("not")) pointers_of(test.at("not"), out);
+}
+
+}  // namespace
+
+std::vector<std::string> method_names(const std::vector<std::size_t>& methods) {
+  std::vector<std::string> out;
+  for (std::size_t m : methods) out.push_back(name(m));
+  return out;
+}
+
+void claim_members(Ledger& l, Claim c, const std::string& file, const std::string& rows, Json where, const char* key,
+                   bool numerical_only, Json test, const std::vector<std::string>& set) {
+  std::vector<std::string> fields;
+  pointers_of(test, fields);
+  std::sort(fields.begin(), fields.end());
+  fields.erase(std::unique(fields.begin(), fields.end()), fields.end());
+  const Json& table = l.at(file, rows).value;
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const Json& row = table[i];
+    if (!matches(row, where) || (numerical_only && !numerical(row.at(key).get<std::string>()))) continue;
+    for (const std::string& f : fields)
+      if (row.contains(Json::json_pointer(f))) c.evidence.push_back(l.at(file, fmt::format("{}/{}{}", rows, i, f)));
+  }
+  c.kind = "membership";
+  c.rule = {{"file", file}, {"rows", rows},         {"where", std::move(where)}, {"key", key},
+            {"over", numerical_only ? "numerical" : "all"}, {"test", std::move(test)}, {"set", set}};
+  l.add(std::move(c));
+}
+
+void claim_equal(Ledger& l, Claim c, const std::vector<std::pair<Evidence, Evidence>>& pairs, double relative, double absolute) {
+  if (pairs.empty()) return;
+  Json ij = Json::array();
+  for (const auto& [a, b] : pairs) {
+    ij.push_back({c.evidence.size(), c.evidence.size() + 1});
+    c.evidence.push_back(a), c.evidence.push_back(b);
+  }
+  c.kind = "equality";
+  c.rule = {{"pairs", std::move(ij)}, {"relative", relative}, {"absolute", absolute}};
+  l.add(std::move(c));
+}
+
+namespace {
+
+// A group's rule with its evidence indices moved up by `base` (the evidence before it).
+Json shifted(Json rule, const std::string& kind, std::size_t base) {
+  const auto up = [&](Json& i) { i = i.get<std::size_t>() + base; };
+  if (kind == "equality")
+    for (Json& p : rule.at("pairs")) up(p[0]), up(p[1]);
+  if (kind == "threshold")
+    for (Json& i : rule.at("items")) up(i);
+  if (kind == "comparison") {
+    up(rule.at("a"));
+    for (const char* list : {"others", "noise"})
+      for (Json& i : rule.at(list)) up(i);
+  }
+  return rule;
+}
+
+}  // namespace
+
+void claim_count(Ledger& l, Claim c, std::vector<ClaimGroup> groups, int count) {
+  if (groups.empty()) return;
+  Json rules = Json::array();
+  for (ClaimGroup& g : groups) {
+    rules.push_back({{"kind", g.kind}, {"rule", shifted(std::move(g.rule), g.kind, c.evidence.size())}});
+    for (Evidence& e : g.evidence) c.evidence.push_back(std::move(e));
+  }
+  c.kind = "count";
+  c.rule = {{"groups", std::move(rules)}, {"count", count}};
   l.add(std::move(c));
 }
 

@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/studies/long_time.hpp"
 #include "reports/document/findings.hpp"
 
 namespace steplab {
@@ -28,7 +29,7 @@ struct Evidence {
 };
 
 struct Claim {
-  std::string id, section, sentence, kind;  // kind: membership, trend, statistic, threshold, comparison (docs/json.md)
+  std::string id, section, sentence, kind;  // kind: membership, trend, statistic, threshold, comparison, equality, count (docs/json.md)
   Json rule;
   std::vector<Evidence> evidence;
 };
@@ -44,7 +45,9 @@ class Ledger {
   // A method's declared order, as evidence from the ledger's methods table.
   Evidence order_of(std::size_t method) const;
   void add(Claim c);  // std::logic_error for an id used twice
-  Json json() const;  // schema, methods, claims
+  // A sentence the report states as theory (a textbook result, a definition), not as a finding.
+  void theory(std::string section, std::string sentence);
+  Json json() const;  // schema, methods, theory, claims
   const std::map<std::string, Json>& documents() const { return documents_; }
   std::size_t size() const { return claims_.size(); }
 
@@ -52,7 +55,41 @@ class Ledger {
   std::vector<std::size_t> methods_;
   std::map<std::string, Json> documents_;
   std::vector<Claim> claims_;
+  std::vector<std::pair<std::string, std::string>> theory_;
 };
+
+// A claim's words, before its kind, rule and evidence.
+inline Claim claim_text(std::string id, std::string section, std::string sentence) {
+  return {std::move(id), std::move(section), std::move(sentence), {}, {}, {}};
+}
+
+// Tests on one row of a table (docs/json.md, "A report's claims"), their pointers relative to the
+// row: `field` op value ("==", "!=", "<", "<=", ">", ">="); |x1 - x2| op value; x1 op times x2.
+Json test_field(std::string pointer, const char* op, Json value);
+Json test_difference(std::string p1, std::string p2, const char* op, double value);
+Json test_scaled(std::string p1, const char* op, double times, std::string p2);
+Json test_all(std::vector<Json> tests);
+Json test_any(std::vector<Json> tests);
+Json test_not(Json test);
+
+// "`set` is exactly the rows of `rows` in the cited document `file` that match `where`, of the
+// numerical methods (`numerical`) or all, and meet `test`": a membership claim, its evidence every
+// value the test reads in those rows. The rows' `key` names them ("method", "solver").
+void claim_members(Ledger& l, Claim c, const std::string& file, const std::string& rows, Json where, const char* key,
+                   bool numerical, Json test, const std::vector<std::string>& set);
+std::vector<std::string> method_names(const std::vector<std::size_t>& methods);
+
+// "Each pair is equal within max(absolute, relative max(|a|, |b|))" (infinity equal to infinity only).
+void claim_equal(Ledger& l, Claim c, const std::vector<std::pair<Evidence, Evidence>>& pairs, double relative, double absolute);
+
+// One group of a count claim: a rule of kind equality, comparison or threshold over its own evidence.
+struct ClaimGroup {
+  std::string kind;
+  Json rule;  // its indices into `evidence`
+  std::vector<Evidence> evidence;
+};
+// "`count` of these hold": the groups' evidence appended, their indices shifted to the claim's.
+void claim_count(Ledger& l, Claim c, std::vector<ClaimGroup> groups, int count);
 
 // Words as part of a claim's id: "explicit Runge-Kutta" -> "explicit_runge-kutta".
 std::string id_word(std::string_view words);
@@ -74,6 +111,14 @@ struct StabilitySource {
 // run is unstable": a membership claim over the source's numerical methods.
 void claim_unstable_at(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence, double dt,
                        double damping, const std::vector<std::size_t>& set);
+// "The measured dt* is within `relative` of the predicted one in `agree` of these cases" (method,
+// damping): a count claim over their thresholds rows (same_within: infinity only as infinity).
+void claim_thresholds_agree(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
+                            const std::vector<std::pair<std::size_t, double>>& cases, double relative, std::size_t agree);
+// "Each of `methods` has its measured dt* at `damping` within `relative` of the predicted one": an
+// equality claim over their thresholds rows.
+void claim_measured_as_predicted(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
+                                 const std::vector<std::size_t>& methods, double damping, double relative);
 // "The methods in `set` are exactly those whose predicted dt* at `damping` is unbounded".
 void claim_unbounded_at(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
                         double damping, const std::vector<std::size_t>& set);
@@ -90,6 +135,11 @@ inline constexpr const char* kWorkDocument = "cost/work_precision.json";
 // reached the level or the winner is undecided.
 void claim_cheapest(Ledger& l, const ReportData& d, std::string id, std::string section, std::string sentence, const SceneWork& w,
                     double level, bool timed, const LevelWinner& win);
+// "From stiffness ratio r on an implicit method is cheaper than every explicit one by more than
+// kTieMargin" (the work-precision study's crossover, timed only): a count claim that every row of
+// the stiffness sweep from r on has its best implicit run that much cheaper, and one that the row
+// before r has not.
+void claim_crossover(Ledger& l, const ReportData& d, std::string id, std::string section, std::string sentence);
 // How the measured dt* at `damping` moves along a family's orders (a trend claim); none where a
 // member has no threshold row.
 void claim_family_trend(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
@@ -105,5 +155,33 @@ void claim_spearman(Ledger& l, const std::vector<StabilityPoint>& points, double
                     std::string sentence, int decimals);
 // The numerical methods of findings `f` as Spearman's points of source `s`.
 std::vector<StabilityPoint> spearman_points(StabilitySource s, const Findings& f);
+
+// The undamped spring's long run as the claims cite it: data/energy/energy.json, a row per
+// numerical method with energy_behaviour's values (findings.hpp) and its class.
+inline constexpr const char* kEnergyDocument = "energy/energy.json";
+inline constexpr const char* kCollisionDocument = "collision/collision.json";  // the collision study's
+Json energy_document(const ReportData& d);
+// "`set` is the methods whose run is of kind `k`" (and symplectic, where `symplectic`).
+void claim_energy(Ledger& l, const ReportData& d, std::string id, std::string section, std::string sentence, EnergyKind k,
+                  const std::vector<std::size_t>& set, bool symplectic = false);
+// The long-time study's document of `r`'s scene in a section's folder, data/<folder>/long_time_<scene>.json.
+std::string long_time_document(const LongTimeResult& r, const std::string& folder);
+// "`set` is the methods whose energy error over the long run is `v`" (energy_verdict, Bounded,
+// Drifting or Lost at kLostAt); "`set` is the symplectic ones".
+void claim_long_time(Ledger& l, const LongTimeResult& r, const std::string& folder, std::string id, std::string section,
+                     std::string sentence, EnergyVerdict v, const std::vector<std::size_t>& set);
+void claim_long_time_symplectic(Ledger& l, const LongTimeResult& r, const std::string& folder, std::string id, std::string section,
+                                std::string sentence, const std::vector<std::size_t>& set);
+// The stiff-order verdicts (stiff_claims): which methods keep their order in both limits, fall,
+// rise or have no stiff limit, over the study's methods table, and for each that keeps it in both
+// limits, whether a fit between them strays.
+void claim_stiff(Ledger& l, const ReportData& d, const std::string& id, const std::string& section, const std::string& sentence,
+                 const std::vector<StiffClaim>& claims);
+
+// The crossover map's tally at target `target` (map_tally, timed only): how many cells are ties,
+// clear wins, clear wins of an implicit fixed-step method, and at rest, each a count claim over the
+// cells' runs in data/scaling/scaling_map.json.
+void claim_map(Ledger& l, const ScalingResult& r, std::size_t target, const std::string& id, const std::string& section,
+               const std::string& sentence, const MapTally& tally);
 
 }  // namespace steplab

@@ -7,6 +7,7 @@
 
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/peers/peers.hpp"
+#include "analysis/studies/long_time.hpp"
 #include "reports/document/figure_styles.hpp"
 #include "reports/document/report_text.hpp"
 
@@ -102,11 +103,12 @@ std::vector<EnergyBehaviour> energy_behaviour(const ReportData& d) {
       half = std::max(half, std::abs(r - 1));
     }
     e.final_ratio = run.samples.back().energy / e0;
+    e.round_off = kRoundOff * 0x1p-53 * std::sqrt(t_end / d.config.large_dt);
     if (run.status != RunStatus::Ok) e.ended = run.failed_t;
-    e.kind = run.status != RunStatus::Ok || e.hi > kBlownRatio ? EnergyKind::Blows
-             : e.lo < 1 / kBlownRatio                           ? EnergyKind::Damped
-             : e.second_half <= kBoundedGrowth * e.first_half   ? EnergyKind::Bounded
-                                                                : EnergyKind::Drifts;
+    e.kind = run.status != RunStatus::Ok || e.hi > kBlownRatio                                   ? EnergyKind::Blows
+             : e.lo < 1 / kBlownRatio                                                             ? EnergyKind::Damped
+             : e.second_half <= kBoundedGrowth * e.first_half || e.second_half <= e.round_off ? EnergyKind::Bounded
+                                                                                                  : EnergyKind::Drifts;
     out.push_back(e);
   }
   return out;

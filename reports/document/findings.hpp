@@ -78,7 +78,8 @@ std::vector<std::size_t> strongly(const std::vector<MethodRate>& runs);  // the 
 // The undamped spring over the long run (the energy figure): E/E0's range, the largest
 // |E/E0 - 1| over the run's first and second halves, and what that says.
 enum class EnergyKind {
-  Bounded,  // its second half strays no further than its first (within kBoundedGrowth): oscillates
+  Bounded,  // its second half strays no further than its first (within kBoundedGrowth), or no further
+            // than round-off alone reaches (kRoundOff u sqrt(steps): analysis/studies/long_time.hpp)
   Drifts,   // strays further and further: grows or decays steadily
   Damped,   // E/E0 below 1 / kBlownRatio: the method's own damping has taken the motion out
   Blows     // diverged, or E/E0 beyond kBlownRatio
@@ -89,6 +90,7 @@ struct EnergyBehaviour {
   double lo = 1, hi = 1;                    // min and max of E/E0 over the run
   double first_half = 0, second_half = 0;   // max |E/E0 - 1| over each half
   double final_ratio = 1;
+  double round_off = 0;                     // round-off's level over the run: kRoundOff u sqrt(steps)
   EnergyKind kind = EnergyKind::Bounded;
   double ended = -1;                        // t where a diverged run ended; -1: it did not
 };

@@ -175,9 +175,9 @@ std::string report_markdown(const Report& r, const std::string& ext, const std::
                        : "# steplab report: how time integrators behave, family by family, on the course's scenes\n\n";
   const ReportScene& spring = r.data.config.oscillator;
   if (r.data.config.covers(spring.scene)) md += fmt::format("The hanging spring: {}. ", params_text(spring.scene, spring.params));
-  md += "Every number below was measured by the commands at the end of this report; every sentence that states a measured "
-        "finding was generated from those numbers, and data/claims.json lists the sheet's answers and the "
-        "cheapest runs with the values they rest on.\n\n";
+  md += "Every number below was measured by the commands at the end of this report. data/claims.json lists the findings the "
+        "text states with their rules and the values they rest on (tools/verify_claims.py re-checks them), and marks the "
+        "sentences of theory.\n\n";
   Page page(r.data, r.findings, ext, figure_order(r));
   page.ledger = ledger;
   if (r.springs) page.springs = &*r.springs, page.springs_findings = &*r.springs_findings;

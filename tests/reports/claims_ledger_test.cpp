@@ -79,5 +79,44 @@ TEST(ClaimsLedger, APlantedValueFailsTheClaimsThatRestOnIt) {
   EXPECT_EQ(v.out.find("families.trend.bdf.damping_0.1:"), std::string::npos) << v.out;
 }
 
+// The sections' findings beyond the sheet's question: the energy classes, the stiff orders, the
+// long run's classes, the collision orders and the output between steps are claims that hold;
+// a value planted in a document fails the claims that read it (its recorded value no longer the
+// file's), and only those.
+TEST(ClaimsLedger, TheSectionsFindingsAreClaimedAndAPlantedValueFailsThem) {
+  TempDir dir;
+  const std::string out = dir.path("report");
+  ReportConfig c = small_config();
+  c.sections = {"energy", "stiff_order", "long_time", "collision", "dense_output", "stability"};
+  ASSERT_EQ(write_report(c, out, true), 0);
+  const Result before = verify_claims(out);
+  ASSERT_EQ(before.status, 0) << before.out << before.err;
+  const Json claims = read_doc(out + "/data/claims.json");
+  std::set<std::string> ids;
+  for (const Json& cl : claims["claims"]) ids.insert(cl["id"].get<std::string>());
+  for (const char* id : {"energy.bounded", "stiff_order.falls", "long_time.orbit.bounded", "long_time.orbit.lost",
+                         "collision.bounce_order.kept", "dense_output.kept", "stability.thresholds_agree"})
+    EXPECT_TRUE(ids.count(id)) << id;
+  EXPECT_GE(claims["theory"].size(), 3u);
+
+  // velocity Verlet's energy made to grow in its second half: no longer bounded, now drifting
+  Json energy = read_doc(out + "/data/energy/energy.json");
+  for (Json& row : energy["rows"])
+    if (row["method"] == "velocity_verlet") row["second_half"] = 10 * row["first_half"].get<double>() + 1e-3;
+  write_doc(out + "/data/energy/energy.json", energy);
+  // Radau IIA's stiff limit made order 5: it no longer falls
+  Json stiff = read_doc(out + "/data/stiff_order/stiff_order.json");
+  for (Json& row : stiff["methods"])
+    if (row["method"] == "radau_iia5") row["stiff"]["order"] = 5.0, row["stiff"]["order_bound"] = {4.99, 5.01};
+  write_doc(out + "/data/stiff_order/stiff_order.json", stiff);
+  const Result v = verify_claims(out);
+  EXPECT_EQ(v.status, 1);
+  for (const char* id : {"energy.bounded:", "energy.drifts:", "stiff_order.falls:"})
+    EXPECT_NE(v.out.find(id), std::string::npos) << id << " not named:\n" << v.out;
+  // the claims that read no planted value: blowing up reads no half, the others other documents
+  for (const char* id : {"energy.blows_up:", "long_time.orbit.bounded:", "dense_output.kept:", "collision.bounce_order.kept:"})
+    EXPECT_EQ(v.out.find(id), std::string::npos) << id << " named:\n" << v.out;
+}
+
 }  // namespace
 }  // namespace steplab

@@ -12,6 +12,7 @@
 #include "reports/data/inputs.hpp"
 #include "reports/document/report.hpp"
 #include "reports/document/section.hpp"
+#include "cli_helpers.hpp"
 #include "small_report.hpp"
 
 namespace steplab {
@@ -87,8 +88,30 @@ TEST(ReportChoice, OnlyTheChosenSectionsAndMethodsAreWritten) {
     EXPECT_EQ(md.find(quoted) != std::string::npos, in) << quoted;
   }
   EXPECT_NE(md.find("study convergence --scene spring"), std::string::npos);
-  EXPECT_NE(md.find("--methods explicit_euler,rk4"), std::string::npos);  // the commands reproduce this report's methods
+  EXPECT_NE(md.find("M=explicit_euler,rk4\n"), std::string::npos);  // the commands reproduce this report's methods
+  EXPECT_NE(md.find("--methods $M"), std::string::npos);
   EXPECT_EQ(md.find("study collision"), std::string::npos);
+}
+
+// The Reproduce section names a long method list once, as M=... broken over lines with a
+// backslash: the shell reads back the list whole, as printed.
+TEST(ReportChoice, ReproducesItsMethodListThroughTheShell) {
+  std::vector<std::string> names;
+  for (std::size_t m = 0; m < method_count(); ++m)
+    if (!method_info(m).on_springs) names.emplace_back(method_info(m).name);
+  ReportConfig c = small_config();
+  choose_methods(c, names, "methods");
+  c.sections = {"reproduce"};
+  const std::string md = markdown(c);
+  const std::size_t from = md.find("\nM=") + 1, to = md.find("\nN=", from) + 1;
+  ASSERT_GT(to, from) << md;
+  const std::string assignment = md.substr(from, to - from);
+  EXPECT_NE(assignment.find("\\\n"), std::string::npos) << assignment;  // broken for the page
+  for (std::size_t at = 0, nl; (nl = assignment.find('\n', at)) != std::string::npos; at = nl + 1)
+    EXPECT_LE(nl - at, 80u) << assignment;
+  const Result r = run_shell("bash -c '" + assignment + "printf %s \"$M\"'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, fmt::format("{}", fmt::join(names, ","))) << assignment;
 }
 
 TEST(ReportChoice, AFamilyWithOneChosenMethodClaimsNoTrend) {

@@ -8,10 +8,11 @@
 
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/peers/peers.hpp"
+#include "reports/data/studies.hpp"
+#include "reports/document/claims.hpp"
 #include "reports/document/figure_styles.hpp"
 #include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"
-#include "reports/data/studies.hpp"
 #include "reports/document/section.hpp"
 #include "reports/document/sections/long_time.hpp"
 
@@ -19,7 +20,7 @@ namespace steplab {
 namespace {
 
 // A long run of a conservative system: the methods whose energy stayed bounded, by order.
-std::string long_runs(const ReportData& d) {
+std::string long_runs(const ReportData& d, Ledger* l) {
   std::vector<EnergyBehaviour> bounded;
   for (const EnergyBehaviour& e : energy_behaviour(d))
     if (e.kind == EnergyKind::Bounded) bounded.push_back(e);
@@ -33,6 +34,9 @@ std::string long_runs(const ReportData& d) {
                                 method_info(e.method).symplectic ? ", symplectic" : "", e.lo, e.hi));
   std::string md = fmt::format("- **A long run of an undamped system** (energy must not drift): {}, measured over t = {:g} at dt = {}.",
                                and_list(items), d.config.energy_t_end, d.config.large_dt);
+  std::vector<std::size_t> bounded_methods;
+  for (const EnergyBehaviour& e : bounded) bounded_methods.push_back(e.method);
+  if (l) claim_energy(*l, d, "advice.long_run.energy", "advice", md, EnergyKind::Bounded, bounded_methods);
   // Over many periods of a nonlinear orbit, where the report ran it: bounded by structure.
   const LongTimeResult& orbit = d.long_time_orbit;
   if ((d.studies & kLongTimeStudy) && !orbit.rows.empty()) {
@@ -44,6 +48,7 @@ std::string long_runs(const ReportData& d) {
                                            growth_text(row.growth[0])));
     md += fmt::format(" Over {:g} periods of {} at {} steps a period: {}.", orbit.config.periods,
                       scene_kernel(orbit.config.scene).title, orbit.config.steps_per_period.front(), kept_bounded.empty() ? "none stays bounded" : and_list(kept_bounded));
+    if (l) claim_long_time(*l, orbit, "long_time", "advice.long_run.orbit", "advice", md, EnergyVerdict::Bounded, s.bounded);
   } else {
     md += " A method whose energy drifts here will drift further over a longer run.";
   }
@@ -51,28 +56,37 @@ std::string long_runs(const ReportData& d) {
 }
 
 // Accuracy at a price: the cheapest solver at the loosest and the tightest error level on a scene.
-std::string cheapest_at(const ReportData& d, const SceneWork& w, std::string_view what) {
+std::string cheapest_at(const ReportData& d, const SceneWork& w, std::string_view what, Ledger* l) {
   const bool timed = d.config.timing;
   const std::vector<double>& levels = d.work.config.error_levels;
   std::vector<std::string> parts;
+  std::vector<std::pair<double, LevelWinner>> wins;
   for (double level : {levels.front(), d.work.config.crossover_error, levels.back()}) {
     const LevelWinner win = level_winner(w, level, timed);
     if (!win.point) continue;
     parts.push_back(fmt::format("to error {:.0e} {}", level, winner_words(win)));
+    wins.emplace_back(level, win);
   }
   if (parts.empty()) return {};
-  return fmt::format("- **{}** ({}): {}, the cheapest by {} of every fixed-step method and adaptive solver tried.\n", what,
-                     scene_name(w.scene), and_list(parts), timed ? "run time" : "force evaluations");
+  const std::string md = fmt::format("- **{}** ({}): {}, the cheapest by {} of every fixed-step method and adaptive solver tried.\n",
+                                     what, scene_name(w.scene), and_list(parts), timed ? "run time" : "force evaluations");
+  if (l)
+    for (const auto& [level, win] : wins)
+      claim_cheapest(*l, d, fmt::format("advice.cheapest.{}.{:.0e}", scene_name(w.scene), level), "advice", md, w, level, timed, win);
+  return md;
 }
 
-std::string accuracy(const ReportData& d) {
+std::string accuracy(const ReportData& d, Ledger* l) {
   const WorkPrecisionResult& r = d.work;
   std::string md;
   for (std::size_t i = 0; i < r.scenes.size(); ++i)
-    md += cheapest_at(d, r.scenes[i], static_cast<int>(i) == r.stiff ? "A stiff system" : "A smooth, non-stiff system");
-  if (r.crossover_ratio > 0 && d.config.timing)  // untimed, force evaluations cannot weigh an implicit method's solves
-    md += fmt::format("- **How stiff before implicit pays**: on the chain, from stiffness ratio {:g} on an implicit method is "
-                      "the cheaper at error {:.0e}.\n", r.crossover_ratio, r.config.crossover_error);
+    md += cheapest_at(d, r.scenes[i], static_cast<int>(i) == r.stiff ? "A stiff system" : "A smooth, non-stiff system", l);
+  if (r.crossover_ratio > 0 && d.config.timing) {  // untimed, force evaluations cannot weigh an implicit method's solves
+    const std::string line = fmt::format("- **How stiff before implicit pays**: on the chain, from stiffness ratio {:g} on an "
+                                         "implicit method is the cheaper at error {:.0e}.\n", r.crossover_ratio, r.config.crossover_error);
+    md += line;
+    if (l) claim_crossover(*l, d, "advice.crossover", "advice", line);
+  }
   return md;
 }
 
@@ -99,17 +113,25 @@ std::string large_systems(const ReportData& d) {
 }
 
 // Contact: the methods that keep the undamped bounce's energy within 1 % at the largest step.
-std::string contact(const ReportData& d) {
+std::string contact(const ReportData& d, Ledger* l) {
   const CollisionResult& r = d.collision;
   if (r.bounce.empty()) return {};
   const double dt = *std::max_element(r.config.dts.begin(), r.config.dts.end());
   std::vector<std::size_t> kept, lost;
   for (const CollisionRun& run : r.bounce)
     if (run.dt == dt && run.status == RunStatus::Ok && !run.bounces.empty())
-      (std::abs(run.bounces.back().energy_ratio - 1) <= 0.01 ? kept : lost).push_back(run.method);
+      (run.bounces.back().energy_ratio >= 0.99 && run.bounces.back().energy_ratio <= 1.01 ? kept : lost).push_back(run.method);
   if (kept.empty()) return {};
-  return fmt::format("- **Contact with a penalty ground**: at dt = {} the undamped bounce keeps its energy within 1 % with {}; "
-                     "{} gain or lose more.\n", dt, method_list(kept), method_list(lost));
+  const std::string md = fmt::format("- **Contact with a penalty ground**: at dt = {} the undamped bounce keeps its energy within 1 % "
+                                     "with {}; {} gain or lose more.\n", dt, method_list(kept), method_list(lost));
+  if (l) {
+    l->document(kCollisionDocument, [&] { return collision_json(r); });
+    claim_members(*l, claim_text("advice.contact", "advice", md), kCollisionDocument, "/bounce", {{"dt", dt}}, "method", true,
+                  test_all({test_field("/status", "==", "ok"), test_field("/energy_ratio_last_bounce", ">=", 0.99),
+                            test_field("/energy_ratio_last_bounce", "<=", 1.01)}),
+                  method_names(kept));
+  }
+  return md;
 }
 
 // The sheet's spring at its large step: stable damped and undamped, its energy bounded.
@@ -132,10 +154,10 @@ class Advice : public Section {
   std::string markdown(Page& page) const override {
     const ReportData& d = page.data;
     std::string md;
-    if ((d.studies & kFindings) == kFindings) md += sheet_step(d, page.findings) + long_runs(d);
-    if (d.studies & kWorkPrecisionStudy) md += accuracy(d);
+    if ((d.studies & kFindings) == kFindings) md += sheet_step(d, page.findings) + long_runs(d, page.ledger);
+    if (d.studies & kWorkPrecisionStudy) md += accuracy(d, page.ledger);
     if (d.studies & kScalingStudy) md += large_systems(d);
-    if (d.studies & kCollisionStudy) md += contact(d);
+    if (d.studies & kCollisionStudy) md += contact(d, page.ledger);
     if (md.empty()) return "## " + title() + "\n\nThis report ran none of the studies the advice rests on.\n\n";
     return "## " + title() + "\n\nDrawn from the measurements above, each with the data it rests on:\n\n" + md + "\n";
   }

@@ -97,7 +97,14 @@ std::string long_time_answer(const Page& page) {
   if (s.not_by_order)
     md += fmt::format(" Bounded are the symplectic ones, whatever their order: `{}` (order {}) drifts, `{}` (order {}) does not.",
                       name(*s.high_drift), method_info(*s.high_drift).order, name(*s.low_bounded), method_info(*s.low_bounded).order);
-  return md + fmt::format(" The growth exponents, the angular momentum and the phase are in \"Stable for how long?\"{}.\n", see(page, "long_time"));
+  md += fmt::format(" The growth exponents, the angular momentum and the phase are in \"Stable for how long?\"{}.\n", see(page, "long_time"));
+  if (Ledger* l = page.ledger) {
+    claim_long_time(*l, r, "long_time", "answers.long_time.bounded", "answers", md, EnergyVerdict::Bounded, s.bounded);
+    claim_long_time(*l, r, "long_time", "answers.long_time.drifting", "answers", md, EnergyVerdict::Drifting, s.drifting);
+    claim_long_time(*l, r, "long_time", "answers.long_time.lost", "answers", md, EnergyVerdict::Lost, s.lost);
+    if (s.not_by_order) claim_long_time_symplectic(*l, r, "long_time", "answers.long_time.symplectic", "answers", md, s.bounded);
+  }
+  return md;
 }
 
 std::string order_answer(const Page& page) {
@@ -167,7 +174,15 @@ std::string energy_answer(const Page& page) {
     if (method_info(m).symplectic) symplectic.push_back(m);
   if (!symplectic.empty())
     md += fmt::format("; of the bounded ones {} {} symplectic", method_list(symplectic), symplectic.size() == 1 ? "is" : "are");
-  return md + fmt::format("{}.\n", see(page, "energy"));
+  md += fmt::format("{}.\n", see(page, "energy"));
+  if (Ledger* l = page.ledger) {
+    const std::pair<EnergyKind, const std::vector<std::size_t>*> kinds[] = {
+        {EnergyKind::Bounded, &bounded}, {EnergyKind::Drifts, &drifting}, {EnergyKind::Damped, &damped}, {EnergyKind::Blows, &blown}};
+    for (const auto& [kind, set] : kinds)
+      claim_energy(*l, page.data, fmt::format("answers.energy.{}", id_word(to_text(kind))), "answers", md, kind, *set);
+    if (!symplectic.empty()) claim_energy(*l, page.data, "answers.energy.bounded_symplectic", "answers", md, EnergyKind::Bounded, symplectic, true);
+  }
+  return md;
 }
 
 std::string stiff_answer(const Page& page) {
@@ -190,7 +205,9 @@ std::string stiff_answer(const Page& page) {
   if (parts.empty()) return {};
   std::string md = "- **Does the order hold when stiff?** ";
   for (std::size_t i = 0; i < parts.size(); ++i) md += (i ? "; " : "") + parts[i];
-  return md + fmt::format("{}.\n", see(page, "stiff_order"));
+  md += fmt::format("{}.\n", see(page, "stiff_order"));
+  if (page.ledger) claim_stiff(*page.ledger, page.data, "answers.stiff", "answers", md, stiff_claims(page.data.stiff_order));
+  return md;
 }
 
 // At the report's crossover error: the cheapest run on each scene (a tie named as one), and on
@@ -237,20 +254,26 @@ std::string implicit_answer(const Page& page) {
   const ScalingConfig& c = r.config;
   const std::size_t nk = r.blocks.size() / c.targets.size();
   std::vector<std::string> parts;
+  std::vector<MapTally> tallies;
   for (std::size_t t = 0; t < c.targets.size(); ++t) {
-    const MapTally m = map_tally(r, t);
+    const MapTally& m = tallies.emplace_back(map_tally(r, t));
     std::vector<std::string> aside;
     if (m.ties) aside.push_back(fmt::format("{} more are ties{}", m.ties, c.timing ? "" : " or undecided"));
     if (m.still) aside.push_back(fmt::format("in {} the body moves less than the target, a win for no one", m.still));
     parts.push_back(fmt::format("at error {}, in {} of {} cells{}", target_text(c, r.blocks[t * nk]), m.implicit.size(), m.cells,
                                 aside.empty() ? "" : fmt::format(" ({})", fmt::join(aside, "; "))));
   }
+
   std::string title(scene_kernel(scene_index(c.scene)).title);
   title[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(title[0])));
-  return fmt::format("- **When does implicit pay?** On the {} grown from N = {} to {} and stiffened {:g} times over, an implicit "
-                     "fixed-step method is clearly the cheapest solver {}{}.\n",
-                     title, scaling_masses(c, c.sizes.front()), scaling_masses(c, c.sizes.back()),
-                     c.stiffnesses.back() / c.stiffnesses.front(), fmt::join(parts, "; "), see(page, "map"));
+  const std::string md =
+      fmt::format("- **When does implicit pay?** On the {} grown from N = {} to {} and stiffened {:g} times over, an implicit "
+                  "fixed-step method is clearly the cheapest solver {}{}.\n",
+                  title, scaling_masses(c, c.sizes.front()), scaling_masses(c, c.sizes.back()),
+                  c.stiffnesses.back() / c.stiffnesses.front(), fmt::join(parts, "; "), see(page, "map"));
+  if (page.ledger)
+    for (std::size_t t = 0; t < c.targets.size(); ++t) claim_map(*page.ledger, r, t, fmt::format("answers.map.target_{}", t), "answers", md, tallies[t]);
+  return md;
 }
 
 class Answers : public Section {

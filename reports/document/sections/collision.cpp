@@ -6,9 +6,10 @@
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
+#include "reports/data/studies.hpp"
+#include "reports/document/claims.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
-#include "reports/data/studies.hpp"
 
 namespace steplab {
 namespace {
@@ -62,8 +63,8 @@ class Collision : public Section {
         }
       md += fmt::format("| `{}` | {} |{} {:.4f} |\n", name(m), bounces, cells, deepest);
     }
-    md += fmt::format("\nBounces and penetration at dt {}. {}\n\n", r.config.dts.front(), bounce_orders(d));
-    md += triangle_sentence(d);
+    md += fmt::format("\nBounces and penetration at dt {}. {}\n\n", r.config.dts.front(), bounce_orders(d, page.ledger));
+    md += triangle_sentence(d, page.ledger);
     if (page.has("bounce_energy"))
       md += page.figure("bounce_energy", "The bounce: E/E0 after the last bounce against dt, a panel per family");
     return md;
@@ -74,18 +75,23 @@ class Collision : public Section {
   // holds it or the fit is within kKeptOrder of it, lost where the bound lies below it. An order
   // whose bound is wider than +-0.5 is not a finding.
   static constexpr double kKeptOrder = 0.15;
-  static std::string bounce_orders(const ReportData& d) {
+  static std::string bounce_orders(const ReportData& d, Ledger* l) {
     const ConvergenceResult& conv = d.convergence_on(d.config.rebound.scene);
-    std::vector<std::string> kept, lost, loose;
+    std::vector<std::string> kept, lost, loose, kept_names, lost_names, loose_names;
     for (const ConvergenceFit& f : conv.fits) {
       if (method_info(f.method).exact_flow || !f.fit.fitted) continue;
       const int p = method_info(f.method).order;
-      if (f.fit.bound_hi - f.fit.bound_lo > 1) loose.push_back(fmt::format("`{}` {:.2f} (order {})", name(f.method), f.fit.order, p));
-      else if (std::abs(f.fit.order - p) <= kKeptOrder || (f.fit.bound_lo <= p && p <= f.fit.bound_hi))
+      if (f.fit.bound_hi - f.fit.bound_lo > 1) {
+        loose.push_back(fmt::format("`{}` {:.2f} (order {})", name(f.method), f.fit.order, p));
+        loose_names.push_back(name(f.method));
+      } else if (std::abs(f.fit.order - p) <= kKeptOrder || (f.fit.bound_lo <= p && p <= f.fit.bound_hi)) {
         kept.push_back(fmt::format("`{}` {:.2f} (order {})", name(f.method), f.fit.order, p));
-      else
+        kept_names.push_back(name(f.method));
+      } else {
         lost.push_back(fmt::format("`{}` {:.2f} [{:.2f}, {:.2f}] (order {})", name(f.method), f.fit.order, f.fit.bound_lo,
                                    f.fit.bound_hi, p));
+        lost_names.push_back(name(f.method));
+      }
     }
     std::string md = "Against the exact bounce, fitted over the dt sweep: ";
     if (kept.empty() && lost.empty()) md += "no method's order is pinned down";
@@ -93,12 +99,29 @@ class Collision : public Section {
     if (!kept.empty()) md += fmt::format("{}{} keep their order", lost.empty() ? "" : "; ", and_list(kept));
     if (!loose.empty())
       md += fmt::format("; the fits of {} have bounds wider than +-0.5: not findings either way", and_list(loose));
-    return md + ".";
+    md += ".";
+    if (l) {  // the same three classes over the bounce's convergence document
+      const std::string file = fmt::format("convergence/convergence_{}.json", scene_name(conv.config.scene));
+      l->document(file, [&] { return convergence_json(conv); });
+      const Json fitted = test_field("/order", "!=", nullptr);
+      const Json wide = test_difference("/order_bound/1", "/order_bound/0", ">", 1);
+      const Json holds = test_any({test_difference("/order", "/declared_order", "<=", kKeptOrder),
+                                   test_all({test_scaled("/order_bound/0", "<=", 1, "/declared_order"),
+                                             test_scaled("/declared_order", "<=", 1, "/order_bound/1")})});
+      const auto members = [&](const char* what, Json test, const std::vector<std::string>& set) {
+        claim_members(*l, claim_text(fmt::format("collision.bounce_order.{}", what), "collision", md), file, "/fits", Json::object(),
+                      "method", true, test_all({fitted, std::move(test)}), set);
+      };
+      members("kept", test_all({test_not(wide), holds}), kept_names);
+      members("lost", test_all({test_not(wide), test_not(holds)}), lost_names);
+      members("not_a_finding", wide, loose_names);
+    }
+    return md;
   }
 
   // The falling triangle (the slides' problem 3): how deep it sinks into the ground and what
   // becomes of its energy, over the methods.
-  static std::string triangle_sentence(const ReportData& d) {
+  static std::string triangle_sentence(const ReportData& d, Ledger* l) {
     const CollisionResult& r = d.collision;
     const CollisionRun *shallow = nullptr, *deep = nullptr;
     std::vector<std::size_t> diverged;
@@ -116,7 +139,20 @@ class Collision : public Section {
         "with `{}` and {:.3g} m with `{}`", params_text(d.config.body.scene, d.config.body.params), r.config.triangle_dt,
         d.config.collision.t_end, shallow->max_penetration, name(shallow->method), deep->max_penetration, name(deep->method));
     if (!diverged.empty()) md += fmt::format("; {} diverge", method_list(diverged));
-    return md + ".\n\n";
+    md += ".\n\n";
+    if (l) {  // the shallowest and the deepest of the runs that ended well
+      l->document(kCollisionDocument, [&] { return collision_json(r); });
+      const auto extreme = [&](const char* what, const char* op, double limit) {
+        Claim c = claim_text(fmt::format("collision.triangle.{}", what), "collision", md);
+        c.kind = "threshold", c.rule = {{"op", op}, {"limit", limit}};
+        for (std::size_t i = 0; i < r.triangle.size(); ++i)
+          if (r.triangle[i].status == RunStatus::Ok) c.evidence.push_back(l->at(kCollisionDocument, fmt::format("/triangle/{}/max_penetration", i)));
+        l->add(std::move(c));
+      };
+      extreme("shallowest", ">=", shallow->max_penetration);
+      extreme("deepest", "<=", deep->max_penetration);
+    }
+    return md;
   }
 };
 

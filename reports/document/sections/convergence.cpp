@@ -6,9 +6,10 @@
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
+#include "reports/data/studies.hpp"
+#include "reports/document/claims.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
-#include "reports/data/studies.hpp"
 
 namespace steplab {
 namespace {
@@ -103,7 +104,7 @@ class Convergence : public Section {
               "`data/convergence/convergence_spring.json`.\n\n";
         continue;
       }
-      md += scene_fits(r);
+      md += scene_fits(r, page.ledger);
     }
     const std::string on = shown.config.scene == c.oscillator.scene ? "the spring" : std::string(scene_kernel(shown.config.scene).title);
     if (page.has("convergence"))
@@ -115,7 +116,7 @@ class Convergence : public Section {
  private:
   // A scene's fits: the methods exact on it (to round-off) in a sentence, the others in a table,
   // or in the sentence too where they are few.
-  static std::string scene_fits(const ConvergenceResult& r) {
+  static std::string scene_fits(const ConvergenceResult& r, Ledger* l) {
     std::vector<std::size_t> exact;
     std::vector<const ConvergenceFit*> fitted;
     for (const ConvergenceFit& f : r.fits)
@@ -123,6 +124,12 @@ class Convergence : public Section {
     const std::string scene(scene_kernel(r.config.scene).title);
     if (exact.empty()) return scene + ":\n\n" + fits_table(r) + "\n";
     std::string md = fmt::format("{}: exact to round-off for {}", scene, method_list(exact));
+    if (l) {
+      const std::string file = fmt::format("convergence/convergence_{}.json", scene_name(r.config.scene));
+      l->document(file, [&] { return convergence_json(r); });
+      claim_members(*l, claim_text(fmt::format("convergence.exact.{}", scene_name(r.config.scene)), "convergence", md), file, "/fits",
+                    Json::object(), "method", true, test_field("/exact", "==", true), method_names(exact));
+    }
     if (fitted.empty()) return md + ".\n\n";
     if (fitted.size() > 3) return md + "; the others:\n\n" + fits_table(r) + "\n";
     std::vector<std::string> others;

@@ -118,7 +118,7 @@ class Cost : public Section {
                                                       "row per scene; the explicit fixed-step methods, the implicit ones and the "
                                                       "adaptive solvers in a panel each", timed ? "run time" : "force evaluations"));
     md += peer_table(r, timed) + dopri5_sentences(r, timed);
-    if (r.stiff >= 0) md += limits_text(r) + stiffness_text(r, timed);
+    if (r.stiff >= 0) md += limits_text(r) + stiffness_text(page, timed);
     return md;
   }
 
@@ -273,7 +273,8 @@ class Cost : public Section {
     return md;
   }
 
-  static std::string stiffness_text(const WorkPrecisionResult& r, bool timed) {
+  static std::string stiffness_text(const Page& page, bool timed) {
+    const WorkPrecisionResult& r = page.data.work;
     std::string md = fmt::format(
         "\nThe stiffness sweep: the chain with k2 from {:g} to {:g}, run to t = {}; for each method the first step of a "
         "falling sweep (or tolerance) reaching error {:.0e}, and the cheapest explicit and implicit of those by {}:\n\n"
@@ -290,10 +291,14 @@ class Cost : public Section {
     if (!timed)
       md += "- The crossover is not read untimed: force evaluations leave out the implicit methods' Jacobians, factorisations "
             "and solves (counted in the work-precision data), so fewer of them is no win over an explicit method.\n\n";
-    else if (r.crossover_ratio > 0)
-      md += fmt::format("- The crossover: from stiffness ratio k2 / k1 = {:g} on, an implicit method is cheaper than every "
-                        "explicit one at error {:.0e}, by more than {:g} times its run time, the timing's noise.\n\n",
-                        r.crossover_ratio, r.config.crossover_error, kTieMargin);
+    else if (r.crossover_ratio > 0) {
+      const std::string line = fmt::format("- The crossover: from stiffness ratio k2 / k1 = {:g} on, an implicit method is cheaper "
+                                           "than every explicit one at error {:.0e}, by more than {:g} times its run time (the tie "
+                                           "margin).\n\n",
+                                           r.crossover_ratio, r.config.crossover_error, kTieMargin);
+      md += line;
+      if (page.ledger) claim_crossover(*page.ledger, page.data, "cost.crossover", "cost", line);
+    }
     else
       md += fmt::format("- No stiffness ratio of the sweep makes an implicit method cheaper than every explicit one at error "
                         "{:.0e} by more than {:g} times its run time.\n\n", r.config.crossover_error, kTieMargin);

@@ -12,6 +12,7 @@
 #include "reports/data/inputs.hpp"
 #include "reports/data/studies.hpp"
 #include "reports/document/report.hpp"
+#include "reports/document/claims.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
 
@@ -43,9 +44,11 @@ class DenseOutputSection : public Section {
   void write_data(const ReportData&, const DataDir& dat) const override {
     dat.write("dense_output.json", dense_output_json(r_).dump(1) + "\n");
   }
-  std::string markdown(Page&) const override {
+  std::string markdown(Page& page) const override {
     const DenseOutputConfig& c = r_.config;
     std::string md = fmt::format("## {}\n\n", title());
+    if (page.ledger)
+      page.ledger->theory("dense_output", "Theory: the output's order is min(p, 4) for the cubic and min(p, 6) for the quintic.");
     md += fmt::format(
         "A frame, a plotted point or a contact between two steps needs the state there. Each fixed-step method gives it from "
         "its step's two ends by Hermite interpolation: from the positions and velocities (a cubic, no force evaluated) below "
@@ -68,11 +71,24 @@ class DenseOutputSection : public Section {
       (keeps ? kept : lost).push_back(fmt::format("`{}` ({})", name(f.method), fitted_text(f.outputs)));
       if (f.outputs.fitted && f.steps.fitted && (!widest || gap(f) > gap(*widest))) widest = &f;
     }
+    std::vector<std::string> kept_names, fitted_names;
+    for (const DenseOutputFit& f : r_.fits) {
+      if (f.outputs.fitted && std::abs(f.outputs.order - f.predicted) <= kKept) kept_names.push_back(name(f.method));
+      if (f.outputs.fitted && f.steps.fitted) fitted_names.push_back(name(f.method));
+    }
+    const std::size_t start = md.size();
+    if (page.ledger) page.ledger->document(kDenseOutputDocument, [&] { return dense_output_json(r_); });
     if (lost.empty()) {
       md += fmt::format("Between steps every one of the {} methods keeps the order of its steps, within {:g} of theory", kept.size(), kKept);
-      if (widest)
+      if (widest) {
         md += fmt::format(" (the largest gap between the two fitted orders: {:.3f}, `{}`, {:.3f} between steps against {:.3f} at them)",
                           gap(*widest), name(widest->method), widest->outputs.order, widest->steps.order);
+        if (page.ledger)  // every gap at most the largest as printed (to 3 decimals)
+          claim_members(*page.ledger, claim_text("dense_output.largest_gap", "dense_output", md.substr(start)), kDenseOutputDocument,
+                        "/fits", Json::object(), "method", true,
+                        test_difference("/outputs/order", "/steps/order", "<=", std::stod(fmt::format("{:.3f}", gap(*widest))) + 5e-4),
+                        fitted_names);
+      }
       md += ": the output costs no order. So the scaling study below lets a fixed step be any size and interpolates its frames, "
             "as the adaptive solvers do, rather than making the step divide the frame interval. Each method's two orders with "
             "their bounds are in `data/dense_output/dense_output.json`.\n\n";
@@ -81,10 +97,16 @@ class DenseOutputSection : public Section {
                         kept.size() == 1 ? "s" : "", kept.size() == 1 ? "it" : "them", kKept, and_list(lost),
                         lost.size() == 1 ? "es" : "");
     }
+    if (page.ledger) {
+      claim_members(*page.ledger, claim_text("dense_output.kept", "dense_output", md.substr(start)), kDenseOutputDocument, "/fits",
+                    Json::object(), "method", true, test_difference("/outputs/order", "/predicted_output_order", "<=", kKept),
+                    kept_names);
+    }
     return md;
   }
 
  private:
+  static constexpr const char* kDenseOutputDocument = "dense_output/dense_output.json";
   DenseOutputResult r_;
 };
 

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
+#include "reports/document/claims.hpp"
 #include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
@@ -55,27 +56,46 @@ class Energy : public Section {
                       "damping), as blown up when it passes {:g} or the state diverges.\n\n",
                       c.large_dt, c.energy_t_end, kBoundedGrowth, kBlownRatio, kBlownRatio);
     std::vector<std::string> bounded, drifting, damped, blown;
+    std::vector<std::size_t> of[4], symplectic, symplectic_unbounded;  // of[kind]: its methods
     for (const EnergyBehaviour& b : e) {
       const std::string n = fmt::format("`{}`{}", name(b.method), method_info(b.method).symplectic ? " (symplectic)" : "");
-      if (b.kind == EnergyKind::Bounded) bounded.push_back(fmt::format("{} within [{:.4g}, {:.4g}]", n, b.lo, b.hi));
+      of[static_cast<int>(b.kind)].push_back(b.method);
+      if (method_info(b.method).symplectic) {
+        symplectic.push_back(b.method);
+        if (b.kind != EnergyKind::Bounded) symplectic_unbounded.push_back(b.method);
+      }
+      if (b.kind == EnergyKind::Bounded)
+        bounded.push_back(b.hi - b.lo <= 2 * b.round_off ? fmt::format("{} within round-off", n)
+                                                         : fmt::format("{} within [{:.4g}, {:.4g}]", n, b.lo, b.hi));
       else if (b.kind == EnergyKind::Drifts) drifting.push_back(fmt::format("{} to {:+.3g} %", n, 100 * (b.final_ratio - 1)));
       else if (b.kind == EnergyKind::Damped) damped.push_back(fmt::format("{} (E/E0 {:.3g} at the end)", n, b.final_ratio));
       else blown.push_back(b.ended >= 0 ? fmt::format("{} (diverged at t = {:g})", n, b.ended) : fmt::format("{} (E/E0 {:.3g} at the end)", n, b.final_ratio));
     }
-    if (!bounded.empty()) md += fmt::format("- **Bounded**: {}.\n", and_list(bounded));
-    if (!drifting.empty()) md += fmt::format("- **Drifts**, E/E0 - 1 at the end: {}.\n", and_list(drifting));
-    if (!damped.empty()) md += fmt::format("- **Damped out** by the method (left out of the figure): {}.\n", and_list(damped));
-    if (!blown.empty()) md += fmt::format("- **Blows up** (left out of the figure): {}.\n", and_list(blown));
-    std::vector<std::size_t> symplectic_drift;
-    for (const EnergyBehaviour& b : e)
-      if (method_info(b.method).symplectic && b.kind != EnergyKind::Bounded) symplectic_drift.push_back(b.method);
-    md += symplectic_drift.empty()
-              ? "\nEvery symplectic method here keeps its energy bounded, whatever its order: on this linear spring a "
-                "symplectic step keeps a modified quadratic energy exactly, which stays within O(dt^p^) of the true one (on a "
-                "nonlinear system only up to terms exponentially small in 1/dt, over exponentially long times: Hairer, Lubich "
-                "and Wanner, *Geometric Numerical Integration*, IX.8).\n\n"
-              : fmt::format("\nA symplectic method that is not bounded here ({}) is past its stability limit at this step.\n\n",
-                            method_list(symplectic_drift));
+    const std::pair<EnergyKind, std::string> lines[] = {
+        {EnergyKind::Bounded, bounded.empty() ? "" : fmt::format("- **Bounded**: {}.\n", and_list(bounded))},
+        {EnergyKind::Drifts, drifting.empty() ? "" : fmt::format("- **Drifts**, E/E0 - 1 at the end: {}.\n", and_list(drifting))},
+        {EnergyKind::Damped, damped.empty() ? "" : fmt::format("- **Damped out** by the method (left out of the figure): {}.\n", and_list(damped))},
+        {EnergyKind::Blows, blown.empty() ? "" : fmt::format("- **Blows up** (left out of the figure): {}.\n", and_list(blown))}};
+    for (const auto& [kind, line] : lines) {
+      md += line;
+      if (page.ledger && !line.empty())
+        claim_energy(*page.ledger, d, fmt::format("energy.{}", id_word(to_text(kind))), "energy", line, kind, of[static_cast<int>(kind)]);
+    }
+    if (symplectic_unbounded.empty() && !symplectic.empty()) {
+      const std::string finding = "Every symplectic method here keeps its energy bounded, whatever its order";
+      const std::string theory =
+          "a symplectic step keeps a modified energy within O(dt^p^) of the true one, exactly on this linear spring, on a nonlinear "
+          "system up to exponentially small terms over exponentially long times (Hairer, Lubich and Wanner, IX.8)";
+      md += fmt::format("\n{}. Theory: {}.\n\n", finding, theory);
+      if (page.ledger) {
+        claim_energy(*page.ledger, d, "energy.symplectic_bounded", "energy", finding, EnergyKind::Bounded, symplectic, true);
+        page.ledger->theory("energy", theory);
+      }
+    } else if (!symplectic_unbounded.empty()) {
+      md += fmt::format("\nSymplectic, but its energy not bounded here: {}.\n\n", method_list(symplectic_unbounded));
+    } else {
+      md += "\n";
+    }
     if (page.has("energy"))
       md += page.figure("energy", fmt::format("E/E0 - 1 of the undamped spring at dt = {} over t = {:g}, a panel per family "
                                               "(linear axis)", c.large_dt, c.energy_t_end));

@@ -5,6 +5,7 @@
 // from the study's runs.
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -12,6 +13,7 @@
 #include "analysis/studies/defaults.hpp"
 #include "analysis/studies/frames.hpp"
 #include "reports/data/studies.hpp"
+#include "reports/document/claims.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
 
@@ -19,6 +21,7 @@ namespace steplab {
 namespace {
 
 std::string g3(double x) { return std::isfinite(x) ? fmt::format("{:.3g}", x) : "-"; }
+constexpr const char* kFramesDocument = "frames/frames.json";
 
 class Frames : public Section {
  public:
@@ -65,9 +68,10 @@ class Frames : public Section {
         "elongation) its springs give than the reference's at the same frame.\n\n",
         scene_name(c.scene), r_.springs, params_text(c.scene, c.params), c.fps, c.t_end, c.budget, c.budget, c.budget,
         scene_kernel(c.scene).exact ? "exact motion" : "reference");
-    md += splits("xpbd") + splits("pbd");
+    if (page.ledger) page.ledger->document(kFramesDocument, [&] { return frames_json(r_); });
+    md += splits("xpbd", page.ledger) + splits("pbd", page.ledger);
     md += large_steps();
-    md += stability();
+    md += stability(page.ledger);
     md += fronts();
     if (!page.data.config.timing) md += "The report is not timed: the cost is the spring visits a frame (a projection visits one spring, a force evaluation or a CG product all of them).\n\n";
     md += page.figure("frames", fmt::format("Error against cost a frame ({}), {} at {} frames a second: each method's splits of "
@@ -107,24 +111,44 @@ class Frames : public Section {
     return m && std::find(r_.config.methods.begin(), r_.config.methods.end(), *m) != r_.config.methods.end() ? runs_of(*m)
                                                                                                           : std::vector<FrameRun>{};
   }
+  // A run's index in the study (frames.json's runs), by its set-up.
+  std::size_t index_of(const FrameRun& x) const {
+    for (std::size_t i = 0; i < r_.runs.size(); ++i)
+      if (r_.runs[i].setup.method == x.setup.method && r_.runs[i].setup.substeps == x.setup.substeps &&
+          setting(r_.runs[i].setup) == setting(x.setup))
+        return i;
+    throw std::logic_error("a frame run not in its study");
+  }
   static int setting(const FrameSetup& s) {
     return takes_sweeps(method_info(s.method)) ? s.settings.sweeps : takes_cg(method_info(s.method)) ? s.settings.cg_iterations : 0;
   }
 
   // Substeps against sweeps for one method: its two ends, and whether the error falls at each split.
-  std::string splits(std::string_view n) const {
+  std::string splits(std::string_view n, Ledger* l) const {
     const std::vector<FrameRun> runs = runs_of(n);  // by substeps, ascending
     if (runs.size() < 2 || !runs.front().stable || !runs.back().stable) return {};
     const FrameRun &one = runs.front(), &many = runs.back();
     bool falls = true;
     for (std::size_t k = 1; k < runs.size(); ++k) falls = falls && runs[k].stable && runs[k].error < runs[k - 1].error;
     const double ratio = one.error / many.error;
-    return fmt::format(
+    const std::string md = fmt::format(
         "- `{}`: {} a frame has error {} and stretch {}; {} has error {} and stretch {}: {} substeps of one sweep are {} "
         "({:.3g}x){}.\n",
         n, frame_setup_text(one.setup), g3(one.error), g3(one.stretch), frame_setup_text(many.setup), g3(many.error),
         g3(many.stretch), many.setup.substeps, ratio > 1 ? "more accurate" : "less accurate", ratio > 1 ? ratio : 1 / ratio,
         falls ? ", and the error falls at every split in between" : "; the error does not fall at every split");
+    if (l && falls) {  // the error along the splits, by substeps: each one below the last (no two the same)
+      Claim c = claim_text(fmt::format("frames.splits.{}", n), "frames", md);
+      c.kind = "trend";
+      Json along = Json::array();
+      for (const FrameRun& x : runs) {
+        along.push_back(frame_setup_text(x.setup));
+        c.evidence.push_back(l->at(kFramesDocument, fmt::format("/runs/{}/error_max", index_of(x))));
+      }
+      c.rule = {{"along", std::move(along)}, {"relative", 0}, {"trend", "falls"}};
+      l->add(std::move(c));
+    }
+    return md;
   }
 
   std::string large_steps() const {
@@ -136,7 +160,7 @@ class Frames : public Section {
                        frame_setup_text(bw.back().setup), g3(bw.back().error));
   }
 
-  std::string stability() const {
+  std::string stability(Ledger* l) const {
     std::vector<std::size_t> every, some, none;
     for (std::size_t m : r_.config.methods) {
       const std::vector<FrameRun> runs = runs_of(m);
@@ -155,6 +179,14 @@ class Frames : public Section {
       md += fmt::format(" Stable only with enough substeps: {}.", and_list(from));
     }
     if (!none.empty()) md += fmt::format(" Unstable at every split: {}.", method_list(none));
+    if (l) {  // which methods have a stable run and which an unstable one: every, some and none between them
+      std::vector<std::string> with_stable = method_names(every), with_unstable = method_names(none);
+      for (std::size_t m : some) with_stable.push_back(name(m)), with_unstable.push_back(name(m));
+      claim_members(*l, claim_text("frames.stable_runs", "frames", md), kFramesDocument, "/runs", Json::object(), "method", true,
+                    test_field("/stable", "==", true), with_stable);
+      claim_members(*l, claim_text("frames.unstable_runs", "frames", md), kFramesDocument, "/runs", Json::object(), "method", true,
+                    test_field("/stable", "==", false), with_unstable);
+    }
     return md + "\n\n";
   }
 

@@ -9,6 +9,7 @@
 #include "analysis/kernel/kernel.hpp"
 #include "reports/data/studies.hpp"
 #include "reports/document/report_text.hpp"
+#include "reports/document/claims.hpp"
 #include "reports/document/sections/long_time.hpp"
 
 namespace steplab {
@@ -38,7 +39,7 @@ class HandInLongRun : public Section {
                       "error up to t is fitted against t on log-log axes from {:g} periods on (growth exponent near 0: bounded; near 1: "
                       "a drift). ",
                       params_text(c.scene, c.params), c.periods, r_.period, c.steps_per_period.front(), c.fit_from);
-    md += structure_answer(r_) + "\n\n";
+    md += structure_answer(r_, page.ledger, "long_run", "long_run") + symmetry_note(r_) + "\n\n";
     if (!drawn_methods().empty())
       md += page.figure("long_time", "The sheet's spring swinging in a plane: the largest relative energy error up to t (in periods)");
     return md;

@@ -12,6 +12,7 @@
 #include "analysis/studies/defaults.hpp"
 #include "analysis/studies/long_time.hpp"
 #include "reports/data/studies.hpp"
+#include "reports/document/claims.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
 #include "reports/document/sections/long_time.hpp"
@@ -69,7 +70,13 @@ LongTimeSides sides(const LongTimeResult& r) {
   return out;
 }
 
-std::string structure_answer(const LongTimeResult& r) {
+std::string symmetry_note(const LongTimeResult& r) {
+  return sides(r).not_by_order ? " Whether symmetry alone would do (the trapezoidal rule: symmetric, not symplectic) is not "
+                                 "measured: every symmetric method here is symplectic too."
+                               : "";
+}
+
+std::string structure_answer(const LongTimeResult& r, Ledger* l, const std::string& id, const std::string& section) {
   const LongTimeSides s = sides(r);
   const auto items = [](const std::vector<std::size_t>& ms) {
     std::vector<std::string> out;
@@ -87,13 +94,17 @@ std::string structure_answer(const LongTimeResult& r) {
     md += fmt::format(" Lost the {} (energy error {:g} or more, or the run ended): {}.", r.has_exact ? "orbit" : "swing", kLostAt,
                       and_list(lost));
   if (s.not_by_order)
-    md += fmt::format(" Every bounded one is symplectic and every drifting one is not, whatever the order: `{}` of order {} drifts "
-                      "while `{}` of order {} stays bounded. The structure decides, not the order; whether symmetry without "
-                      "symplecticity would do as well is not asked here: none of steplab's methods is symmetric without being "
-                      "symplectic (the trapezoidal rule would be one).",
+    md += fmt::format(" The bounded ones are the symplectic ones, whatever the order: `{}` of order {} drifts while `{}` of order {} "
+                      "stays bounded, so the order does not decide it.",
                       name(*s.high_drift), method_info(*s.high_drift).order, name(*s.low_bounded), method_info(*s.low_bounded).order);
   else if (s.by_structure)
     md += " Every bounded one is symplectic and every drifting one is not.";
+  if (l) {
+    claim_long_time(*l, r, section, id + ".bounded", section, md, EnergyVerdict::Bounded, s.bounded);
+    claim_long_time(*l, r, section, id + ".drifting", section, md, EnergyVerdict::Drifting, s.drifting);
+    claim_long_time(*l, r, section, id + ".lost", section, md, EnergyVerdict::Lost, s.lost);
+    if (s.not_by_order) claim_long_time_symplectic(*l, r, section, id + ".symplectic", section, md, s.bounded);
+  }
   return md;
 }
 
@@ -125,6 +136,12 @@ class LongTime : public Section {
   std::string markdown(Page& page) const override {
     const LongTimeConfig& c = orbit_.config;
     std::string md = fmt::format("## {}\n\n", title());
+    if (page.ledger) {
+      page.ledger->theory("long_time", "On the linear spring a method's energy is a quadratic form its step maps exactly: it damps, "
+                                       "stays bounded or grows geometrically, and nothing else can happen.");
+      page.ledger->theory("long_time", "The position error's growth exponent, theory: 1 for symplectic and symmetric methods, 2 "
+                                       "otherwise (Hairer, Lubich and Wanner, ch. X).");
+    }
     md += fmt::format(
         "On the linear spring a method's energy is a quadratic form its step maps exactly: it damps, stays bounded or grows "
         "geometrically, and nothing else can happen. A nonlinear system asks more: whether a bounded error stays bounded where "
@@ -134,9 +151,9 @@ class LongTime : public Section {
         "interval (near 0: bounded; near 1: a drift linear in t; near 0.5: round-off's random walk).\n\n",
         scene_kernel(c.scene).title, params_text(c.scene, c.params), c.steps_per_period.front(),
         params_text(swing_.config.scene, swing_.config.params), swing_.config.steps_per_period.front(), c.periods, c.fit_from);
-    md += fmt::format("- **{}.** {}\n- **The swinging spring.** {}\n", scene_kernel(c.scene).title, structure_answer(orbit_),
-                      structure_answer(swing_));
-    md += angular_momentum() + phase() + crossing() + "\n";
+    md += fmt::format("- **{}.** {}\n- **The swinging spring.** {}\n", scene_kernel(c.scene).title, structure_answer(orbit_, page.ledger, "long_time.orbit", "long_time"),
+                      structure_answer(swing_, page.ledger, "long_time.swing", "long_time") + symmetry_note(swing_));
+    md += angular_momentum(page.ledger) + phase() + crossing() + "\n";
     if (!panels(page.data.methods).empty())
       md += page.figure("long_time", fmt::format("{}, {} steps a period: the largest relative energy error up to t (in "
                                                "periods), a panel per family",
@@ -164,7 +181,7 @@ class LongTime : public Section {
   }
 
   // Angular momentum (the orbit's second invariant) kept to round-off, against the symplectic claim.
-  std::string angular_momentum() const {
+  std::string angular_momentum(Ledger* l) const {
     if (orbit_.invariants.size() < 2) return {};
     std::vector<std::size_t> keep;
     double others = INFINITY;
@@ -173,9 +190,30 @@ class LongTime : public Section {
       if (row.round_off[1]) keep.push_back(row.method);
       else others = std::min(others, row.error[1].back());
     }
-    return fmt::format("- **Angular momentum** stays within round-off ({:g} u sqrt(steps)) with {}; every other method that kept running "
-                       "changed it by {} or more.\n",
-                       kRoundOff, method_list(keep), g2(others));
+    // "by X or more": X rounded down to two digits, so that it is a lower bound as printed
+    const double floor2 = std::isfinite(others) && others > 0
+                              ? [&] { const double unit = std::pow(10.0, std::floor(std::log10(others)) - 1);
+                                      return std::floor(others / unit) * unit; }()
+                              : others;
+    const std::string md = fmt::format("- **Angular momentum** stays within round-off ({:g} u sqrt(steps)) with {}; every other method "
+                                       "that kept running changed it by {} or more.\n",
+                                       kRoundOff, method_list(keep), g2(floor2));
+    if (l) {
+      const std::string file = long_time_document(orbit_, "long_time");
+      l->document(file, [&] { return long_time_json(orbit_); });
+      const std::string inv = "/invariants/" + orbit_.invariants[1];
+      claim_members(*l, claim_text("long_time.angular_momentum.round_off", "long_time", md), file, "/rows", Json::object(), "method",
+                    true, test_all({test_field("/status", "==", "ok"), test_field(inv + "/round_off", "==", true)}), method_names(keep));
+      std::vector<std::size_t> rest;  // the others that kept running: changed by `others` or more
+      for (const LongTimeRow& row : orbit_.rows)
+        if (row.status == RunStatus::Ok && row.error.size() >= 2 && !row.round_off[1]) rest.push_back(row.method);
+      if (!rest.empty())
+        claim_members(*l, claim_text("long_time.angular_momentum.changed", "long_time", md), file, "/rows", Json::object(), "method",
+                    true, test_all({test_field("/status", "==", "ok"), test_field(inv + "/round_off", "==", false),
+                                    test_field(inv + "/error_at_end", ">=", std::stod(g2(floor2)))}),
+                    method_names(rest));
+    }
+    return md;
   }
 
   // The phase: the position error's growth exponent, symplectic methods against the others.

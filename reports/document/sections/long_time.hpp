@@ -27,6 +27,11 @@ struct LongTimeSides {
 LongTimeSides sides(const LongTimeResult& r);
 // Which runs' energy errors are bounded and which drift, and whether the structure or the order
 // decides it: one paragraph computed from the runs.
-std::string structure_answer(const LongTimeResult& r);
+// Where the symplectic ones are the bounded ones, whatever the order: that symmetry alone is not
+// told apart from symplecticity here (said once, after the answers).
+std::string symmetry_note(const LongTimeResult& r);
+// Its claims go to `l` (where set) as `id`.bounded, .drifting, .lost and .symplectic.
+class Ledger;
+std::string structure_answer(const LongTimeResult& r, Ledger* l = nullptr, const std::string& id = "", const std::string& section = "");
 
 }  // namespace steplab

@@ -11,6 +11,7 @@
 #include "analysis/kernel/kernel.hpp"
 #include "core/method.hpp"
 #include "core/scenes/spring.hpp"
+#include "reports/document/claims.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
 
@@ -38,6 +39,9 @@ class Physics : public Section {
     const ReportData& d = page.data;
     const ReportConfig& c = d.config;
     std::string md = "## " + title() + "\n\n### The scenes\n\n";
+    if (page.ledger)
+      page.ledger->theory("physics", "The appendix: each scene's equation, each method's formula and tableau, how the implicit steps "
+                                     "are solved, and the terms, as the code writes them (definitions, not findings).");
     std::vector<std::size_t> scenes = c.covered;  // and the scenes the sections chosen run on beside them
     if (c.has_section("stiff_order")) scenes.push_back(c.stiffened.scene);
     if (c.has_section("cost"))

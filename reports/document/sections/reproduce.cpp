@@ -24,6 +24,21 @@ std::string comma_names(const std::vector<std::size_t>& methods, bool numerical)
   return out;
 }
 
+// `var=a,b,c` as a shell assignment broken for the page: a backslash-newline inside a word is
+// removed by the shell, so the broken lines assign the same list.
+std::string assignment(const std::string& var, const std::string& list) {
+  std::string out = var + "=", line;
+  std::size_t start = 0;
+  while (start < list.size()) {
+    std::size_t next = list.find(',', start);
+    next = next == std::string::npos ? list.size() : next + 1;
+    if (line.size() + next - start > 76 - var.size()) out += line + "\\\n", line.clear();
+    line += list.substr(start, next - start);
+    start = next;
+  }
+  return out + line + "\n";
+}
+
 class Reproduce : public Section {
  public:
   std::string title() const override { return "Reproduce"; }
@@ -32,9 +47,11 @@ class Reproduce : public Section {
     const ReportData& d = page.data;
     std::string md = "## " + title() + "\n\n```sh\n";
     md += "build/steplab report --config data/config.json   # this whole report\n";
-    // Each study the report ran, on the report's methods (named where not all of them).
-    const std::string methods = d.methods.size() == method_count() ? "" : " --methods " + comma_names(d.methods, false);
-    const std::string numerical = d.methods.size() == method_count() ? "" : " --methods " + comma_names(d.methods, true);
+    // Each study the report ran, on the report's methods (named once, in $M and $N without the
+    // exact flow, where not all of them).
+    const bool all = d.methods.size() == method_count();
+    const std::string methods = all ? "" : " --methods $M", numerical = all ? "" : " --methods $N";
+    if (!all) md += assignment("M", comma_names(d.methods, false)) + assignment("N", comma_names(d.methods, true));
     for (const ConvergenceResult& r : d.convergence)
       md += wrapped(fmt::format("build/steplab study convergence --scene {} --dt-max {} --dt-min {} --points {} --t-end {}{}",
                                 scene_name(r.config.scene), c.convergence.dt_max, c.convergence.dt_min, c.convergence.points, c.convergence.t_end, methods));

@@ -13,6 +13,7 @@
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/peers/peers.hpp"
 #include "reports/data/studies.hpp"
+#include "reports/document/claims.hpp"
 #include "reports/document/figure_styles.hpp"
 #include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"
@@ -31,13 +32,14 @@ std::string params_but_size(std::size_t scene, const std::vector<double>& params
 }
 
 // The exponents that are findings, a row per solver with one; the others in a sentence.
-std::string exponents_table(const ScalingResult& r) {
+std::string exponents_table(const ScalingResult& r, Ledger* l) {
   std::string rows;
-  std::vector<std::string> none;
+  std::vector<std::string> none, none_names;
   for (std::size_t s = 0; s < r.solvers(); ++s) {  // the first block's: the report's error, the first stiffness
     const ScalingFit& f = r.fits[s];
     if (!finding(f.step) && !finding(f.run) && !finding(f.stable)) {
       none.push_back("`" + f.solver + "`");
+      none_names.push_back(f.solver);
       continue;
     }
     std::vector<int> capped;
@@ -55,6 +57,18 @@ std::string exponents_table(const ScalingResult& r) {
     md += fmt::format("{} no exponent is a finding at these sizes (fewer than {} sizes, under {:g} decades of N, or an interval "
                       "wider than +-{:g}).\n\n",
                       rows.empty() ? "For every solver" : fmt::format("For {}", and_list(none)), kFitSizes, kFitDecades, kExponentHalfWidth);
+  if (l && !r.fits.empty()) {  // the solvers of the first block with no exponent that is a finding (finding() above)
+    const std::string file = fmt::format("scaling/scaling_{}.json", r.config.scene);
+    const Json& doc = l->document(file, [&] { return scaling_json(r); });
+    std::vector<Json> findings;
+    for (const char* q : {"/step", "/run", "/stable_step"})
+      findings.push_back(test_all({test_field(fmt::format("{}/exponent", q), "!=", nullptr),
+                                   test_difference(fmt::format("{}/ci95/1", q), fmt::format("{}/ci95/0", q), "<=", 2 * kExponentHalfWidth)}));
+    const Json& first = doc.at("exponents").at(0);
+    claim_members(*l, claim_text(fmt::format("scaling.{}.no_exponent", r.config.scene), "scaling", md), file, "/exponents",
+                  {{"target", first.at("target")}, {"stiffness", first.at("stiffness")}}, "solver", false,
+                  test_not(test_any(std::move(findings))), none_names);
+  }
   return md;
 }
 
@@ -169,12 +183,13 @@ std::string map_vars(const ScalingResult& r) {
 // The map's findings at each target: the clear wins of each group and the ties, where implicit
 // wins, its margin against the best explicit solver and CVODE in the stiffest, largest cell, and
 // where the target exceeds the body's motion.
-std::string map_findings(const ScalingResult& r) {
+std::string map_findings(const ScalingResult& r, Ledger* l) {
   const ScalingConfig& c = r.config;
   const std::size_t nk = r.blocks.size() / c.targets.size();
   std::string md;
   for (std::size_t t = 0; t < c.targets.size(); ++t) {
     const MapTally counts = map_tally(r, t);
+    const std::size_t start = md.size();
     const ScalingBlock* stiffest = &r.blocks[t * nk + nk - 1];
     std::vector<std::string> still;  // the stiffnesses where the body moves less than the target at every size
     double still_motion = 0;
@@ -205,6 +220,7 @@ std::string map_findings(const ScalingResult& r) {
                         "meets it, so those cells are a win for no one.",
                         fmt::join(still, ", "), still_motion);
     md += "\n";
+    if (l) claim_map(*l, r, t, fmt::format("scaling.map.target_{}", t), "scaling", md.substr(start), counts);
   }
   return md + "\n";
 }
@@ -231,7 +247,7 @@ std::string map_markdown(const ScalingResult& r, Page& page) {
       c.timing ? "" : ", and, untimed, one whose cheapest is implicit against an explicit solver that reached the target "
                       "(\"undecided\": the counts leave out its solves)",
       s.name, join(c.sizes), fmt::join(stiff, ","), c.targets.front().value, 100 * c.targets.back().value, c.max_steps);
-  md += map_findings(r);
+  md += map_findings(r, page.ledger);
   if (page.has("map"))
     md += page.figure("map", fmt::format("{}: the cheapest solver in each cell (masses N, {}); colour by group: explicit "
                                          "Runge-Kutta blue, symplectic splitting vermillion, implicit Runge-Kutta green, "
@@ -296,7 +312,7 @@ class ScalingSection : public Section {
     std::string md = "## " + title() + "\n\n";
     for (std::size_t i = 0; i < d.scaling.size(); ++i) {
       const ScalingResult& r = d.scaling[i];
-      md += scene_paragraph(r, i == 0) + exponents_table(r) + findings(r);
+      md += scene_paragraph(r, i == 0) + exponents_table(r, page.ledger) + findings(r);
       if (i == 0 && page.has("scaling"))
         md += page.figure("scaling", fmt::format("{}: the whole run's cost at the target error against N, a panel per family and "
                                                  "one for the adaptive solvers", scene_kernel(scene_index(r.config.scene)).title));

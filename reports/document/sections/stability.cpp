@@ -15,6 +15,9 @@
 namespace steplab {
 namespace {
 
+// A measured dt* agrees with the step map's prediction within this, relative (same_within).
+constexpr double kAgree = 0.01;
+
 class Stability : public Section {
  public:
   std::string title() const override { return "Stability in detail"; }
@@ -82,6 +85,7 @@ class Stability : public Section {
     for (double g : dampings) md += fmt::format(" damping {} |", g), rule += "-------|";
     md += "\n" + rule + "\n";
     std::size_t agree = 0, rows = 0;
+    std::vector<std::pair<std::size_t, double>> cases;  // (method, damping) of each cell
     for (std::size_t m : d.methods) {
       if (method_info(m).exact_flow) continue;
       md += fmt::format("| `{}` |", name(m));
@@ -92,7 +96,8 @@ class Stability : public Section {
           continue;
         }
         ++rows;
-        agree += r->dt_theory == r->dt_measured || std::abs(r->dt_measured / r->dt_theory - 1) <= 0.01;
+        agree += same_within(r->dt_measured, r->dt_theory, kAgree);
+        cases.push_back({m, g});
         md += fmt::format(" {} ({}){} |", table_dt(r->dt_measured), table_dt(r->dt_theory),
                           std::isinf(r->again_measured) && std::isinf(r->again_theory)
                               ? ""
@@ -100,7 +105,10 @@ class Stability : public Section {
       }
       md += "\n";
     }
-    md += fmt::format("\nThe measured dt* is within 1 % of the prediction in {} of these {} cases.\n\n", agree, rows);
+    const std::string agreement =
+        fmt::format("The measured dt* is within {:g} % of the prediction in {} of these {} cases.", 100 * kAgree, agree, rows);
+    md += "\n" + agreement + "\n\n";
+    if (page.ledger) claim_thresholds_agree(*page.ledger, {d}, "stability.thresholds_agree", "stability", agreement, cases, kAgree, agree);
     if (page.has("damping"))
       md += page.figure("damping", fmt::format("Energy growth rate d ln E / dt against damping at dt = {}: measured (points), "
                                                "predicted 2 ln(rho) / h from the step map (lines), a panel per family", c.large_dt));

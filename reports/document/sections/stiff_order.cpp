@@ -11,6 +11,7 @@
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/studies/order_reduction.hpp"
 #include "reports/data/studies.hpp"
+#include "reports/document/claims.hpp"
 #include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
@@ -66,6 +67,11 @@ class StiffOrder : public Section {
     return {{"stiff_order", fmt::format("kmin={}; kmax={}", num(v.front() / 3), num(v.back() * 3)), std::move(panels)}};
   }
 
+  static constexpr const char* kTheory =
+      "The theory (appendix): a Runge-Kutta method keeps order p while h |lambda| is small; as it grows, a stiffly accurate "
+      "one falls to its stage order q, one with |R(infinity)| < 1 or R(infinity) = -1 to q + 1, one with R(infinity) = 1 to q; "
+      "a multistep method's own error vanishes as 1 / lambda, leaving its one-step start's.";
+
   std::string markdown(Page& page) const override {
     const OrderReduction& r = page.data.stiff_order;
     const ConvergenceSweep& s = r.sweep;
@@ -81,14 +87,14 @@ class StiffOrder : public Section {
         "can fall to its stage order (order reduction; Prothero and Robinson 1974; Hairer and Wanner II, IV.15). Measured "
         "on `{}` ({}), whose exact solution is the same at every stiffness: the order of the largest position error over "
         "t <= {} fitted over {} steps from {} to {}, at stiffness {} to {:g}. h |lambda| at the middle step goes from {} "
-        "to {}. The theory (appendix): a Runge-Kutta method keeps order p while h |lambda| is small; as it grows, a "
-        "stiffly accurate one falls to its stage order q, one with |R(infinity)| < 1 or R(infinity) = -1 to q + 1, one "
-        "with R(infinity) = 1 to q; a multistep method's own error vanishes as 1 / lambda, leaving its one-step "
-        "start's.\n\n",
+        "to {}. {}\n\n",
         scene, params_text(c.scene, c.params, scene_kernel(c.scene).stiffness_param), c.t_end, s.studies.front().dts.size(),
         dt_text(s.studies.front().dts.front()), dt_text(s.studies.front().dts.back()), s.values.front(), s.values.back(),
-        dt_text(middle_h_lambda(0)), dt_text(middle_h_lambda(s.values.size() - 1)));
-    md += sentences(r);
+        dt_text(middle_h_lambda(0)), dt_text(middle_h_lambda(s.values.size() - 1)), kTheory);
+    if (page.ledger) page.ledger->theory("stiff_order", kTheory);
+    const std::string findings = sentences(r);
+    md += findings;
+    if (page.ledger) claim_stiff(*page.ledger, page.data, "stiff_order", "stiff_order", findings, stiff_claims(r));
     md += table(r);
     if (page.has("stiff_order"))
       md += page.figure("stiff_order", fmt::format("The fitted order against the stiffness on `{}`, a panel per family, each fit's "

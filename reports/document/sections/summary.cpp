@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
+#include "reports/document/claims.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
 
@@ -55,6 +56,23 @@ class Summary : public Section {
       md += fmt::format("| {} | `{}` | {} | {} | {} | {} | {}, {} |\n", first ? short_family(f) : "", name(r.method),
                         order_text(r.method), fitted_text(*r.fit), threshold_cell(r.dt_undamped_measured, r.again_undamped_measured),
                         threshold_cell(r.dt_measured, r.again_measured), yes(r.stable_large_dt), yes(r.stable_undamped));
+    }
+    if (Ledger* l = page.ledger) {  // its last column, over each stability study it shows
+      struct Shown {
+        StabilitySource source;
+        const Findings* f;
+        const char* suffix;
+      };
+      std::vector<Shown> shown{{{page.data}, &page.findings, ""}};
+      if (page.springs_findings) shown.push_back({{*page.springs, kSpringsStabilityDocument}, page.springs_findings, ".springs"});
+      for (const Shown& x : shown) {
+        claim_unstable_at(*l, x.source, fmt::format("summary.unstable_at_large_dt{}", x.suffix), "summary",
+                          fmt::format("the summary table's last column, at dt {}: no", c.large_dt), c.large_dt, gamma,
+                          methods_of(*x.f, x.f->unstable_large));
+        claim_unstable_at(*l, x.source, fmt::format("summary.unstable_undamped{}", x.suffix), "summary",
+                          fmt::format("the summary table's last column, at dt {} undamped: no", c.small_dt), c.small_dt, 0.0,
+                          methods_of(*x.f, x.f->unstable_undamped));
+      }
     }
     md += fmt::format(
         "\nFitted order: on the spring, the final position error over t = {}, with its bound (Convergence). dt*: the "

@@ -1,0 +1,211 @@
+// The claims of the energy, long-time and stiff-order findings (claims.hpp): each a membership
+// claim whose test restates, over the cited document's own fields, the rule findings.hpp and
+// analysis/studies apply, so that the verifier re-derives each method's class from the numbers.
+#include <fmt/format.h>
+
+#include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/order_reduction.hpp"
+#include "reports/data/studies.hpp"
+#include "reports/document/claims.hpp"
+#include "reports/document/report_text.hpp"
+#include "reports/document/sections/long_time.hpp"
+
+namespace steplab {
+
+Json energy_document(const ReportData& d) {
+  Json j;
+  j["schema"] = "steplab.energy/1";
+  j["dt"] = d.config.large_dt, j["t_end"] = d.config.energy_t_end;
+  j["bounded_growth"] = kBoundedGrowth, j["blown_ratio"] = kBlownRatio;
+  j["rows"] = Json::array();
+  for (const EnergyBehaviour& b : energy_behaviour(d))
+    j["rows"].push_back({{"method", name(b.method)},
+                         {"symplectic", method_info(b.method).symplectic},
+                         {"diverged", b.ended >= 0},
+                         {"lo", b.lo},
+                         {"hi", b.hi},
+                         {"first_half", b.first_half},
+                         {"second_half", b.second_half},
+                         {"final_ratio", b.final_ratio},
+                         {"round_off", b.round_off},
+                         {"kind", to_text(b.kind)}});
+  return j;
+}
+
+namespace {
+
+// energy_behaviour's classes (findings.cpp) over a row of energy/energy.json.
+Json energy_test(EnergyKind k, double round_off) {
+  const Json blows = test_any({test_field("/diverged", "==", true), test_field("/hi", ">", kBlownRatio)});
+  const Json damped = test_field("/lo", "<", 1 / kBlownRatio);
+  const Json bounded = test_any({test_scaled("/second_half", "<=", kBoundedGrowth, "/first_half"),
+                                 test_field("/second_half", "<=", round_off)});
+  switch (k) {
+    case EnergyKind::Blows: return blows;
+    case EnergyKind::Damped: return test_all({test_not(blows), damped});
+    case EnergyKind::Bounded: return test_all({test_not(blows), test_not(damped), bounded});
+    case EnergyKind::Drifts: break;
+  }
+  return test_all({test_not(blows), test_not(damped), test_not(bounded)});
+}
+
+}  // namespace
+
+void claim_energy(Ledger& l, const ReportData& d, std::string id, std::string section, std::string sentence, EnergyKind k,
+                  const std::vector<std::size_t>& set, bool symplectic) {
+  const Json& doc = l.document(kEnergyDocument, [&] { return energy_document(d); });
+  if (doc.at("rows").empty()) return;
+  const double round_off = doc.at("rows").at(0).at("round_off").get<double>();  // one run length: one level
+  Json test = energy_test(k, round_off);
+  if (symplectic) test = test_all({std::move(test), test_field("/symplectic", "==", true)});
+  claim_members(l, claim_text(std::move(id), std::move(section), std::move(sentence)), kEnergyDocument, "/rows", Json::object(),
+                "method", true, std::move(test), method_names(set));
+}
+
+std::string long_time_document(const LongTimeResult& r, const std::string& folder) {
+  return fmt::format("{}/long_time_{}.json", folder, scene_name(r.config.scene));
+}
+
+void claim_long_time(Ledger& l, const LongTimeResult& r, const std::string& folder, std::string id, std::string section,
+                     std::string sentence, EnergyVerdict v, const std::vector<std::size_t>& set) {
+  const std::string file = long_time_document(r, folder);
+  l.document(file, [&] { return long_time_json(r); });
+  // energy_verdict (analysis/studies/long_time.hpp) over a row: lost where the run ended or its
+  // energy error reached kLostAt; else bounded (growth interval below 0.5, or within round-off),
+  // drifting (above 0.5).
+  const Json lost = test_any({test_field("/status", "!=", "ok"), test_not(test_field("/invariants/energy/error_at_end", "<", kLostAt))});
+  Json test;
+  if (v == EnergyVerdict::Lost) test = lost;
+  else if (v == EnergyVerdict::Bounded)
+    test = test_all({test_not(lost), test_any({test_field("/invariants/energy/growth/ci95/1", "<", 0.5),
+                                               test_field("/invariants/energy/round_off", "==", true)})});
+  else if (v == EnergyVerdict::Drifting)
+    test = test_all({test_not(lost), test_field("/invariants/energy/round_off", "==", false),
+                     test_not(test_field("/invariants/energy/growth/ci95/1", "<", 0.5)),
+                     test_field("/invariants/energy/growth/ci95/0", ">", 0.5)});
+  else return;
+  claim_members(l, claim_text(std::move(id), std::move(section), std::move(sentence)), file, "/rows", Json::object(), "method", true,
+                std::move(test), method_names(set));
+}
+
+void claim_long_time_symplectic(Ledger& l, const LongTimeResult& r, const std::string& folder, std::string id, std::string section,
+                                std::string sentence, const std::vector<std::size_t>& set) {
+  const std::string file = long_time_document(r, folder);
+  l.document(file, [&] { return long_time_json(r); });
+  claim_members(l, claim_text(std::move(id), std::move(section), std::move(sentence)), file, "/rows", Json::object(), "method", true,
+                test_field("/symplectic", "==", true), method_names(set));
+}
+
+namespace {
+
+// A limit of the stiff-order study holds (order_reduction.cpp): reached, its order within `tol`
+// of the theory's and its bound containing the theory's.
+Json limit_holds(const std::string& limit, const std::string& theory, double tol) {
+  return test_all({test_field(limit + "/reached", "==", true), test_difference(limit + "/order", theory, "<=", tol),
+                   test_scaled(limit + "/order_bound/0", "<=", 1, theory), test_scaled(theory, "<=", 1, limit + "/order_bound/1")});
+}
+
+// A fit between the limits strays from the declared order: beyond kStiffTolerance of it and its
+// bound not containing it, where its steps do not reach past dt*.
+Json strays() {
+  return test_all({test_field("/past_stable", "==", false), test_difference("/order", "/declared_order", ">", kStiffTolerance),
+                   test_any({test_scaled("/order_bound/0", ">", 1, "/declared_order"),
+                             test_scaled("/declared_order", ">", 1, "/order_bound/1")})});
+}
+
+}  // namespace
+
+void claim_stiff(Ledger& l, const ReportData& d, const std::string& id, const std::string& section, const std::string& sentence,
+                 const std::vector<StiffClaim>& claims) {
+  const std::string file = "stiff_order/stiff_order.json";
+  l.document(file, [&] { return order_reduction_json(d.stiff_order); });
+  const Json limits = test_all({limit_holds("/non_stiff", "/theory/classical", kNonStiffTolerance),
+                                limit_holds("/stiff", "/theory/stiff", kStiffTolerance)});
+  std::vector<std::string> keeps, falls, rises, unstable;
+  for (const StiffClaim& c : claims) {
+    if (c.verdict == StiffVerdict::Keeps || c.verdict == StiffVerdict::Strays) keeps.push_back(name(c.method));
+    if (c.verdict == StiffVerdict::Falls) falls.push_back(name(c.method));
+    if (c.verdict == StiffVerdict::Rises) rises.push_back(name(c.method));
+    if (c.verdict == StiffVerdict::Unstable) unstable.push_back(name(c.method));
+    if (c.verdict == StiffVerdict::Keeps || c.verdict == StiffVerdict::Strays)  // each fit between the limits
+      claim_members(l, claim_text(fmt::format("{}.strays.{}", id, name(c.method)), section, sentence), file, "/fits",
+                    {{"method", name(c.method)}}, "method", true, strays(),
+                    c.verdict == StiffVerdict::Strays ? std::vector<std::string>{name(c.method)} : std::vector<std::string>{});
+  }
+  const auto members = [&](const char* what, Json test, const std::vector<std::string>& set) {
+    claim_members(l, claim_text(fmt::format("{}.{}", id, what), section, sentence), file, "/methods", Json::object(), "method", true,
+                  std::move(test), set);
+  };
+  members("keeps_in_both_limits", test_all({limits, test_difference("/theory/stiff", "/theory/classical", "<=", 0)}), keeps);
+  members("falls", test_all({limits, test_scaled("/theory/stiff", "<", 1, "/theory/classical")}), falls);
+  members("rises", test_all({limits, test_scaled("/theory/stiff", ">", 1, "/theory/classical")}), rises);
+  members("no_stiff_limit", test_field("/theory/stiff", "==", nullptr), unstable);
+}
+
+}  // namespace steplab
+
+namespace steplab {
+
+namespace {
+
+// A comparison group over one map cell's rows: `a` the row of solver `a`, `others` every other
+// reached row with `first` (the runner-up) at their head; noise their two timing spreads.
+ClaimGroup cell_group(Ledger& l, const std::string& file, const std::vector<std::size_t>& rows, const ScalingResult& r,
+                      const std::string& a, const std::string& first, const char* relation) {
+  ClaimGroup g{"comparison", {}, {}};
+  const auto at = [&](std::size_t i, const char* field) { return l.at(file, fmt::format("/rows/{}/{}", i, field)); };
+  std::size_t ia = rows.size(), ifirst = rows.size();
+  for (std::size_t i : rows) {
+    if (r.rows[i].solver == a) ia = i;
+    if (r.rows[i].solver == first) ifirst = i;
+  }
+  g.evidence.push_back(at(ia, "seconds"));
+  Json others = Json::array(), noise = Json::array();
+  if (ifirst != rows.size()) others.push_back(g.evidence.size()), g.evidence.push_back(at(ifirst, "seconds"));
+  for (std::size_t i : rows)
+    if (i != ia && i != ifirst) others.push_back(g.evidence.size()), g.evidence.push_back(at(i, "seconds"));
+  noise.push_back(g.evidence.size()), g.evidence.push_back(at(ia, "seconds_spread"));
+  if (ifirst != rows.size()) noise.push_back(g.evidence.size()), g.evidence.push_back(at(ifirst, "seconds_spread"));
+  g.rule = {{"a", 0}, {"others", std::move(others)}, {"relation", relation}, {"margin", kTieMargin}, {"noise", std::move(noise)}};
+  return g;
+}
+
+}  // namespace
+
+void claim_map(Ledger& l, const ScalingResult& r, std::size_t target, const std::string& id, const std::string& section,
+               const std::string& sentence, const MapTally& tally) {
+  if (!r.config.timing) return;  // untimed, the verdicts rest on counts that leave out the solves: no claim
+  const std::string file = "scaling/scaling_map.json";
+  l.document(file, [&] { return scaling_json(r); });
+  const std::size_t nk = r.blocks.size() / r.config.targets.size();
+  std::vector<ClaimGroup> ties, wins, implicit, still;
+  for (std::size_t k = 0; k < nk; ++k) {
+    const std::size_t b = target * nk + k;
+    const ScalingBlock& block = r.blocks[b];
+    for (std::size_t n = 0; n < block.cells.size(); ++n) {
+      const ScalingCell& m = block.cells[n];
+      if (m.cheapest.empty()) continue;
+      ClaimGroup rest{"threshold", {{"op", "<"}, {"limit", block.error}, {"items", {0}}},
+                      {l.at(file, fmt::format("/blocks/{}/map/{}/motion", b, n))}};
+      still.push_back(std::move(rest));
+      if (m.motion < block.error) continue;  // at rest: no one's win or tie
+      std::vector<std::size_t> rows;  // the cell's reached rows (JSON rows are ScalingResult::rows)
+      for (std::size_t s = 0; s < r.solvers(); ++s) {
+        const ScalingRow& w = r.rows_of(b * r.solvers() + s)[n];
+        if (w.reached()) rows.push_back(static_cast<std::size_t>(&w - r.rows.data()));
+      }
+      ties.push_back(cell_group(l, file, rows, r, m.cheapest, m.next, "tie"));
+      wins.push_back(cell_group(l, file, rows, r, m.cheapest, m.next, "less"));
+      if (!m.best_implicit.empty())
+        implicit.push_back(cell_group(l, file, rows, r, m.best_implicit, m.best_implicit == m.cheapest ? m.next : m.cheapest, "less"));
+    }
+  }
+  int won = 0;
+  for (const auto& [group, n] : tally.wins) won += n;
+  claim_count(l, claim_text(id + ".ties", section, sentence), std::move(ties), tally.ties);
+  claim_count(l, claim_text(id + ".wins", section, sentence), std::move(wins), won);
+  claim_count(l, claim_text(id + ".implicit_wins", section, sentence), std::move(implicit), static_cast<int>(tally.implicit.size()));
+  claim_count(l, claim_text(id + ".at_rest", section, sentence), std::move(still), tally.still);
+}
+
+}  // namespace steplab
