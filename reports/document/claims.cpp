@@ -202,11 +202,13 @@ void claim_crossover(Ledger& l, const ReportData& d, std::string id, std::string
     const StiffnessRow& row = r.stiffness[i];
     const bool on = row.ratio >= r.crossover_ratio;
     if (!on && (i + 1 >= r.stiffness.size() || r.stiffness[i + 1].ratio < r.crossover_ratio)) continue;
-    (on ? from : below)
-        .push_back({"comparison",
-                    {{"a", 0}, {"others", {1}}, {"relation", "less"}, {"margin", kTieMargin}, {"noise", Json::array()}},
-                    {l.at(kWorkDocument, fmt::format("/stiffness_sweep/{}/implicit_seconds", i)),
-                     l.at(kWorkDocument, fmt::format("/stiffness_sweep/{}/explicit_seconds", i))}});
+    ClaimGroup g{"comparison", {{"a", 0}, {"others", Json::array()}, {"relation", "less"}, {"margin", kTieMargin}, {"noise", Json::array()}},
+                 {l.at(kWorkDocument, fmt::format("/stiffness_sweep/{}/implicit_seconds", i))}};
+    if (!row.best_explicit.empty()) {  // none reached the error: the implicit one is cheaper than nothing
+      g.rule["others"].push_back(1);
+      g.evidence.push_back(l.at(kWorkDocument, fmt::format("/stiffness_sweep/{}/explicit_seconds", i)));
+    }
+    (on ? from : below).push_back(std::move(g));
   }
   const int n = static_cast<int>(from.size());
   claim_count(l, claim_text(id + ".from", section, sentence), std::move(from), n);

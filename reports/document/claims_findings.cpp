@@ -1,6 +1,9 @@
-// The claims of the energy, long-time and stiff-order findings (claims.hpp): each a membership
-// claim whose test restates, over the cited document's own fields, the rule findings.hpp and
-// analysis/studies apply, so that the verifier re-derives each method's class from the numbers.
+// The claims of the energy, long-time and stiff-order findings and of the crossover map (claims.hpp):
+// each restates, over the cited document's own fields, the rule findings.hpp and analysis/studies
+// apply, so that the verifier re-derives each class or verdict from the numbers.
+#include <limits>
+#include <stdexcept>
+
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
@@ -154,18 +157,20 @@ ClaimGroup cell_group(Ledger& l, const std::string& file, const std::vector<std:
                       const std::string& a, const std::string& first, const char* relation) {
   ClaimGroup g{"comparison", {}, {}};
   const auto at = [&](std::size_t i, const char* field) { return l.at(file, fmt::format("/rows/{}/{}", i, field)); };
-  std::size_t ia = rows.size(), ifirst = rows.size();
+  constexpr std::size_t none = std::numeric_limits<std::size_t>::max();  // rows holds indices into every row
+  std::size_t ia = none, ifirst = none;
   for (std::size_t i : rows) {
     if (r.rows[i].solver == a) ia = i;
     if (r.rows[i].solver == first) ifirst = i;
   }
+  if (ia == none) throw std::logic_error("a map cell without its cheapest run: " + a);
   g.evidence.push_back(at(ia, "seconds"));
   Json others = Json::array(), noise = Json::array();
-  if (ifirst != rows.size()) others.push_back(g.evidence.size()), g.evidence.push_back(at(ifirst, "seconds"));
+  if (ifirst != none) others.push_back(g.evidence.size()), g.evidence.push_back(at(ifirst, "seconds"));
   for (std::size_t i : rows)
     if (i != ia && i != ifirst) others.push_back(g.evidence.size()), g.evidence.push_back(at(i, "seconds"));
   noise.push_back(g.evidence.size()), g.evidence.push_back(at(ia, "seconds_spread"));
-  if (ifirst != rows.size()) noise.push_back(g.evidence.size()), g.evidence.push_back(at(ifirst, "seconds_spread"));
+  if (ifirst != none) noise.push_back(g.evidence.size()), g.evidence.push_back(at(ifirst, "seconds_spread"));
   g.rule = {{"a", 0}, {"others", std::move(others)}, {"relation", relation}, {"margin", kTieMargin}, {"noise", std::move(noise)}};
   return g;
 }

@@ -107,7 +107,7 @@ TEST(ReportSheet, ConstantsFollowTheParameters) {
   EXPECT_NEAR(number_after(md, "**$c_1 = "), 1.962, 1e-12) << md;  // 1 * 9.81 / 5
   // alpha = -0.05, beta = sqrt(20 - 0.01) / 2 = 2.2355089...; c2 = 0.05 * 1.962 / beta
   EXPECT_NEAR(number_after(md, "**$c_2 = "), 0.0438826, 1e-7);
-  EXPECT_LT(number_after(md, "the errors below are measured against (the scene's own, written for every damping regime) to "), 1e-12);
+  EXPECT_LT(number_after(md, "the errors below are measured against (the scene's own, written for every damping regime) to within "), 1e-12);
 
   c.oscillator.params = {2, 8, 0.5, 5, 9.81};  // m, k, gamma, L, g
   md = markdown(c);

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/long_time.hpp"
 #include "reports/document/claims.hpp"
 #include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"
@@ -52,9 +53,10 @@ class Energy : public Section {
     md += fmt::format("The undamped spring has a conserved energy; a method's E/E0 - 1 over a long run at the sheet's step "
                       "(dt = {}, t = {:g}) is what a long simulation would show. The figure draws it on a linear axis; a run "
                       "counts as bounded when the largest |E/E0 - 1| over its second half is at most {:g} times that over its "
-                      "first, as drifting when it keeps growing, as damped out when E/E0 falls below 1/{:g} (the method's own "
-                      "damping), as blown up when it passes {:g} or the state diverges.\n\n",
-                      c.large_dt, c.energy_t_end, kBoundedGrowth, kBlownRatio, kBlownRatio);
+                      "first, or within round-off ({:g} u sqrt(steps)), as drifting when it keeps growing, as damped out when "
+                      "E/E0 falls below 1/{:g} (the method's own damping), as blown up when it passes {:g} or the state "
+                      "diverges.\n\n",
+                      c.large_dt, c.energy_t_end, kBoundedGrowth, kRoundOff, kBlownRatio, kBlownRatio);
     std::vector<std::string> bounded, drifting, damped, blown;
     std::vector<std::size_t> of[4], symplectic, symplectic_unbounded;  // of[kind]: its methods
     for (const EnergyBehaviour& b : e) {
