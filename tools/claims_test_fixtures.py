@@ -137,3 +137,15 @@ class Folder(unittest.TestCase):
 
     def run_cli(self):
         return subprocess.run([sys.executable, SCRIPT, self.dir], capture_output=True, text=True)
+
+    def cli_names_only(self, claims, failing, **files):
+        """The command line on `claims` (and `files`, as write takes them) exits 1, names
+        `failing` first and no other claim, and counts just that one as not holding."""
+        self.write(claims, **files)
+        out = self.run_cli()
+        self.assertEqual(out.returncode, 1)
+        self.assertTrue(out.stdout.startswith(failing + ": "), out.stdout)
+        for c in claims:
+            if c["id"] != failing:
+                self.assertNotIn(c["id"], out.stdout)
+        self.assertIn("claims: %d, hold: %d, do not hold: 1" % (len(claims), len(claims) - 1), out.stdout)

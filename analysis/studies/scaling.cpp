@@ -369,7 +369,10 @@ ScalingResult scaling_study(const ScalingConfig& c) {
       if (r.reached() && first.emplace(key(r), &r).second) runs.push_back(&r);
     time_in_two_passes(runs, [&](const ScalingRow& r) { return run_seconds(c, r); });
     for (ScalingRow& r : out.rows)
-      if (r.reached()) r.seconds = first.at(key(r))->seconds, r.spread = first.at(key(r))->spread;
+      if (r.reached()) {
+        const ScalingRow& timed = *first.at(key(r));
+        r.seconds = timed.seconds, r.spread = timed.spread;
+      }
   }
   for (std::size_t b = 0; b < nt * nk; ++b) {
     ScalingBlock block;

@@ -10,6 +10,7 @@
 #include "analysis/kernel/kernel.hpp"
 #include "reports/data/studies.hpp"
 #include "reports/document/report_text.hpp"
+#include "reports/document/section.hpp"
 
 namespace steplab {
 
@@ -109,6 +110,12 @@ void membership(Ledger& l, StabilitySource s, Claim c, const char* table, Json w
 
 }  // namespace
 
+std::vector<ShownStudy> shown_studies(const Page& page) {
+  std::vector<ShownStudy> out{{{page.data, kStabilityDocument}, page.findings, ""}};
+  if (page.springs) out.push_back({{*page.springs, kSpringsStabilityDocument}, *page.springs_findings, ".springs"});
+  return out;
+}
+
 void claim_unstable_at(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence, double dt,
                        double damping, const std::vector<std::size_t>& set) {
   membership(l, s, claim_text(std::move(id), std::move(section), std::move(sentence)), "sweep", {{"dt", dt}, {"damping", damping}},
@@ -172,7 +179,6 @@ void claim_cheapest(Ledger& l, const ReportData& d, std::string id, std::string 
     return l.at(kWorkDocument, fmt::format("/scenes/{}/points/{}/{}", s, p - w.points.data(), field));
   };
   const char* cost = timed ? "seconds" : "force_evaluations";
-  Claim c{std::move(id), std::move(section), std::move(sentence), "comparison", {}, {}};
   std::vector<const WorkPoint*> others;  // the runner-up first, then every other solver's cheapest run
   std::vector<std::string> seen{win.point->method};
   for (const WorkPoint& p : w.points)
@@ -181,16 +187,11 @@ void claim_cheapest(Ledger& l, const ReportData& d, std::string id, std::string 
       if (const WorkPoint* q = cheapest_point(w, p.method, level, timed))
         others.insert(p.method == win.next ? others.begin() : others.end(), q);
     }
-  c.evidence.push_back(at(win.point, cost));
-  Json ids = Json::array(), noise = Json::array();
-  for (const WorkPoint* p : others) ids.push_back(c.evidence.size()), c.evidence.push_back(at(p, cost));
-  if (timed && !others.empty()) {
-    noise.push_back(c.evidence.size()), c.evidence.push_back(at(win.point, "seconds_spread"));
-    noise.push_back(c.evidence.size()), c.evidence.push_back(at(others.front(), "seconds_spread"));
-  }
-  c.rule = {{"a", 0}, {"others", std::move(ids)}, {"relation", win.tie ? "tie" : "less"}, {"margin", timed ? kTieMargin : 1.0},
-            {"noise", std::move(noise)}};
-  l.add(std::move(c));
+  std::vector<Evidence> costs, noise;
+  for (const WorkPoint* p : others) costs.push_back(at(p, cost));
+  if (timed && !others.empty()) noise = {at(win.point, "seconds_spread"), at(others.front(), "seconds_spread")};
+  claim_group(l, claim_text(std::move(id), std::move(section), std::move(sentence)),
+              comparison_group(at(win.point, cost), std::move(costs), std::move(noise), win.tie ? "tie" : "less", timed ? kTieMargin : 1.0));
 }
 
 void claim_crossover(Ledger& l, const ReportData& d, std::string id, std::string section, std::string sentence) {
@@ -202,13 +203,11 @@ void claim_crossover(Ledger& l, const ReportData& d, std::string id, std::string
     const StiffnessRow& row = r.stiffness[i];
     const bool on = row.ratio >= r.crossover_ratio;
     if (!on && (i + 1 >= r.stiffness.size() || r.stiffness[i + 1].ratio < r.crossover_ratio)) continue;
-    ClaimGroup g{"comparison", {{"a", 0}, {"others", Json::array()}, {"relation", "less"}, {"margin", kTieMargin}, {"noise", Json::array()}},
-                 {l.at(kWorkDocument, fmt::format("/stiffness_sweep/{}/implicit_seconds", i))}};
-    if (!row.best_explicit.empty()) {  // none reached the error: the implicit one is cheaper than nothing
-      g.rule["others"].push_back(1);
-      g.evidence.push_back(l.at(kWorkDocument, fmt::format("/stiffness_sweep/{}/explicit_seconds", i)));
-    }
-    (on ? from : below).push_back(std::move(g));
+    std::vector<Evidence> explicit_run;  // none where no explicit method reached the error
+    if (!row.best_explicit.empty()) explicit_run.push_back(l.at(kWorkDocument, fmt::format("/stiffness_sweep/{}/explicit_seconds", i)));
+    (on ? from : below)
+        .push_back(comparison_group(l.at(kWorkDocument, fmt::format("/stiffness_sweep/{}/implicit_seconds", i)), std::move(explicit_run),
+                                    {}, "less", kTieMargin));
   }
   const int n = static_cast<int>(from.size());
   claim_count(l, claim_text(id + ".from", section, sentence), std::move(from), n);
@@ -335,6 +334,20 @@ Json shifted(Json rule, const std::string& kind, std::size_t base) {
 }
 
 }  // namespace
+
+ClaimGroup comparison_group(Evidence a, std::vector<Evidence> others, std::vector<Evidence> noise, const char* relation, double margin) {
+  ClaimGroup g{"comparison", {}, {std::move(a)}};
+  Json ids = Json::array(), noise_ids = Json::array();
+  for (Evidence& e : others) ids.push_back(g.evidence.size()), g.evidence.push_back(std::move(e));
+  for (Evidence& e : noise) noise_ids.push_back(g.evidence.size()), g.evidence.push_back(std::move(e));
+  g.rule = {{"a", 0}, {"others", std::move(ids)}, {"relation", relation}, {"margin", margin}, {"noise", std::move(noise_ids)}};
+  return g;
+}
+
+void claim_group(Ledger& l, Claim c, ClaimGroup g) {
+  c.kind = std::move(g.kind), c.rule = std::move(g.rule), c.evidence = std::move(g.evidence);
+  l.add(std::move(c));
+}
 
 void claim_count(Ledger& l, Claim c, std::vector<ClaimGroup> groups, int count) {
   if (groups.empty()) return;

@@ -20,6 +20,7 @@
 
 namespace steplab {
 
+class Page;
 using Json = nlohmann::ordered_json;
 
 struct Evidence {
@@ -90,6 +91,10 @@ struct ClaimGroup {
 };
 // "`count` of these hold": the groups' evidence appended, their indices shifted to the claim's.
 void claim_count(Ledger& l, Claim c, std::vector<ClaimGroup> groups, int count);
+// A comparison of `a` against `others` (the one it ties with or beats by its margin first), with
+// `noise` (the two runs' timing spreads, or none) raising the margin; as a group, or a claim of its own.
+ClaimGroup comparison_group(Evidence a, std::vector<Evidence> others, std::vector<Evidence> noise, const char* relation, double margin);
+void claim_group(Ledger& l, Claim c, ClaimGroup g);
 
 // Words as part of a claim's id: "explicit Runge-Kutta" -> "explicit_runge-kutta".
 std::string id_word(std::string_view words);
@@ -106,6 +111,16 @@ struct StabilitySource {
   const ReportData& data;
   const char* file = kStabilityDocument;
 };
+
+// The stability studies a page shows: the report's, and the methods on springs' where the report
+// measured them (the summary table shows both), each with its findings and the suffix of its
+// claims' ids ("" and ".springs").
+struct ShownStudy {
+  StabilitySource study;
+  const Findings& f;
+  const char* id;
+};
+std::vector<ShownStudy> shown_studies(const Page& page);
 
 // "The methods in `set` are exactly those of the stability study's sweep at (dt, damping) whose
 // run is unstable": a membership claim over the source's numerical methods.
@@ -164,14 +179,20 @@ Json energy_document(const ReportData& d);
 // "`set` is the methods whose run is of kind `k`" (and symplectic, where `symplectic`).
 void claim_energy(Ledger& l, const ReportData& d, std::string id, std::string section, std::string sentence, EnergyKind k,
                   const std::vector<std::size_t>& set, bool symplectic = false);
-// The long-time study's document of `r`'s scene in a section's folder, data/<folder>/long_time_<scene>.json.
-std::string long_time_document(const LongTimeResult& r, const std::string& folder);
+// A convergence study's document, cited: data/convergence/convergence_<scene>.json, its name returned.
+std::string cite_convergence(Ledger& l, const ConvergenceResult& r);
+// The long-time study's document of `r`'s scene in a section's folder, cited:
+// data/<folder>/long_time_<scene>.json, its name returned.
+std::string cite_long_time(Ledger& l, const LongTimeResult& r, const std::string& folder);
 // "`set` is the methods whose energy error over the long run is `v`" (energy_verdict, Bounded,
-// Drifting or Lost at kLostAt); "`set` is the symplectic ones".
+// Drifting or Lost at kLostAt).
 void claim_long_time(Ledger& l, const LongTimeResult& r, const std::string& folder, std::string id, std::string section,
                      std::string sentence, EnergyVerdict v, const std::vector<std::size_t>& set);
-void claim_long_time_symplectic(Ledger& l, const LongTimeResult& r, const std::string& folder, std::string id, std::string section,
-                                std::string sentence, const std::vector<std::size_t>& set);
+// The run's sides (sections/long_time.hpp) as `id`.bounded, .drifting, .lost and, where the bounded
+// ones are the symplectic ones whatever the order, .symplectic.
+struct LongTimeSides;
+void claim_long_time_sides(Ledger& l, const LongTimeResult& r, const LongTimeSides& s, const std::string& folder, const std::string& id,
+                           const std::string& section, const std::string& sentence);
 // The stiff-order verdicts (stiff_claims): which methods keep their order in both limits, fall,
 // rise or have no stiff limit, over the study's methods table, and for each that keeps it in both
 // limits, whether a fit between them strays.

@@ -1,6 +1,6 @@
-// The claims of the energy, long-time and stiff-order findings and of the crossover map (claims.hpp):
-// each restates, over the cited document's own fields, the rule findings.hpp and analysis/studies
-// apply, so that the verifier re-derives each class or verdict from the numbers.
+// The claims of the energy, long-time and stiff-order findings and of the crossover map, and the
+// documents they cite (claims.hpp): each restates, over the cited document's own fields, the rule
+// findings.hpp and analysis/studies apply, so that the verifier re-derives each class or verdict.
 #include <limits>
 #include <stdexcept>
 
@@ -65,14 +65,21 @@ void claim_energy(Ledger& l, const ReportData& d, std::string id, std::string se
                 "method", true, std::move(test), method_names(set));
 }
 
-std::string long_time_document(const LongTimeResult& r, const std::string& folder) {
-  return fmt::format("{}/long_time_{}.json", folder, scene_name(r.config.scene));
+std::string cite_convergence(Ledger& l, const ConvergenceResult& r) {
+  std::string file = fmt::format("convergence/convergence_{}.json", scene_name(r.config.scene));
+  l.document(file, [&] { return convergence_json(r); });
+  return file;
+}
+
+std::string cite_long_time(Ledger& l, const LongTimeResult& r, const std::string& folder) {
+  std::string file = fmt::format("{}/long_time_{}.json", folder, scene_name(r.config.scene));
+  l.document(file, [&] { return long_time_json(r); });
+  return file;
 }
 
 void claim_long_time(Ledger& l, const LongTimeResult& r, const std::string& folder, std::string id, std::string section,
                      std::string sentence, EnergyVerdict v, const std::vector<std::size_t>& set) {
-  const std::string file = long_time_document(r, folder);
-  l.document(file, [&] { return long_time_json(r); });
+  const std::string file = cite_long_time(l, r, folder);
   // energy_verdict (analysis/studies/long_time.hpp) over a row: lost where the run ended or its
   // energy error reached kLostAt; else bounded (growth interval below 0.5, or within round-off),
   // drifting (above 0.5).
@@ -91,12 +98,14 @@ void claim_long_time(Ledger& l, const LongTimeResult& r, const std::string& fold
                 std::move(test), method_names(set));
 }
 
-void claim_long_time_symplectic(Ledger& l, const LongTimeResult& r, const std::string& folder, std::string id, std::string section,
-                                std::string sentence, const std::vector<std::size_t>& set) {
-  const std::string file = long_time_document(r, folder);
-  l.document(file, [&] { return long_time_json(r); });
-  claim_members(l, claim_text(std::move(id), std::move(section), std::move(sentence)), file, "/rows", Json::object(), "method", true,
-                test_field("/symplectic", "==", true), method_names(set));
+void claim_long_time_sides(Ledger& l, const LongTimeResult& r, const LongTimeSides& s, const std::string& folder, const std::string& id,
+                           const std::string& section, const std::string& sentence) {
+  claim_long_time(l, r, folder, id + ".bounded", section, sentence, EnergyVerdict::Bounded, s.bounded);
+  claim_long_time(l, r, folder, id + ".drifting", section, sentence, EnergyVerdict::Drifting, s.drifting);
+  claim_long_time(l, r, folder, id + ".lost", section, sentence, EnergyVerdict::Lost, s.lost);
+  if (s.not_by_order)  // "the bounded ones are the symplectic ones"
+    claim_members(l, claim_text(id + ".symplectic", section, sentence), cite_long_time(l, r, folder), "/rows", Json::object(), "method",
+                  true, test_field("/symplectic", "==", true), method_names(s.bounded));
 }
 
 namespace {
@@ -151,11 +160,10 @@ namespace steplab {
 
 namespace {
 
-// A comparison group over one map cell's rows: `a` the row of solver `a`, `others` every other
-// reached row with `first` (the runner-up) at their head; noise their two timing spreads.
+// A comparison group over one map cell's rows: the run of solver `a` against every other reached
+// run, `first` (the runner-up) at their head; the noise their two timing spreads.
 ClaimGroup cell_group(Ledger& l, const std::string& file, const std::vector<std::size_t>& rows, const ScalingResult& r,
                       const std::string& a, const std::string& first, const char* relation) {
-  ClaimGroup g{"comparison", {}, {}};
   const auto at = [&](std::size_t i, const char* field) { return l.at(file, fmt::format("/rows/{}/{}", i, field)); };
   constexpr std::size_t none = std::numeric_limits<std::size_t>::max();  // rows holds indices into every row
   std::size_t ia = none, ifirst = none;
@@ -164,15 +172,11 @@ ClaimGroup cell_group(Ledger& l, const std::string& file, const std::vector<std:
     if (r.rows[i].solver == first) ifirst = i;
   }
   if (ia == none) throw std::logic_error("a map cell without its cheapest run: " + a);
-  g.evidence.push_back(at(ia, "seconds"));
-  Json others = Json::array(), noise = Json::array();
-  if (ifirst != none) others.push_back(g.evidence.size()), g.evidence.push_back(at(ifirst, "seconds"));
+  std::vector<Evidence> others, noise{at(ia, "seconds_spread")};
+  if (ifirst != none) others.push_back(at(ifirst, "seconds")), noise.push_back(at(ifirst, "seconds_spread"));
   for (std::size_t i : rows)
-    if (i != ia && i != ifirst) others.push_back(g.evidence.size()), g.evidence.push_back(at(i, "seconds"));
-  noise.push_back(g.evidence.size()), g.evidence.push_back(at(ia, "seconds_spread"));
-  if (ifirst != none) noise.push_back(g.evidence.size()), g.evidence.push_back(at(ifirst, "seconds_spread"));
-  g.rule = {{"a", 0}, {"others", std::move(others)}, {"relation", relation}, {"margin", kTieMargin}, {"noise", std::move(noise)}};
-  return g;
+    if (i != ia && i != ifirst) others.push_back(at(i, "seconds"));
+  return comparison_group(at(ia, "seconds"), std::move(others), std::move(noise), relation, kTieMargin);
 }
 
 }  // namespace

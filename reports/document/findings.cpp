@@ -114,6 +114,13 @@ std::vector<EnergyBehaviour> energy_behaviour(const ReportData& d) {
   return out;
 }
 
+std::vector<std::size_t> methods_of_kind(const std::vector<EnergyBehaviour>& e, EnergyKind k) {
+  std::vector<std::size_t> out;
+  for (const EnergyBehaviour& b : e)
+    if (b.kind == k) out.push_back(b.method);
+  return out;
+}
+
 std::vector<StiffClaim> stiff_claims(const OrderReduction& r) {
   std::vector<StiffClaim> out;
   const ConvergenceSweep& s = r.sweep;

@@ -97,6 +97,8 @@ struct EnergyBehaviour {
 // The numerical methods' runs of ReportData::energy (the stability study's figure runs).
 std::vector<EnergyBehaviour> energy_behaviour(const ReportData& d);
 std::string_view to_text(EnergyKind k);
+inline constexpr EnergyKind kEnergyKinds[] = {EnergyKind::Bounded, EnergyKind::Drifts, EnergyKind::Damped, EnergyKind::Blows};
+std::vector<std::size_t> methods_of_kind(const std::vector<EnergyBehaviour>& e, EnergyKind k);
 
 // Does the order hold when stiff: each method's verdict on the stiffened scene.
 enum class StiffVerdict {

@@ -40,11 +40,17 @@ std::string and_list(const std::vector<std::string>& items) {
   return out;
 }
 
+std::string quoted_list(const std::vector<std::string>& names) {
+  std::vector<std::string> quoted;
+  for (const std::string& n : names) quoted.push_back(fmt::format("`{}`", n));
+  return and_list(quoted);
+}
+
 std::string method_list(const std::vector<std::size_t>& methods) {
   if (methods.empty()) return "none";
-  std::vector<std::string> quoted;
-  for (std::size_t m : methods) quoted.push_back(fmt::format("`{}`", name(m)));
-  return and_list(quoted);
+  std::vector<std::string> names;
+  for (std::size_t m : methods) names.push_back(name(m));
+  return quoted_list(names);
 }
 
 std::string fits_table(const ConvergenceResult& r) {
@@ -96,6 +102,14 @@ std::string join(const std::vector<double>& v) {
   std::string out;
   for (double x : v) out += fmt::format("{}{}", out.empty() ? "" : ",", x);
   return out;
+}
+
+double two_digits(double x, bool up) {
+  if (!std::isfinite(x) || x <= 0) return x;
+  const double unit = std::pow(10.0, std::floor(std::log10(x)) - 1);
+  const auto printed = [](double v) { return std::stod(fmt::format("{:.2g}", v)); };
+  const double b = printed((up ? std::ceil(x / unit) : std::floor(x / unit)) * unit);
+  return up ? (b < x ? printed(b + unit) : b) : (b > x ? printed(b - unit) : b);  // the rounding of the product
 }
 
 std::string join(const std::vector<int>& v) { return join(std::vector<double>(v.begin(), v.end())); }

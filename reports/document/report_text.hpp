@@ -21,12 +21,16 @@ std::string order_text(std::size_t method);               // declared order, or 
 std::string fitted_text(const ConvergenceFit& fit);       // headline order and its bound
 std::string and_list(const std::vector<std::string>& items);       // a, b and c
 std::string method_list(const std::vector<std::size_t>& methods);  // `a`, `b` and `c`; "none"
+std::string quoted_list(const std::vector<std::string>& names);    // `a`, `b` and `c` (a method's or a peer's)
 std::string fits_table(const ConvergenceResult& r);       // the Markdown table of fitted orders (not the exact ones)
 // "mass 1, stiffness 5, ..." in table order; `skip`: a parameter's index to leave out (-1: none).
 std::string params_text(std::size_t scene, const std::vector<double>& values, int skip = -1);
 std::string wrapped(const std::string& cmd);              // a shell command broken for the page
 std::string words(const std::vector<double>& v);          // gnuplot word list: "a b c"
 std::string join(const std::vector<double>& v);           // CLI list: "a,b,c"
+// x to two significant digits as "{:.2g}" prints it, rounded down or up so that the printed value
+// is a bound ("by 3e-06 or more", "to within 1.8e-15"); x itself where not finite and positive.
+double two_digits(double x, bool up);
 std::string join(const std::vector<int>& v);
 std::string method_words(const std::vector<std::size_t>& methods);
 

@@ -25,35 +25,23 @@ std::string see(const Page& page, const std::string& figure) {
   return n ? fmt::format(" (figure {})", n) : "";
 }
 
-// The stability studies the answers read: the report's, and the methods on springs' where the
-// report measured them (the summary table shows both).
-struct Source {
-  StabilitySource study;
-  const Findings& f;
-  const char* id;  // appended to a claim's id
-};
-std::vector<Source> sources(const Page& page) {
-  std::vector<Source> out{{{page.data, kStabilityDocument}, page.findings, ""}};
-  if (page.springs) out.push_back({{*page.springs, kSpringsStabilityDocument}, *page.springs_findings, ".springs"});
-  return out;
-}
 // One list of Findings rows (`Findings::unstable_large`, ...) over the sources, as methods.
-std::vector<std::size_t> over(const std::vector<Source>& s, std::vector<std::size_t> Findings::*list) {
+std::vector<std::size_t> over(const std::vector<ShownStudy>& s, std::vector<std::size_t> Findings::*list) {
   std::vector<std::size_t> out;
-  for (const Source& x : s)
+  for (const ShownStudy& x : s)
     for (std::size_t m : methods_of(x.f, x.f.*list)) out.push_back(m);
   return out;
 }
 
-std::vector<MethodRate> rates_over(const std::vector<Source>& s, std::vector<std::size_t> Findings::*list, bool undamped) {
+std::vector<MethodRate> rates_over(const std::vector<ShownStudy>& s, std::vector<std::size_t> Findings::*list, bool undamped) {
   std::vector<MethodRate> out;
-  for (const Source& x : s)
+  for (const ShownStudy& x : s)
     for (const MethodRate& r : rates_of(x.f, x.f.*list, undamped)) out.push_back(r);
   return out;
 }
 
 std::string stable_answer(const Page& page) {
-  const std::vector<Source> src = sources(page);
+  const std::vector<ShownStudy> src = shown_studies(page);
   const ReportConfig& c = page.data.config;
   const std::vector<std::size_t> unstable_large = over(src, &Findings::unstable_large),
                                  stable_large = over(src, &Findings::stable_large),
@@ -70,7 +58,7 @@ std::string stable_answer(const Page& page) {
   if (!always.empty()) md += fmt::format(" Stable at every step tried: {}.", method_list(always));
   md += fmt::format(" Each method's largest stable step dt* is in the summary table{}.", see(page, "regions"));
   if (Ledger* l = page.ledger)
-    for (const Source& x : src) {
+    for (const ShownStudy& x : src) {
       const StabilitySource s = x.study;
       claim_unstable_at(*l, s, fmt::format("answers.unstable_at_large_dt{}", x.id), "answers", md, c.large_dt, c.damping(),
                         methods_of(x.f, x.f.unstable_large));
@@ -98,12 +86,7 @@ std::string long_time_answer(const Page& page) {
     md += fmt::format(" Bounded are the symplectic ones, whatever their order: `{}` (order {}) drifts, `{}` (order {}) does not.",
                       name(*s.high_drift), method_info(*s.high_drift).order, name(*s.low_bounded), method_info(*s.low_bounded).order);
   md += fmt::format(" The growth exponents, the angular momentum and the phase are in \"Stable for how long?\"{}.\n", see(page, "long_time"));
-  if (Ledger* l = page.ledger) {
-    claim_long_time(*l, r, "long_time", "answers.long_time.bounded", "answers", md, EnergyVerdict::Bounded, s.bounded);
-    claim_long_time(*l, r, "long_time", "answers.long_time.drifting", "answers", md, EnergyVerdict::Drifting, s.drifting);
-    claim_long_time(*l, r, "long_time", "answers.long_time.lost", "answers", md, EnergyVerdict::Lost, s.lost);
-    if (s.not_by_order) claim_long_time_symplectic(*l, r, "long_time", "answers.long_time.symplectic", "answers", md, s.bounded);
-  }
+  if (page.ledger) claim_long_time_sides(*page.ledger, r, s, "long_time", "answers.long_time", "answers", md);
   return md;
 }
 
@@ -114,7 +97,7 @@ std::string order_answer(const Page& page) {
   // With the methods on springs that claim an order (PBD claims none: its stiffness is set at one step).
   std::vector<StabilityPoint> pooled;
   std::vector<double> order, dt;  // of the pooled points
-  for (const Source& x : sources(page))
+  for (const ShownStudy& x : shown_studies(page))
     for (std::size_t i : x.f.numerical)
       if (&x.f == &f || method_info(x.f.rows[i].method).order > 0) {
         pooled.push_back({x.study, x.f.rows[i].method});
@@ -158,10 +141,8 @@ std::string energy_answer(const Page& page) {
   const std::vector<EnergyBehaviour> e = energy_behaviour(page.data);
   if (e.empty()) return {};
   const ReportConfig& c = page.data.config;
-  std::vector<std::size_t> bounded, drifting, damped, blown;
-  for (const EnergyBehaviour& b : e)
-    (b.kind == EnergyKind::Bounded ? bounded : b.kind == EnergyKind::Drifts ? drifting : b.kind == EnergyKind::Damped ? damped : blown)
-        .push_back(b.method);
+  const std::vector<std::size_t> bounded = methods_of_kind(e, EnergyKind::Bounded), drifting = methods_of_kind(e, EnergyKind::Drifts),
+                                 damped = methods_of_kind(e, EnergyKind::Damped), blown = methods_of_kind(e, EnergyKind::Blows);
   std::string md = fmt::format("- **Is the energy kept?** Undamped over t = {:g} at dt = {}: ", c.energy_t_end, c.large_dt);
   std::vector<std::string> parts;
   if (!bounded.empty()) parts.push_back(fmt::format("E/E0 stays bounded for {}", method_list(bounded)));
@@ -176,10 +157,8 @@ std::string energy_answer(const Page& page) {
     md += fmt::format("; of the bounded ones {} {} symplectic", method_list(symplectic), symplectic.size() == 1 ? "is" : "are");
   md += fmt::format("{}.\n", see(page, "energy"));
   if (Ledger* l = page.ledger) {
-    const std::pair<EnergyKind, const std::vector<std::size_t>*> kinds[] = {
-        {EnergyKind::Bounded, &bounded}, {EnergyKind::Drifts, &drifting}, {EnergyKind::Damped, &damped}, {EnergyKind::Blows, &blown}};
-    for (const auto& [kind, set] : kinds)
-      claim_energy(*l, page.data, fmt::format("answers.energy.{}", id_word(to_text(kind))), "answers", md, kind, *set);
+    for (EnergyKind kind : kEnergyKinds)
+      claim_energy(*l, page.data, fmt::format("answers.energy.{}", id_word(to_text(kind))), "answers", md, kind, methods_of_kind(e, kind));
     if (!symplectic.empty()) claim_energy(*l, page.data, "answers.energy.bounded_symplectic", "answers", md, EnergyKind::Bounded, symplectic, true);
   }
   return md;

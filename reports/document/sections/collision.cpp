@@ -101,8 +101,7 @@ class Collision : public Section {
       md += fmt::format("; the fits of {} have bounds wider than +-0.5: not findings either way", and_list(loose));
     md += ".";
     if (l) {  // the same three classes over the bounce's convergence document
-      const std::string file = fmt::format("convergence/convergence_{}.json", scene_name(conv.config.scene));
-      l->document(file, [&] { return convergence_json(conv); });
+      const std::string file = cite_convergence(*l, conv);
       const Json fitted = test_field("/order", "!=", nullptr);
       const Json wide = test_difference("/order_bound/1", "/order_bound/0", ">", 1);
       const Json holds = test_any({test_difference("/order", "/declared_order", "<=", kKeptOrder),

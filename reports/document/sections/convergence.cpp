@@ -125,8 +125,7 @@ class Convergence : public Section {
     if (exact.empty()) return scene + ":\n\n" + fits_table(r) + "\n";
     std::string md = fmt::format("{}: exact to round-off for {}", scene, method_list(exact));
     if (l) {
-      const std::string file = fmt::format("convergence/convergence_{}.json", scene_name(r.config.scene));
-      l->document(file, [&] { return convergence_json(r); });
+      const std::string file = cite_convergence(*l, r);
       claim_members(*l, claim_text(fmt::format("convergence.exact.{}", scene_name(r.config.scene)), "convergence", md), file, "/fits",
                     Json::object(), "method", true, test_field("/exact", "==", true), method_names(exact));
     }

@@ -63,18 +63,17 @@ class DenseOutputSection : public Section {
         scene_name(c.scene), params_text(c.scene, c.params), c.t_end, c.outputs, c.dt_max, c.dt_min);
     // the orders go to data/dense_output/ (a table of fifteen rows repeating one finding would
     // not earn its half page); the text gives the finding and its largest exception
-    std::vector<std::string> kept, lost;
+    std::vector<std::string> kept, lost, kept_names, fitted_names;  // the names: the claims' sets
     const DenseOutputFit* widest = nullptr;  // the largest gap between the two fitted orders
     const auto gap = [](const DenseOutputFit& f) { return std::abs(f.outputs.order - f.steps.order); };
     for (const DenseOutputFit& f : r_.fits) {
       const bool keeps = f.outputs.fitted && std::abs(f.outputs.order - f.predicted) <= kKept;
       (keeps ? kept : lost).push_back(fmt::format("`{}` ({})", name(f.method), fitted_text(f.outputs)));
-      if (f.outputs.fitted && f.steps.fitted && (!widest || gap(f) > gap(*widest))) widest = &f;
-    }
-    std::vector<std::string> kept_names, fitted_names;
-    for (const DenseOutputFit& f : r_.fits) {
-      if (f.outputs.fitted && std::abs(f.outputs.order - f.predicted) <= kKept) kept_names.push_back(name(f.method));
-      if (f.outputs.fitted && f.steps.fitted) fitted_names.push_back(name(f.method));
+      if (keeps) kept_names.push_back(name(f.method));
+      if (f.outputs.fitted && f.steps.fitted) {
+        fitted_names.push_back(name(f.method));
+        if (!widest || gap(f) > gap(*widest)) widest = &f;
+      }
     }
     const std::size_t start = md.size();
     if (page.ledger) page.ledger->document(kDenseOutputDocument, [&] { return dense_output_json(r_); });

@@ -57,32 +57,37 @@ class Energy : public Section {
                       "E/E0 falls below 1/{:g} (the method's own damping), as blown up when it passes {:g} or the state "
                       "diverges.\n\n",
                       c.large_dt, c.energy_t_end, kBoundedGrowth, kRoundOff, kBlownRatio, kBlownRatio);
-    std::vector<std::string> bounded, drifting, damped, blown;
-    std::vector<std::size_t> of[4], symplectic, symplectic_unbounded;  // of[kind]: its methods
-    for (const EnergyBehaviour& b : e) {
+    // A line per kind: its runs, each with what shows it (its range, its drift, where it ended).
+    const auto item = [](const EnergyBehaviour& b) {
       const std::string n = fmt::format("`{}`{}", name(b.method), method_info(b.method).symplectic ? " (symplectic)" : "");
-      of[static_cast<int>(b.kind)].push_back(b.method);
+      switch (b.kind) {
+        case EnergyKind::Bounded:
+          return b.hi - b.lo <= 2 * b.round_off ? fmt::format("{} within round-off", n) : fmt::format("{} within [{:.4g}, {:.4g}]", n, b.lo, b.hi);
+        case EnergyKind::Drifts: return fmt::format("{} to {:+.3g} %", n, 100 * (b.final_ratio - 1));
+        case EnergyKind::Damped: return fmt::format("{} (E/E0 {:.3g} at the end)", n, b.final_ratio);
+        case EnergyKind::Blows: break;
+      }
+      return b.ended >= 0 ? fmt::format("{} (diverged at t = {:g})", n, b.ended) : fmt::format("{} (E/E0 {:.3g} at the end)", n, b.final_ratio);
+    };
+    const char* heads[] = {"- **Bounded**: ", "- **Drifts**, E/E0 - 1 at the end: ", "- **Damped out** by the method (left out of the figure): ",
+                           "- **Blows up** (left out of the figure): "};  // kEnergyKinds' order
+    for (std::size_t k = 0; k < std::size(kEnergyKinds); ++k) {
+      std::vector<std::string> items;
+      for (const EnergyBehaviour& b : e)
+        if (b.kind == kEnergyKinds[k]) items.push_back(item(b));
+      if (items.empty()) continue;
+      const std::string line = heads[k] + and_list(items) + ".\n";
+      md += line;
+      if (page.ledger)
+        claim_energy(*page.ledger, d, fmt::format("energy.{}", id_word(to_text(kEnergyKinds[k]))), "energy", line, kEnergyKinds[k],
+                     methods_of_kind(e, kEnergyKinds[k]));
+    }
+    std::vector<std::size_t> symplectic, symplectic_unbounded;
+    for (const EnergyBehaviour& b : e)
       if (method_info(b.method).symplectic) {
         symplectic.push_back(b.method);
         if (b.kind != EnergyKind::Bounded) symplectic_unbounded.push_back(b.method);
       }
-      if (b.kind == EnergyKind::Bounded)
-        bounded.push_back(b.hi - b.lo <= 2 * b.round_off ? fmt::format("{} within round-off", n)
-                                                         : fmt::format("{} within [{:.4g}, {:.4g}]", n, b.lo, b.hi));
-      else if (b.kind == EnergyKind::Drifts) drifting.push_back(fmt::format("{} to {:+.3g} %", n, 100 * (b.final_ratio - 1)));
-      else if (b.kind == EnergyKind::Damped) damped.push_back(fmt::format("{} (E/E0 {:.3g} at the end)", n, b.final_ratio));
-      else blown.push_back(b.ended >= 0 ? fmt::format("{} (diverged at t = {:g})", n, b.ended) : fmt::format("{} (E/E0 {:.3g} at the end)", n, b.final_ratio));
-    }
-    const std::pair<EnergyKind, std::string> lines[] = {
-        {EnergyKind::Bounded, bounded.empty() ? "" : fmt::format("- **Bounded**: {}.\n", and_list(bounded))},
-        {EnergyKind::Drifts, drifting.empty() ? "" : fmt::format("- **Drifts**, E/E0 - 1 at the end: {}.\n", and_list(drifting))},
-        {EnergyKind::Damped, damped.empty() ? "" : fmt::format("- **Damped out** by the method (left out of the figure): {}.\n", and_list(damped))},
-        {EnergyKind::Blows, blown.empty() ? "" : fmt::format("- **Blows up** (left out of the figure): {}.\n", and_list(blown))}};
-    for (const auto& [kind, line] : lines) {
-      md += line;
-      if (page.ledger && !line.empty())
-        claim_energy(*page.ledger, d, fmt::format("energy.{}", id_word(to_text(kind))), "energy", line, kind, of[static_cast<int>(kind)]);
-    }
     if (symplectic_unbounded.empty() && !symplectic.empty()) {
       const std::string finding = "Every symplectic method here keeps its energy bounded, whatever its order";
       const std::string theory =

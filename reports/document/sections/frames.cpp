@@ -5,7 +5,6 @@
 // from the study's runs.
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -111,14 +110,6 @@ class Frames : public Section {
     return m && std::find(r_.config.methods.begin(), r_.config.methods.end(), *m) != r_.config.methods.end() ? runs_of(*m)
                                                                                                           : std::vector<FrameRun>{};
   }
-  // A run's index in the study (frames.json's runs), by its set-up.
-  std::size_t index_of(const FrameRun& x) const {
-    for (std::size_t i = 0; i < r_.runs.size(); ++i)
-      if (r_.runs[i].setup.method == x.setup.method && r_.runs[i].setup.substeps == x.setup.substeps &&
-          setting(r_.runs[i].setup) == setting(x.setup))
-        return i;
-    throw std::logic_error("a frame run not in its study");
-  }
   static int setting(const FrameSetup& s) {
     return takes_sweeps(method_info(s.method)) ? s.settings.sweeps : takes_cg(method_info(s.method)) ? s.settings.cg_iterations : 0;
   }
@@ -141,10 +132,11 @@ class Frames : public Section {
       Claim c = claim_text(fmt::format("frames.splits.{}", n), "frames", md);
       c.kind = "trend";
       Json along = Json::array();
-      for (const FrameRun& x : runs) {
-        along.push_back(frame_setup_text(x.setup));
-        c.evidence.push_back(l->at(kFramesDocument, fmt::format("/runs/{}/error_max", index_of(x))));
-      }
+      for (std::size_t i = 0; i < r_.runs.size(); ++i)  // runs_of's runs, in its order, by their index in frames.json
+        if (r_.runs[i].setup.method == runs.front().setup.method) {
+          along.push_back(frame_setup_text(r_.runs[i].setup));
+          c.evidence.push_back(l->at(kFramesDocument, fmt::format("/runs/{}/error_max", i)));
+        }
       c.rule = {{"along", std::move(along)}, {"relative", 0}, {"trend", "falls"}};
       l->add(std::move(c));
     }

@@ -99,12 +99,7 @@ std::string structure_answer(const LongTimeResult& r, Ledger* l, const std::stri
                       name(*s.high_drift), method_info(*s.high_drift).order, name(*s.low_bounded), method_info(*s.low_bounded).order);
   else if (s.by_structure)
     md += " Every bounded one is symplectic and every drifting one is not.";
-  if (l) {
-    claim_long_time(*l, r, section, id + ".bounded", section, md, EnergyVerdict::Bounded, s.bounded);
-    claim_long_time(*l, r, section, id + ".drifting", section, md, EnergyVerdict::Drifting, s.drifting);
-    claim_long_time(*l, r, section, id + ".lost", section, md, EnergyVerdict::Lost, s.lost);
-    if (s.not_by_order) claim_long_time_symplectic(*l, r, section, id + ".symplectic", section, md, s.bounded);
-  }
+  if (l) claim_long_time_sides(*l, r, s, section, id, section, md);
   return md;
 }
 
@@ -190,17 +185,12 @@ class LongTime : public Section {
       if (row.round_off[1]) keep.push_back(row.method);
       else others = std::min(others, row.error[1].back());
     }
-    // "by X or more": X rounded down to two digits, so that it is a lower bound as printed
-    const double floor2 = std::isfinite(others) && others > 0
-                              ? [&] { const double unit = std::pow(10.0, std::floor(std::log10(others)) - 1);
-                                      return std::floor(others / unit) * unit; }()
-                              : others;
+    const double floor2 = two_digits(others, false);  // "by X or more": a lower bound as printed
     const std::string md = fmt::format("- **Angular momentum** stays within round-off ({:g} u sqrt(steps)) with {}; every other method "
                                        "that kept running changed it by {} or more.\n",
                                        kRoundOff, method_list(keep), g2(floor2));
     if (l) {
-      const std::string file = long_time_document(orbit_, "long_time");
-      l->document(file, [&] { return long_time_json(orbit_); });
+      const std::string file = cite_long_time(*l, orbit_, "long_time");
       const std::string inv = "/invariants/" + orbit_.invariants[1];
       claim_members(*l, claim_text("long_time.angular_momentum.round_off", "long_time", md), file, "/rows", Json::object(), "method",
                     true, test_all({test_field("/status", "==", "ok"), test_field(inv + "/round_off", "==", true)}), method_names(keep));
@@ -210,7 +200,7 @@ class LongTime : public Section {
       if (!rest.empty())
         claim_members(*l, claim_text("long_time.angular_momentum.changed", "long_time", md), file, "/rows", Json::object(), "method",
                     true, test_all({test_field("/status", "==", "ok"), test_field(inv + "/round_off", "==", false),
-                                    test_field(inv + "/error_at_end", ">=", std::stod(g2(floor2)))}),
+                                    test_field(inv + "/error_at_end", ">=", floor2)}),
                     method_names(rest));
     }
     return md;

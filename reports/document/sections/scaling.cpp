@@ -34,12 +34,11 @@ std::string params_but_size(std::size_t scene, const std::vector<double>& params
 // The exponents that are findings, a row per solver with one; the others in a sentence.
 std::string exponents_table(const ScalingResult& r, Ledger* l) {
   std::string rows;
-  std::vector<std::string> none, none_names;
+  std::vector<std::string> none;  // the solvers with no exponent that is a finding
   for (std::size_t s = 0; s < r.solvers(); ++s) {  // the first block's: the report's error, the first stiffness
     const ScalingFit& f = r.fits[s];
     if (!finding(f.step) && !finding(f.run) && !finding(f.stable)) {
-      none.push_back("`" + f.solver + "`");
-      none_names.push_back(f.solver);
+      none.push_back(f.solver);
       continue;
     }
     std::vector<int> capped;
@@ -56,7 +55,7 @@ std::string exponents_table(const ScalingResult& r, Ledger* l) {
   if (!none.empty())
     md += fmt::format("{} no exponent is a finding at these sizes (fewer than {} sizes, under {:g} decades of N, or an interval "
                       "wider than +-{:g}).\n\n",
-                      rows.empty() ? "For every solver" : fmt::format("For {}", and_list(none)), kFitSizes, kFitDecades, kExponentHalfWidth);
+                      rows.empty() ? "For every solver" : "For " + quoted_list(none), kFitSizes, kFitDecades, kExponentHalfWidth);
   if (l && !r.fits.empty()) {  // the solvers of the first block with no exponent that is a finding (finding() above)
     const std::string file = fmt::format("scaling/scaling_{}.json", r.config.scene);
     const Json& doc = l->document(file, [&] { return scaling_json(r); });
@@ -67,7 +66,7 @@ std::string exponents_table(const ScalingResult& r, Ledger* l) {
     const Json& first = doc.at("exponents").at(0);
     claim_members(*l, claim_text(fmt::format("scaling.{}.no_exponent", r.config.scene), "scaling", md), file, "/exponents",
                   {{"target", first.at("target")}, {"stiffness", first.at("stiffness")}}, "solver", false,
-                  test_not(test_any(std::move(findings))), none_names);
+                  test_not(test_any(std::move(findings))), none);
   }
   return md;
 }

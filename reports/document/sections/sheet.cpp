@@ -35,6 +35,8 @@ struct SheetConstants {
   double largest_difference;  // |formula - exact| over the figure's time span
 };
 
+constexpr int kAnalyticSamples = 2000;  // intervals of [0, t_end] the formula is checked over
+
 SheetConstants sheet_constants(const ReportConfig& c) {
   const Spring s(c.oscillator.params);
   const std::complex<double> lambda = s.eigenvalue();  // alpha + i beta when underdamped, else real
@@ -42,8 +44,8 @@ SheetConstants sheet_constants(const ReportConfig& c) {
   if (!k.underdamped) return k;
   k.c2 = -k.alpha * k.c1 / k.beta;
   const SceneKernel& scene = scene_kernel(c.oscillator.scene);
-  for (int i = 0; i <= 2000; ++i) {
-    const double t = c.spring_figure_t_end * i / 2000.0;
+  for (int i = 0; i <= kAnalyticSamples; ++i) {
+    const double t = c.spring_figure_t_end * i / kAnalyticSamples;
     const double y = std::exp(k.alpha * t) * (k.c1 * std::cos(k.beta * t) + k.c2 * std::sin(k.beta * t)) + s.equilibrium();
     k.largest_difference = std::max(k.largest_difference, std::abs(y - scene.exact(c.oscillator.params, t).x[0]));
   }
@@ -90,11 +92,7 @@ class Sheet : public Section {
           "gives $c_1 = m g / k$, and $y'(0) = \\alpha c_1 + \\beta c_2 = 0$ gives $c_2 = -\\alpha c_1 / \\beta$.\n\n";
     const SheetConstants k = sheet_constants(c);
     if (k.underdamped) {
-      // the agreement rounded up to two digits: "to within" is an upper bound as printed
-      const double unit = k.largest_difference > 0 ? std::pow(10.0, std::floor(std::log10(k.largest_difference)) - 1) : 1;
-      const auto printed = [](double x) { return std::stod(fmt::format("{:.1e}", x)); };
-      double within = printed(std::ceil(k.largest_difference / unit) * unit);
-      if (within < k.largest_difference) within = printed(within + unit);  // the rounding of the product
+      const double within = two_digits(k.largest_difference, true);  // "to within": an upper bound as printed
       md += fmt::format("Here $4 k m = {:g} > \\gamma^2 = {:g}$ (underdamped): $\\alpha = {:.6g}$, $\\beta = {:.6g}$, "
                         "**$c_1 = {:.6g}$**, **$c_2 = {:.6g}$**. With these constants the formula agrees with the exact solution "
                         "the errors below are measured against (the scene's own, written for every damping regime) to within "
@@ -104,7 +102,7 @@ class Sheet : public Section {
         const char* file = "sheet/analytic.json";
         l->document(file, [&] {
           return Json{{"schema", "steplab.sheet_analytic/1"}, {"alpha", k.alpha}, {"beta", k.beta}, {"c1", k.c1}, {"c2", k.c2},
-                      {"t_end", c.spring_figure_t_end}, {"samples", 2001}, {"largest_difference", k.largest_difference}};
+                      {"t_end", c.spring_figure_t_end}, {"samples", kAnalyticSamples + 1}, {"largest_difference", k.largest_difference}};
         });
         Claim cl = claim_text("sheet.analytic_agrees", "sheet", fmt::format("the formula agrees with the exact solution to within {:.1e}", within));
         cl.kind = "threshold", cl.rule = {{"op", "<="}, {"limit", within}};

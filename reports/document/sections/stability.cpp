@@ -84,7 +84,7 @@ class Stability : public Section {
     std::string rule = "|------------|";
     for (double g : dampings) md += fmt::format(" damping {} |", g), rule += "-------|";
     md += "\n" + rule + "\n";
-    std::size_t agree = 0, rows = 0;
+    std::size_t agree = 0;
     std::vector<std::pair<std::size_t, double>> cases;  // (method, damping) of each cell
     for (std::size_t m : d.methods) {
       if (method_info(m).exact_flow) continue;
@@ -95,7 +95,6 @@ class Stability : public Section {
           md += " - |";
           continue;
         }
-        ++rows;
         agree += same_within(r->dt_measured, r->dt_theory, kAgree);
         cases.push_back({m, g});
         md += fmt::format(" {} ({}){} |", table_dt(r->dt_measured), table_dt(r->dt_theory),
@@ -106,7 +105,7 @@ class Stability : public Section {
       md += "\n";
     }
     const std::string agreement =
-        fmt::format("The measured dt* is within {:g} % of the prediction in {} of these {} cases.", 100 * kAgree, agree, rows);
+        fmt::format("The measured dt* is within {:g} % of the prediction in {} of these {} cases.", 100 * kAgree, agree, cases.size());
     md += "\n" + agreement + "\n\n";
     if (page.ledger) claim_thresholds_agree(*page.ledger, {d}, "stability.thresholds_agree", "stability", agreement, cases, kAgree, agree);
     if (page.has("damping"))

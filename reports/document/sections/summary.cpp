@@ -58,20 +58,13 @@ class Summary : public Section {
                         threshold_cell(r.dt_measured, r.again_measured), yes(r.stable_large_dt), yes(r.stable_undamped));
     }
     if (Ledger* l = page.ledger) {  // its last column, over each stability study it shows
-      struct Shown {
-        StabilitySource source;
-        const Findings* f;
-        const char* suffix;
-      };
-      std::vector<Shown> shown{{{page.data}, &page.findings, ""}};
-      if (page.springs_findings) shown.push_back({{*page.springs, kSpringsStabilityDocument}, page.springs_findings, ".springs"});
-      for (const Shown& x : shown) {
-        claim_unstable_at(*l, x.source, fmt::format("summary.unstable_at_large_dt{}", x.suffix), "summary",
+      for (const ShownStudy& x : shown_studies(page)) {
+        claim_unstable_at(*l, x.study, fmt::format("summary.unstable_at_large_dt{}", x.id), "summary",
                           fmt::format("the summary table's last column, at dt {}: no", c.large_dt), c.large_dt, gamma,
-                          methods_of(*x.f, x.f->unstable_large));
-        claim_unstable_at(*l, x.source, fmt::format("summary.unstable_undamped{}", x.suffix), "summary",
+                          methods_of(x.f, x.f.unstable_large));
+        claim_unstable_at(*l, x.study, fmt::format("summary.unstable_undamped{}", x.id), "summary",
                           fmt::format("the summary table's last column, at dt {} undamped: no", c.small_dt), c.small_dt, 0.0,
-                          methods_of(*x.f, x.f->unstable_undamped));
+                          methods_of(x.f, x.f.unstable_undamped));
       }
     }
     md += fmt::format(
