@@ -137,16 +137,6 @@ concept Scene = requires(const S& s, const Vec<S::dim>& x, const Vec<S::dim>& v,
   { s.initial() } -> std::convertible_to<State<S::dim>>;
 };
 
-// A scene file ends with STEPLAB_SCENE(<its type>);, outside any namespace (tools/kernels.cmake).
-// Code that takes long to compile and need not be inlined (the chain's long-double
-// eigen-decomposition) goes at the end of the file inside #ifdef STEPLAB_SCENE_SOURCE: the scene's
-// generated translation unit defines it, so that code is compiled once, not in every method's file.
-#define STEPLAB_SCENE(...)                                                                          \
-  static_assert(::steplab::Scene<__VA_ARGS__>, "STEPLAB_SCENE: the type is not a Scene (core/scene.hpp)"); \
-  static_assert(::steplab::declarations_hold<__VA_ARGS__>(),                                          \
-                "STEPLAB_SCENE: a declared size_param, stiffness_param or damping_param names no parameter of the scene, "  \
-                "or size_param is not a count of a scene of run-time size (core/scene.hpp)")
-
 // A scene with ground contact says how deep its deepest point is below the ground (negative
 // when all are above): it touches the ground where that is > 0. The collision study records it.
 template <class S>
@@ -357,20 +347,6 @@ template <Scene S> constexpr int jacobian_bandwidth() {
   else return -1;
 }
 
-// What STEPLAB_SCENE checks of the declarations: every declared name is a parameter, and a size
-// parameter is a count of a scene of run-time size.
-template <Scene S> constexpr bool declarations_hold() {
-  if constexpr (requires { S::size_param; })
-    if (size_param_index<S>() < 0 || !S::params[size_param_index<S>()].is_count || S::dim != Eigen::Dynamic) return false;
-  if constexpr (requires { S::stiffness_param; })
-    if (stiffness_param_index<S>() < 0) return false;
-  if constexpr (requires { S::damping_param; })
-    if (damping_param_index<S>() < 0) return false;
-  if constexpr (requires { S::stiff_limit_scene; })
-    if (!HasStiffLimit<S> || stiffness_param_index<S>() < 0) return false;
-  return coords_per_mass<S>() >= 1;
-}
-
 // Whether a parameter table (a scene's `params`) has a parameter of that name.
 inline bool has_param(std::span<const ParamSpec> params, std::string_view name) {
   for (const ParamSpec& p : params)
@@ -400,3 +376,6 @@ template <Scene S> S make_default_scene() {
 }
 
 }  // namespace steplab
+
+// STEPLAB_SCENE and what it checks of a scene's declarations.
+#include "core/scene_checks.hpp"  // IWYU pragma: export

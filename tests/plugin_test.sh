@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The README's walk-through "check your own integrator", from an empty folder: install steplab
 # into a temporary prefix, write a method (Heun's), the same method declared one order too high,
-# and a scene without an exact solution (a damped pendulum, named arm: steplab has a pendulum of its own) into a new project, build it with
+# and docs/scenes.md's scene without an exact solution (a damped pendulum, named arm) into a new project, build it with
 # steplab_add_executable(), and ask the tool about them:
 #   mysteplab check --method heun            exit 0 (every claim holds)
 #   mysteplab check --method heun_claims_3   exit 1 (the order claim fails, and the symplectic one
@@ -19,7 +19,8 @@
 #                                            sections it cannot feed left out with one line each
 # and a scene of run-time size (beads on a string, exact modes) that run and the studies of
 # convergence, stability and scaling take by what it declares; and docs/scenes.md's worked
-# example (the Duffing oscillator, no Jacobians), its commands printing what the page shows.
+# examples (the Duffing oscillator, no Jacobians; the arm, with its invariant), their commands
+# printing what the page shows.
 # Usage: plugin_test.sh BUILD_DIR [extra cmake arguments for the project]
 set -euo pipefail
 build=$1
@@ -92,46 +93,6 @@ struct HeunFrozenTime {
 };
 
 STEPLAB_METHOD(HeunFrozenTime);
-EOF
-
-cat > arm.hpp <<'EOF'
-#pragma once
-#include <array>
-#include <cmath>
-#include <span>
-#include <string_view>
-
-#include <steplab/core/scene.hpp>
-
-// A damped pendulum on an arm, angle x from the vertical: m l^2 x'' = -m g l sin x - c x'. No closed form:
-// studies converge against the reference solution.
-struct Arm {
-  static constexpr int dim = 1;
-  static constexpr std::string_view name = "arm";
-  static constexpr std::array<steplab::ParamSpec, 4> params{{
-      {"bob-mass", 1.0, steplab::Bound::Positive, "mass of the bob"},
-      {"arm", 1.0, steplab::Bound::Positive, "length of the arm"},
-      {"friction", 0.05, steplab::Bound::NonNegative, "damping torque per angular velocity"},
-      {"angle", 2.0, steplab::Bound::Any, "start angle (at rest), radians"},
-  }};
-  double m, l, c, a0, g = 9.81;
-  explicit Arm(std::span<const double> p) : m(p[0]), l(p[1]), c(p[2]), a0(p[3]) {}
-  steplab::Vec<1> mass() const { return steplab::Vec<1>::Constant(m * l * l); }
-  steplab::Vec<1> inverse_mass() const { return steplab::Vec<1>::Constant(1 / (m * l * l)); }
-  steplab::Vec<1> force(const steplab::Vec<1>& x, const steplab::Vec<1>& v) const {
-    return steplab::Vec<1>::Constant(-m * g * l * std::sin(x[0]) - c * v[0]);
-  }
-  steplab::Jacobians<1> jacobians(const steplab::Vec<1>& x, const steplab::Vec<1>&) const {
-    return {steplab::Mat<1>::Constant(-m * g * l * std::cos(x[0])), steplab::Mat<1>::Constant(-c)};
-  }
-  bool velocity_dependent() const { return c != 0; }
-  double energy(const steplab::Vec<1>& x, const steplab::Vec<1>& v) const {
-    return 0.5 * m * l * l * v[0] * v[0] + m * g * l * (1 - std::cos(x[0]));
-  }
-  steplab::State<1> initial() const { return {steplab::Vec<1>::Constant(a0), steplab::Vec<1>::Zero()}; }
-};
-
-STEPLAB_SCENE(Arm);
 EOF
 
 cat > beads.hpp <<'EOF'
@@ -233,12 +194,16 @@ struct Beads {
 STEPLAB_SCENE(Beads);
 EOF
 
-# docs/scenes.md's worked example, as the page prints it: a scene without Jacobians.
+# docs/scenes.md's worked examples, as the page prints them: a scene without Jacobians (Duffing's)
+# and a damped pendulum with its invariant, period and extent (named arm: steplab has a pendulum
+# of its own).
 python3 - "$docs" <<'EOF'
 import re, sys
 page = open(sys.argv[1]).read()
 section = page[page.index("## A scene of your own"):]
-open("duffing.hpp", "w").write(re.search(r"```cpp\n(.*?)```", section, flags=re.S).group(1))
+duffing, arm = re.findall(r"```cpp\n(.*?)```", section, flags=re.S)[:2]
+open("duffing.hpp", "w").write(duffing)
+open("arm.hpp", "w").write(arm)
 EOF
 
 cat > CMakeLists.txt <<'EOF'
@@ -286,12 +251,28 @@ python3 - "$docs" "$tool" <<'EOF'
 import re, shlex, subprocess, sys
 page, tool = open(sys.argv[1]).read(), sys.argv[2]
 section = page[page.index("## A scene of your own"):]
-for block in re.findall(r"^```\n(.*?)^```", section, flags=re.S | re.M):
+# the page's fenced blocks without a language (a fence opens and closes a block in turn; a
+# pattern over the text alone took a closing fence for an opening one and checked nothing)
+blocks, fence = [], None
+for line in section.split("\n"):
+    if line.startswith("```"):
+        if fence is None:
+            fence = (line[3:].strip(), [])
+        else:
+            if not fence[0]:
+                blocks.append("\n".join(fence[1]))
+            fence = None
+    elif fence is not None:
+        fence[1].append(line)
+commands = [l for b in blocks for l in b.split("\n") if l.startswith("$ build/mysteplab ")]
+assert len(commands) == section.count("\n$ build/mysteplab "), "a command outside a plain fenced block"
+assert len(commands) >= 5, commands  # Duffing's two, the arm's three
+for block in blocks:
     for cmd_block in re.split(r"^(?=\$ )", block, flags=re.M):
         lines = [l for l in cmd_block.rstrip("\n").split("\n") if l]
         if not lines or not lines[0].startswith("$ build/mysteplab "):
             continue
-        out = subprocess.run([tool] + shlex.split(lines[0])[1:], capture_output=True, text=True, check=True).stdout.split("\n")
+        out = subprocess.run([tool] + shlex.split(lines[0])[2:], capture_output=True, text=True, check=True).stdout.split("\n")
         at = 0
         for want in lines[1:]:
             if want.endswith("..."):
@@ -306,6 +287,10 @@ for block in re.findall(r"^```\n(.*?)^```", section, flags=re.S | re.M):
         print(f"docs/scenes.md: {lines[0][2:]}: as printed")
 r = subprocess.run([tool, "run", "--scene", "duffing", "--method", "implicit_euler"], capture_output=True, text=True)
 assert r.returncode == 2 and len(r.stderr.splitlines()) == 1 and "jacobians" in r.stderr and not r.stdout, r
+# the arm's long-time study at its default friction: refused in the one line the page quotes
+r = subprocess.run([tool, "study", "long-time", "--scene", "arm"], capture_output=True, text=True)
+quoted = "--friction 0.05 makes the arm's energy decay: it is then no invariant; accepted: 0 for the long-time study"
+assert r.returncode == 2 and r.stderr.splitlines() == ["steplab: " + quoted] and quoted in " ".join(page.split()), r
 EOF
 # the new method on a built-in scene, the built-in ones on the new scene
 "$tool" run --scene chain --method heun --dt 0.001 --t-end 1 >/dev/null

@@ -76,6 +76,7 @@ template <class A>
 StudyCommand study_command(CLI::App* study, CLI::App* (*add)(CLI::App*, A&), int (*run)(A&, Context&)) {
   auto args = std::make_shared<A>();
   CLI::App* app = add(study, *args);
+  app->footer("Each column of its table: docs/studies.md, \"The tables, column by column\".\n\n" + app->get_footer());
   return {app, [args, run](Context& ctx) { return run(*args, ctx); }};
 }
 // Each study's command, `<name>_command`, for each name of the list of studies
