@@ -6,7 +6,6 @@
 
 #include "analysis/fits/fit.hpp"
 #include "analysis/kernel/shard.hpp"
-#include "analysis/kernel/noise.hpp"
 #include "analysis/studies/defaults.hpp"
 
 namespace steplab {
@@ -92,19 +91,13 @@ FrameRun measure(const FramesConfig& c, const Reference& ref, const FrameSetup& 
   return out;
 }
 
-// Whether run a dominates run b: no dearer and more accurate, on each cost the study has. Spring
-// visits are counts: a dearer by any amount is dearer, equal ones are equal. Times within the
-// timing's noise (kTieMargin, analysis/kernel/noise.hpp) are not told apart: of two set-ups of
-// (nearly) equal cost the more accurate dominates, whichever timed a little faster.
-bool dominates(const FrameRun& a, const FrameRun& b, bool timed) {
-  if (!(a.error < b.error)) return false;
-  if (a.spring_visits > b.spring_visits) return false;
-  return !timed || a.seconds <= kTieMargin * b.seconds;
-}
+// Whether run a dominates run b: no dearer and more accurate. The cost is the spring visits a
+// frame (frame_cost), a count: a dearer by any amount is dearer, equal ones are equal.
+bool dominates(const FrameRun& a, const FrameRun& b) { return a.error < b.error && a.spring_visits <= b.spring_visits; }
 
 // Per family, its stable set-ups that no other of the family dominates, cheapest first (by the
 // cost the front is drawn against, then by error).
-std::vector<FamilyFront> fronts(const std::vector<FrameRun>& runs, bool timed) {
+std::vector<FamilyFront> fronts(const std::vector<FrameRun>& runs) {
   std::vector<FamilyFront> out;
   for (Family f : {Family::ExplicitRungeKutta, Family::Splitting, Family::ImplicitRungeKutta, Family::AdamsBashforth, Family::Bdf,
                    Family::PositionBased}) {
@@ -114,10 +107,10 @@ std::vector<FamilyFront> fronts(const std::vector<FrameRun>& runs, bool timed) {
     if (members.empty()) continue;
     FamilyFront front{f, {}};
     for (std::size_t i : members)
-      if (std::none_of(members.begin(), members.end(), [&](std::size_t j) { return dominates(runs[j], runs[i], timed); }))
+      if (std::none_of(members.begin(), members.end(), [&](std::size_t j) { return dominates(runs[j], runs[i]); }))
         front.runs.push_back(i);
     std::stable_sort(front.runs.begin(), front.runs.end(), [&](std::size_t a, std::size_t b) {
-      const double ca = frame_cost(runs[a], timed), cb = frame_cost(runs[b], timed);
+      const double ca = frame_cost(runs[a]), cb = frame_cost(runs[b]);
       return ca != cb ? ca < cb : runs[a].error < runs[b].error;
     });
     out.push_back(std::move(front));
@@ -150,7 +143,7 @@ std::vector<FrameSetup> frame_setups(const std::vector<std::size_t>& methods, in
   return out;
 }
 
-double frame_cost(const FrameRun& r, bool timed) { return timed ? r.seconds : r.spring_visits; }
+double frame_cost(const FrameRun& r) { return r.spring_visits; }
 
 FramesResult frames_study(const FramesConfig& config) {
   FramesResult out;
@@ -169,7 +162,7 @@ FramesResult frames_study(const FramesConfig& config) {
       std::nth_element(t.begin(), t.begin() + static_cast<std::ptrdiff_t>(t.size() / 2), t.end());
       r.seconds = t[t.size() / 2] / static_cast<double>(frame_count(config));
     }
-  out.fronts = fronts(out.runs, config.timing);
+  out.fronts = fronts(out.runs);
 
   if (config.orders) {
     for (std::size_t m : config.methods) {

@@ -90,7 +90,12 @@ FramesConfig default_frames_config();
 std::vector<FrameSetup> frame_setups(const std::vector<std::size_t>& methods, int budget);
 FramesResult frames_study(const FramesConfig& config);
 
-// The cost a front is drawn against: seconds a frame when timed, spring visits a frame otherwise.
-double frame_cost(const FrameRun& r, bool timed);
+// The cost the fronts and the cheapest set-ups are drawn against: the spring visits a frame, a
+// stated operation count of every kind of work (a projection visits one spring; a force
+// evaluation, a Jacobian, a factorisation or a linear solve all of them, each a pass over the
+// rope's tridiagonal system), the same on every machine. The time a frame is measured beside it,
+// but a verdict on it would flip with the machine's load (two set-ups 0.6 % apart in time, XPBD
+// and PBD, swapped places between two reports).
+double frame_cost(const FrameRun& r);
 
 }  // namespace steplab

@@ -67,7 +67,7 @@ TEST(Frames, FrontsFallInErrorAsTheCostRises) {
       EXPECT_TRUE(r.stable);
       if (k == 0) continue;
       const FrameRun& before = study().runs[f.runs[k - 1]];
-      EXPECT_GE(frame_cost(r, false), frame_cost(before, false));
+      EXPECT_GE(frame_cost(r), frame_cost(before));
       EXPECT_LT(r.error, before.error);
     }
   }
