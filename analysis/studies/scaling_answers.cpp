@@ -59,20 +59,23 @@ void answer_cell(const ScalingResult& r, std::size_t b, std::size_t k, ScalingCe
   cell.implicit_peer_over_implicit = ratio(peer, implicit);
 }
 
-// The first size where the cheapest implicit method beats every explicit one (steplab's methods).
+// The first size where the cheapest implicit fixed-step method's run is cheaper than every
+// explicit one's (steplab's methods, dopri5 among the explicit) by more than the timing's noise
+// (noise_margin of the two runs' spreads, analysis/kernel/noise.hpp). Untimed it is not read: the
+// force evaluations leave out the implicit methods' factorisations and solves.
 void answer_crossover(const ScalingResult& r, std::size_t b, ScalingBlock& block) {
   const ScalingConfig& c = r.config;
+  if (!c.timing) return;
   for (std::size_t k = 0; k < c.sizes.size() && block.crossover == 0; ++k) {
-    double explicit_best = std::numeric_limits<double>::infinity(), implicit_best = explicit_best;
-    std::string implicit_name;
+    const ScalingRow *imp = nullptr, *exp = nullptr;  // each side's cheapest run at this size
     for (std::size_t s = 0; s < c.methods.size(); ++s) {
       const ScalingRow& w = r.rows_of(b * r.solvers() + s)[k];
       if (!w.reached()) continue;
-      const double cost = scaling_cost(c, w);
-      if (w.implicit && cost < implicit_best) implicit_best = cost, implicit_name = w.solver;
-      if (!w.implicit && cost < explicit_best) explicit_best = cost;
+      const ScalingRow*& side = w.implicit ? imp : exp;
+      if (!side || w.seconds < side->seconds) side = &w;
     }
-    if (implicit_best < explicit_best) block.crossover = c.sizes[k], block.crossover_method = implicit_name;
+    if (imp && (!exp || noise_margin(imp->spread, exp->spread) * imp->seconds < exp->seconds))
+      block.crossover = c.sizes[k], block.crossover_method = imp->solver;
   }
 }
 

@@ -190,7 +190,7 @@ std::vector<StableStep> stable_steps(const WorkPrecisionConfig& c, const Where& 
                                      const std::vector<WorkPoint>& points) {
   std::vector<StableStep> out;
   for (const std::size_t m : c.methods)
-    if (!method_info(m).implicit) out.push_back({std::string(method_info(m).name), 0, -1});
+    if (!method_info(m).implicit) out.push_back({std::string(method_info(m).name), 0, -1, kInf});
   const SceneKernel& k = scene_kernel(stiff.scene);
   const Where slow{scene_index(k.stiff_limit_scene), k.stiff_limit(stiff.params)};
   const std::vector<double> accuracy = study_map<double>(out.size(), c.workers, [&](std::size_t task) {
@@ -200,6 +200,8 @@ std::vector<StableStep> stable_steps(const WorkPrecisionConfig& c, const Where& 
     StableStep& s = out[task];
     for (const WorkPoint& p : points)
       if (p.method == s.method && p.status == RunStatus::Ok) s.largest_stable_dt = std::max(s.largest_stable_dt, p.setting);
+    for (const WorkPoint& p : points)
+      if (p.method == s.method && p.setting > s.largest_stable_dt) s.next_tried_dt = std::min(s.next_tried_dt, p.setting);
     s.accuracy_dt = accuracy[task];
   }
   return out;

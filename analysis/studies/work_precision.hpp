@@ -69,6 +69,7 @@ struct StableStep {
   std::string method;
   double largest_stable_dt;   // the largest dt of the scene's sweep that did not diverge
   double accuracy_dt;         // on the stiff limit, interpolated in the same dt sweep; -1: not reached
+  double next_tried_dt;       // the sweep's next dt above largest_stable_dt (which diverged): the limit lies between; inf: none
 };
 
 struct SceneWork {

@@ -144,9 +144,14 @@ std::string block_table(const ScalingResult& r, std::size_t b) {
     out += fmt::format("{:<18} {:>20} {:>20} {:>20}\n", f.solver, exponent_text(f.step), exponent_text(f.run), exponent_text(f.stable));
   }
   out += exponent_rule_text() + "\n";
-  out += block.crossover == 0 ? std::string("\nNo size here at which an implicit method's run is cheaper than every explicit one's.\n")
-                              : fmt::format("\nFrom N = {} on the sizes here, {} is cheaper than every explicit method.\n",
-                                            scaling_masses(c, block.crossover), block.crossover_method);
+  out += !c.timing ? std::string("\nUntimed, where implicit pays is not read: force evaluations leave out the implicit methods' "
+                                 "factorisations and solves.\n")
+         : block.crossover == 0
+             ? std::string("\nNo size here at which an implicit method's run is cheaper than every explicit one's by more than the "
+                           "timing's noise.\n")
+             : fmt::format("\nAt N = {}, the first size here where one is, {}'s run is cheaper than every explicit method's by more "
+                           "than the timing's noise.\n",
+                           scaling_masses(c, block.crossover), block.crossover_method);
   return out;
 }
 

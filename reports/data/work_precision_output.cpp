@@ -1,6 +1,7 @@
 // The work-precision study's writers (analysis/studies/work_precision.hpp): its JSON
 // (steplab.work_precision/1) and its tables; and a run's counts in words, which the report's
 // sections share.
+#include <cmath>
 #include <string>
 
 #include <fmt/format.h>
@@ -81,7 +82,10 @@ Json work_precision_json(const WorkPrecisionResult& r) {
   j["scenes"] = std::move(scenes);
   Json limits = Json::array();
   for (const StableStep& l : r.limits)
-    limits.push_back({{"method", l.method}, {"largest_stable_dt", l.largest_stable_dt}, {"accuracy_dt", null_if_negative(l.accuracy_dt)}});
+    limits.push_back({{"method", l.method},
+                      {"largest_stable_dt", l.largest_stable_dt},
+                      {"next_tried_dt", std::isfinite(l.next_tried_dt) ? Json(l.next_tried_dt) : Json()},
+                      {"accuracy_dt", null_if_negative(l.accuracy_dt)}});
   j["chain_step_limits"] = std::move(limits);
   Json rows = Json::array();
   for (const StiffnessRow& s : r.stiffness)

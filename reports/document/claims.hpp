@@ -205,4 +205,11 @@ void claim_stiff(Ledger& l, const ReportData& d, const std::string& id, const st
 void claim_map(Ledger& l, const ScalingResult& r, std::size_t target, const std::string& id, const std::string& section,
                const std::string& sentence, const MapTally& tally);
 
+// The scaling study's crossover (answer_crossover, timed only) at its first block, in the cited
+// document `file`: at each size up to the crossover's (every size where there is none), the cheapest
+// implicit fixed-step run against every explicit one's (steplab's methods), a comparison with the
+// two runs' spreads as the noise; a count claim that 1 of them holds (the crossover's) or none.
+void claim_scaling_crossover(Ledger& l, const ScalingResult& r, const std::string& file, const std::string& id,
+                             const std::string& section, const std::string& sentence);
+
 }  // namespace steplab

@@ -2,6 +2,7 @@
 // documents they cite (claims.hpp): each restates, over the cited document's own fields, the rule
 // findings.hpp and analysis/studies apply, so that the verifier re-derives each class or verdict.
 #include <limits>
+#include <map>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -10,6 +11,7 @@
 #include "analysis/studies/order_reduction.hpp"
 #include "reports/data/studies.hpp"
 #include "reports/document/claims.hpp"
+#include "reports/document/figure_styles.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/sections/long_time.hpp"
 
@@ -188,6 +190,7 @@ void claim_map(Ledger& l, const ScalingResult& r, std::size_t target, const std:
   l.document(file, [&] { return scaling_json(r); });
   const std::size_t nk = r.blocks.size() / r.config.targets.size();
   std::vector<ClaimGroup> ties, wins, implicit, still;
+  std::map<std::string, std::vector<ClaimGroup>> by_group;  // the cells whose cheapest is of each group (solver_group)
   for (std::size_t k = 0; k < nk; ++k) {
     const std::size_t b = target * nk + k;
     const ScalingBlock& block = r.blocks[b];
@@ -205,6 +208,7 @@ void claim_map(Ledger& l, const ScalingResult& r, std::size_t target, const std:
       }
       ties.push_back(cell_group(l, file, rows, r, m.cheapest, m.next, "tie"));
       wins.push_back(cell_group(l, file, rows, r, m.cheapest, m.next, "less"));
+      by_group[solver_group(m.cheapest)].push_back(wins.back());
       if (!m.best_implicit.empty())
         implicit.push_back(cell_group(l, file, rows, r, m.best_implicit, m.best_implicit == m.cheapest ? m.next : m.cheapest, "less"));
     }
@@ -213,8 +217,37 @@ void claim_map(Ledger& l, const ScalingResult& r, std::size_t target, const std:
   for (const auto& [group, n] : tally.wins) won += n;
   claim_count(l, claim_text(id + ".ties", section, sentence), std::move(ties), tally.ties);
   claim_count(l, claim_text(id + ".wins", section, sentence), std::move(wins), won);
+  for (auto& [group, cells] : by_group) {
+    const auto n = tally.wins.find(group);
+    claim_count(l, claim_text(id + ".wins." + id_word(group), section, sentence), std::move(cells), n == tally.wins.end() ? 0 : n->second);
+  }
   claim_count(l, claim_text(id + ".implicit_wins", section, sentence), std::move(implicit), static_cast<int>(tally.implicit.size()));
   claim_count(l, claim_text(id + ".at_rest", section, sentence), std::move(still), tally.still);
+}
+
+void claim_scaling_crossover(Ledger& l, const ScalingResult& r, const std::string& file, const std::string& id,
+                             const std::string& section, const std::string& sentence) {
+  if (!r.config.timing) return;
+  l.document(file, [&] { return scaling_json(r); });
+  const ScalingBlock& block = r.blocks.front();
+  std::vector<ClaimGroup> groups;
+  for (std::size_t k = 0; k < r.config.sizes.size(); ++k) {
+    const ScalingRow *imp = nullptr, *exp = nullptr;
+    std::vector<std::size_t> rows;  // the cheapest implicit run, then every explicit one (JSON rows are ScalingResult::rows)
+    for (std::size_t s = 0; s < r.config.methods.size(); ++s) {
+      const ScalingRow& w = r.rows_of(s)[k];
+      if (!w.reached()) continue;
+      if (!w.implicit) rows.push_back(static_cast<std::size_t>(&w - r.rows.data()));
+      const ScalingRow*& side = w.implicit ? imp : exp;
+      if (!side || w.seconds < side->seconds) side = &w;
+    }
+    if (imp) {
+      rows.insert(rows.begin(), static_cast<std::size_t>(imp - r.rows.data()));
+      groups.push_back(cell_group(l, file, rows, r, imp->solver, exp ? exp->solver : std::string(), "less"));
+    }
+    if (r.config.sizes[k] == block.crossover) break;
+  }
+  claim_count(l, claim_text(id, section, sentence), std::move(groups), block.crossover == 0 ? 0 : 1);
 }
 
 }  // namespace steplab

@@ -118,7 +118,7 @@ class Cost : public Section {
                                                       "row per scene; the explicit fixed-step methods, the implicit ones and the "
                                                       "adaptive solvers in a panel each", timed ? "run time" : "force evaluations"));
     md += peer_table(r, timed) + dopri5_sentences(r, timed);
-    if (r.stiff >= 0) md += limits_text(r) + stiffness_text(page, timed);
+    if (r.stiff >= 0) md += limits_text(r, page.ledger) + stiffness_text(page, timed);
     return md;
   }
 
@@ -228,7 +228,7 @@ class Cost : public Section {
     return md.empty() ? md : md + "\n";
   }
 
-  static std::string limits_text(const WorkPrecisionResult& r) {
+  static std::string limits_text(const WorkPrecisionResult& r, Ledger* l) {
     std::string md = fmt::format(
         "On the chain an explicit method's step is bounded by the stiff mode's stability as well as by accuracy. The largest "
         "stable step of each in the dt sweep (its limit lies between that step and the next one tried, which diverged) "
@@ -236,41 +236,39 @@ class Cost : public Section {
         "an infinitely stiff link); the ratio's range is over where in that interval the limit lies:\n\n"
         "| method | largest stable dt (next tried) | dt for {:.0e} on the slow mode | ratio |\n|---|---|---|---|\n",
         kLimitErrorLevel, kLimitErrorLevel);
-    const SceneWork* stiff = r.stiff >= 0 ? &r.scenes[static_cast<std::size_t>(r.stiff)] : nullptr;
-    const auto next_tried = [&](const StableStep& l) {  // the sweep's next step above the largest stable one
-      double next = INFINITY;
-      if (stiff)
-        for (const WorkPoint& p : stiff->points)
-          if (p.method == l.method && p.setting > l.largest_stable_dt) next = std::min(next, p.setting);
-      return next;
-    };
     const auto ratio = [](double accuracy, double lo, double hi) {  // accuracy / (the limit in [lo, hi))
       return std::isfinite(hi) ? fmt::format("{:.3g} .. {:.3g}", accuracy / hi, accuracy / lo) : fmt::format("<= {:.3g}", accuracy / lo);
     };
-    std::vector<std::string> held;
+    std::vector<std::string> held, held_names;
     const StableStep* most = nullptr;
-    double most_next = 0;  // its next step tried
-    for (const StableStep& l : r.limits) {
-      const bool reached = l.accuracy_dt > 0;
-      const double next = next_tried(l);
-      md += fmt::format("| `{}` | {} ({}) | {} | {} |\n", l.method, dt_text(l.largest_stable_dt),
-                        std::isfinite(next) ? dt_text(next) : "none", reached ? dt_text(l.accuracy_dt) : "below the sweep",
-                        reached ? ratio(l.accuracy_dt, l.largest_stable_dt, next) : "-");
-      if (reached && std::isfinite(next) && l.accuracy_dt > next) {  // held back wherever in the interval its limit lies
-        held.push_back("`" + l.method + "`");
-        if (!most || l.accuracy_dt / next > most->accuracy_dt / most_next) most = &l, most_next = next;
+    for (const StableStep& s : r.limits) {
+      const bool reached = s.accuracy_dt > 0;
+      md += fmt::format("| `{}` | {} ({}) | {} | {} |\n", s.method, dt_text(s.largest_stable_dt),
+                        std::isfinite(s.next_tried_dt) ? dt_text(s.next_tried_dt) : "none",
+                        reached ? dt_text(s.accuracy_dt) : "below the sweep",
+                        reached ? ratio(s.accuracy_dt, s.largest_stable_dt, s.next_tried_dt) : "-");
+      if (reached && s.accuracy_dt > s.next_tried_dt) {  // held back wherever in the interval its limit lies
+        held.push_back("`" + s.method + "`"), held_names.push_back(s.method);
+        if (!most || s.accuracy_dt / s.next_tried_dt > most->accuracy_dt / most->next_tried_dt) most = &s;
       }
     }
     md += "\n";
-    if (most)
-      md += fmt::format("- Held below the step accuracy would allow by stability, wherever in its interval the limit lies: {} of "
-                        "{} explicit methods ({}); the most, `{}`, stable to between dt {} and {} where {} would do ({} times "
-                        "larger).\n",
-                        held.size(), r.limits.size(), and_list(held), most->method, dt_text(most->largest_stable_dt),
-                        dt_text(most_next), dt_text(most->accuracy_dt), ratio(most->accuracy_dt, most->largest_stable_dt, most_next));
-    else
-      md += "- No explicit method's stable step is below the step its accuracy alone would need.\n";
-    return md;
+    const std::string line =
+        most ? fmt::format("- Held below the step accuracy would allow by stability, wherever in its interval the limit lies: {} of "
+                           "{} explicit methods ({}); the most, `{}`, stable to between dt {} and {} where {} would do ({} times "
+                           "larger).\n",
+                           held.size(), r.limits.size(), and_list(held), most->method, dt_text(most->largest_stable_dt),
+                           dt_text(most->next_tried_dt), dt_text(most->accuracy_dt),
+                           ratio(most->accuracy_dt, most->largest_stable_dt, most->next_tried_dt))
+             : std::string("- No explicit method's stable step is below the step its accuracy alone would need.\n");
+    // "held": the rows whose accuracy step is above the next step tried (a null one, none tried or
+    // not reached, fails the test).
+    if (l) {
+      l->document(kWorkDocument, [&] { return work_precision_json(r); });
+      claim_members(*l, claim_text("cost.chain_limits.held", "cost", line), kWorkDocument, "/chain_step_limits", Json::object(),
+                    "method", false, test_scaled("/accuracy_dt", ">", 1.0, "/next_tried_dt"), held_names);
+    }
+    return md + line;
   }
 
   static std::string stiffness_text(const Page& page, bool timed) {

@@ -73,7 +73,7 @@ std::string exponents_table(const ScalingResult& r, Ledger* l) {
 
 // The crossover sentence, and steplab's cheapest against each adaptive implicit peer (CVODE,
 // ARKODE's DIRK tables, RADAU5) at the largest size, as a table with the counts.
-std::string findings(const ScalingResult& r) {
+std::string findings(const ScalingResult& r, Ledger* l) {
   const ScalingConfig& c = r.config;
   const auto any_row = [&](bool implicit) {
     return std::any_of(r.rows.begin(), r.rows.end(), [&](const ScalingRow& w) { return !w.adaptive && w.implicit == implicit; });
@@ -86,9 +86,14 @@ std::string findings(const ScalingResult& r) {
                        ? std::string("Untimed, where implicit pays is not read: the counts leave out the implicit methods' "
                                      "factorisations and solves (in the data), so fewer evaluations is no win over an explicit method.")
                    : r.blocks.front().crossover == 0
-                       ? std::string("At none of these sizes is an implicit method's whole run cheaper than every explicit one's.")
-                       : fmt::format("From N = {} on (of these sizes), `{}` is cheaper than every explicit method.",
-                                     scaling_masses(c, r.blocks.front().crossover), r.blocks.front().crossover_method);
+                       ? fmt::format("At none of these sizes is an implicit method's whole run cheaper than every explicit one's "
+                                     "by more than the timing's noise ({}x, or the two runs' spreads).", kTieMargin)
+                       : fmt::format("At N = {}, the first of these sizes where one is, `{}`'s whole run is cheaper than every "
+                                     "explicit method's by more than the timing's noise ({}x, or the two runs' spreads).",
+                                     scaling_masses(c, r.blocks.front().crossover), r.blocks.front().crossover_method, kTieMargin);
+  if (l && explicit_ones && implicit_ones)
+    claim_scaling_crossover(*l, r, fmt::format("scaling/scaling_{}.json", r.config.scene), fmt::format("scaling.{}.crossover", r.config.scene),
+                            "scaling", md);
   const ScalingRow* best = nullptr;
   std::vector<const ScalingRow*> cvode;  // and the other implicit peers
   for (std::size_t s = 0; s < r.solvers(); ++s) {  // the first block's
@@ -311,7 +316,7 @@ class ScalingSection : public Section {
     std::string md = "## " + title() + "\n\n";
     for (std::size_t i = 0; i < d.scaling.size(); ++i) {
       const ScalingResult& r = d.scaling[i];
-      md += scene_paragraph(r, i == 0) + exponents_table(r, page.ledger) + findings(r);
+      md += scene_paragraph(r, i == 0) + exponents_table(r, page.ledger) + findings(r, page.ledger);
       if (i == 0 && page.has("scaling"))
         md += page.figure("scaling", fmt::format("{}: the whole run's cost at the target error against N, a panel per family and "
                                                  "one for the adaptive solvers", scene_kernel(scene_index(r.config.scene)).title));
