@@ -196,6 +196,13 @@ std::string target_text(const ScalingConfig& c, const ScalingBlock& b);
 // What a row's run cost: its seconds, or without timing its force evaluations times N (each
 // touches every mass; the Jacobians, factorisations and solves counted beside, not added in).
 double scaling_cost(const ScalingConfig& c, const ScalingRow& r);
+// At size k of block b, the cheapest (by run time) implicit and explicit runs of steplab's
+// fixed-step and adaptive methods that reached the target (null: none): what the crossover
+// compares (ScalingBlock::crossover).
+struct CrossoverSides {
+  const ScalingRow *implicit = nullptr, *explicit_ = nullptr;
+};
+CrossoverSides crossover_sides(const ScalingResult& r, std::size_t b, std::size_t k);
 // The number of masses at size n (the scene's: n on the rope, n^2 on the soft body).
 int scaling_masses(const ScalingConfig& c, int n);
 // The adaptive solvers that run on the scene: dopri5 and the peers built for it.

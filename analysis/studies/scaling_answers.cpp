@@ -67,13 +67,7 @@ void answer_crossover(const ScalingResult& r, std::size_t b, ScalingBlock& block
   const ScalingConfig& c = r.config;
   if (!c.timing) return;
   for (std::size_t k = 0; k < c.sizes.size() && block.crossover == 0; ++k) {
-    const ScalingRow *imp = nullptr, *exp = nullptr;  // each side's cheapest run at this size
-    for (std::size_t s = 0; s < c.methods.size(); ++s) {
-      const ScalingRow& w = r.rows_of(b * r.solvers() + s)[k];
-      if (!w.reached()) continue;
-      const ScalingRow*& side = w.implicit ? imp : exp;
-      if (!side || w.seconds < side->seconds) side = &w;
-    }
+    const auto [imp, exp] = crossover_sides(r, b, k);
     if (imp && (!exp || noise_margin(imp->spread, exp->spread) * imp->seconds < exp->seconds))
       block.crossover = c.sizes[k], block.crossover_method = imp->solver;
   }
@@ -111,6 +105,17 @@ void answer_rows(ScalingResult& r) {
     answer_crossover(r, b, r.blocks[b]);
     for (std::size_t k = 0; k < r.blocks[b].cells.size(); ++k) answer_cell(r, b, k, r.blocks[b].cells[k]);
   }
+}
+
+CrossoverSides crossover_sides(const ScalingResult& r, std::size_t b, std::size_t k) {
+  CrossoverSides out;
+  for (std::size_t s = 0; s < r.config.methods.size(); ++s) {
+    const ScalingRow& w = r.rows_of(b * r.solvers() + s)[k];
+    if (!w.reached()) continue;
+    const ScalingRow*& side = w.implicit ? out.implicit : out.explicit_;
+    if (!side || w.seconds < side->seconds) side = &w;
+  }
+  return out;
 }
 
 }  // namespace steplab

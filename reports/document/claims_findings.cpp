@@ -232,15 +232,10 @@ void claim_scaling_crossover(Ledger& l, const ScalingResult& r, const std::strin
   const ScalingBlock& block = r.blocks.front();
   std::vector<ClaimGroup> groups;
   for (std::size_t k = 0; k < r.config.sizes.size(); ++k) {
-    const ScalingRow *imp = nullptr, *exp = nullptr;
+    const auto [imp, exp] = crossover_sides(r, 0, k);
     std::vector<std::size_t> rows;  // the cheapest implicit run, then every explicit one (JSON rows are ScalingResult::rows)
-    for (std::size_t s = 0; s < r.config.methods.size(); ++s) {
-      const ScalingRow& w = r.rows_of(s)[k];
-      if (!w.reached()) continue;
-      if (!w.implicit) rows.push_back(static_cast<std::size_t>(&w - r.rows.data()));
-      const ScalingRow*& side = w.implicit ? imp : exp;
-      if (!side || w.seconds < side->seconds) side = &w;
-    }
+    for (std::size_t s = 0; s < r.config.methods.size(); ++s)
+      if (const ScalingRow& w = r.rows_of(s)[k]; w.reached() && !w.implicit) rows.push_back(static_cast<std::size_t>(&w - r.rows.data()));
     if (imp) {
       rows.insert(rows.begin(), static_cast<std::size_t>(imp - r.rows.data()));
       groups.push_back(cell_group(l, file, rows, r, imp->solver, exp ? exp->solver : std::string(), "less"));

@@ -31,6 +31,10 @@ std::string params_but_size(std::size_t scene, const std::vector<double>& params
   return params_text(scene, params, scene_kernel(scene).size_param);
 }
 
+// A study's data file in the section's folder, and the path the claims cite it by.
+std::string scaling_file(const ScalingResult& r) { return fmt::format("scaling_{}.json", r.config.scene); }
+std::string scaling_document(const ScalingResult& r) { return "scaling/" + scaling_file(r); }
+
 // The exponents that are findings, a row per solver with one; the others in a sentence.
 std::string exponents_table(const ScalingResult& r, Ledger* l) {
   std::string rows;
@@ -57,7 +61,7 @@ std::string exponents_table(const ScalingResult& r, Ledger* l) {
                       "wider than +-{:g}).\n\n",
                       rows.empty() ? "For every solver" : "For " + quoted_list(none), kFitSizes, kFitDecades, kExponentHalfWidth);
   if (l && !r.fits.empty()) {  // the solvers of the first block with no exponent that is a finding (finding() above)
-    const std::string file = fmt::format("scaling/scaling_{}.json", r.config.scene);
+    const std::string file = scaling_document(r);
     const Json& doc = l->document(file, [&] { return scaling_json(r); });
     std::vector<Json> findings;
     for (const char* q : {"/step", "/run", "/stable_step"})
@@ -92,8 +96,7 @@ std::string findings(const ScalingResult& r, Ledger* l) {
                                      "explicit method's by more than the timing's noise ({}x, or the two runs' spreads).",
                                      scaling_masses(c, r.blocks.front().crossover), r.blocks.front().crossover_method, kTieMargin);
   if (l && explicit_ones && implicit_ones)
-    claim_scaling_crossover(*l, r, fmt::format("scaling/scaling_{}.json", r.config.scene), fmt::format("scaling.{}.crossover", r.config.scene),
-                            "scaling", md);
+    claim_scaling_crossover(*l, r, scaling_document(r), fmt::format("scaling.{}.crossover", r.config.scene), "scaling", md);
   const ScalingRow* best = nullptr;
   std::vector<const ScalingRow*> cvode;  // and the other implicit peers
   for (std::size_t s = 0; s < r.solvers(); ++s) {  // the first block's
@@ -272,7 +275,7 @@ class ScalingSection : public Section {
   }
 
   void write_data(const ReportData& d, const DataDir& dat) const override {
-    for (const ScalingResult& r : d.scaling) dat.write(fmt::format("scaling_{}.json", r.config.scene), scaling_json(r).dump(1) + "\n");
+    for (const ScalingResult& r : d.scaling) dat.write(scaling_file(r), scaling_json(r).dump(1) + "\n");
     if (d.scaling.empty()) return;
     const ScalingResult& first = d.scaling.front();  // the figure's
     for (std::size_t s = 0; s < first.solvers(); ++s) {
