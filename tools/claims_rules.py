@@ -1,11 +1,15 @@
 """The rules of a report's claims (docs/json.md, "A report's claims"), as pure functions over
-values: RFC 6901 pointers into a value, the row-test language of `membership`, and each kind's
-rule check.  A check returns the list of reasons its claim does not hold ([] where it holds) and
-raises Fail where the rule cannot be evaluated (which does not hold either).  Reading the files
-and the claim loop are tools/verify_claims.py's.  Standard library only.
+values: RFC 6901 pointers into a value, and each kind's rule check but membership's (trend,
+statistic, comparison, threshold, equality, ratio, count).  A check returns the list of reasons
+its claim does not hold ([] where it holds) and raises Fail where the rule cannot be evaluated
+(which does not hold either).  The row-test language and the membership check:
+tools/claims_rows.py; reading the files and the claim loop: tools/verify_claims.py.  Standard
+library only.
 """
 import json
 import math
+import re
+from fractions import Fraction
 
 INFINITY_WORDS = ("unbounded", "never")  # both stand for +infinity where a number is needed
 RULE_FIELDS = {
@@ -15,12 +19,12 @@ RULE_FIELDS = {
     "comparison": ("a", "others", "relation", "margin", "noise"),
     "threshold": ("op", "limit"),  # and optionally "items"
     "equality": ("pairs", "relative", "absolute"),
+    "ratio": ("ratios", "least", "greatest", "digits"),
     "count": ("groups", "count"),
 }
 GROUP_KINDS = ("equality", "comparison", "threshold")  # the kinds a `count` group may have
 THRESHOLD_OPS = {"<": lambda v, l: v < l, "<=": lambda v, l: v <= l,
                  ">": lambda v, l: v > l, ">=": lambda v, l: v >= l}
-TEST_FORMS = ("field", "difference", "scaled", "all", "any", "not")
 
 class Fail(Exception): pass  # a reason a claim does not hold
 
@@ -131,115 +135,85 @@ def spearman(xs, ys):
     strength = "weak" if c2 < 9 * v2 else "moderate" if c2 < 49 * v2 else "strong"
     return rho, strength + (" positive" if cov >= 0 else " negative")
 
-# --- tests, conditions on one row (membership) --------------------------------------------
-def test_pointers(test):
-    """Check a test's form (Fail where it has none) and list its pointers, nested ones too: a
-    field's P, a difference's or a scaled's P1 and P2, those of the tests in all, any and not."""
-    forms = [f for f in TEST_FORMS if f in test] if isinstance(test, dict) else []
-    if len(forms) != 1:
-        raise Fail("test %s is not an object with one of %s" % (show(test), ", ".join(TEST_FORMS)))
-    form, op = forms[0], test.get("op")
-    if form in ("all", "any", "not"):
-        subs = [test["not"]] if form == "not" else test[form]
-        if not isinstance(subs, list):
-            raise Fail("test %s: %s is not a list of tests" % (show(test), form))
-        return [p for sub in subs for p in test_pointers(sub)]
-    ops = ("==", "!=", *THRESHOLD_OPS) if form == "field" else tuple(THRESHOLD_OPS)
-    operand = "times" if form == "scaled" else "value"
-    if not isinstance(op, str) or op not in ops or operand not in test:
-        raise Fail("test %s: op not one of %s, or no %s"
-                   % (show(test), ", ".join(map(json.dumps, ops)), operand))
-    if form == "scaled" and not is_number(test["times"]):
-        raise Fail("test %s: times is not a number" % show(test))
-    pointers = [test["field"]] if form == "field" else test[form]
-    if not isinstance(pointers, list) or len(pointers) != (1 if form == "field" else 2):
-        raise Fail("test %s: %s is not two pointers" % (show(test), form))
-    try:
-        return [p for p in pointers if tokens(p) is not None]  # tokens: Fail if not one
-    except Fail as why:
-        raise Fail("test %s: %s" % (show(test), why))
+# --- ratio --------------------------------------------------------------------------------
+# A ratio is prod(over) / prod(under) (an empty product is 1), computed exactly in fractions of
+# the values (each JSON number is exactly a binary fraction).  A printed L is taken exactly
+# too; it is "r as printed" when |r - L| <= half a unit of L's last printed place,
+#   {"decimals": d}:    0.5 10^-d
+#   {"significant": s}: 0.5 10^(e - s + 1), e = floor(log10 |L|) (L = 0: r must be 0),
+# plus a slack of 10^-9 |r| for the writer's floating-point arithmetic.
+PRINTED = re.compile(r"-?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")  # "1.23e+03", "180"
+SLACK = Fraction(1, 10 ** 9)
 
-def as_number(v):
-    """A value in a test as a number: +infinity for the words, None for null or a non-number."""
-    return float(v) if is_number(v) else math.inf if v in INFINITY_WORDS else None
+def printed_number(text, what):
+    """The exact value of a printed decimal number; Fail where `text` is not one (float()
+    would also take "nan", "inf", " 1" and "1_0")."""
+    if not isinstance(text, str) or not PRINTED.fullmatch(text):
+        raise Fail("%s is %s, not a number as printed" % (what, show(text)))
+    return Fraction(text)
 
-def holds(test, row):
-    """Whether a test (that test_pointers accepted) holds on the row.  {"field": P, "op", "value":
-    V}: x what P finds in the row; "==", "!=": x (not) raw-JSON equal to V; "<", "<=", ">", ">=":
-    x and V as numbers (the words +infinity), false where either is null or not a number.
-    {"difference": [P1, P2], "op", "value": V}: |x1 - x2| op V, false where x1 or x2 is null, not
-    a number or +infinity.  {"scaled": [P1, P2], "op", "times": c}: x1 op c x2, x1 and x2 as
-    numbers (the words +infinity), false where either is null or not a number (c x2 in floating
-    point: 0 x +infinity is no number, and no op holds on it).  {"all": [...]} (true for none),
-    {"any": [...]} (false for none), {"not": test}.  A pointer that finds nothing in the row makes
-    its test false ("!=" too)."""
-    if "all" in test:
-        return all(holds(t, row) for t in test["all"])
-    if "any" in test:
-        return any(holds(t, row) for t in test["any"])
-    if "not" in test:
-        return not holds(test["not"], row)
-    form = next(f for f in ("field", "difference", "scaled") if f in test)
-    found = [find(row, p) for p in ([test["field"]] if form == "field" else test[form])]
-    if not all(ok for ok, _ in found):
-        return False
-    op, xs = test["op"], [as_number(x) for _, x in found]
-    if op in ("==", "!="):  # "field" only
-        return same_json(found[0][1], test["value"]) == (op == "==")
-    if any(x is None for x in xs):
-        return False
-    if form == "scaled":
-        return THRESHOLD_OPS[op](xs[0], test["times"] * xs[1])
-    if form == "difference":
-        if math.inf in xs:
-            return False
-        xs = [abs(xs[0] - xs[1])]
-    limit = as_number(test["value"])
-    return limit is not None and THRESHOLD_OPS[op](xs[0], limit)
+def decade(x):
+    """floor(log10 x) for a Fraction x > 0, exactly."""
+    e = len(str(x.numerator)) - len(str(x.denominator))  # within one of the answer
+    while Fraction(10) ** e > x:
+        e -= 1
+    while Fraction(10) ** (e + 1) <= x:
+        e += 1
+    return e
 
-# --- the kinds ----------------------------------------------------------------------------
-def check_membership(rows, methods, rule, evidence):
-    """`rows` what the rule's pointer `rows` finds in its `file`, `methods` the claims file's.
-    set == {row[key] : row passes `where` and `over`, and `test` holds on it}; and, for each
-    row passing `where` and `over`, one evidence item (rule file, rows/i + P) for each pointer P
-    of the test that finds a value in the row, in any order, no more and no fewer."""
-    key, want, test = rule["key"], rule["set"], rule["test"]
-    strings = want + [key] if isinstance(want, list) else [None]
-    if not isinstance(rows, list) or not isinstance(rule["where"], dict) \
-            or not all(isinstance(s, str) for s in strings):
-        raise Fail("rows is not an array, where not an object, or set or key not strings")
-    pointers = list(dict.fromkeys(test_pointers(test)))  # each pointer once
-    if rule["over"] == "numerical":
-        if not isinstance(methods, list) or not all(isinstance(m, dict) for m in methods):
-            raise Fail("over is \"numerical\" but methods is not a list of objects")
-        allowed = {m.get("name") for m in methods if m.get("exact_flow") is False}
-    elif rule["over"] != "all":
-        raise Fail("over is %s, not \"numerical\" or \"all\"" % show(rule["over"]))
-    found, expected = set(), []
-    for i, row in enumerate(rows):
-        if not isinstance(row, dict):
-            raise Fail("row %d of %s is not an object" % (i, rule["rows"]))
-        if not all(f in row and same_json(row[f], v) for f, v in rule["where"].items()):
-            continue
-        if not isinstance(row.get(key), str):
-            raise Fail("row %d has no string %s" % (i, show(key)))
-        if rule["over"] == "numerical" and row[key] not in allowed:
-            continue
-        expected += [(rule["file"], "%s/%d%s" % (rule["rows"], i, p)) for p in pointers
-                     if find(row, p)[0]]
-        if holds(test, row):
-            found.add(row[key])
-    problems = []
-    if found != set(want):
-        problems.append("set is %s, the rows give %s"
-                        % (show(sorted(set(want))), show(sorted(found))))
-    got = [(e.get("file"), e.get("pointer")) for e in evidence]
-    if sorted(got, key=str) != sorted(expected, key=str):
-        problems.append("evidence should be one item per row: %d expected, %d given, missing %s, "
-                        "extra %s" % (len(expected), len(got), show([p for f, p in expected if
-                        (f, p) not in got]), show([p for f, p in got if (f, p) not in expected])))
+def half_unit(printed, digits):
+    """Half a unit of the last place of `printed` (a Fraction) rounded as `digits` says; None
+    where r must equal it exactly (0 to significant digits)."""
+    (how, n), = digits.items()  # one, as check_ratio made sure
+    if how == "decimals":
+        return Fraction(1, 2) / Fraction(10) ** n
+    return None if printed == 0 else Fraction(1, 2) * Fraction(10) ** (decade(abs(printed)) - n + 1)
+
+def check_ratio(rule, values):
+    """Each ratio prod(over) / prod(under) of evidence values (an empty product is 1); the least
+    ratio as printed to `digits` is `least`, the greatest `greatest`.  Holds when `ratios` is not
+    empty, every value read is a finite number (null, "unbounded" and "never" are not), every
+    under product is above 0, and |r - L| <= half a unit of L's last place + 10^-9 |r| for the
+    least (L `least`) and the greatest (L `greatest`)."""
+    ratios, digits = rule["ratios"], rule["digits"]
+    if not isinstance(ratios, list) or not all(
+            isinstance(q, dict) and all(isinstance(q.get(f), list) and all(
+                is_index(k, values) for k in q[f]) for f in ("over", "under")) for q in ratios):
+        raise Fail("ratios %s is not a list of {\"over\", \"under\"} lists of indices into the %d "
+                   "evidence values" % (show(ratios), len(values)))
+    how, n = next(iter(digits.items())) if isinstance(digits, dict) and len(digits) == 1 \
+        else (None, None)
+    if how not in ("decimals", "significant") or not isinstance(n, int) or isinstance(n, bool) \
+            or n < (0 if how == "decimals" else 1):
+        raise Fail("digits is %s, not {\"decimals\": d >= 0} or {\"significant\": s >= 1}"
+                   % show(digits))
+    printed = {w: printed_number(rule[w], w) for w in ("least", "greatest")}
+    if not ratios:
+        return ["ratios is empty"]
+    read = sorted({k for q in ratios for k in q["over"] + q["under"]})
+    problems = ["evidence %d is %s, not a finite number" % (k, "null (not measured)"
+                if values[k] is None else show(values[k]))
+                for k in read if not is_number(values[k]) or values[k] in (math.inf, -math.inf)]
+    if problems:
+        return problems
+    exact = lambda ks: math.prod((Fraction(values[k]) for k in ks), start=Fraction(1))
+    under = [exact(q["under"]) for q in ratios]
+    problems = ["ratio %d: the under product %s is not above 0" % (i, show(float(u)))
+                for i, u in enumerate(under) if not u > 0]
+    if problems:
+        return problems
+    rs = [exact(q["over"]) / u for q, u in zip(ratios, under)]
+    for word, r in (("least", min(rs)), ("greatest", max(rs))):
+        x, half = printed[word], half_unit(printed[word], digits)
+        if not (r == x if half is None else abs(r - x) <= half + SLACK * abs(r)):
+            problems.append("the %s ratio %.12g (ratio %d) is not %s to %d %s: %s" % (
+                word, r, rs.index(r), show(rule[word]), n,
+                "decimals" if how == "decimals" else "significant digits",
+                "it is not 0" if half is None else "off by %.3g, above %.3g + %.3g"
+                % (abs(r - x), half, SLACK * abs(r))))
     return problems
 
+# --- the other kinds ----------------------------------------------------------------------
 def check_trend(rule, values):
     """One value per name of `along`; their trend (trend_of, relative r) is the rule's word."""
     along, r = rule["along"], rule["relative"]
@@ -392,7 +366,8 @@ def check_count(rule, values):
             % (len(held), len(groups), show(held), n)]
 
 CHECKS = {"trend": check_trend, "statistic": check_statistic, "comparison": check_comparison,
-          "threshold": check_threshold, "equality": check_equality, "count": check_count}
+          "threshold": check_threshold, "equality": check_equality, "ratio": check_ratio,
+          "count": check_count}
 
 def checked_rule(kind, rule):
     if not isinstance(rule, dict) or any(f not in rule for f in RULE_FIELDS[kind]):

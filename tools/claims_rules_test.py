@@ -1,9 +1,10 @@
 """Tests of tools/claims_rules.py: python3 tools/claims_rules_test.py
 
-The row-test language on one row, the words of a trend and Spearman's rho by hand, and each kind's
-rule check (trend, statistic, threshold, comparison, equality, count) on claims over made-up data
-files, run through a small report folder (claims_test_fixtures.Folder).  Membership, evidence,
-pointers, the claim loop and the command line: tools/verify_claims_test.py.
+The words of a trend, Spearman's rho and ratios as printed by hand, and each kind's rule check
+(trend, statistic, threshold, comparison, equality, ratio, count) on claims over made-up data
+files, run through a small report folder (claims_test_fixtures.Folder).  The row-test language
+(tools/claims_rows_test.py) is run here too.  Membership, evidence, pointers, the claim loop and
+the command line: tools/verify_claims_test.py.
 """
 import copy
 import math
@@ -15,132 +16,11 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 if HERE not in sys.path:
     sys.path.insert(0, HERE)
 import claims_rules as cr  # the rules, pure functions over values
+from claims_rows_test import And, Tests  # noqa: F401  the row-test language's tests, run here too
 from claims_test_fixtures import (ABOVE, BELOW, COST, LESS, NULLS, SAME, STABILITY, Folder, comparison, count,
-                                  equality, spearman, threshold, trend)
+                                  equality, ratio, spearman, threshold, trend)
+from fractions import Fraction
 INF = math.inf
-
-
-class Tests(unittest.TestCase):
-    """The test language on one row."""
-    ROW = {"stable": True, "n": 1, "dt": "unbounded", "again": "never", "m": None, "name": "rk4",
-           "ci": [0.5, 0.75], "a/b": 2}
-
-    def check(self, test):
-        cr.test_pointers(test)  # the form is accepted
-        return cr.holds(test, self.ROW)
-
-    def test_equals(self):
-        f = lambda p, op, v: self.check({"field": p, "op": op, "value": v})
-        self.assertIs(f("/stable", "==", True), True)
-        self.assertIs(f("/n", "==", True), False)  # true is not 1
-        self.assertIs(f("/n", "==", 1.0), True)  # numbers by value
-        self.assertIs(f("/dt", "==", "unbounded"), True)  # raw JSON
-        self.assertIs(f("/m", "==", None), True)
-        self.assertIs(f("/ci", "==", [0.5, 0.75]), True)
-        self.assertIs(f("/a~1b", "==", 2), True)
-        self.assertIs(f("/missing", "==", None), False)  # finds nothing
-        self.assertIs(f("/stable", "!=", False), True)
-        self.assertIs(f("/stable", "!=", True), False)
-        self.assertIs(f("/n", "!=", True), True)
-        self.assertIs(f("/missing", "!=", 1), False)  # "!=" too
-        self.assertIs(f("/ci/2", "!=", 1), False)
-
-    def test_order(self):
-        f = lambda p, op, v: self.check({"field": p, "op": op, "value": v})
-        self.assertIs(f("/n", "<", 2), True)
-        self.assertIs(f("/n", "<", 1), False)
-        self.assertIs(f("/n", "<=", 1), True)
-        self.assertIs(f("/ci/1", ">=", 0.75), True)
-        self.assertIs(f("/dt", "<", 1e300), False)  # "unbounded" is +infinity
-        self.assertIs(f("/dt", ">", 1e300), True)
-        self.assertIs(f("/again", ">", 1e300), True)  # "never" too
-        self.assertIs(f("/dt", ">=", "never"), True)
-        self.assertIs(f("/dt", "<", "never"), False)
-        self.assertIs(f("/n", "<", "unbounded"), True)
-        self.assertIs(f("/m", "<", 5), False)  # null
-        self.assertIs(f("/m", ">", 5), False)
-        self.assertIs(f("/n", "<", None), False)
-        self.assertIs(f("/stable", "<", 5), False)  # not a number (true is not 1)
-        self.assertIs(f("/name", ">", 0), False)
-        self.assertIs(f("/missing", "<", 5), False)
-        self.assertIs(f("/ci/9", ">", 0), False)
-
-    def test_difference(self):
-        f = lambda ps, op, v: self.check({"difference": ps, "op": op, "value": v})
-        self.assertIs(f(["/ci/0", "/ci/1"], "<=", 0.25), True)  # |0.5 - 0.75| = 0.25 exactly
-        self.assertIs(f(["/ci/1", "/ci/0"], "<", 0.25), False)
-        self.assertIs(f(["/ci/1", "/ci/0"], ">", 0.2), True)
-        self.assertIs(f(["/ci/0", "/n"], ">=", 0.5), True)
-        self.assertIs(f(["/n", "/dt"], ">", 0), False)  # +infinity
-        self.assertIs(f(["/dt", "/dt"], "<", 1), False)
-        self.assertIs(f(["/n", "/m"], "<", 5), False)  # null
-        self.assertIs(f(["/n", "/name"], "<", 5), False)  # not a number
-        self.assertIs(f(["/n", "/missing"], "<", 5), False)
-        self.assertIs(f(["/ci/0", "/ci/1"], "<", "unbounded"), True)
-        self.assertRaises(cr.Fail, cr.test_pointers, {"difference": ["/n", "/n"], "op": "==", "value": 0})
-        self.assertRaises(cr.Fail, cr.test_pointers, {"difference": "/n", "op": "<", "value": 0})
-
-    def test_scaled(self):
-        # x1 op c x2: ci = [0.5, 0.75], n 1, dt "unbounded", again "never", m null, name "rk4"
-        f = lambda ps, op, c: self.check({"scaled": ps, "op": op, "times": c})
-        self.assertIs(f(["/ci/0", "/ci/1"], "<", 1), True)  # 0.5 < 0.75
-        self.assertIs(f(["/ci/1", "/ci/0"], "<=", 1.5), True)  # 0.75 <= 1.5 x 0.5, exactly
-        self.assertIs(f(["/ci/1", "/ci/0"], "<", 1.5), False)
-        self.assertIs(f(["/ci/1", "/ci/0"], ">", 1.4), True)  # 0.75 > 0.7
-        self.assertIs(f(["/ci/1", "/ci/0"], ">=", 2), False)  # 0.75 < 1
-        self.assertIs(f(["/n", "/ci/0"], ">", -1), True)  # 1 > -0.5: c may be negative
-        self.assertIs(f(["/ci/0", "/n"], ">=", 0.5), True)  # an integer x2
-        self.assertIs(f(["/dt", "/n"], ">", 1e300), True)  # "unbounded" is +infinity
-        self.assertIs(f(["/dt", "/n"], "<", 1e300), False)
-        self.assertIs(f(["/n", "/dt"], "<", 1e-300), True)  # 1 < 1e-300 x +infinity
-        self.assertIs(f(["/n", "/again"], ">", 1e-300), False)  # "never" too
-        self.assertIs(f(["/dt", "/again"], ">=", 1), True)  # +infinity >= +infinity
-        self.assertIs(f(["/dt", "/again"], "<", 2), False)
-        self.assertIs(f(["/n", "/dt"], "<", 0), False)  # 0 x +infinity is no number
-        self.assertIs(f(["/n", "/dt"], ">=", 0), False)
-        self.assertIs(f(["/n", "/m"], "<", 2), False)  # null
-        self.assertIs(f(["/m", "/n"], "<", 2), False)
-        self.assertIs(f(["/n", "/name"], "<", 2), False)  # not a number
-        self.assertIs(f(["/stable", "/n"], "<", 2), False)  # true is not 1
-        self.assertIs(f(["/ci", "/n"], "<", 2), False)  # an array is not a number
-        self.assertIs(f(["/n", "/missing"], "<", 2), False)  # finds nothing
-        self.assertIs(f(["/ci/2", "/n"], ">", 0), False)
-        self.assertIs(self.check({"not": {"scaled": ["/n", "/missing"], "op": "<", "times": 2}}), True)
-        self.assertEqual(cr.test_pointers({"scaled": ["/a", "/b/0"], "op": "<", "times": 2}), ["/a", "/b/0"])
-        for bad in [{"scaled": ["/n", "/n"], "op": "==", "times": 1},  # an order only
-                    {"scaled": ["/n", "/n"], "op": "<"}, {"scaled": ["/n", "/n"], "op": "<", "value": 1},
-                    {"scaled": ["/n", "/n"], "op": "<", "times": "2"},
-                    {"scaled": ["/n", "/n"], "op": "<", "times": "unbounded"},
-                    {"scaled": ["/n", "/n"], "op": "<", "times": True},
-                    {"scaled": ["/n", "/n"], "op": "<", "times": None}, {"scaled": ["/n"], "op": "<", "times": 1},
-                    {"scaled": ["/n", "/n", "/n"], "op": "<", "times": 1},
-                    {"scaled": "/n", "op": "<", "times": 1}, {"scaled": ["/n", "n"], "op": "<", "times": 1},
-                    {"scaled": ["/n", "/n"], "difference": ["/n", "/n"], "op": "<", "times": 1, "value": 1}]:
-            self.assertRaises(cr.Fail, cr.test_pointers, bad)
-
-    def test_all_any_not(self):
-        yes, no = {"field": "/n", "op": "==", "value": 1}, {"field": "/n", "op": "==", "value": 2}
-        gone = {"field": "/missing", "op": "!=", "value": 2}
-        self.assertIs(self.check({"all": []}), True)
-        self.assertIs(self.check({"any": []}), False)
-        self.assertIs(self.check({"all": [yes, yes]}), True)
-        self.assertIs(self.check({"all": [yes, no]}), False)
-        self.assertIs(self.check({"any": [no, yes]}), True)
-        self.assertIs(self.check({"any": [no, gone]}), False)
-        self.assertIs(self.check({"not": yes}), False)
-        self.assertIs(self.check({"not": no}), True)
-        self.assertIs(self.check({"not": gone}), True)  # the inner test is false
-        self.assertIs(self.check({"not": {"all": [yes, {"any": [no, {"not": no}]}]}}), False)
-
-    def test_pointers(self):
-        test = {"all": [{"field": "/a", "op": "==", "value": 1},
-                        {"not": {"difference": ["/b/0", "/c"], "op": "<", "value": 1}},
-                        {"any": [{"field": "", "op": "!=", "value": 1},
-                                 {"not": {"scaled": ["/d", "/a"], "op": ">=", "times": 3}}]}]}
-        self.assertEqual(cr.test_pointers(test), ["/a", "/b/0", "/c", "", "/d", "/a"])
-        for bad in [[], {"all": [1]}, {"not": {}}, {"field": "/a", "op": "<"}, {"field": 3, "op": "<", "value": 1},
-                    {"field": "/a~2", "op": "<", "value": 1}, {"all": [], "any": []}]:
-            self.assertRaises(cr.Fail, cr.test_pointers, bad)
 
 
 class Trend(Folder):
@@ -317,6 +197,144 @@ class Equality(Folder):
         self.assertIn("relative -1", p["Q14"][0])
         self.assertEqual(len(p["Q15"]), 1, p["Q15"])
         self.assertIn("pair [0, 1]", p["Q15"][0])
+
+
+def one(value, printed, digits=None):
+    """check_ratio on a single ratio, `value` over an empty product, printed as least and greatest."""
+    rule = {"ratios": [{"over": [0], "under": []}], "least": printed, "greatest": printed,
+            "digits": {"decimals": 2} if digits is None else digits}
+    return cr.check_ratio(rule, [value])
+
+
+def several(values, ratios, least, greatest, digits=None):
+    return cr.check_ratio({"ratios": [{"over": o, "under": u} for o, u in ratios], "least": least,
+                           "greatest": greatest, "digits": {"decimals": 2} if digits is None else digits}, values)
+
+
+class Ratio(Folder):
+    SIG3 = {"significant": 3}
+
+    def test_half_a_unit(self):
+        # 2.555 is 2.55500000000000016... in binary: 0.00500000000000016 from "2.55", above half a
+        # unit (0.005) by 1.6e-16, within the slack 1e-9 x 2.555; 0.00499999999999984 from "2.56"
+        self.assertGreater(abs(Fraction(2.555) - Fraction("2.55")), Fraction(5, 1000))
+        self.assertEqual(one(2.555, "2.56"), [])
+        self.assertEqual(one(2.555, "2.55"), [])
+        # 2.565 is 2.56499999999999995...: "2.57" by the slack, "2.56" within half a unit
+        self.assertGreater(abs(Fraction(2.565) - Fraction("2.57")), Fraction(5, 1000))
+        self.assertEqual(one(2.565, "2.57"), [])
+        self.assertEqual(one(2.565, "2.56"), [])
+        self.assertEqual(one(2.566, "2.57"), [])
+        p = one(2.566, "2.56")  # off by 0.006
+        self.assertEqual(len(p), 2, p)  # least and greatest, the same string
+        self.assertIn('the least ratio 2.566 (ratio 0) is not "2.56" to 2 decimals: off by 0.006', p[0])
+        self.assertIn("the greatest ratio 2.566", p[1])
+        self.assertTrue(one(2.55499, "2.56"))  # 0.00501: beyond the slack (2.6e-9)
+        self.assertTrue(one(2.5449, "2.55"))
+        self.assertTrue(one(2.555 + 1e-8, "2.55"))  # 0.00500001: beyond it too
+        self.assertEqual(one(3.5, "3.5", {"decimals": 1}), [])
+        self.assertEqual(one(180.4, "180", {"decimals": 0}), [])
+        self.assertTrue(one(180.6, "180", {"decimals": 0}))
+        self.assertEqual(one(-0.8684, "-0.868", {"decimals": 3}), [])  # a negative over product
+
+    def test_significant_digits(self):
+        # the unit is that of the printed L: 0.5 10^(e - s + 1), e = floor(log10 |L|)
+        self.assertEqual(one(9.996, "10.0", self.SIG3), [])  # e = 1: 0.05, across the decade
+        self.assertEqual(one(9.994, "9.99", self.SIG3), [])  # e = 0: 0.005
+        self.assertTrue(one(9.996, "9.99", self.SIG3))  # 0.006 > 0.005
+        self.assertTrue(one(9.94, "10.0", self.SIG3))  # 0.06 > 0.05
+        self.assertEqual(one(0.99951, "1.00", self.SIG3), [])
+        self.assertEqual(one(0.868, "0.868", self.SIG3), [])  # e = -1: 0.0005
+        self.assertTrue(one(0.8686, "0.868", self.SIG3))
+        self.assertEqual(one(1234.9, "1.23e+03", self.SIG3), [])  # e = 3: 5
+        self.assertTrue(one(1235.1, "1.23e+03", self.SIG3))
+        self.assertIn("to 3 significant digits", one(1235.1, "1.23e+03", self.SIG3)[0])
+        self.assertEqual(one(180.4, "180", self.SIG3), [])  # e = 2: 0.5
+        self.assertTrue(one(184, "180", self.SIG3))
+        self.assertEqual(one(184, "180", {"significant": 2}), [])  # 5
+        self.assertEqual(one(0.0001234, "1.23e-4", self.SIG3), [])  # e = -4: 5e-7
+        # a printed "0" to significant digits: exactly 0; to decimals, half a unit as ever
+        self.assertEqual(one(0.0, "0", self.SIG3), [])
+        self.assertEqual(one(0, "0.00", self.SIG3), [])
+        p = one(1e-12, "0", self.SIG3)
+        self.assertEqual(len(p), 2, p)
+        self.assertIn("it is not 0", p[0])
+        self.assertEqual(one(0.004, "0.00"), [])
+        self.assertTrue(one(0.006, "0.00"))
+
+    def test_products_and_range(self):
+        values = [3.0, 2.0, 4.0, 1.5, 0.25]
+        self.assertEqual(several(values, [([0, 1], [2, 3])], "1.00", "1.00"), [])  # 6 / 6
+        self.assertEqual(several(values, [([], [2])], "0.25", "0.25"), [])  # empty over: 1 / 4
+        self.assertEqual(several(values, [([], [])], "1.00", "1.00"), [])  # 1 / 1
+        self.assertEqual(several(values, [([2], [4, 4])], "64.00", "64.00"), [])
+        # ratios 1.5, 0.75, 6: least 0.75 (ratio 1), greatest 6 (ratio 2)
+        three = [([0], [1]), ([3], [1]), ([0, 1], [])]
+        self.assertEqual(several(values, three, "0.75", "6.00"), [])
+        self.assertEqual(several(values, three, "0.8", "6", {"decimals": 1}), [])  # 0.05 from 0.75
+        self.assertEqual(several(values, three, "0.75", "1.50"),
+                         ['the greatest ratio 6 (ratio 2) is not "1.50" to 2 decimals: off by 4.5, above 0.005 + 6e-09'])
+        p = several(values, three, "1.50", "6.00")  # least misprinted as another ratio
+        self.assertEqual(len(p), 1, p)
+        self.assertIn('the least ratio 0.75 (ratio 1) is not "1.50"', p[0])
+        self.assertEqual(len(several(values, three, "0.76", "6.01")), 2)
+
+    def test_values_it_cannot_divide(self):
+        values = [2.0, 0.0, None, "unbounded", "never", -1.0, 0, True]
+        self.assertEqual(several(values, [([0], [1])], "1.00", "1.00"),
+                         ["ratio 0: the under product 0.0 is not above 0"])
+        self.assertEqual(several(values, [([0], [6])], "1.00", "1.00"),
+                         ["ratio 0: the under product 0.0 is not above 0"])  # an integer 0
+        self.assertEqual(several(values, [([0], [0]), ([0], [5, 0])], "-1.00", "1.00"),
+                         ["ratio 1: the under product -2.0 is not above 0"])
+        self.assertEqual(several(values, [([0], [5, 5])], "2.00", "2.00"), [])  # (-1)(-1) > 0
+        self.assertEqual(several(values, [([2], [0])], "1.00", "1.00"),
+                         ["evidence 2 is null (not measured), not a finite number"])
+        self.assertEqual(several(values, [([3], [0]), ([0], [4])], "1.00", "1.00"),
+                         ['evidence 3 is "unbounded", not a finite number', 'evidence 4 is "never", not a finite number'])
+        self.assertEqual(several(values, [([0], [7])], "2.00", "2.00"),
+                         ["evidence 7 is true, not a finite number"])  # true is not 1
+        self.assertEqual(several(values, [([0], [])], "2.00", "2.00"), [])  # the values not read
+        self.assertEqual(several(values, [], "1.00", "1.00"), ["ratios is empty"])
+
+    def test_malformed(self):
+        for digits in [{"decimals": 2, "significant": 3}, {}, {"decimals": -1}, {"significant": 0},
+                       {"decimals": 2.0}, {"decimals": True}, {"decimals": "2"}, {"digits": 2}, "2", 2,
+                       [{"decimals": 2}], {"significant": None}]:
+            self.assertRaises(cr.Fail, one, 2.0, "2.00", digits)
+        for printed in [2.0, None, "", "2,00", " 2.00", "2.00 ", "nan", "inf", "Infinity", "2_0", "1/2",
+                        "e3", ".", "+2", "2.0.0", "0x2"]:
+            self.assertRaises(cr.Fail, one, 2.0, printed)
+        for ratios in [{"over": [0], "under": []}, [{"over": [0]}], [{"over": 0, "under": []}],
+                       [{"over": [1], "under": []}], [{"over": [True], "under": []}], [[[0], []]]]:
+            self.assertRaises(cr.Fail, cr.check_ratio, {"ratios": ratios, "least": "2.00", "greatest": "2.00",
+                                                        "digits": {"decimals": 2}}, [2.0])
+
+    def test_claims(self):
+        # the peer's over steplab's, PEERS: 2.555, 2.566, 0.868, 9.996, 180, 1 / 0, null, unbounded
+        sig = {"significant": 3}
+        p = self.problems(ratio("R1", [0], "2.56"), ratio("R2", [0], "2.55"), ratio("R3", [1], "2.56"),
+                          ratio("R4", [0, 1, 2], "0.87", "2.57"), ratio("R5", [0, 1, 2], "0.86", "2.57"),
+                          ratio("R6", [0, 1, 2], "0.87", "2.56"), ratio("R7", [3], "10.0", digits=sig),
+                          ratio("R8", [2, 3, 4], "0.868", "180", sig), ratio("R9", [4, 5], "180"),
+                          ratio("R10", [6, 0], "2.56"), ratio("R11", [7], "2.56"), ratio("R12", [], "1.00"),
+                          ratio("R13", [0], "2.56", digits={"decimals": 2, "significant": 3}),
+                          ratio("R14", [0], "2.56", digits={}))
+        for cid in ("R1", "R2", "R4", "R7", "R8"):
+            self.assertEqual(p[cid], [], cid)
+        self.assertEqual(len(p["R3"]), 2, p["R3"])
+        self.assertIn('the least ratio 2.566 (ratio 0) is not "2.56"', p["R3"][0])
+        self.assertEqual(len(p["R5"]), 1, p["R5"])
+        self.assertIn('the least ratio 0.868 (ratio 2) is not "0.86"', p["R5"][0])
+        self.assertEqual(len(p["R6"]), 1, p["R6"])
+        self.assertIn('the greatest ratio 2.566 (ratio 1) is not "2.56"', p["R6"][0])
+        self.assertEqual(p["R9"], ["ratio 1: the under product 0.0 is not above 0"])
+        self.assertEqual(p["R10"], ["evidence 0 is null (not measured), not a finite number"])
+        self.assertEqual(p["R11"], ['evidence 0 is "unbounded", not a finite number'])
+        self.assertEqual(p["R12"], ["ratios is empty"])
+        for cid in ("R13", "R14"):
+            self.assertEqual(len(p[cid]), 1, p[cid])
+            self.assertIn("digits is ", p[cid][0])
 
 
 class Count(Folder):

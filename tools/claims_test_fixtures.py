@@ -44,6 +44,17 @@ COST = {"cheapest": [  # 0..4
     {"method": "backward_euler", "seconds": 1.05, "seconds_spread": 1.02},
     {"method": "forward_euler", "seconds": None, "seconds_spread": None},
     {"method": "leapfrog", "seconds": "never", "seconds_spread": 1.0}]}
+# Each error level: steplab's and a peer's cheapest run (the peer's over steplab's in the comment)
+PEERS = {"levels": [  # 0..7
+    {"error": 1e-2, "steplab": 2.0, "peer": 5.11},  # 2.555 (in doubles 2.55500000000000016...)
+    {"error": 1e-3, "steplab": 1.0, "peer": 2.566},  # 2.566
+    {"error": 1e-4, "steplab": 0.5, "peer": 0.434},  # 0.868
+    {"error": 1e-5, "steplab": 1, "peer": 9.996},  # 9.996: "10.0" to 3 significant digits
+    {"error": 1e-6, "steplab": 10, "peer": 1800},  # 180
+    {"error": 1e-7, "steplab": 0.0, "peer": 1.0},  # a zero denominator
+    {"error": 1e-8, "steplab": 1.0, "peer": None},  # not measured
+    {"error": 1e-9, "steplab": 1.0, "peer": "unbounded"}]}
+PF = "cost/peers.json"
 
 
 def ev(pointer, value, file=SF):
@@ -101,6 +112,17 @@ def comparison(cid, relation, margin, a, others, noise=()):
                for r in noise]}
 
 
+def ratio(cid, levels, least, greatest=None, digits=None):
+    """The peer's over steplab's at each of `levels`: evidence 2k the peer's value at levels[k],
+    2k + 1 steplab's, ratio k evidence 2k over 2k + 1; digits {"decimals": 2} unless given."""
+    return {"id": cid, "section": "cost", "sentence": "the peer takes 0.87 to 2.57 times as long", "kind": "ratio",
+            "rule": {"ratios": [{"over": [2 * k], "under": [2 * k + 1]} for k in range(len(levels))],
+                     "least": least, "greatest": least if greatest is None else greatest,
+                     "digits": {"decimals": 2} if digits is None else digits},
+            "evidence": [ev("/levels/%d/%s" % (i, who), PEERS["levels"][i][who], PF) for i in levels
+                         for who in ("peer", "steplab")]}
+
+
 # Groups of a `count` over EVIDENCE: BELOW, SAME and LESS hold, ABOVE does not, NULLS read a null
 BELOW = {"kind": "threshold", "rule": {"op": "<", "limit": 0.25, "items": [0]}}  # holds
 SAME = {"kind": "equality", "rule": {"pairs": [[2, 3]], "relative": 0, "absolute": 0}}  # holds
@@ -121,9 +143,10 @@ class Folder(unittest.TestCase):
     def tearDown(self):
         self.tmp.cleanup()
 
-    def write(self, claims, stability=STABILITY, raw=None, cost=COST, **top):
-        os.makedirs(os.path.join(self.dir, "data", "stability"), exist_ok=True)
-        for name, doc in [(SF, stability), ("stats.json", STATS), ("cost.json", cost)]:
+    def write(self, claims, stability=STABILITY, raw=None, cost=COST, peers=PEERS, **top):
+        for folder in ("stability", "cost"):
+            os.makedirs(os.path.join(self.dir, "data", folder), exist_ok=True)
+        for name, doc in [(SF, stability), ("stats.json", STATS), ("cost.json", cost), (PF, peers)]:
             with open(os.path.join(self.dir, "data", name), "w") as f:
                 json.dump(doc, f)
         with open(os.path.join(self.dir, "data", "claims.json"), "w") as f:
@@ -131,8 +154,8 @@ class Folder(unittest.TestCase):
                     json.dumps(dict({"schema": "steplab.claims/1", "methods": METHODS, "claims": claims},
                                     **top)))
 
-    def problems(self, *claims, stability=STABILITY, cost=COST):
-        self.write(list(claims), stability, cost=cost)
+    def problems(self, *claims, stability=STABILITY, cost=COST, peers=PEERS):
+        self.write(list(claims), stability, cost=cost, peers=peers)
         return dict(vc.verify(self.dir))
 
     def run_cli(self):

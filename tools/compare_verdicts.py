@@ -4,10 +4,14 @@
     tools/compare_verdicts.py REPORT_A REPORT_B
 
 A verdict is what a claim decides, not the numbers it rests on (times move with the machine's
-load): a membership claim's set, a trend's word, a statistic's words, a threshold's rows, and a
-comparison's winner, or that it is a tie. Prints each claim whose
-verdict differs or that one report has and the other has not, and exits 1 if any; 0 if every
-verdict is the same. Reads docs/json.md's schema steplab.claims/1 with the standard library.
+load): a membership claim's set, a trend's word, a statistic's words, a threshold's rows, a
+comparison's winner, or that it is a tie, an equality's pairs and a count's number of its groups.
+A ratio claim is a measured value, not a verdict: its verdict is how many ratios it spans (which
+runs it is measured from is chosen by time too), so two reports whose ratios differ in value, or
+were measured on other runs, agree on it. Prints
+each claim whose verdict differs or that one report has and the other has not, and exits 1 if
+any; 0 if every verdict is the same. Reads docs/json.md's schema steplab.claims/1 with the
+standard library.
 """
 import json
 import sys
@@ -33,6 +37,8 @@ def verdict(claim):
         return ("count", rule.get("count"), len(rule.get("groups", [])))
     if kind == "equality":  # the pairs it says are equal
         return ("equality", sorted(pointers))
+    if kind == "ratio":  # a measured value, not a verdict: how many ratios it spans
+        return ("ratio", len(rule.get("ratios", [])))
     return (kind, json.dumps(rule, sort_keys=True))
 
 

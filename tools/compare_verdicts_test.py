@@ -35,6 +35,14 @@ def count(cid, n, values):  # a count over comparison groups whose times differ 
     return {"id": cid, "section": "scaling", "sentence": "s", "kind": "count", "rule": {"groups": groups, "count": n}, "evidence": ev}
 
 
+def ratio(cid, least, greatest, values, levels=(0, 1)):  # the peer's over steplab's at each level
+    ev = [{"file": "cost/peers.json", "pointer": f"/levels/{i}/{who}", "value": v}
+          for i, pair in zip(levels, values) for who, v in zip(("peer", "steplab"), pair)]
+    ratios = [{"over": [2 * k], "under": [2 * k + 1]} for k in range(len(values))]
+    return {"id": cid, "section": "cost", "sentence": "s", "kind": "ratio",
+            "rule": {"ratios": ratios, "least": least, "greatest": greatest, "digits": {"decimals": 2}}, "evidence": ev}
+
+
 def run(a, b):
     p = subprocess.run([sys.executable, TOOL, a, b], capture_output=True, text=True)
     return p.returncode, p.stdout
@@ -67,6 +75,38 @@ class CompareVerdicts(unittest.TestCase):
             self.assertEqual(code, 1)
             self.assertNotIn("k1:", out)
             self.assertIn("k2: ('count', 1, 2) against ('count', 2, 2)", out)
+
+    def test_a_ratio_is_a_value_not_a_verdict(self):
+        with tempfile.TemporaryDirectory() as d:
+            a = report(d, "a", [ratio("r1", "0.87", "2.57", [(0.434, 0.5), (2.566, 1.0)]),
+                                ratio("r2", "1.50", "1.50", [(1.5, 1.0)]),
+                                ratio("r3", "1.50", "1.50", [(1.5, 1.0)])])
+            b = report(d, "b", [ratio("r1", "1.20", "3.10", [(0.6, 0.5), (3.1, 1.0)]),  # other values
+                                ratio("r2", "1.50", "1.50", [(1.5, 1.0)], levels=(1,)),  # another run chosen
+                                ratio("r3", "0.87", "2.57", [(0.434, 0.5), (2.566, 1.0)])])  # a range of two
+            code, out = run(a, b)
+            self.assertEqual(code, 1)
+            self.assertNotIn("r1:", out)
+            self.assertNotIn("r2:", out)
+            self.assertIn("r3: ('ratio', 1) against ('ratio', 2)", out)
+            self.assertIn("verdicts that differ: 1", out)
+
+    def test_a_membership_with_and_is_its_set(self):
+        def with_and(cid, names, limit, more=None):  # an intersection; its selections' values move
+            claim = members(cid, names)
+            claim["rule"]["and"] = more if more is not None else [
+                {"file": "cost/w.json", "rows": "/points", "where": {}, "key": "method", "over": "numerical",
+                 "test": {"field": "/seconds", "op": "<", "value": limit}}]
+            return claim
+        with tempfile.TemporaryDirectory() as d:
+            a = report(d, "a", [with_and("m1", ["x", "y"], 2), with_and("m2", ["x"], 2), with_and("m3", [], 1, 3)])
+            b = report(d, "b", [with_and("m1", ["y", "x"], 3), with_and("m2", ["x", "z"], 2), with_and("m3", [], 1, [])])
+            code, out = run(a, b)
+            self.assertEqual(code, 1, out)
+            self.assertNotIn("m1:", out)
+            self.assertIn("m2: ('membership', ['x']) against ('membership', ['x', 'z'])", out)
+            self.assertNotIn("m3:", out)  # a malformed and: no crash, the set decides
+            self.assertIn("verdicts that differ: 1", out)
 
     def test_a_claim_in_one_report_only(self):
         with tempfile.TemporaryDirectory() as d:

@@ -3,22 +3,23 @@
 
 Reads REPORT_DIR/data/claims.json (schema "steplab.claims/1", docs/json.md, "A report's claims")
 and the data files its evidence names, and re-evaluates every claim with code of its own: the
-rules in tools/claims_rules.py (pure functions over values), reading the files and pointers and
-the claim loop here.  Prints `<id>: <why>` for each claim that does not hold, then
-`claims: N, hold: H, do not hold: F, theory: T` (T the sentences stated as theory, which have no
-rule).  Exit 0: every claim holds; 1: some claim does not; 2: claims.json missing, not JSON, not
-steplab.claims/1, or with a `theory` that is not a list of {"section", "sentence"} strings (a file
-without `theory` is accepted).  Standard library only.
+rules in tools/claims_rules.py and, for membership's row tests, tools/claims_rows.py (pure
+functions over values), reading the files and pointers and the claim loop here.  Prints
+`<id>: <why>` for each claim that does not hold, then `claims: N, hold: H, do not hold: F,
+theory: T` (T the sentences stated as theory, which have no rule).  Exit 0: every claim holds;
+1: some claim does not; 2: claims.json missing, not JSON, not steplab.claims/1, or with a
+`theory` that is not a list of {"section", "sentence"} strings (a file without `theory` is
+accepted).  Standard library only.
 """
 import json
 import os
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-if HERE not in sys.path:  # claims_rules.py lies beside this file, whatever the working directory
+if HERE not in sys.path:  # the rules' modules lie beside this file, whatever the working directory
     sys.path.insert(0, HERE)
-from claims_rules import CHECKS, RULE_FIELDS, Fail, check_membership, checked_rule, find, \
-    same_json, show
+from claims_rules import CHECKS, RULE_FIELDS, Fail, checked_rule, find, same_json, show
+from claims_rows import check_membership
 
 SCHEMA = "steplab.claims/1"
 CLAIM_FIELDS = ("id", "section", "sentence", "kind", "rule", "evidence")
@@ -80,8 +81,8 @@ def check_claim(report, doc, claim):
             problems.append("evidence %d: %s" % (k, why))
     try:
         if kind == "membership":
-            rows = resolve(report.file(rule["file"]), rule["rows"])
-            problems += check_membership(rows, doc.get("methods"), rule, evidence)
+            rows_at = lambda name, pointer: resolve(report.file(name), pointer)  # any selection's
+            problems += check_membership(rows_at, doc.get("methods"), rule, evidence)
         elif len(values) == len(evidence):  # the other rules read the evidence's values
             problems += CHECKS[kind](rule, values)
     except Fail as why:

@@ -2,8 +2,9 @@
 
 Each test writes a small report folder (data/claims.json and a made-up data file or two) in a
 temporary directory and runs the verifier's functions or its command line on it: membership claims
-(rows read from a file), evidence and pointers, the claim loop and the command line.  The other
-kinds' rule checks and the row-test language: tools/claims_rules_test.py.
+(rows read from a file, and with `and` from two files), a ratio claim end to end, evidence and pointers, the claim loop and the
+command line.  The other kinds' rule checks: tools/claims_rules_test.py; the row-test language:
+tools/claims_rows_test.py.
 """
 import copy
 import json
@@ -17,8 +18,8 @@ if HERE not in sys.path:
     sys.path.insert(0, HERE)
 import claims_rules as cr  # the rules, pure functions over values
 import verify_claims as vc  # the files, the claim loop and the command line
-from claims_test_fixtures import (ABOVE, BELOW, SCRIPT, SF, STABILITY, Folder, comparison, count, equality, ev,
-                                  spearman, threshold, trend)
+from claims_test_fixtures import (ABOVE, BELOW, COST, PEERS, SCRIPT, SF, STABILITY, Folder, comparison, count,
+                                  equality, ev, ratio, spearman, threshold, trend)
 
 STABLE = {"field": "/stable", "op": "==", "value": True}
 
@@ -169,6 +170,62 @@ class Membership(Folder):
         p = self.problems(membership(test={"difference": ["/dt", "/growth"], "op": "==", "value": 0}))["M1"]
         self.assertIn('op not one of "<", "<=", ">", ">="', p[0])
 
+    def test_and_over_two_files_and_mutation(self):
+        # stable at dt 0.5 (stability.json: backward_euler, trapezoid) and, in cost.json, a
+        # cheapest run under 2 s (numerical rows 0..3: rk4 1.0, trapezoid 1.5, backward_euler
+        # 1.05; forward_euler null; leapfrog, row 4, is none of the methods)
+        fast = {"file": "cost.json", "rows": "/cheapest", "where": {}, "key": "method", "over": "numerical",
+                "test": {"field": "/seconds", "op": "<", "value": 2}}
+        claim = membership("MA")
+        claim["rule"]["and"] = [fast]
+        claim["evidence"] += [ev("/cheapest/%d/seconds" % i, COST["cheapest"][i]["seconds"], "cost.json")
+                              for i in range(4)]
+        claims = [claim, membership(), trend("T1", [1, 2], "stays unbounded")]
+        self.assertEqual(self.problems(*claims), {"MA": [], "M1": [], "T1": []})
+        # trapezoid's cheapest run now takes 2.5 s: it drops out of the intersection
+        slower = copy.deepcopy(COST)
+        slower["cheapest"][1]["seconds"] = 2.5
+        p = self.problems(*claims, cost=slower)
+        self.assertEqual((p["M1"], p["T1"]), ([], []))
+        self.assertEqual(len(p["MA"]), 2, p["MA"])
+        self.assertIn("(cost.json /cheapest/1/seconds): recorded 1.5, the file holds 2.5", p["MA"][0])
+        self.assertEqual(p["MA"][1], 'set is ["backward_euler", "trapezoid"], the rows give ["backward_euler"] '
+                         '(the rule\'s ["backward_euler", "trapezoid"], and[0]\'s ["backward_euler", "rk4"])')
+        self.cli_names_only(claims, "MA", cost=slower)
+        # the and's items left out of the evidence, or one named in the other file: it does not hold
+        short, moved = dict(copy.deepcopy(claim), id="MB"), dict(copy.deepcopy(claim), id="MC")
+        del short["evidence"][-1]
+        moved["evidence"][-1]["file"] = SF
+        p = self.problems(short, moved)
+        self.assertEqual(p["MB"], ['evidence should be one item per row: 7 expected, 6 given, missing '
+                                   '["cost.json#/cheapest/3/seconds"], extra []'])
+        self.assertIn("evidence 6: pointer /cheapest/3/seconds: no member", p["MC"][0])
+        self.assertIn('missing ["cost.json#/cheapest/3/seconds"], extra ["%s#/cheapest/3/seconds"]' % SF, p["MC"][1])
+
+
+class Ratio(Folder):
+    def test_end_to_end_and_mutation(self):
+        # the peer's over steplab's at three error levels: 2.555, 2.566, 0.868, printed as the range
+        # "0.87" to "2.57"; and the one at the first level alone, "2.56"
+        claims = [ratio("R1", [0, 1, 2], "0.87", "2.57"), ratio("R2", [0], "2.56"),
+                  trend("T1", [1, 2], "stays unbounded")]
+        self.write(claims)
+        out = self.run_cli()
+        self.assertEqual((out.returncode, out.stdout), (0, "claims: 3, hold: 3, do not hold: 0, theory: 0\n"))
+        # the peer's run at the third level now takes 0.5, not 0.434: the least ratio is 1, not
+        # "0.87"; R2 reads no value of that level and still holds
+        moved = copy.deepcopy(PEERS)
+        moved["levels"][2]["peer"] = 0.5
+        p = self.problems(*claims, peers=moved)
+        self.assertEqual((p["R2"], p["T1"]), ([], []))
+        self.assertEqual(len(p["R1"]), 2, p["R1"])
+        self.assertIn("evidence 4 (cost/peers.json /levels/2/peer): recorded 0.434, the file holds 0.5", p["R1"][0])
+        self.assertIn('the least ratio 1 (ratio 2) is not "0.87" to 2 decimals', p["R1"][1])
+        self.cli_names_only(claims, "R1", peers=moved)
+        # a value that becomes "unbounded" (a run that never reached the level) fails it too
+        moved["levels"][2]["peer"] = "unbounded"
+        self.assertIn('evidence 4 is "unbounded", not a finite number', self.problems(*claims, peers=moved)["R1"])
+
 
 class Evidence(Folder):
     def test_pointer(self):
@@ -208,9 +265,9 @@ class CommandLine(Folder):
     def test_exit_statuses(self):
         self.write([membership(), trend("T1", [1, 2], "stays unbounded"), spearman(),
                     threshold("H1", [0, 3], "<", 0.25), comparison("C1", "less", 1.3, 0, [1]),
-                    equality("Q1", [[2, 3]]), count("N1", [BELOW, ABOVE], 1)])
+                    equality("Q1", [[2, 3]]), count("N1", [BELOW, ABOVE], 1), ratio("R1", [0, 1, 2], "0.87", "2.57")])
         out = self.run_cli()
-        self.assertEqual((out.returncode, out.stdout), (0, "claims: 7, hold: 7, do not hold: 0, theory: 0\n"))
+        self.assertEqual((out.returncode, out.stdout), (0, "claims: 8, hold: 8, do not hold: 0, theory: 0\n"))
         self.write([membership(), trend("T1", [1, 2], "rises")])
         out = self.run_cli()
         self.assertEqual(out.returncode, 1)

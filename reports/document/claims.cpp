@@ -170,14 +170,15 @@ void claim_rate(Ledger& l, StabilitySource s, std::string id, std::string sectio
   l.add(std::move(c));
 }
 
+Evidence work_point_at(Ledger& l, const ReportData& d, const SceneWork& w, const WorkPoint& p, const char* field) {
+  l.document(kWorkDocument, [&] { return work_precision_json(d.work); });
+  return l.at(kWorkDocument, fmt::format("/scenes/{}/points/{}/{}", &w - d.work.scenes.data(), &p - w.points.data(), field));
+}
+
 void claim_cheapest(Ledger& l, const ReportData& d, std::string id, std::string section, std::string sentence, const SceneWork& w,
                     double level, bool timed, const LevelWinner& win) {
   if (!win.point || !win.undecided.empty()) return;
-  l.document(kWorkDocument, [&] { return work_precision_json(d.work); });
-  const std::size_t s = static_cast<std::size_t>(&w - d.work.scenes.data());
-  const auto at = [&](const WorkPoint* p, const char* field) {
-    return l.at(kWorkDocument, fmt::format("/scenes/{}/points/{}/{}", s, p - w.points.data(), field));
-  };
+  const auto at = [&](const WorkPoint* p, const char* field) { return work_point_at(l, d, w, *p, field); };
   const char* cost = timed ? "seconds" : "force_evaluations";
   std::vector<const WorkPoint*> others;  // the runner-up first, then every other solver's cheapest run
   std::vector<std::string> seen{win.point->method};
@@ -287,20 +288,34 @@ std::vector<std::string> method_names(const std::vector<std::size_t>& methods) {
 
 void claim_members(Ledger& l, Claim c, const std::string& file, const std::string& rows, Json where, const char* key,
                    bool numerical_only, Json test, const std::vector<std::string>& set) {
-  std::vector<std::string> fields;
-  pointers_of(test, fields);
-  std::sort(fields.begin(), fields.end());
-  fields.erase(std::unique(fields.begin(), fields.end()), fields.end());
-  const Json& table = l.at(file, rows).value;
-  for (std::size_t i = 0; i < table.size(); ++i) {
-    const Json& row = table[i];
-    if (!matches(row, where) || (numerical_only && !numerical(row.at(key).get<std::string>()))) continue;
-    for (const std::string& f : fields)
-      if (row.contains(Json::json_pointer(f))) c.evidence.push_back(l.at(file, fmt::format("{}/{}{}", rows, i, f)));
+  claim_members_of_all(l, std::move(c), {{file, rows, std::move(where), key, numerical_only, std::move(test)}}, set);
+}
+
+void claim_members_of_all(Ledger& l, Claim c, const std::vector<Selection>& selections, const std::vector<std::string>& set) {
+  Json rules = Json::array();
+  for (const Selection& s : selections) {
+    std::vector<std::string> fields;
+    pointers_of(s.test, fields);
+    std::sort(fields.begin(), fields.end());
+    fields.erase(std::unique(fields.begin(), fields.end()), fields.end());
+    const Json& table = l.at(s.file, s.rows).value;
+    for (std::size_t i = 0; i < table.size(); ++i) {
+      const Json& row = table[i];
+      if (!matches(row, s.where) || (s.numerical && !numerical(row.at(s.key).get<std::string>()))) continue;
+      for (const std::string& f : fields)
+        if (row.contains(Json::json_pointer(f))) {
+          Evidence e = l.at(s.file, fmt::format("{}/{}{}", s.rows, i, f));
+          const auto same = [&](const Evidence& o) { return o.file == e.file && o.pointer == e.pointer; };
+          if (std::none_of(c.evidence.begin(), c.evidence.end(), same)) c.evidence.push_back(std::move(e));  // shared items once
+        }
+    }
+    rules.push_back({{"file", s.file}, {"rows", s.rows}, {"where", s.where}, {"key", s.key},
+                     {"over", s.numerical ? "numerical" : "all"}, {"test", s.test}});
   }
   c.kind = "membership";
-  c.rule = {{"file", file}, {"rows", rows},         {"where", std::move(where)}, {"key", key},
-            {"over", numerical_only ? "numerical" : "all"}, {"test", std::move(test)}, {"set", set}};
+  c.rule = rules.at(0);
+  c.rule["set"] = set;
+  if (rules.size() > 1) c.rule["and"] = Json(rules.begin() + 1, rules.end());
   l.add(std::move(c));
 }
 
@@ -358,6 +373,23 @@ void claim_count(Ledger& l, Claim c, std::vector<ClaimGroup> groups, int count) 
   }
   c.kind = "count";
   c.rule = {{"groups", std::move(rules)}, {"count", count}};
+  l.add(std::move(c));
+}
+
+std::string printed(double x, Digits d) { return d.significant ? fmt::format("{:.{}g}", x, d.n) : fmt::format("{:.{}f}", x, d.n); }
+
+void claim_ratios(Ledger& l, Claim c, const std::vector<Ratio>& ratios, std::string least, std::string greatest, Digits d) {
+  if (ratios.empty()) return;
+  Json terms = Json::array();
+  for (const Ratio& r : ratios) {
+    Json over = Json::array(), under = Json::array();
+    for (const Evidence& e : r.over) over.push_back(c.evidence.size()), c.evidence.push_back(e);
+    for (const Evidence& e : r.under) under.push_back(c.evidence.size()), c.evidence.push_back(e);
+    terms.push_back({{"over", std::move(over)}, {"under", std::move(under)}});
+  }
+  c.kind = "ratio";
+  c.rule = {{"ratios", std::move(terms)}, {"least", std::move(least)}, {"greatest", std::move(greatest)},
+            {"digits", {{d.significant ? "significant" : "decimals", d.n}}}};
   l.add(std::move(c));
 }
 

@@ -30,7 +30,7 @@ struct Evidence {
 };
 
 struct Claim {
-  std::string id, section, sentence, kind;  // kind: membership, trend, statistic, threshold, comparison, equality, count (docs/json.md)
+  std::string id, section, sentence, kind;  // kind: membership, trend, statistic, threshold, comparison, equality, count, ratio (docs/json.md)
   Json rule;
   std::vector<Evidence> evidence;
 };
@@ -78,6 +78,17 @@ Json test_not(Json test);
 // value the test reads in those rows. The rows' `key` names them ("method", "solver").
 void claim_members(Ledger& l, Claim c, const std::string& file, const std::string& rows, Json where, const char* key,
                    bool numerical, Json test, const std::vector<std::string>& set);
+// One selection of a membership claim: the rows of `rows` in the cited document `file` that match
+// `where`, of the numerical methods (`numerical`) or all, and meet `test`, named by `key`.
+struct Selection {
+  std::string file, rows;
+  Json where;
+  const char* key;
+  bool numerical;
+  Json test;
+};
+// "`set` is exactly the rows every one of `selections` selects" (their intersection by key).
+void claim_members_of_all(Ledger& l, Claim c, const std::vector<Selection>& selections, const std::vector<std::string>& set);
 std::vector<std::string> method_names(const std::vector<std::size_t>& methods);
 
 // "Each pair is equal within max(absolute, relative max(|a|, |b|))" (infinity equal to infinity only).
@@ -95,6 +106,21 @@ void claim_count(Ledger& l, Claim c, std::vector<ClaimGroup> groups, int count);
 // `noise` (the two runs' timing spreads, or none) raising the margin; as a group, or a claim of its own.
 ClaimGroup comparison_group(Evidence a, std::vector<Evidence> others, std::vector<Evidence> noise, const char* relation, double margin);
 void claim_group(Ledger& l, Claim c, ClaimGroup g);
+
+// The digits a ratio is printed with: `n` after the point (fmt's {:.nf}), or `n` significant ones
+// ({:.ng}); `printed` writes it so.
+struct Digits {
+  bool significant;
+  int n;
+};
+std::string printed(double x, Digits d);
+// One ratio of evidence: the product of the `over` values over the product of the `under` ones.
+struct Ratio {
+  std::vector<Evidence> over, under;
+};
+// "These ratios lie from `least` to `greatest`" as the sentence prints them with `d` (one ratio:
+// least and greatest the same): a ratio claim, the verifier recomputing each from its evidence.
+void claim_ratios(Ledger& l, Claim c, const std::vector<Ratio>& ratios, std::string least, std::string greatest, Digits d);
 
 // Words as part of a claim's id: "explicit Runge-Kutta" -> "explicit_runge-kutta".
 std::string id_word(std::string_view words);
@@ -144,6 +170,8 @@ void claim_rate(Ledger& l, StabilitySource s, std::string id, std::string sectio
                 double damping, const std::vector<std::size_t>& methods, const char* op, double limit);
 // The work-precision study as the report writes it, data/cost/work_precision.json.
 inline constexpr const char* kWorkDocument = "cost/work_precision.json";
+// A field of a work point (`p` of scene `w`) in the cited work-precision document, as evidence.
+Evidence work_point_at(Ledger& l, const ReportData& d, const SceneWork& w, const WorkPoint& p, const char* field);
 // "The cheapest run to error `level` on scene `w` is `win`'s, by its margin or tied with the
 // runner-up": a comparison claim over each solver's cheapest run at the level (by run time, with
 // the two runs' timing spreads as the noise, or untimed by force evaluations); none where no run
@@ -179,6 +207,10 @@ Json energy_document(const ReportData& d);
 // "`set` is the methods whose run is of kind `k`" (and symplectic, where `symplectic`).
 void claim_energy(Ledger& l, const ReportData& d, std::string id, std::string section, std::string sentence, EnergyKind k,
                   const std::vector<std::size_t>& set, bool symplectic = false);
+// "`set` is the methods stable at the sheet's step (config.large_dt) with and without the spring's
+// damping, in the stability sweep, whose undamped run at that step keeps its energy bounded".
+void claim_sheet_step(Ledger& l, const ReportData& d, std::string id, std::string section, std::string sentence,
+                      const std::vector<std::size_t>& set);
 // A convergence study's document, cited: data/convergence/convergence_<scene>.json, its name returned.
 std::string cite_convergence(Ledger& l, const ConvergenceResult& r);
 // The long-time study's document of `r`'s scene in a section's folder, cited:

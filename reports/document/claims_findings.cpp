@@ -67,6 +67,22 @@ void claim_energy(Ledger& l, const ReportData& d, std::string id, std::string se
                 "method", true, std::move(test), method_names(set));
 }
 
+void claim_sheet_step(Ledger& l, const ReportData& d, std::string id, std::string section, std::string sentence,
+                      const std::vector<std::size_t>& set) {
+  l.document(kStabilityDocument, [&] { return stability_document(d); });
+  const Json& energy = l.document(kEnergyDocument, [&] { return energy_document(d); });
+  if (energy.at("rows").empty()) return;
+  const double round_off = energy.at("rows").at(0).at("round_off").get<double>();
+  const auto stable_at = [&](double damping) {
+    return Selection{kStabilityDocument, "/sweep", {{"dt", d.config.large_dt}, {"damping", damping}}, "method", true,
+                     test_field("/stable", "==", true)};
+  };
+  claim_members_of_all(l, claim_text(std::move(id), std::move(section), std::move(sentence)),
+                       {stable_at(0.0), stable_at(d.config.damping()),
+                        {kEnergyDocument, "/rows", Json::object(), "method", true, energy_test(EnergyKind::Bounded, round_off)}},
+                       method_names(set));
+}
+
 std::string cite_convergence(Ledger& l, const ConvergenceResult& r) {
   std::string file = fmt::format("convergence/convergence_{}.json", scene_name(r.config.scene));
   l.document(file, [&] { return convergence_json(r); });
@@ -217,10 +233,9 @@ void claim_map(Ledger& l, const ScalingResult& r, std::size_t target, const std:
   for (const auto& [group, n] : tally.wins) won += n;
   claim_count(l, claim_text(id + ".ties", section, sentence), std::move(ties), tally.ties);
   claim_count(l, claim_text(id + ".wins", section, sentence), std::move(wins), won);
-  for (auto& [group, cells] : by_group) {
-    const auto n = tally.wins.find(group);
-    claim_count(l, claim_text(id + ".wins." + id_word(group), section, sentence), std::move(cells), n == tally.wins.end() ? 0 : n->second);
-  }
+  for (auto& [group, cells] : by_group)  // the groups the sentence names: those with a clear win
+    if (const auto n = tally.wins.find(group); n != tally.wins.end() && n->second > 0)
+      claim_count(l, claim_text(id + ".wins." + id_word(group), section, sentence), std::move(cells), n->second);
   claim_count(l, claim_text(id + ".implicit_wins", section, sentence), std::move(implicit), static_cast<int>(tally.implicit.size()));
   claim_count(l, claim_text(id + ".at_rest", section, sentence), std::move(still), tally.still);
 }

@@ -5,6 +5,7 @@
 #include <map>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/peers/peers.hpp"
@@ -91,25 +92,30 @@ std::string accuracy(const ReportData& d, Ledger* l) {
 }
 
 // A large system: the group that wins most cells of the map at each target (clear wins only).
-std::string large_systems(const ReportData& d) {
+std::string large_systems(const ReportData& d, Ledger* l) {
   if (!d.scaling_map) return {};
   const ScalingResult& r = *d.scaling_map;
   const ScalingConfig& c = r.config;
   const std::size_t nk = r.blocks.size() / c.targets.size();
   std::vector<std::string> parts;
+  std::vector<MapTally> tallies;
   for (std::size_t t = 0; t < c.targets.size(); ++t) {
-    const MapTally tally = map_tally(r, t);
-    const std::map<std::string, int>& wins = tally.wins;
-    const int cells = tally.cells;
-    if (wins.empty()) continue;
-    const auto top = std::max_element(wins.begin(), wins.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
-    parts.push_back(fmt::format("at error {} {} ({} of {} cells)", target_text(c, r.blocks[t * nk]), top->first, top->second, cells));
+    MapTally tally = map_tally(r, t);
+    int won = 0;
+    std::vector<std::string> groups;
+    for (const auto& [group, n] : tally.wins) won += n, groups.push_back(fmt::format("{} {}", group, n));
+    parts.push_back(fmt::format("at error {}: {} of {} cells{}, {} ties{}", target_text(c, r.blocks[t * nk]), won == 0 ? "none" : std::to_string(won),
+                                tally.cells, groups.empty() ? "" : " (" + and_list(groups) + ")", tally.ties,
+                                tally.still > 0 ? fmt::format(", {} where the body moves less than the target", tally.still) : ""));
+    tallies.push_back(std::move(tally));
   }
-  if (parts.empty()) return {};
-  return fmt::format("- **A large system** ({} of up to {} masses, stiffened up to {:g} times): the group most often cheapest is, "
-                     "{}.\n",
-                     scene_kernel(scene_index(c.scene)).title, scaling_masses(c, c.sizes.back()),
-                     c.stiffnesses.back() / c.stiffnesses.front(), and_list(parts));
+  if (parts.empty() || !c.timing) return {};
+  const std::string md = fmt::format("- **A large system** ({} of up to {} masses, stiffened up to {:g} times): the cells where one "
+                                     "solver is the cheapest by more than the timing's noise (\"When does implicit pay?\"): {}.\n",
+                                     scene_kernel(scene_index(c.scene)).title, scaling_masses(c, c.sizes.back()),
+                                     c.stiffnesses.back() / c.stiffnesses.front(), fmt::join(parts, "; "));
+  for (std::size_t t = 0; l && t < tallies.size(); ++t) claim_map(*l, r, t, fmt::format("advice.map.target_{}", t), "advice", md, tallies[t]);
+  return md;
 }
 
 // Contact: the methods that keep the undamped bounce's energy within 1 % at the largest step.
@@ -134,18 +140,26 @@ std::string contact(const ReportData& d, Ledger* l) {
   return md;
 }
 
-// The sheet's spring at its large step: stable damped and undamped, its energy bounded.
-std::string sheet_step(const ReportData& d, const Findings& f) {
+// The sheet's spring at its large step: stable there with and without the spring's damping (the
+// stability sweep's runs) and its energy bounded (the undamped long run at that step).
+std::string sheet_step(const ReportData& d, const Findings& f, Ledger* l) {
   const std::vector<EnergyBehaviour> e = energy_behaviour(d);
+  const auto stable_at = [&](std::size_t m, double damping) {
+    return std::any_of(d.sweep.begin(), d.sweep.end(),
+                       [&](const SweepRow& r) { return r.method == m && r.dt == d.config.large_dt && r.damping == damping && r.run.stable(); });
+  };
   std::vector<std::size_t> good;
   for (std::size_t i : f.numerical) {
-    const MethodFinding& r = f.rows[i];
-    const auto b = std::find_if(e.begin(), e.end(), [&](const EnergyBehaviour& x) { return x.method == r.method; });
-    if (r.stable_large_dt && r.stable_undamped && b != e.end() && b->kind == EnergyKind::Bounded) good.push_back(r.method);
+    const std::size_t m = f.rows[i].method;
+    const auto b = std::find_if(e.begin(), e.end(), [&](const EnergyBehaviour& x) { return x.method == m; });
+    if (stable_at(m, 0.0) && stable_at(m, d.config.damping()) && b != e.end() && b->kind == EnergyKind::Bounded) good.push_back(m);
   }
   if (good.empty()) return {};
-  return fmt::format("- **The sheet's spring at dt = {}**: stable with and without damping and its energy bounded: {}.\n",
-                     d.config.large_dt, method_list(good));
+  const std::string md = fmt::format("- **The sheet's spring at dt = {}**: stable there with and without damping and its energy "
+                                     "bounded: {}.\n",
+                                     d.config.large_dt, method_list(good));
+  if (l) claim_sheet_step(*l, d, "advice.sheet_step", "advice", md, good);
+  return md;
 }
 
 class Advice : public Section {
@@ -154,9 +168,9 @@ class Advice : public Section {
   std::string markdown(Page& page) const override {
     const ReportData& d = page.data;
     std::string md;
-    if ((d.studies & kFindings) == kFindings) md += sheet_step(d, page.findings) + long_runs(d, page.ledger);
+    if ((d.studies & kFindings) == kFindings) md += sheet_step(d, page.findings, page.ledger) + long_runs(d, page.ledger);
     if (d.studies & kWorkPrecisionStudy) md += accuracy(d, page.ledger);
-    if (d.studies & kScalingStudy) md += large_systems(d);
+    if (d.studies & kScalingStudy) md += large_systems(d, page.ledger);
     if (d.studies & kCollisionStudy) md += contact(d, page.ledger);
     if (md.empty()) return "## " + title() + "\n\nThis report ran none of the studies the advice rests on.\n\n";
     return "## " + title() + "\n\nDrawn from the measurements above, each with the data it rests on:\n\n" + md + "\n";

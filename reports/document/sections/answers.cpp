@@ -214,11 +214,24 @@ std::string cost_answer(const Page& page) {
     const PeerComparison* best = nullptr;
     for (const PeerComparison& c : against)
       if (c.steplab && c.run && (!best || point_cost(*c.run, timed) < point_cost(*best->run, timed))) best = &c;
-    if (best)
-      md += fmt::format("; there steplab's cheapest implicit method, `{}`, takes {} steps where the cheapest adaptive implicit "
-                        "peer, `{}` ({}), takes {}: {:.3g} times its cost",
-                        best->steplab->method, best->steplab->steps, best->peer, find_peer(best->peer)->library(), best->run->steps,
-                        point_cost(*best->run, timed) / point_cost(*best->steplab, timed));
+    if (best) {
+      // A measured ratio, no verdict: which peer and which method are cheapest is this run's pick
+      // (the table of cheapest runs says where they tie).
+      const double ratio = point_cost(*best->run, timed) / point_cost(*best->steplab, timed);
+      const std::string part = fmt::format(
+          "; against steplab's cheapest implicit method, `{}` ({} steps), the adaptive implicit peer cheapest in this run, `{}` "
+          "({}), takes {} steps at {} times its cost",
+          best->steplab->method, best->steplab->steps, best->peer, find_peer(best->peer)->library(), best->run->steps,
+          printed(ratio, Digits{true, 3}));
+      md += part;
+      if (page.ledger) {
+        const char* field = timed ? "seconds" : "force_evaluations";
+        claim_ratios(*page.ledger, claim_text("answers.peer_cost", "answers", part),
+                     {{{work_point_at(*page.ledger, page.data, w, *best->run, field)},
+                       {work_point_at(*page.ledger, page.data, w, *best->steplab, field)}}},
+                     printed(ratio, Digits{true, 3}), printed(ratio, Digits{true, 3}), Digits{true, 3});
+      }
+    }
   }
   md += fmt::format("{}.\n", see(page, "work_precision"));
   if (page.ledger)

@@ -117,7 +117,7 @@ class Cost : public Section {
       md += page.figure("work_precision", fmt::format("Work against precision: the largest error along a run against its {}, a "
                                                       "row per scene; the explicit fixed-step methods, the implicit ones and the "
                                                       "adaptive solvers in a panel each", timed ? "run time" : "force evaluations"));
-    md += peer_table(r, timed) + dopri5_sentences(r, timed);
+    md += peer_table(page, timed) + dopri5_sentences(page, timed);
     if (r.stiff >= 0) md += limits_text(r, page.ledger) + stiffness_text(page, timed);
     return md;
   }
@@ -182,48 +182,88 @@ class Cost : public Section {
   }
 
   // steplab's cheapest implicit method against each adaptive implicit peer on the stiff scene, at the
-  // crossover error and the tightest level: a row each, with the counts.
-  static std::string peer_table(const WorkPrecisionResult& r, bool timed) {
+  // crossover error and the tightest level: a row each, with the counts. Each ratio a claim
+  // (cost.peers.<level>.<peer>.cost, .force, .steps), and the range of a peer's cost of a step.
+  static std::string peer_table(const Page& page, bool timed) {
+    const WorkPrecisionResult& r = page.data.work;
     if (r.stiff < 0) return {};
     const SceneWork& w = r.scenes[static_cast<std::size_t>(r.stiff)];
+    const char* cost_field = timed ? "seconds" : "force_evaluations";
+    constexpr Digits digits{true, 3}, range_digits{true, 2};
     std::string rows;
-    double per_step_lo = INFINITY, per_step_hi = 0;  // a peer's cost of a step over steplab's
+    double per_step_lo = INFINITY, per_step_hi = 0;  // a peer's cost of a step over steplab's: (cost ratio) / (step ratio)
+    std::vector<Ratio> per_step;
     for (const double level : {r.config.crossover_error, r.config.error_levels.back()})
       for (const PeerComparison& c : implicit_against_peers(r, w, level, timed)) {
         if (!c.steplab || !c.run) continue;
         const double cost = point_cost(*c.run, timed) / point_cost(*c.steplab, timed);
+        const double force = double(c.run->force_evaluations) / double(c.steplab->force_evaluations);
         const double steps = double(c.run->steps) / double(c.steplab->steps);
         per_step_lo = std::min(per_step_lo, cost / steps), per_step_hi = std::max(per_step_hi, cost / steps);
-        rows += fmt::format("| {:.0e} | `{}`: {}, {} | `{}`: {}, {} | {:.3g} | {:.3g} | {:.3g} |\n", level, c.steplab->method,
+        rows += fmt::format("| {:.0e} | `{}`: {}, {} | `{}`: {}, {} | {} | {} | {} |\n", level, c.steplab->method,
                             cost_text(timed, c.steplab->seconds, c.steplab->force_evaluations), counts_cell(*c.steplab), c.peer,
-                            cost_text(timed, c.run->seconds, c.run->force_evaluations), counts_cell(*c.run), cost,
-                            double(c.run->force_evaluations) / double(c.steplab->force_evaluations), steps);
+                            cost_text(timed, c.run->seconds, c.run->force_evaluations), counts_cell(*c.run), printed(cost, digits),
+                            printed(force, digits), printed(steps, digits));
+        if (!page.ledger) continue;
+        const auto at = [&](const WorkPoint* p, const char* field) { return work_point_at(*page.ledger, page.data, w, *p, field); };
+        const std::string id = fmt::format("cost.peers.{:.0e}.{}", level, c.peer);
+        const std::string row = fmt::format("peer table, error {:.0e}, `{}` against `{}`", level, c.peer, c.steplab->method);
+        const struct {
+          const char *suffix, *column;
+          double value;
+          const char* field;
+        } columns[] = {{"cost", "cost ratio", cost, cost_field}, {"force", "force ratio", force, "force_evaluations"},
+                       {"steps", "step ratio", steps, "steps"}};
+        for (const auto& k : columns)
+          claim_ratios(*page.ledger, claim_text(fmt::format("{}.{}", id, k.suffix), "cost", fmt::format("{}, {}", row, k.column)),
+                       {{{at(c.run, k.field)}, {at(c.steplab, k.field)}}}, printed(k.value, digits), printed(k.value, digits), digits);
+        per_step.push_back({{at(c.run, cost_field), at(c.steplab, "steps")}, {at(c.steplab, cost_field), at(c.run, "steps")}});
       }
     if (rows.empty()) return {};
+    const std::string range = fmt::format("A step of a peer's costs {} .. {} times one of steplab's method by {}", printed(per_step_lo, range_digits),
+                                          printed(per_step_hi, range_digits), timed ? "run time" : "force evaluations");
+    if (page.ledger)
+      claim_ratios(*page.ledger, claim_text("cost.peers.per_step", "cost", range), per_step, printed(per_step_lo, range_digits),
+                   printed(per_step_hi, range_digits), range_digits);
     return fmt::format("On the {}, steplab's cheapest implicit method against each adaptive implicit peer (CVODE; ARKODE's "
                        "DIRK tables; RADAU5, the adaptive code of steplab's Radau IIA; F: force evaluations, J: Jacobians, "
                        "LU: factorisations):\n\n| error | steplab | peer | cost ratio | force ratio | step ratio |\n"
                        "|---|-----------------|-----------------|---|---|---|\n{}\nA ratio above 1: the peer costs or takes more. "
-                       "A step of a peer's costs {:.2g} .. {:.2g} times one of steplab's method by {}: the rest of each cost "
-                       "ratio is in how many steps each needs.\n\n",
-                       scene_word(w), rows, per_step_lo, per_step_hi, timed ? "run time" : "force evaluations");
+                       "{}: the rest of each cost ratio is in how many steps each needs.\n\n",
+                       scene_word(w), rows, range);
   }
 
-  // steplab's dopri5 against Boost.Odeint's, at the error levels both reach.
-  static std::string dopri5_sentences(const WorkPrecisionResult& r, bool timed) {
+  // steplab's dopri5 against Boost.Odeint's, at the error levels both reach: the two ranges, each a
+  // claim (cost.dopri5.<scene>.cost and .force).
+  static std::string dopri5_sentences(const Page& page, bool timed) {
+    const WorkPrecisionResult& r = page.data.work;
+    constexpr Digits digits{false, 2};
+    const char* cost_field = timed ? "seconds" : "force_evaluations";
     std::string md;
     for (const SceneWork& w : r.scenes) {
       double lo = INFINITY, hi = 0, flo = INFINITY, fhi = 0;
+      std::vector<Ratio> costs, forces;
       for (const double level : r.config.error_levels) {
         const WorkPoint *a = cheapest_point(w, "dopri5", level, timed), *b = cheapest_point(w, "odeint_dopri5", level, timed);
         if (!a || !b || !(point_cost(*b, timed) > 0)) continue;
         const double ratio = point_cost(*a, timed) / point_cost(*b, timed), f = double(a->force_evaluations) / double(b->force_evaluations);
         lo = std::min(lo, ratio), hi = std::max(hi, ratio), flo = std::min(flo, f), fhi = std::max(fhi, f);
+        if (!page.ledger) continue;
+        const auto at = [&](const WorkPoint* p, const char* field) { return work_point_at(*page.ledger, page.data, w, *p, field); };
+        costs.push_back({{at(a, cost_field)}, {at(b, cost_field)}});
+        forces.push_back({{at(a, "force_evaluations")}, {at(b, "force_evaluations")}});
       }
-      if (hi > 0)
-        md += fmt::format("- On the {}, steplab's `dopri5` costs {:.2f} .. {:.2f} times what `odeint_dopri5` costs at equal error "
-                          "in {}, and {:.2f} .. {:.2f} times its force evaluations (at the error levels both reach).\n",
-                          scene_word(w), lo, hi, timed ? "run time" : "force evaluations", flo, fhi);
+      if (!(hi > 0)) continue;
+      const std::string line =
+          fmt::format("- On the {}, steplab's `dopri5` costs {} .. {} times what `odeint_dopri5` costs at equal error in {}, and {} .. "
+                      "{} times its force evaluations (at the error levels both reach).\n",
+                      scene_word(w), printed(lo, digits), printed(hi, digits), timed ? "run time" : "force evaluations",
+                      printed(flo, digits), printed(fhi, digits));
+      md += line;
+      if (!page.ledger) continue;
+      const std::string id = "cost.dopri5." + scene_word(w);
+      claim_ratios(*page.ledger, claim_text(id + ".cost", "cost", line), costs, printed(lo, digits), printed(hi, digits), digits);
+      claim_ratios(*page.ledger, claim_text(id + ".force", "cost", line), forces, printed(flo, digits), printed(fhi, digits), digits);
     }
     return md.empty() ? md : md + "\n";
   }
