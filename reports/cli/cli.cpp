@@ -264,7 +264,7 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   for (StudyCommand (*make)(CLI::App*) : kStudies) studies.push_back(make(study));
 
   ReportArgs rep;
-  CLI::App* rep_cmd = app.add_subcommand("report", "run every study and write report.md, report.pdf, figures/ and data/ into one folder");
+  CLI::App* rep_cmd = app.add_subcommand("report", "run every study and write report.md, report.pdf, atlas.html, figures/ and data/ into one folder");
   rep_cmd->add_option("--out", rep.out, "output folder")->capture_default_str();
   rep_cmd->add_option("--config", rep.config, "JSON file overriding any study parameter (see --print-config)");
   CLI::Option* rep_methods = rep_cmd->add_option("--methods", rep.methods, "comma-separated methods the report covers (default every one, analytic included)");

@@ -110,6 +110,13 @@ std::string styles_gp() {
   out += fmt::format("adaptive = \"{}\"\n", adaptive);
   out += "mlt(m) = sum [k=1:words(style_names)] (word(style_names, k) eq m ? k : 0)\n";
   out += "in_list(m, list) = strstrt(\" \".list.\" \", \" \".m.\" \") > 0\n";
+  // The terminal of `format` (set by steplab report) for a figure h pixels high on screen (png,
+  // svg: 1100 wide, fonts 12 and keys 11) or cm centimetres high in print (pdf: 16 cm wide, fonts
+  // 10 pt and keys 8 pt, the least a printed page may carry): `eval terminal(h, cm)`.
+  out += "terminal(h, cm) = format eq \"pdf\" ? sprintf(\"set terminal pdfcairo enhanced size 16cm,%.1fcm font ',10'\", cm) : "
+         "sprintf(\"set terminal %s enhanced size 1100,%d font ',12'%s\", format eq \"svg\" ? \"svg\" : \"pngcairo\", int(h), "
+         "format eq \"svg\" ? \" background rgb 'white'\" : \"\")\n";
+  out += "kfont = format eq \"pdf\" ? \",8\" : \",11\"  # the keys and labels\n";
   return out;
 }
 

@@ -282,6 +282,29 @@ std::string slurp(const fs::path& p) {
   return s.str();
 }
 
+// pandoc in the staging folder, making `made` from `input` (then removed) with `options`; where
+// it fails, ToolFailed, the folder kept for a look.
+void run_pandoc(const fs::path& staging, const fs::path& out, const char* input, const char* made, const std::string& options) {
+  if (run_tool(fmt::format("cd '{}' && pandoc {} -o {} {}", staging.string(), input, made, options), staging / "pandoc.log") != 0)
+    throw ToolFailed(fmt::format("pandoc could not make {}:{}\nits input and log are kept in {} (the next report into {} removes "
+                                 "them)", made, tool_errors(staging / "pandoc.log"), staging.string(), out.string()));
+  fs::remove(staging / input);
+  fs::remove(staging / "pandoc.log");
+}
+
+// The atlas: the whole report as one web page, atlas.html, its figures as SVG beside their
+// sections, its formulas as MathML and a table of contents linking each section; it names no file
+// outside the report's folder and no network address, so it opens offline.
+void write_atlas(const Report& report, const std::string& footer, const fs::path& staging, const fs::path& out) {
+  write_atomic((staging / "atlas.md").string(), report_markdown(report, "svg", footer));
+  write_atomic((staging / "atlas-style.html").string(),
+               "<style>\nbody { max-width: 1180px; font-size: 16px; }\nimg { max-width: 100%; height: auto; }\n"
+               "table { font-size: 14px; display: block; overflow-x: auto; }\ncode { white-space: pre-wrap; }\n</style>\n");
+  run_pandoc(staging, out, "atlas.md", "atlas.html",
+             "--standalone --toc --toc-depth=2 --mathml -H atlas-style.html --metadata pagetitle='steplab atlas'");
+  fs::remove(staging / "atlas-style.html");
+}
+
 }  // namespace
 
 int write_report(const ReportConfig& c, const std::string& out_dir, bool force, ProgressHook progress) {
@@ -320,7 +343,7 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force, 
       if (fs::is_empty(staging / "data" / s->id)) fs::remove(staging / "data" / s->id);
     }
 
-    // Figures: each script twice, PNG for the Markdown and PDF (vector) for the PDF.
+    // Figures: each script three times, PNG for the Markdown, SVG for the atlas and PDF (vector) for the PDF.
     const std::string all = method_words(d.methods), numeric = method_words(d.collision.config.methods);
     DataDir(staging / "figures").write("styles.gp", styles_gp());  // loaded by every script
     int number = 0;
@@ -330,7 +353,7 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force, 
         const auto gp = std::find_if(gnuplot_scripts.begin(), gnuplot_scripts.end(), [&](const GnuplotScript& g) { return g.name == fig.script; });
         if (gp == gnuplot_scripts.end()) throw std::logic_error("no gnuplot script " + fig.script);
         DataDir(staging / "figures").write(fig.script + ".gp", std::string(gp->text));
-        for (const char* fmt_name : {"png", "pdf"}) {
+        for (const char* fmt_name : {"png", "svg", "pdf"}) {
           const std::string cmd = fmt::format(
               "cd '{}' && gnuplot -e \"datadir='../data/{}'; outfile='{}.{}'; format='{}'; methods='{}'; numeric='{}'; "
               "springdts='{}'; largedt='{}'; {}{}\" '{}.gp'",
@@ -357,16 +380,11 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force, 
         data.write(file, doc.dump(1) + "\n");
       }
     data.write("claims.json", ledger.json().dump(1) + "\n");
+    write_atlas(report, footer, staging, out);
     write_atomic((staging / "report-pdf.md").string(), report_markdown(report, "pdf", footer));
-    const std::string pandoc = fmt::format(
-        "cd '{}' && pandoc report-pdf.md -o report.pdf --pdf-engine=pdflatex -V geometry:margin=1.8cm -V fontsize=10pt "
-        "-V colorlinks=true -V 'header-includes=\\usepackage{{float}}\\floatplacement{{figure}}{{htbp}}'",
-        staging.string());
-    if (run_tool(pandoc, staging / "pandoc.log") != 0)
-      throw ToolFailed(fmt::format("pandoc could not make report.pdf:{}\nits input and log are kept in {} (the next report into "
-                                   "{} removes them)", tool_errors(staging / "pandoc.log"), staging.string(), out.string()));
-    fs::remove(staging / "report-pdf.md");
-    fs::remove(staging / "pandoc.log");
+    run_pandoc(staging, out, "report-pdf.md", "report.pdf",
+               "--pdf-engine=pdflatex -V geometry:margin=1.8cm -V fontsize=10pt -V colorlinks=true "
+               "-V 'header-includes=\\usepackage{float}\\floatplacement{figure}{htbp}'");
     data.write("stamp", stamp);
     write_atomic((staging / kReportMarker).string(), report_marker(staging.string()));
     if (stop_requested) throw Interrupted();
@@ -386,7 +404,7 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force, 
   } else {
     fs::rename(staging, out);
   }
-  std::printf("wrote %s: report.md, report.pdf, figures/, data/\n", out.c_str());
+  std::printf("wrote %s: report.md, report.pdf, atlas.html, figures/, data/\n", out.c_str());
   return 0;
 }
 

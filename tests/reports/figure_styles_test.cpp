@@ -9,6 +9,8 @@
 #include <string>
 #include <tuple>
 
+#include <fmt/format.h>
+
 #include "cli_helpers.hpp"
 #include "analysis/kernel/kernel.hpp"
 #include "reports/document/figure_styles.hpp"
@@ -54,19 +56,26 @@ TEST(FigureStyles, FamilyHuesAreOkabeIto) {
   EXPECT_EQ(method_style(*find_method("rk4")).colour, "#003755");  // 0.48 x (00, 72, B2)
 }
 
-// gnuplot reads styles.gp: mlt() finds each method's linetype.
+// gnuplot reads styles.gp: mlt() finds each method's linetype; terminal() and kfont follow the
+// format the report sets (8 pt keys in print).
 TEST(FigureStyles, GnuplotReadsTheStyles) {
   TempDir dir;
   std::ofstream(dir.path("styles.gp")) << styles_gp();
   std::ofstream(dir.path("probe.gp")) << "load 'styles.gp'\n"
                                          "print mlt('explicit_euler'), mlt('rk4'), mlt('bdf3'), mlt('nosuch')\n"
-                                         "print in_list('rk4', 'rk3 rk4'), in_list('rk', 'rk3 rk4')\n";
-  const std::string cmd = "cd '" + dir.root() + "' && gnuplot probe.gp 2>" + dir.path("out");
-  ASSERT_EQ(std::system(cmd.c_str()), 0) << slurp(dir.path("out"));
-  const auto lines = split_lines(slurp(dir.path("out")));
-  ASSERT_EQ(lines.size(), 2u) << slurp(dir.path("out"));
-  EXPECT_EQ(lines[0], "1 6 14 0");
-  EXPECT_EQ(lines[1], "1 0");
+                                         "print in_list('rk4', 'rk3 rk4'), in_list('rk', 'rk3 rk4')\n"
+                                         "print terminal(330 * 2 + 60, 4.2 * 2 + 0.6), '|', kfont\n";
+  for (const char* format : {"png", "svg", "pdf"}) {
+    const std::string cmd = fmt::format("cd '{}' && gnuplot -e \"format='{}'\" probe.gp 2>{}", dir.root(), format, dir.path("out"));
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << slurp(dir.path("out"));
+    const auto lines = split_lines(slurp(dir.path("out")));
+    ASSERT_EQ(lines.size(), 3u) << slurp(dir.path("out"));
+    EXPECT_EQ(lines[0], "1 6 14 0");
+    EXPECT_EQ(lines[1], "1 0");
+    EXPECT_EQ(lines[2], std::string(format) == "pdf"   ? "set terminal pdfcairo enhanced size 16cm,9.0cm font ',10' | ,8"
+                        : std::string(format) == "svg" ? "set terminal svg enhanced size 1100,720 font ',12' background rgb 'white' | ,11"
+                                                       : "set terminal pngcairo enhanced size 1100,720 font ',12' | ,11");
+  }
 }
 
 std::vector<std::size_t> methods(std::initializer_list<std::string_view> names) {

@@ -103,8 +103,15 @@ TEST(ReportChoice, ReproducesItsMethodListThroughTheShell) {
   choose_methods(c, names, "methods");
   c.sections = {"reproduce"};
   const std::string md = markdown(c);
-  const std::size_t from = md.find("\nM=") + 1, to = md.find("\nN=", from) + 1;
-  ASSERT_GT(to, from) << md;
+  // N (without the exact flow) first, then M as $N and the exact flow where it is last; or M, N:
+  // the lines from the first assignment to the first that neither assigns nor continues one.
+  const std::size_t from = std::min(md.find("\nM="), md.find("\nN=")) + 1;
+  ASSERT_NE(from, 0u) << md;
+  std::size_t to = from;
+  for (std::size_t nl; (nl = md.find('\n', to)) != std::string::npos; to = nl + 1) {
+    const std::string line = md.substr(to, nl - to), before = to > from ? md.substr(0, to - 1) : std::string();
+    if (line.rfind("M=", 0) != 0 && line.rfind("N=", 0) != 0 && (before.empty() || before.back() != '\\')) break;
+  }
   const std::string assignment = md.substr(from, to - from);
   EXPECT_NE(assignment.find("\\\n"), std::string::npos) << assignment;  // broken for the page
   for (std::size_t at = 0, nl; (nl = assignment.find('\n', at)) != std::string::npos; at = nl + 1)

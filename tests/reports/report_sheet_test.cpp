@@ -211,6 +211,12 @@ TEST(ReportPages, DefaultWithinItsBudget) {
   EXPECT_GE(figures, 8);
   const Result claims = verify_claims(dir.path("report"));
   EXPECT_EQ(claims.status, 0) << claims.out << claims.err;
+  // The atlas in a real browser (tests/atlas_browser_check.py): every image loads, no error, every
+  // link resolves; its screenshot at 1280 px is left in build/ for a person to look at.
+  const std::string shot = (std::filesystem::path(STEPLAB_EXE).parent_path() / "atlas.png").string();
+  const std::string check = std::string("python3 ") + STEPLAB_SOURCE_DIR + "/tests/atlas_browser_check.py " + dir.path("report") + " " +
+                            shot + " > " + dir.path("atlas.txt") + " 2>&1";
+  EXPECT_EQ(std::system(check.c_str()), 0) << slurp(dir.path("atlas.txt"));
 }
 
 TEST(ReportScenes, ASectionThatNeedsASceneNotChosenIsLeftOutWithOneLine) {

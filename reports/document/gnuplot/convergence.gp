@@ -1,14 +1,13 @@
 # The final position error against dt on the spring: each method's errors (points), its
 # least-squares line over the fitted window (solid) and slopes 1, 2 and 4 for reference (grey,
 # dashed); a panel per family, every panel on the same axes.
-# Variables set by steplab report: datadir, outfile, format (png|pdf), the panels npanel, panel1..,
+# Variables set by steplab report: datadir, outfile, format (png|svg|pdf), the panels npanel, panel1..,
 # ptitle1..; styles.gp: each method's style.
 ncol = npanel <= 3 ? npanel : npanel == 4 ? 2 : 3
 nrow = (npanel + ncol - 1) / ncol
-if (format eq "png") { set terminal pngcairo enhanced size 1100,350 * nrow + 60 font ",12" } else { eval sprintf("set terminal pdfcairo enhanced size 16cm,%.1fcm font ',10'", 4.4 * nrow + 0.6) }
+load "styles.gp"  # each method's style, the terminal and the fonts
+eval terminal(350 * nrow + 60, 4.4 * nrow + 0.6)
 set output outfile
-kfont = format eq "png" ? ",11" : ",8"  # the keys and labels: 8 pt at print size
-load "styles.gp"
 set grid lc rgb "#dddddd"
 set key below horizontal samplen 1.5 spacing 0.9 font kfont noenhanced  # method names have underscores
 set logscale xy

@@ -1,14 +1,13 @@
 # The undamped spring over a long run at the sheet's large step: E/E0 - 1 against time, linear
 # axis, a panel per family (the methods whose energy stays bounded or drifts; those that blow up
 # are left out). Markers every nth sample, staggered between methods.
-# Variables set by steplab report: datadir, outfile, format (png|pdf), largedt, reach (the y range
+# Variables set by steplab report: datadir, outfile, format (png|svg|pdf), largedt, reach (the y range
 # is -reach .. reach), the panels npanel, panel1.., ptitle1..; styles.gp: each method's style.
 ncol = npanel <= 3 ? npanel : npanel == 4 ? 2 : 3
 nrow = (npanel + ncol - 1) / ncol
-if (format eq "png") { set terminal pngcairo enhanced size 1100,322 * nrow + 60 font ",12" } else { eval sprintf("set terminal pdfcairo enhanced size 16cm,%.1fcm font ',10'", 4.0 * nrow + 0.6) }
+load "styles.gp"  # each method's style, the terminal and the fonts
+eval terminal(322 * nrow + 60, 4.0 * nrow + 0.6)
 set output outfile
-kfont = format eq "png" ? ",11" : ",8"  # the keys and labels: 8 pt at print size
-load "styles.gp"
 set grid lc rgb "#dddddd"
 set key below horizontal samplen 1.5 spacing 0.9 font kfont noenhanced  # method names have underscores
 set yrange [-reach:reach]

@@ -1,13 +1,12 @@
 # At a frame budget: the largest position error over the frames against the cost a frame (time,
 # or spring visits where the report is not timed), each method a line through its splits of the
 # budget (substeps x sweeps or CG iterations), the stable ones only.
-# Variables set by steplab report: datadir, outfile, format (png|pdf), xcol (3: seconds a frame,
+# Variables set by steplab report: datadir, outfile, format (png|svg|pdf), xcol (3: seconds a frame,
 # 4: spring visits a frame), xname, the panel panel1 (the methods) and ptitle1; styles.gp: each
 # method's style.
-if (format eq "png") { set terminal pngcairo enhanced size 1100,520 font ",12" } else { set terminal pdfcairo enhanced size 16cm,8cm font ',10' }
+load "styles.gp"  # each method's style, the terminal and the fonts
+eval terminal(520, 8)
 set output outfile
-kfont = format eq "png" ? ",11" : ",8"  # the keys and labels: 8 pt at print size
-load "styles.gp"
 set grid lc rgb "#dddddd"
 set key outside right vertical samplen 1.5 spacing 0.9 font kfont noenhanced  # method names have underscores
 set logscale xy

@@ -1,15 +1,14 @@
 # Stable for how long: an invariant's largest relative error up to t against t in periods, log-log,
 # each method a line through its samples (a run that blew up ends where it did); a panel per
 # family (the full report) or one panel (the hand-in), every panel on the same axes.
-# Variables set by steplab report: datadir, outfile, format (png|pdf), prefix (the data files'
+# Variables set by steplab report: datadir, outfile, format (png|svg|pdf), prefix (the data files'
 # names up to the method's: lt_<scene>_), col (the column drawn: 2 the energy), ylab, the panels
 # npanel, panel1.., ptitle1..; styles.gp: each method's style.
 ncol = npanel <= 3 ? npanel : npanel == 4 ? 2 : 3
 nrow = (npanel + ncol - 1) / ncol
-if (format eq "png") { set terminal pngcairo enhanced size 1100,330 * nrow + 80 font ",12" } else { eval sprintf("set terminal pdfcairo enhanced size 16cm,%.1fcm font ',10'", 4.2 * nrow + 0.9) }
+load "styles.gp"  # each method's style, the terminal and the fonts
+eval terminal(330 * nrow + 80, 4.2 * nrow + 0.9)
 set output outfile
-kfont = format eq "png" ? ",11" : ",8"  # the keys and labels: 8 pt at print size
-load "styles.gp"
 set grid lc rgb "#dddddd"
 set key below horizontal samplen 1.5 spacing 0.9 font kfont noenhanced  # method names have underscores
 set logscale xy

@@ -1,12 +1,12 @@
 # The crossover map on the first scene of run-time size: a panel per target error, a cell per
 # (masses N, stiffness) coloured by the group of its cheapest solver and labelled with it and its
 # margin over the next cheapest; a tie (a margin within the timing's noise) white, both named.
-# Variables set by steplab report: datadir, outfile, format (png|pdf), ntargets, xlabels and
+# Variables set by steplab report: datadir, outfile, format (png|svg|pdf), ntargets, xlabels and
 # ylabels (the masses and stiffnesses, words), ylab (the stiffness parameter's name), tt1 .. (the
 # panels' titles).
-if (format eq "png") { set terminal pngcairo enhanced size 1100,330 * ntargets font ",12" } else { eval sprintf("set terminal pdfcairo enhanced size 16cm,%.1fcm font ',10'", 5.2 * ntargets) }
+load "styles.gp"  # each method's style, the terminal and the fonts
+eval terminal(330 * ntargets, 5.2 * ntargets)
 set output outfile
-kfont = format eq "png" ? ",11" : ",8"  # the keys and labels: 8 pt at print size
 set multiplot layout ntargets,1
 nx = words(xlabels)
 ny = words(ylabels)

@@ -1,14 +1,13 @@
 # The edge of stability over (dt, damping) on the spring, a panel per family: for each method the
 # measured dt* of each damping's row of runs (points), the predicted one (a line) and where a row
 # is stable again beyond it (open points).
-# Variables set by steplab report: datadir, outfile, format (png|pdf), dtmin and dtmax (the map's
+# Variables set by steplab report: datadir, outfile, format (png|svg|pdf), dtmin and dtmax (the map's
 # steps), the panels npanel, panel1.., ptitle1..; styles.gp: each method's style.
 ncol = npanel <= 3 ? npanel : npanel == 4 ? 2 : 3
 nrow = (npanel + ncol - 1) / ncol
-if (format eq "png") { set terminal pngcairo enhanced size 1100,350 * nrow + 60 font ",12" } else { eval sprintf("set terminal pdfcairo enhanced size 16cm,%.1fcm font ',10'", 4.4 * nrow + 0.6) }
+load "styles.gp"  # each method's style, the terminal and the fonts
+eval terminal(350 * nrow + 60, 4.4 * nrow + 0.6)
 set output outfile
-kfont = format eq "png" ? ",11" : ",8"  # the keys and labels: 8 pt at print size
-load "styles.gp"
 set grid lc rgb "#dddddd"
 set key below horizontal samplen 1.5 spacing 0.9 font kfont noenhanced  # method names have underscores
 set logscale x

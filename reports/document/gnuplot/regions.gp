@@ -2,12 +2,11 @@
 # method's region (|R(z)| <= 1, or the root condition) filled in its colour, translucent so that
 # nested regions show; the spring's eigenvalue ray (red) and, per method, where it leaves the
 # region at the predicted dt* and where it enters it again (points).
-# Variables set by steplab report: datadir, outfile, format (png|pdf), the panels npanel,
+# Variables set by steplab report: datadir, outfile, format (png|svg|pdf), the panels npanel,
 # panel1.. (methods), ptitle1.. (family), and rgb_<method> (its colour as 0xRRGGBB).
-if (format eq "png") { set terminal pngcairo enhanced size 1100,950 font ",12" } else { set terminal pdfcairo enhanced size 16cm,11.5cm font ",10" }
+load "styles.gp"  # each method's style, the terminal and the fonts
+eval terminal(950, 11.5)
 set output outfile
-kfont = format eq "png" ? ",11" : ",8"  # the keys and labels: 8 pt at print size
-load "styles.gp"
 unset colorbox
 set xrange [-7:3]
 set yrange [-5:5]

@@ -1,11 +1,11 @@
 # The spring's height y(t) per method against the exact solution: a row per family, a column per
 # step.
-# Variables set by steplab report: datadir, outfile, format (png|pdf), springdts (the steps), the
+# Variables set by steplab report: datadir, outfile, format (png|svg|pdf), springdts (the steps), the
 # panels npanel, panel1.., ptitle1..; styles.gp: each method's style.
 n = words(springdts)
-if (format eq "png") { set terminal pngcairo enhanced size 1100,260 * npanel + 60 font ",12" } else { eval sprintf("set terminal pdfcairo enhanced size 16cm,%.1fcm font ',10'", 3.9 * npanel + 0.6) }
+load "styles.gp"  # each method's style, the terminal and the fonts
+eval terminal(260 * npanel + 60, 3.9 * npanel + 0.6)
 set output outfile
-load "styles.gp"
 set grid lc rgb "#dddddd"
 set key outside right top vertical samplen 2 noenhanced  # method names have underscores
 set ylabel "y (m)"

@@ -2,14 +2,13 @@
 # mass pulled to a moving target), a panel per family, each fit's bound as an error bar; dashed,
 # each method's theory: its order p at the left, its stiff-limit order at the right
 # (analysis/studies/order_reduction.hpp). A method stable only at low stiffness has points only there.
-# Variables set by steplab report: datadir, outfile, format (png|pdf), kmin and kmax (the x
+# Variables set by steplab report: datadir, outfile, format (png|svg|pdf), kmin and kmax (the x
 # range), the panels npanel, panel1.., ptitle1..; styles.gp: each method's style.
 ncol = npanel <= 3 ? npanel : npanel == 4 ? 2 : 3
 nrow = (npanel + ncol - 1) / ncol
-if (format eq "png") { set terminal pngcairo enhanced size 1100,330 * nrow + 60 font ",12" } else { eval sprintf("set terminal pdfcairo enhanced size 16cm,%.1fcm font ',10'", 4.2 * nrow + 0.6) }
+load "styles.gp"  # each method's style, the terminal and the fonts
+eval terminal(330 * nrow + 60, 4.2 * nrow + 0.6)
 set output outfile
-kfont = format eq "png" ? ",11" : ",8"  # the keys and labels: 8 pt at print size
-load "styles.gp"
 set grid lc rgb "#dddddd"
 set key below horizontal samplen 1.5 spacing 0.9 font kfont noenhanced  # method names have underscores
 set logscale x

@@ -5,9 +5,12 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include "analysis/kernel/kernel.hpp"
 #include "reports/document/report_text.hpp"
 #include "analysis/studies/defaults.hpp"
+#include "analysis/studies/long_time.hpp"
 #include "reports/document/section.hpp"
 
 namespace steplab {
@@ -51,7 +54,11 @@ class Reproduce : public Section {
     // exact flow, where not all of them).
     const bool all = d.methods.size() == method_count();
     const std::string methods = all ? "" : " --methods $M", numerical = all ? "" : " --methods $N";
-    if (!all) md += assignment("M", comma_names(d.methods, false)) + assignment("N", comma_names(d.methods, true));
+    if (!all) {  // M with the exact flow, N without: M as $N and it where it is last
+      const std::string m = comma_names(d.methods, false), n = comma_names(d.methods, true);
+      md += m.size() > n.size() && m.compare(0, n.size() + 1, n + ",") == 0 ? assignment("N", n) + "M=$N" + m.substr(n.size()) + "\n"
+                                                                        : assignment("M", m) + assignment("N", n);
+    }
     for (const ConvergenceResult& r : d.convergence)
       md += wrapped(fmt::format("build/steplab study convergence --scene {} --dt-max {} --dt-min {} --points {} --t-end {}{}",
                                 scene_name(r.config.scene), c.convergence.dt_max, c.convergence.dt_min, c.convergence.points, c.convergence.t_end, methods));
@@ -79,11 +86,49 @@ class Reproduce : public Section {
         if (c.covers(s.scene))
           md += wrapped(fmt::format("build/steplab study scaling --scene {} --sizes {} --error {} --t-end {}{}{}", scene_name(s.scene),
                                     join(s.sizes), c.scaling_error, c.scaling_t_end, c.timing ? "" : " --no-timing", numerical));
+    if (const auto& m = d.scaling_map; m && c.has_section("scaling")) {  // the map: its solvers named, the peers with them
+      std::vector<std::string> solvers;  // the report's methods as $N where they are those
+      if (!all && m->config.methods == d.numerical_methods()) solvers.emplace_back("$N");
+      else
+        for (std::size_t k : m->config.methods) solvers.emplace_back(method_info(k).name);
+      solvers.insert(solvers.end(), m->config.adaptive.begin(), m->config.adaptive.end());
+      std::string errors;
+      for (const ErrorTarget& t : m->config.targets) errors += fmt::format("{}{:g}{}", errors.empty() ? "" : ",", t.of_extent ? 100 * t.value : t.value, t.of_extent ? "%" : "");
+      md += assignment("S", fmt::format("{}", fmt::join(solvers, ",")));
+      md += wrapped(fmt::format("build/steplab study scaling --scene {} --sizes {} --stiffness {} --error {} --t-end {} --max-steps {}{} --methods $S",
+                                m->config.scene, join(m->config.sizes), join(m->config.stiffnesses), errors, m->config.t_end, m->config.max_steps,
+                                c.timing ? "" : " --no-timing"));
+    }
+    // The studies that run the methods a scene takes: named where the report chose some.
+    // The ODE methods (not the position-based ones, on springs only) once as $O where a list is theirs.
+    std::vector<std::size_t> ode;
+    for (std::size_t m : d.numerical_methods())
+      if (in_ode_studies(m)) ode.push_back(m);
+    bool named_ode = false;
+    const auto on_scene = [&](const std::vector<std::size_t>& ms) {
+      if (all) return std::string();
+      if (ms == d.numerical_methods()) return std::string(" --methods $N");
+      if (ms != ode) return " --methods " + comma_names(ms, true);
+      if (!named_ode) md += assignment("O", comma_names(ode, true)), named_ode = true;
+      return std::string(" --methods $O");
+    };
+    for (const LongTimeResult* r : {&d.long_time_orbit, &d.long_time_swing})
+      if (!r->rows.empty())
+        md += wrapped(fmt::format("build/steplab study long-time --scene {} --periods {:g}{}{}", scene_name(r->config.scene), r->config.periods,
+                                  r->config.steps_per_period == default_long_time_config(r->config.scene).steps_per_period
+                                      ? std::string()
+                                      : " --steps-per-period " + join(r->config.steps_per_period),
+                                  on_scene(r->config.methods)));
+    if (const std::size_t spring = scene_index(kSheetOscillator); c.has_section("dense_output") && c.covers(spring)) {
+      std::vector<std::size_t> ms;  // as the section chooses them (sections/dense_output.cpp)
+      for (std::size_t m : d.numerical_methods())
+        if (in_ode_studies(m) && applies(m, spring)) ms.push_back(m);
+      md += wrapped(fmt::format("build/steplab study dense-output --scene {}{}", kSheetOscillator, on_scene(ms)));
+    }
     if (c.has_section("frames") && c.covers(scene_index(kFramesScene)))
       md += wrapped(fmt::format("build/steplab study frames{}", c.timing ? "" : " --no-timing"));  // its defaults: analysis/studies/defaults.hpp
     md += "```\n\n";
-    md += "(with the scene parameters above as `--mass`, `--stiffness`, ... where they differ from the defaults). The data of "
-          "every study is in `data/`.\n\n";
+    md += "(The scene parameters above as `--mass`, `--stiffness`, ... where not the defaults; every study's data: `data/`.)\n\n";
     return md;
   }
 };
