@@ -13,7 +13,7 @@ blocks and inline code left out). Checked:
 - every section named in prose, 'the "X" section of docs/Y.md' or 'docs/Y.md, "X"' (README as
   well as a file name), is a heading of that file.
 - docs/json.md's "report's data" part (the section holding the `| folder |` table) names each
-  folder a report writes under data/: reports/document/report.cpp writes each section's data
+  folder a report writes under data/: reports/document/write_report.cpp writes each section's data
   into data/<its id>/, the ids are the X(<id>, ...) list of reports/document/sections/sections.hpp,
   and a section writes data if the file defining make_<id>_section() overrides write_data. A
   folder the table names that no section writes fails too.
@@ -216,9 +216,9 @@ def source(relpath):
 def written_folders():
     """The folders a report writes under data/, from the source; None (and a problem) if the
     source no longer builds them as this test reads it."""
-    report_cpp = source("reports/document/report.cpp")
+    report_cpp = source("reports/document/write_report.cpp")
     if not re.search(r"\"data\"\s*/\s*\w+->id\b", report_cpp):
-        report("reports/document/report.cpp", "data/<section id>/",
+        report("reports/document/write_report.cpp", "data/<section id>/",
                "no longer found (`\"data\" / s->id`): teach tests/docs_links_test.py how the report names its data folders")
         return None
     ids = re.findall(r"\bX\((\w+),\s*(?:true|false)\)", source("reports/document/sections/sections.hpp"))

@@ -10,6 +10,13 @@
 
 namespace steplab {
 
+std::vector<std::size_t> dense_output_methods(std::size_t scene, const std::vector<std::size_t>& from) {
+  std::vector<std::size_t> out;
+  for (std::size_t m : from)
+    if (in_ode_studies(m) && applies(m, scene)) out.push_back(m);
+  return out;
+}
+
 DenseOutputResult dense_output_study(const DenseOutputConfig& c) {
   DenseOutputResult out{c, {}, {}};
   const SceneKernel& scene = scene_kernel(c.scene);

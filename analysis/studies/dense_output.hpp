@@ -53,6 +53,9 @@ struct DenseOutputResult {
   std::vector<DenseOutputFit> fits;  // one per method
 };
 
+// The methods the study runs on `scene` by default: those of `from` in the ODE studies (not the
+// exact flow, not the position-based ones) that apply to it.
+std::vector<std::size_t> dense_output_methods(std::size_t scene, const std::vector<std::size_t>& from);
 DenseOutputResult dense_output_study(const DenseOutputConfig& c);
 
 }  // namespace steplab

@@ -50,10 +50,7 @@ int run_dense_output(DenseOutputArgs& a, Context& ctx) {
   DenseOutputConfig c;
   c.scene = scene;
   c.params = a.scene.values(scene);
-  c.methods = a.methods.empty() ? std::vector<std::size_t>{} : resolve_methods(a.methods, false, scene);
-  if (a.methods.empty())
-    for (std::size_t m : ode_methods())
-      if (applies(m, scene)) c.methods.push_back(m);
+  c.methods = a.methods.empty() ? dense_output_methods(scene, ode_methods()) : resolve_methods(a.methods, false, scene);
   read_params(dense_output_params(), a.params, c);
   check_sweep(c.dt_min, c.dt_max, c.t_end, option_names());
   c.workers = ctx.workers(resolve_thread_count(a.threads));

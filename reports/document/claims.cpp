@@ -179,7 +179,7 @@ void claim_cheapest(Ledger& l, const ReportData& d, std::string id, std::string 
                     double level, bool timed, const LevelWinner& win) {
   if (!win.point || !win.undecided.empty()) return;
   const auto at = [&](const WorkPoint* p, const char* field) { return work_point_at(l, d, w, *p, field); };
-  const char* cost = timed ? "seconds" : "force_evaluations";
+  const char* cost = point_cost_field(timed);
   std::vector<const WorkPoint*> others;  // the runner-up first, then every other solver's cheapest run
   std::vector<std::string> seen{win.point->method};
   for (const WorkPoint& p : w.points)
@@ -378,7 +378,7 @@ void claim_count(Ledger& l, Claim c, std::vector<ClaimGroup> groups, int count) 
 
 std::string printed(double x, Digits d) { return d.significant ? fmt::format("{:.{}g}", x, d.n) : fmt::format("{:.{}f}", x, d.n); }
 
-void claim_ratios(Ledger& l, Claim c, const std::vector<Ratio>& ratios, std::string least, std::string greatest, Digits d) {
+void claim_ratios(Ledger& l, Claim c, const std::vector<Ratio>& ratios, double least, double greatest, Digits d) {
   if (ratios.empty()) return;
   Json terms = Json::array();
   for (const Ratio& r : ratios) {
@@ -388,7 +388,7 @@ void claim_ratios(Ledger& l, Claim c, const std::vector<Ratio>& ratios, std::str
     terms.push_back({{"over", std::move(over)}, {"under", std::move(under)}});
   }
   c.kind = "ratio";
-  c.rule = {{"ratios", std::move(terms)}, {"least", std::move(least)}, {"greatest", std::move(greatest)},
+  c.rule = {{"ratios", std::move(terms)}, {"least", printed(least, d)}, {"greatest", printed(greatest, d)},
             {"digits", {{d.significant ? "significant" : "decimals", d.n}}}};
   l.add(std::move(c));
 }

@@ -118,9 +118,10 @@ std::string printed(double x, Digits d);
 struct Ratio {
   std::vector<Evidence> over, under;
 };
-// "These ratios lie from `least` to `greatest`" as the sentence prints them with `d` (one ratio:
-// least and greatest the same): a ratio claim, the verifier recomputing each from its evidence.
-void claim_ratios(Ledger& l, Claim c, const std::vector<Ratio>& ratios, std::string least, std::string greatest, Digits d);
+// "These ratios lie from `least` to `greatest`", each printed with `d` as the sentence prints it: a
+// ratio claim, the verifier recomputing each from its evidence. claim_ratio: one ratio, `value`.
+void claim_ratios(Ledger& l, Claim c, const std::vector<Ratio>& ratios, double least, double greatest, Digits d);
+inline void claim_ratio(Ledger& l, Claim c, Ratio r, double value, Digits d) { claim_ratios(l, std::move(c), {std::move(r)}, value, value, d); }
 
 // Words as part of a claim's id: "explicit Runge-Kutta" -> "explicit_runge-kutta".
 std::string id_word(std::string_view words);

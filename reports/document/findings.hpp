@@ -128,6 +128,8 @@ std::vector<StiffClaim> stiff_claims(const OrderReduction& r);
 // evaluations ("evaluations" are force evaluations throughout; Jacobians and factorisations are
 // counted beside them), and in words: "1.2 µs", "812 force evaluations".
 double point_cost(const WorkPoint& p, bool timed);
+// The field of work_precision.json's points that point_cost reads.
+inline const char* point_cost_field(bool timed) { return timed ? "seconds" : "force_evaluations"; }
 std::string cost_text(bool timed, double seconds, long long forces);
 // The cheapest run of `solver` on the scene with its error at most `level`; null if none reaches it.
 const WorkPoint* cheapest_point(const SceneWork& w, const std::string& solver, double level, bool timed);

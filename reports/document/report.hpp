@@ -108,6 +108,8 @@ Findings compute_findings(const ReportData& d);
 
 // The threshold row of a method at a damping (nullptr if the study did not run that pair).
 const ThresholdRow* find_threshold(const ReportData& d, std::size_t method, double damping);
+// The stability sweep's run of a method at (dt, damping) (nullptr if the sweep did not run it).
+const SweepRow* find_sweep(const ReportData& d, std::size_t method, double dt, double damping);
 
 // Ranks 1..n with ties sharing their average rank (+inf ranks above every finite value), and
 // Spearman's rho: the correlation of two such rankings.

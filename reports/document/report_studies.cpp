@@ -232,23 +232,24 @@ const ThresholdRow* find_threshold(const ReportData& d, std::size_t method, doub
   return nullptr;
 }
 
+const SweepRow* find_sweep(const ReportData& d, std::size_t method, double dt, double damping) {
+  for (const SweepRow& r : d.sweep)
+    if (r.method == method && r.dt == dt && r.damping == damping) return &r;
+  return nullptr;
+}
+
 Findings compute_findings(const ReportData& d) {
   const ReportConfig& c = d.config;
   const double gamma = c.damping();
   const ConvergenceResult& conv = d.convergence_on(c.oscillator.scene);
   Findings f;
-  const auto sweep_row = [&](std::size_t m, double dt, double damping) -> const SweepRow* {
-    for (const SweepRow& r : d.sweep)
-      if (r.method == m && r.dt == dt && r.damping == damping) return &r;
-    return nullptr;
-  };
   // the stability map's undamped row, if it has one
   const auto undamped_row = std::find(d.map.damping.begin(), d.map.damping.end(), 0.0);
   for (std::size_t i = 0; i < d.methods.size(); ++i) {
     const std::size_t m = d.methods[i];
     MethodFinding row{m, &conv.fits[i], false, false, 0, 0, 0, 0, 0, 0, 0, INFINITY, INFINITY, false};
-    const SweepRow* large = sweep_row(m, c.large_dt, gamma);
-    const SweepRow* undamped = sweep_row(m, c.small_dt, 0.0);
+    const SweepRow* large = find_sweep(d, m, c.large_dt, gamma);
+    const SweepRow* undamped = find_sweep(d, m, c.small_dt, 0.0);
     const ThresholdRow* th = find_threshold(d, m, gamma);
     row.stable_large_dt = large && large->run.stable();
     row.energy_rate_large_dt = large ? large->run.rate : NAN;

@@ -145,8 +145,8 @@ std::string contact(const ReportData& d, Ledger* l) {
 std::string sheet_step(const ReportData& d, const Findings& f, Ledger* l) {
   const std::vector<EnergyBehaviour> e = energy_behaviour(d);
   const auto stable_at = [&](std::size_t m, double damping) {
-    return std::any_of(d.sweep.begin(), d.sweep.end(),
-                       [&](const SweepRow& r) { return r.method == m && r.dt == d.config.large_dt && r.damping == damping && r.run.stable(); });
+    const SweepRow* r = find_sweep(d, m, d.config.large_dt, damping);
+    return r && r->run.stable();
   };
   std::vector<std::size_t> good;
   for (std::size_t i : f.numerical) {

@@ -218,18 +218,18 @@ std::string cost_answer(const Page& page) {
       // A measured ratio, no verdict: which peer and which method are cheapest is this run's pick
       // (the table of cheapest runs says where they tie).
       const double ratio = point_cost(*best->run, timed) / point_cost(*best->steplab, timed);
+      constexpr Digits digits{true, 3};
       const std::string part = fmt::format(
           "; against steplab's cheapest implicit method, `{}` ({} steps), the adaptive implicit peer cheapest in this run, `{}` "
           "({}), takes {} steps at {} times its cost",
           best->steplab->method, best->steplab->steps, best->peer, find_peer(best->peer)->library(), best->run->steps,
-          printed(ratio, Digits{true, 3}));
+          printed(ratio, digits));
       md += part;
       if (page.ledger) {
-        const char* field = timed ? "seconds" : "force_evaluations";
-        claim_ratios(*page.ledger, claim_text("answers.peer_cost", "answers", part),
-                     {{{work_point_at(*page.ledger, page.data, w, *best->run, field)},
-                       {work_point_at(*page.ledger, page.data, w, *best->steplab, field)}}},
-                     printed(ratio, Digits{true, 3}), printed(ratio, Digits{true, 3}), Digits{true, 3});
+        const char* field = point_cost_field(timed);
+        claim_ratio(*page.ledger, claim_text("answers.peer_cost", "answers", part),
+                    {{work_point_at(*page.ledger, page.data, w, *best->run, field)}, {work_point_at(*page.ledger, page.data, w, *best->steplab, field)}},
+                    ratio, digits);
       }
     }
   }

@@ -188,7 +188,7 @@ class Cost : public Section {
     const WorkPrecisionResult& r = page.data.work;
     if (r.stiff < 0) return {};
     const SceneWork& w = r.scenes[static_cast<std::size_t>(r.stiff)];
-    const char* cost_field = timed ? "seconds" : "force_evaluations";
+    const char* cost_field = point_cost_field(timed);
     constexpr Digits digits{true, 3}, range_digits{true, 2};
     std::string rows;
     double per_step_lo = INFINITY, per_step_hi = 0;  // a peer's cost of a step over steplab's: (cost ratio) / (step ratio)
@@ -215,16 +215,15 @@ class Cost : public Section {
         } columns[] = {{"cost", "cost ratio", cost, cost_field}, {"force", "force ratio", force, "force_evaluations"},
                        {"steps", "step ratio", steps, "steps"}};
         for (const auto& k : columns)
-          claim_ratios(*page.ledger, claim_text(fmt::format("{}.{}", id, k.suffix), "cost", fmt::format("{}, {}", row, k.column)),
-                       {{{at(c.run, k.field)}, {at(c.steplab, k.field)}}}, printed(k.value, digits), printed(k.value, digits), digits);
+          claim_ratio(*page.ledger, claim_text(fmt::format("{}.{}", id, k.suffix), "cost", fmt::format("{}, {}", row, k.column)),
+                      {{at(c.run, k.field)}, {at(c.steplab, k.field)}}, k.value, digits);
         per_step.push_back({{at(c.run, cost_field), at(c.steplab, "steps")}, {at(c.steplab, cost_field), at(c.run, "steps")}});
       }
     if (rows.empty()) return {};
     const std::string range = fmt::format("A step of a peer's costs {} .. {} times one of steplab's method by {}", printed(per_step_lo, range_digits),
                                           printed(per_step_hi, range_digits), timed ? "run time" : "force evaluations");
     if (page.ledger)
-      claim_ratios(*page.ledger, claim_text("cost.peers.per_step", "cost", range), per_step, printed(per_step_lo, range_digits),
-                   printed(per_step_hi, range_digits), range_digits);
+      claim_ratios(*page.ledger, claim_text("cost.peers.per_step", "cost", range), per_step, per_step_lo, per_step_hi, range_digits);
     return fmt::format("On the {}, steplab's cheapest implicit method against each adaptive implicit peer (CVODE; ARKODE's "
                        "DIRK tables; RADAU5, the adaptive code of steplab's Radau IIA; F: force evaluations, J: Jacobians, "
                        "LU: factorisations):\n\n| error | steplab | peer | cost ratio | force ratio | step ratio |\n"
@@ -238,7 +237,7 @@ class Cost : public Section {
   static std::string dopri5_sentences(const Page& page, bool timed) {
     const WorkPrecisionResult& r = page.data.work;
     constexpr Digits digits{false, 2};
-    const char* cost_field = timed ? "seconds" : "force_evaluations";
+    const char* cost_field = point_cost_field(timed);
     std::string md;
     for (const SceneWork& w : r.scenes) {
       double lo = INFINITY, hi = 0, flo = INFINITY, fhi = 0;
@@ -262,8 +261,8 @@ class Cost : public Section {
       md += line;
       if (!page.ledger) continue;
       const std::string id = "cost.dopri5." + scene_word(w);
-      claim_ratios(*page.ledger, claim_text(id + ".cost", "cost", line), costs, printed(lo, digits), printed(hi, digits), digits);
-      claim_ratios(*page.ledger, claim_text(id + ".force", "cost", line), forces, printed(flo, digits), printed(fhi, digits), digits);
+      claim_ratios(*page.ledger, claim_text(id + ".cost", "cost", line), costs, lo, hi, digits);
+      claim_ratios(*page.ledger, claim_text(id + ".force", "cost", line), forces, flo, fhi, digits);
     }
     return md.empty() ? md : md + "\n";
   }

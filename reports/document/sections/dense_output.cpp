@@ -36,8 +36,7 @@ class DenseOutputSection : public Section {
     DenseOutputConfig c;
     c.scene = scene_index(kSheetOscillator);
     c.params = default_param_values(c.scene);
-    for (std::size_t m : d.numerical_methods())
-      if (in_ode_studies(m) && applies(m, c.scene)) c.methods.push_back(m);
+    c.methods = dense_output_methods(c.scene, d.numerical_methods());
     c.workers = d.workers;
     r_ = dense_output_study(c);
   }

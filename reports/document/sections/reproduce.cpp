@@ -10,6 +10,7 @@
 #include "analysis/kernel/kernel.hpp"
 #include "reports/document/report_text.hpp"
 #include "analysis/studies/defaults.hpp"
+#include "analysis/studies/dense_output.hpp"
 #include "analysis/studies/long_time.hpp"
 #include "reports/document/section.hpp"
 
@@ -119,12 +120,9 @@ class Reproduce : public Section {
                                       ? std::string()
                                       : " --steps-per-period " + join(r->config.steps_per_period),
                                   on_scene(r->config.methods)));
-    if (const std::size_t spring = scene_index(kSheetOscillator); c.has_section("dense_output") && c.covers(spring)) {
-      std::vector<std::size_t> ms;  // as the section chooses them (sections/dense_output.cpp)
-      for (std::size_t m : d.numerical_methods())
-        if (in_ode_studies(m) && applies(m, spring)) ms.push_back(m);
-      md += wrapped(fmt::format("build/steplab study dense-output --scene {}{}", kSheetOscillator, on_scene(ms)));
-    }
+    if (const std::size_t spring = scene_index(kSheetOscillator); c.has_section("dense_output") && c.covers(spring))
+      md += wrapped(fmt::format("build/steplab study dense-output --scene {}{}", kSheetOscillator,
+                                on_scene(dense_output_methods(spring, d.numerical_methods()))));
     if (c.has_section("frames") && c.covers(scene_index(kFramesScene)))
       md += wrapped(fmt::format("build/steplab study frames{}", c.timing ? "" : " --no-timing"));  // its defaults: analysis/studies/defaults.hpp
     md += "```\n\n";
