@@ -221,7 +221,7 @@ def written_folders():
         report("reports/document/write_report.cpp", "data/<section id>/",
                "no longer found (`\"data\" / s->id`): teach tests/docs_links_test.py how the report names its data folders")
         return None
-    ids = re.findall(r"\bX\((\w+),\s*(?:true|false)\)", source("reports/document/sections/sections.hpp"))
+    ids = re.findall(r"\bX\((\w+),\s*(?:true|false),\s*\w+\)", source("reports/document/sections/sections.hpp"))
     if not ids:
         report("reports/document/sections/sections.hpp", "X(<id>, ...)", "no section list found")
         return None

@@ -336,8 +336,8 @@ for r in scal["rows"]:
         assert abs(r["dt_stable"] * wn / (2 * math.sqrt(2)) - 1) < 0.003, r
 print("beads: run, convergence, stability and scaling ok")
 EOF
-# ... and the report's "As the system grows", which refines every scene of run-time size with
-# modes: its paragraph, its exponents from its own study (data/scaling/scaling_beads.json).
+# ... and the report's "As the system grows" (in the atlas), which refines every scene of run-time
+# size with modes: its paragraph, its exponents from its own study (data/scaling/scaling_beads.json).
 cat > small.json <<'EOF'
 {"convergence": {"points": 4, "dt_min": 0.01}, "work_precision": {"points": 3, "stiffnesses": [5], "timing": false},
  "stability": {"map_dt_points": 4, "map_damping_points": 4}, "collision": {"t_end": 1, "dts": [0.004]},
@@ -346,7 +346,7 @@ cat > small.json <<'EOF'
 EOF
 "$tool" report --print-config | python3 -c 'import json, sys; assert "beads" in json.load(sys.stdin)["scaling"]'
 "$tool" report --config small.json --out rep >/dev/null
-python3 - rep/report.md rep/data/scaling/scaling_beads.json <<'EOF'
+python3 - rep/atlas.md rep/data/scaling/scaling_beads.json <<'EOF'
 import sys, json
 md, scal = open(sys.argv[1]).read(), json.load(open(sys.argv[2]))
 scaling = md[md.index("## As the system grows"):]

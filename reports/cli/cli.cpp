@@ -270,7 +270,7 @@ int dispatch(const std::vector<std::string>& args, Context& ctx) {
   CLI::Option* rep_methods = rep_cmd->add_option("--methods", rep.methods, "comma-separated methods the report covers (default every one, analytic included)");
   CLI::Option* rep_scenes = rep_cmd->add_option("--scenes", rep.scenes, "comma-separated scenes the report covers (default the report's own; a section that needs another is left out with one line): " + scene_list());
   CLI::Option* rep_sections = rep_cmd->add_option("--sections", rep.sections, "comma-separated sections, in any order (default the full report's): " + fmt::format("{}", fmt::join(section_names(), ", ")));
-  rep_cmd->add_flag("--sheet", rep.sheet, "the exercise's hand-in: the sheet's four methods and the analytic solution on the cannon ball and the spring, in a few pages (--config, --methods, --scenes and --sections apply over it)");
+  rep_cmd->add_flag("--sheet", rep.sheet, "the exercise's hand-in: the sheet's four methods and the analytic solution on the cannon ball and the spring, with the slides' falling triangle, in 5 pages (--config, --methods, --scenes and --sections apply over it)");
   rep_cmd->add_flag("--force", rep.force, "redo the report even if it is up to date");
   rep_cmd->add_flag("--print-config", rep.print_config, "print the configuration (defaults, or --config applied) and exit");
 

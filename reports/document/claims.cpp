@@ -31,12 +31,24 @@ Evidence Ledger::order_of(std::size_t method) const {
 }
 
 void Ledger::add(Claim c) {
+  const auto same = [](const std::vector<Evidence>& a, const std::vector<Evidence>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                      [](const Evidence& x, const Evidence& y) { return x.file == y.file && x.pointer == y.pointer && x.value == y.value; });
+  };
   for (const Claim& o : claims_)
-    if (o.id == c.id) throw std::logic_error("claim id used twice: " + c.id);
+    if (o.id == c.id) {
+      // The hand-out states again what the atlas states: the same finding, kept once (in the
+      // atlas's words, which may point to a figure the hand-out leaves out).
+      if (o.kind == c.kind && o.rule == c.rule && same(o.evidence, c.evidence)) return;
+      throw std::logic_error("claim id used twice: " + c.id);
+    }
   claims_.push_back(std::move(c));
 }
 
-void Ledger::theory(std::string section, std::string sentence) { theory_.emplace_back(std::move(section), std::move(sentence)); }
+void Ledger::theory(std::string section, std::string sentence) {
+  const std::pair<std::string, std::string> t(std::move(section), std::move(sentence));
+  if (std::find(theory_.begin(), theory_.end(), t) == theory_.end()) theory_.push_back(t);
+}
 
 Json Ledger::json() const {
   Json j;

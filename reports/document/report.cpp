@@ -3,6 +3,7 @@
 // PDF, and swaps the output folder in atomically.
 #include "reports/document/report.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <algorithm>
@@ -33,16 +34,41 @@ void DataDir::write(const std::string& file, const std::string& content) const {
 std::string figure_file(int number, const std::string& script) { return fmt::format("fig{}_{}", number, script); }
 
 int Page::number(const std::string& script) const {
-  const auto it = std::find(order_.begin(), order_.end(), script);
-  return it == order_.end() ? 0 : static_cast<int>(it - order_.begin()) + 1;
+  const auto it = std::find(shown_.begin(), shown_.end(), script);
+  return it == shown_.end() ? 0 : static_cast<int>(it - shown_.begin()) + 1;
 }
 
 std::string Page::figure(const std::string& script, const std::string& caption) {
-  if (static_cast<std::size_t>(figure_) >= order_.size() || order_[static_cast<std::size_t>(figure_)] != script)
+  if (collecting_) {  // the hand-out's first rendering: which figures it shows
+    seen_.push_back(script);
+    return {};
+  }
+  const std::size_t k = seen_.size();
+  if (k >= shown_.size() || shown_[k] != script)
     throw std::logic_error("the report's Markdown shows " + script + " out of the order its sections list their figures");
-  ++figure_;
-  const std::string label = ext_ == "pdf" ? caption : fmt::format("Figure {}: {}", figure_, caption);
-  return fmt::format("![{}](figures/{}.{})\n\n", label, figure_file(figure_, script), ext_);
+  seen_.push_back(script);
+  const auto file = std::find(files_.begin(), files_.end(), script);
+  if (file == files_.end()) throw std::logic_error("the report draws no figure " + script);
+  const std::string label = ext_ == "pdf" ? caption : fmt::format("Figure {}: {}", k + 1, caption);
+  return fmt::format("![{}](figures/{}.{})\n\n", label, figure_file(static_cast<int>(file - files_.begin()) + 1, script), ext_);
+}
+
+// Pandoc's identifier of a heading (its manual, "Extension: auto_identifiers"): letters, digits,
+// '_', '-' and '.' kept, spaces to hyphens, lower case, nothing before the first letter.
+std::string Page::atlas_link(const std::string& title) {
+  std::string id;
+  for (char ch : title) {
+    const unsigned char u = static_cast<unsigned char>(ch);
+    if (std::isalnum(u) || ch == '_' || ch == '-' || ch == '.' || u >= 0x80) id += static_cast<char>(std::tolower(u));
+    else if (ch == ' ' || ch == '\n') id += '-';
+  }
+  const auto first = std::find_if(id.begin(), id.end(), [](char ch) { return std::isalpha(static_cast<unsigned char>(ch)) || (ch & 0x80); });
+  return "atlas.html#" + std::string(first, id.end());
+}
+
+std::string Section::brief_markdown(const std::string& title, const std::string& answer) {
+  return fmt::format("## {}\n\n{}The study, its tables and figures: [the atlas, {}]({}).\n\n", title, answer.empty() ? "" : answer + "\n",
+                     title, Page::atlas_link(title));
 }
 
 std::vector<Panel> family_panels(const std::vector<std::size_t>& methods, const std::function<bool(std::size_t)>& drawn) {
@@ -144,19 +170,42 @@ Report build_report(const ReportConfig& config, ProgressHook progress) {
   return r;
 }
 
-std::string report_markdown(const Report& r, const std::string& ext, const std::string& footer, Ledger* ledger) {
-  std::string md = r.data.config.has_section("sheet")
-                       ? "# Time integration: the exercise's hand-in, measured by steplab\n\n"
+std::string report_markdown(const Report& r, const std::string& ext, const std::string& footer, Ledger* ledger, bool handout) {
+  const ReportConfig& c = r.data.config;
+  std::string md = c.hand_in() ? "# Time integration: the exercise's hand-in, measured by steplab\n\n"
                        : "# steplab report: how time integrators behave, family by family, on the course's scenes\n\n";
-  const ReportScene& spring = r.data.config.oscillator;
-  if (r.data.config.covers(spring.scene)) md += fmt::format("The hanging spring: {}. ", params_text(spring.scene, spring.params));
+  if (c.covers(c.oscillator.scene)) md += fmt::format("The hanging spring: {}. ", params_text(c.oscillator.scene, c.oscillator.params));
   md += "Every number below was measured by the commands at the end of this report. data/claims.json lists the findings the "
         "text states with their rules and the values they rest on (tools/verify_claims.py re-checks them), and marks the "
-        "sentences of theory.\n\n";
-  Page page(r.data, r.findings, ext, figure_order(r));
-  page.ledger = ledger;
-  if (r.springs) page.springs = &*r.springs, page.springs_findings = &*r.springs_findings;
-  for (const auto& s : r.sections) md += s->markdown(page);
+        "sentences of theory.";
+  handout = handout && !c.hand_in();
+  if (handout)
+    md += " This hand-out answers the sheet; the atlas beside it, [atlas.html](atlas.html), holds every study, table and figure.";
+  md += "\n\n";
+  const std::vector<std::string> files = figure_order(r);
+  const auto sections = [&](Page& page) {
+    std::string out;
+    for (const auto& s : r.sections)
+      if (!page.handout || s->handout == Handout::Whole) out += s->markdown(page);
+      else if (s->handout == Handout::Brief) out += s->brief(page);
+    return out;
+  };
+  const auto with = [&](Page& page) -> Page& {
+    if (r.springs) page.springs = &*r.springs, page.springs_findings = &*r.springs_findings;
+    return page;
+  };
+  if (!handout) {
+    Page page(r.data, r.findings, ext, files);
+    page.ledger = ledger;
+    md += sections(with(page));
+  } else {
+    Page first(r.data, r.findings, ext, files, files);  // which figures the hand-out shows, in order
+    first.collecting_ = true;
+    sections(with(first));
+    Page page(r.data, r.findings, ext, files, first.shown());
+    page.ledger = ledger;
+    md += sections(with(page));
+  }
   return md + "---\n\n" + footer + "\n";
 }
 

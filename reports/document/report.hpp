@@ -64,6 +64,7 @@ struct ReportData {
   std::vector<RunResult<2>> cannon;               // [method]: the projectile's path
   std::vector<std::vector<RunResult<1>>> spring;  // [figure dt][method]
   std::vector<RunResult<1>> energy;               // [method]: gamma = 0 at the large step
+  std::vector<RunResult<1>> energy_damped;        // [method]: the spring's damping at the large step
   std::vector<double> curve_damping;              // predicted rate against damping, at the large step
   std::vector<std::vector<double>> curve_rate;    // [method][damping]
 };
@@ -139,8 +140,10 @@ Report build_report(const ReportConfig& config, ProgressHook progress = nullptr)
 std::vector<std::string> figure_order(const Report& r);
 
 class Ledger;
-// The report's Markdown; with `ledger`, the findings its sections state are recorded there.
-std::string report_markdown(const Report& r, const std::string& figure_ext, const std::string& footer, Ledger* ledger = nullptr);
+// The report's Markdown, every section whole (the atlas's), or with `handout` each as the hand-out
+// shows it (sections.hpp); with `ledger`, the findings its sections state are recorded there.
+std::string report_markdown(const Report& r, const std::string& figure_ext, const std::string& footer, Ledger* ledger = nullptr,
+                            bool handout = false);
 
 // The whole report into `out_dir`, atomically: built in a staging folder beside it and swapped
 // in at the end, so an interrupted run leaves the previous report as it was. Skips all work if

@@ -192,8 +192,9 @@ ReportConfig default_report_config() {
 ReportConfig sheet_report_config() {
   ReportConfig c = default_report_config();
   choose_methods(c, {kSheetMethods.begin(), kSheetMethods.end()}, "the sheet's methods");
-  choose_scenes(c, {std::string(kSheetOscillator), std::string(kSheetProjectile), std::string(kLongTimeSheetScene)}, "the sheet's scenes");
-  c.sections = {"answers", "sheet", "summary", "stable", "order", "energy", "scenes", "convergence", "long_run", "advice", "reproduce"};
+  choose_scenes(c, {std::string(kSheetOscillator), std::string(kSheetProjectile), std::string(kLongTimeSheetScene), std::string(kContactBodyScene)},
+                "the sheet's scenes and the slides' triangle");
+  c.sections = {"answers", "sheet", "summary", "stable", "order", "energy", "scenes", "convergence", "long_run", "collision", "advice", "reproduce"};
   return c;
 }
 

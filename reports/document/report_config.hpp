@@ -42,6 +42,9 @@ struct ReportConfig {
   std::vector<std::string> sections;
   bool covers(std::size_t scene) const;
   bool has_section(std::string_view name) const;
+  // The exercise's hand-in (`--sheet`, known by its own question section "stable"): its PDF shows
+  // every section whole, where the full report's hand-out leaves some to the atlas.
+  bool hand_in() const { return has_section("stable"); }
   // The report's own scenes: the four below, the stiffened one and the scaling ones. (The cost section's stiff chain
   // is its own contrast to the spring, not a scene of the report.)
   std::vector<std::size_t> own_scenes() const;

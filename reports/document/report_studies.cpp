@@ -162,8 +162,8 @@ ReportData run_report_studies(const ReportConfig& c, unsigned studies, ProgressH
         *result = long_time_study(lc);
       }
 
-  // Figures: the cannon ball's path and the spring's y(t) (kSceneFigures); the undamped energy at
-  // the large step and the predicted growth rate against damping on a fine grid (kStabilityStudy).
+  // Figures: the cannon ball's path and the spring's y(t) (kSceneFigures); the energy at the large
+  // step, undamped and damped, and the predicted growth rate against damping on a fine grid (kStabilityStudy).
   if (!(studies & (kSceneFigures | kStabilityStudy))) return d;
   std::vector<double> undamped = c.oscillator.params;
   undamped[damping] = 0;
@@ -171,6 +171,7 @@ ReportData run_report_studies(const ReportConfig& c, unsigned studies, ProgressH
   d.cannon.resize(nm);
   d.spring.assign(nf, std::vector<RunResult<1>>(nm));
   d.energy.resize(nm);
+  d.energy_damped.resize(nm);
   for (int i = 0; i <= 200; ++i) d.curve_damping.push_back(2 * spring.critical_damping() * i / 200.0);
   d.curve_rate.assign(nm, std::vector<double>(d.curve_damping.size()));
   parallel_for(nm * (2 + nf + 1), d.workers, [&](std::size_t task) {
@@ -183,7 +184,10 @@ ReportData run_report_studies(const ReportConfig& c, unsigned studies, ProgressH
     if (kind == 0) {
       if (cannon) d.cannon[m] = figure_run<2>(method, c.projectile.scene, c.projectile.params, c.cannonball_dt, c.cannonball_t_end, 2001);
     } else if (kind == 1) {
-      if (stability) d.energy[m] = figure_run<1>(method, osc, undamped, c.large_dt, c.energy_t_end, 2001);
+      if (stability) {
+        d.energy[m] = figure_run<1>(method, osc, undamped, c.large_dt, c.energy_t_end, 2001);
+        d.energy_damped[m] = figure_run<1>(method, osc, c.oscillator.params, c.large_dt, c.energy_t_end, 2001);
+      }
     } else if (kind < 2 + nf) {
       if (springs)
         d.spring[kind - 2][m] =

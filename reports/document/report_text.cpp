@@ -82,7 +82,7 @@ std::string wrapped(const std::string& cmd) {
     std::size_t next = cmd.find(" --", start + 1);
     if (next == std::string::npos) next = cmd.size();
     const std::string piece = cmd.substr(start, next - start);
-    if (!line.empty() && line.size() + piece.size() > 76) {
+    if (!line.empty() && line.size() + piece.size() > kCodeColumns) {
       out += line + " \\\n   ";
       line.clear();
     }

@@ -25,6 +25,9 @@ std::string quoted_list(const std::vector<std::string>& names);    // `a`, `b` a
 std::string fits_table(const ConvergenceResult& r);       // the Markdown table of fitted orders (not the exact ones)
 // "mass 1, stiffness 5, ..." in table order; `skip`: a parameter's index to leave out (-1: none).
 std::string params_text(std::size_t scene, const std::vector<double>& values, int skip = -1);
+// The characters of code a line of the PDF holds: 18 cm of text width (A4, 1.5 cm margins) in 10 pt
+// Latin Modern Typewriter, 0.525 em a character, hold 97; a few kept spare.
+inline constexpr std::size_t kCodeColumns = 88;
 std::string wrapped(const std::string& cmd);              // a shell command broken for the page
 std::string words(const std::vector<double>& v);          // gnuplot word list: "a b c"
 std::string join(const std::vector<double>& v);           // CLI list: "a,b,c"

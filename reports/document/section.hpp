@@ -55,33 +55,45 @@ std::vector<Panel> family_panels(const std::vector<std::size_t>& methods,
                                  const std::function<bool(std::size_t)>& drawn = nullptr);
 
 // What a section's Markdown may use: the shared data and findings, and the figure numbering.
-// The report's figures are numbered in the order the sections list them (Section::figures), the
-// order the Markdown must show them in: figure n is drawn into figures/fig<n>_<script>.<ext>.
+// The report draws every figure its sections list (Section::figures), numbered in that order:
+// figure n goes to figures/fig<n>_<script>.<ext>. The Markdown shows them in that order too,
+// numbered as shown: the atlas shows every one, the hand-out (`handout`) only those of its
+// sections, so its numbers are its own (`shown`, found by a first rendering).
 class Page {
  public:
   Page(const ReportData& d, const Findings& f, std::string ext, std::vector<std::string> figures)
-      : data(d), findings(f), ext_(std::move(ext)), order_(std::move(figures)) {}
+      : data(d), findings(f), ext_(std::move(ext)), files_(figures), shown_(std::move(figures)) {}
+  Page(const ReportData& d, const Findings& f, std::string ext, std::vector<std::string> figures, std::vector<std::string> shown)
+      : data(d), findings(f), handout(true), ext_(std::move(ext)), files_(std::move(figures)), shown_(std::move(shown)) {}
   const ReportData& data;
   const Findings& findings;
+  // The hand-out (report.pdf and report.md): a section shows its figures for the sheet's methods,
+  // and leaves the rest to the atlas.
+  const bool handout = false;
   // Where the findings a section states are recorded (reports/document/claims.hpp): set while the
   // report's Markdown is rendered for data/claims.json, null otherwise.
   Ledger* ledger = nullptr;
   // The methods on springs on the sheet's spring (Report::springs), where the report measured them.
   const ReportData* springs = nullptr;
   const Findings* springs_findings = nullptr;
-  // ![caption](figures/fig<n>_<script>.<ext>): numbered "Figure n:" in the Markdown; LaTeX numbers
-  // the PDF's alike. std::logic_error if `script` is not the next figure of the report's order.
+  // ![caption](figures/fig<n>_<script>.<ext>): numbered "Figure k:" in the Markdown (k its place
+  // among those shown); LaTeX numbers the PDF's alike. std::logic_error if `script` is not the
+  // next figure of the order shown.
   std::string figure(const std::string& script, const std::string& caption);
-  // Whether the report draws this figure, and its number (0: it does not): for a sentence that
+  // Whether this Markdown shows the figure, and its number (0: it does not): for a sentence that
   // points to a figure of another section, before or after.
   bool has(const std::string& script) const { return number(script) > 0; }
   int number(const std::string& script) const;
-  int next_figure() const { return figure_ + 1; }
+  // The figures shown so far, in order.
+  const std::vector<std::string>& shown() const { return seen_; }
+  // The atlas's address of a section, for the hand-out's links: atlas.html#<its title's anchor>.
+  static std::string atlas_link(const std::string& title);
 
  private:
   std::string ext_;
-  std::vector<std::string> order_;
-  int figure_ = 0;
+  std::vector<std::string> files_, shown_, seen_;
+  bool collecting_ = false;
+  friend std::string report_markdown(const Report&, const std::string&, const std::string&, Ledger*, bool);
 };
 
 // figures/fig<n>_<script>: the file a figure is drawn into.
@@ -95,11 +107,16 @@ std::string uncovered(const ReportConfig& c, std::initializer_list<std::size_t> 
 // and the spring, convergence one scene it converges on (ReportConfig::convergence_scenes).
 std::string uncovered_for(const ReportConfig& c, unsigned studies);
 
+// How the hand-out shows a section of the full report (sections.hpp): whole, brief (its answer
+// and a link to the atlas), or not at all (the atlas alone has it).
+enum class Handout { Whole, Brief, Atlas };
+
 class Section {
  public:
   virtual ~Section() = default;
   // Its name in the section list (sections.hpp): its data go to data/<id>/.
   std::string id;
+  Handout handout = Handout::Whole;
   // The shared studies it reads (ReportStudy bits): the report runs those of its chosen sections.
   virtual unsigned needs() const { return 0; }
   // Why it cannot be made from the config's choice (a scene it needs is not covered), or "": the
@@ -112,6 +129,12 @@ class Section {
   virtual void write_data(const ReportData&, const DataDir&) const {}         // its data files
   virtual std::vector<FigureSpec> figures(const ReportData&) const { return {}; }
   virtual std::string markdown(Page& page) const = 0;
+  // The hand-out's brief version: its heading, its answer (by default none) and a link to it in the atlas.
+  virtual std::string brief(Page&) const { return brief_markdown(title(), {}); }
+
+ protected:
+  // "## <title>\n\n<answer>The study, its tables and figures: the atlas, <title>."
+  static std::string brief_markdown(const std::string& title, const std::string& answer);
 };
 
 // The sections by name, in the report's order (reports/document/sections/sections.cpp): those

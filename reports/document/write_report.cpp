@@ -144,24 +144,26 @@ std::string slurp(const fs::path& p) {
 
 // pandoc in the staging folder, making `made` from `input` (then removed) with `options`; where
 // it fails, ToolFailed, the folder kept for a look.
-void run_pandoc(const fs::path& staging, const fs::path& out, const char* input, const char* made, const std::string& options) {
+void run_pandoc(const fs::path& staging, const fs::path& out, const char* input, const char* made, const std::string& options,
+                bool keep_input = false) {
   if (run_tool(fmt::format("cd '{}' && pandoc {} -o {} {}", staging.string(), input, made, options), staging / "pandoc.log") != 0)
     throw ToolFailed(fmt::format("pandoc could not make {}:{}\nits input and log are kept in {} (the next report into {} removes "
                                  "them)", made, tool_errors(staging / "pandoc.log"), staging.string(), out.string()));
-  fs::remove(staging / input);
+  if (!keep_input) fs::remove(staging / input);
   fs::remove(staging / "pandoc.log");
 }
 
 // The atlas: the whole report as one web page, atlas.html, its figures as SVG beside their
 // sections, its formulas as MathML and a table of contents linking each section; it names no file
-// outside the report's folder and no network address, so it opens offline.
-void write_atlas(const Report& report, const std::string& footer, const fs::path& staging, const fs::path& out) {
-  write_atomic((staging / "atlas.md").string(), report_markdown(report, "svg", footer));
+// outside the report's folder and no network address, so it opens offline. Its Markdown,
+// atlas.md, stays beside it (as report.md beside the hand-out's PDF).
+void write_atlas(const std::string& markdown, const fs::path& staging, const fs::path& out) {
+  write_atomic((staging / "atlas.md").string(), markdown);
   write_atomic((staging / "atlas-style.html").string(),
                "<style>\nbody { max-width: 1180px; font-size: 16px; }\nimg { max-width: 100%; height: auto; }\n"
                "table { font-size: 14px; display: block; overflow-x: auto; }\ncode { white-space: pre-wrap; }\n</style>\n");
   run_pandoc(staging, out, "atlas.md", "atlas.html",
-             "--standalone --toc --toc-depth=2 --mathml -H atlas-style.html --metadata pagetitle='steplab atlas'");
+             "--standalone --toc --toc-depth=2 --mathml -H atlas-style.html --metadata pagetitle='steplab atlas'", true);
   fs::remove(staging / "atlas-style.html");
 }
 
@@ -203,9 +205,14 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force, 
       if (fs::is_empty(staging / "data" / s->id)) fs::remove(staging / "data" / s->id);
     }
 
-    // Figures: each script three times, PNG for the Markdown, SVG for the atlas and PDF (vector) for the PDF.
+    // Figures: each script three times, PNG for the Markdown, SVG for the atlas and PDF (vector) for
+    // the PDF, the drawings spread over the config's threads (each gnuplot is one process).
     const std::string all = method_words(d.methods), numeric = method_words(d.collision.config.methods);
     DataDir(staging / "figures").write("styles.gp", styles_gp());  // loaded by every script
+    struct Drawing {
+      std::string script, format, cmd;
+    };
+    std::vector<Drawing> drawings;
     int number = 0;
     for (const auto& s : report.sections)
       for (const FigureSpec& fig : s->figures(d)) {
@@ -213,25 +220,30 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force, 
         const auto gp = std::find_if(gnuplot_scripts.begin(), gnuplot_scripts.end(), [&](const GnuplotScript& g) { return g.name == fig.script; });
         if (gp == gnuplot_scripts.end()) throw std::logic_error("no gnuplot script " + fig.script);
         DataDir(staging / "figures").write(fig.script + ".gp", std::string(gp->text));
-        for (const char* fmt_name : {"png", "svg", "pdf"}) {
-          const std::string cmd = fmt::format(
+        for (const char* fmt_name : {"png", "svg", "pdf"})
+          drawings.push_back({fig.script, fmt_name, fmt::format(
               "cd '{}' && gnuplot -e \"datadir='../data/{}'; outfile='{}.{}'; format='{}'; methods='{}'; numeric='{}'; "
               "springdts='{}'; largedt='{}'; {}{}\" '{}.gp'",
               (staging / "figures").string(), s->id, file, fmt_name, fmt_name, all, numeric, words(c.spring_figure_dts),
-              c.large_dt, panel_vars(fig.panels), fig.vars, fig.script);
-          const fs::path log = staging / "figures" / fmt::format("{}.{}.log", fig.script, fmt_name);
-          if (run_tool(cmd, log) != 0)
-            throw ToolFailed(fmt::format("gnuplot failed on {}.gp ({}):{}\nthe script, its data and gnuplot's log are kept in "
-                                         "{} (the next report into {} removes them)",
-                                         fig.script, fmt_name, tool_errors(log), (staging / "figures").string(), out.string()));
-          fs::remove(log);
-        }
+              c.large_dt, panel_vars(fig.panels), fig.vars, fig.script)});
       }
+    parallel_for(drawings.size(), Workers{d.workers.threads}, [&](std::size_t i) {
+      const Drawing& g = drawings[i];
+      const fs::path log = staging / "figures" / fmt::format("{}.{}.{}.log", g.script, g.format, i);
+      if (run_tool(g.cmd, log) != 0)
+        throw ToolFailed(fmt::format("gnuplot failed on {}.gp ({}):{}\nthe script, its data and gnuplot's log are kept in "
+                                     "{} (the next report into {} removes them)",
+                                     g.script, g.format, tool_errors(log), (staging / "figures").string(), out.string()));
+      fs::remove(log);
+    });
     const std::string footer = machine_footer() + fmt::format(" · studies {:.1f} s", study_seconds);
     std::vector<std::size_t> cited = d.methods;  // the methods the claims may name, with their declared order
     if (report.springs) cited.insert(cited.end(), report.springs->methods.begin(), report.springs->methods.end());
     Ledger ledger(cited);
-    write_atomic((staging / "report.md").string(), report_markdown(report, "png", footer, &ledger));
+    // The atlas states every finding; the hand-out some of them again (kept once) and, in its brief
+    // sections, none the atlas does not.
+    const std::string atlas = report_markdown(report, "svg", footer, &ledger);
+    write_atomic((staging / "report.md").string(), report_markdown(report, "png", footer, &ledger, true));
     // The claims, and each data document they cite that no section wrote (the same document:
     // the claims' and the section's come from one function).
     for (const auto& [file, doc] : ledger.documents())
@@ -240,11 +252,18 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force, 
         data.write(file, doc.dump(1) + "\n");
       }
     data.write("claims.json", ledger.json().dump(1) + "\n");
-    write_atlas(report, footer, staging, out);
-    write_atomic((staging / "report-pdf.md").string(), report_markdown(report, "pdf", footer));
+    write_atlas(atlas, staging, out);
+    write_atomic((staging / "report-pdf.md").string(), report_markdown(report, "pdf", footer, nullptr, true));
+    // Each figure in the section that cites it: no float passes the next section's heading (a
+    // \FloatBarrier, placeins', before each; the sections are LaTeX's subsections under the title);
+    // a figure may fill up to 90 % of a text page, so that a large one sits among the text rather
+    // than alone on a half-empty float page.
     run_pandoc(staging, out, "report-pdf.md", "report.pdf",
-               "--pdf-engine=pdflatex -V geometry:margin=1.8cm -V fontsize=10pt -V colorlinks=true "
-               "-V 'header-includes=\\usepackage{float}\\floatplacement{figure}{htbp}'");
+               "--pdf-engine=pdflatex -V papersize=a4 -V geometry:margin=1.5cm -V fontsize=10pt -V colorlinks=true "
+               "-V 'header-includes=\\usepackage{float}\\floatplacement{figure}{!htbp}\\usepackage{placeins}"
+               "\\let\\plainsubsection\\subsection\\renewcommand{\\subsection}{\\FloatBarrier\\plainsubsection}"
+               "\\renewcommand{\\topfraction}{0.9}\\renewcommand{\\bottomfraction}{0.9}\\renewcommand{\\textfraction}{0.07}"
+               "\\renewcommand{\\floatpagefraction}{0.85}'");
     data.write("stamp", stamp);
     write_atomic((staging / kReportMarker).string(), report_marker(staging.string()));
     if (stop_requested) throw Interrupted();
@@ -264,7 +283,7 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force, 
   } else {
     fs::rename(staging, out);
   }
-  std::printf("wrote %s: report.md, report.pdf, atlas.html, figures/, data/\n", out.c_str());
+  std::printf("wrote %s: report.pdf, report.md (the hand-out), atlas.html, atlas.md (every study), figures/, data/\n", out.c_str());
   return 0;
 }
 

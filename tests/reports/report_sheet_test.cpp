@@ -47,8 +47,8 @@ TEST(ReportSheet, IsTheSheetsMethodsScenesAndSections) {
   std::vector<std::string> names;
   for (std::size_t m : c.methods) names.push_back(std::string(method_info(m).name));
   EXPECT_EQ(names, (std::vector<std::string>{"explicit_euler", "symplectic_euler", "explicit_midpoint", "implicit_euler", "analytic"}));
-  // the sheet's two scenes, and its spring swinging in a plane (the long run's)
-  std::vector<std::size_t> covered{scene("spring"), scene("cannonball"), scene("swing")};
+  // the sheet's two scenes, its spring swinging in a plane (the long run's) and the slides' falling triangle
+  std::vector<std::size_t> covered{scene("spring"), scene("cannonball"), scene("swing"), scene("falling")};
   std::sort(covered.begin(), covered.end());
   EXPECT_EQ(c.covered, covered);
   EXPECT_EQ(c.convergence_scenes(), (std::vector<std::size_t>{scene("spring"), scene("cannonball")}));
@@ -56,10 +56,10 @@ TEST(ReportSheet, IsTheSheetsMethodsScenesAndSections) {
   EXPECT_EQ(md.find("Left out"), std::string::npos) << md;  // every section of the hand-in applies to its scenes
   for (const char* heading : {"## Answers", "## The exercise", "## Summary", "## Which methods are stable",
                               "## Is stability correlated with the order?", "## Is the energy kept?", "## The scenes", "## Convergence",
-                              "## Over a long run", "## Reproduce"})
+                              "## Over a long run", "## Collision", "The falling triangle", "## Reproduce"})
     EXPECT_NE(md.find(heading), std::string::npos) << heading;
-  for (const char* absent : {"## Stability", "## What accuracy costs", "## Collision", "## As the system grows", "family by family",
-                             "Bounce", "## Appendix"})
+  for (const char* absent : {"## Stability", "## What accuracy costs", "## As the system grows", "family by family",
+                             "Bounces and penetration", "## Appendix"})
     EXPECT_EQ(md.find(absent), std::string::npos) << absent;
   // The hand-in opens with its answers and names the sheet's methods there.
   EXPECT_LT(md.find("## Answers"), md.find("## The exercise"));
@@ -166,7 +166,7 @@ double smallest_text_pt(const std::string& pdf, const TempDir& dir) {
 }
 
 // The whole hand-in, as a student makes it: at most 5 pages of PDF (the issue's bound; 5 with the
-// sheet's defaults), its two figures drawn.
+// sheet's defaults), its figures drawn.
 TEST(ReportSheet, HandInIsAtMostFivePages) {
   TempDir dir;
   const Result r = run_steplab("report --sheet --out " + dir.path("hand-in"));
@@ -176,8 +176,9 @@ TEST(ReportSheet, HandInIsAtMostFivePages) {
   const double pages = number_after(slurp(info), "Pages:");
   EXPECT_GE(pages, 3);
   EXPECT_LE(pages, 5);
-  for (const char* figure : {"hand-in/figures/fig1_energy.pdf", "hand-in/figures/fig2_cannonball.pdf", "hand-in/figures/fig3_spring.pdf",
-                             "hand-in/figures/fig4_convergence.pdf", "hand-in/figures/fig5_long_time.pdf"})
+  for (const char* figure : {"hand-in/figures/fig1_energy_sheet.pdf", "hand-in/figures/fig2_cannonball.pdf", "hand-in/figures/fig3_spring.pdf",
+                             "hand-in/figures/fig4_convergence.pdf", "hand-in/figures/fig5_long_time.pdf",
+                             "hand-in/figures/fig6_triangle.pdf"})
     EXPECT_TRUE(std::filesystem::exists(dir.path(figure))) << figure;
   EXPECT_NE(slurp(dir.path("hand-in/report.md")).find("## The exercise"), std::string::npos);
   const Result claims = verify_claims(dir.path("hand-in"));
@@ -188,27 +189,37 @@ TEST(ReportSheet, HandInIsAtMostFivePages) {
     }
 }
 
-// The default report within its budget (docs/design.md, "A report section"): at most 20 pages
-// (19 with the long-time section), no figure text under 8 pt at print size
-// (a figure is 16 cm wide, inserted unscaled), every figure's file numbered as the report numbers it.
+// The default report within its budget (docs/design.md, "A report section"): a hand-out of at most
+// 10 pages, no figure text under 8 pt at print size (a figure is 16 cm wide, inserted unscaled);
+// every figure drawn is in the atlas, the hand-out's are numbered 1, 2, ... as it shows them, and
+// each of its links into the atlas names a heading there.
 TEST(ReportPages, DefaultWithinItsBudget) {
   TempDir dir;
   const Result r = run_steplab("report --out " + dir.path("report"));
   ASSERT_EQ(r.status, 0) << r.err;
   ASSERT_EQ(std::system(("pdfinfo " + dir.path("report/report.pdf") + " > " + dir.path("info.txt")).c_str()), 0);
-  EXPECT_LE(number_after(slurp(dir.path("info.txt")), "Pages:"), 20);
-  const std::string md = slurp(dir.path("report/report.md"));
+  EXPECT_LE(number_after(slurp(dir.path("info.txt")), "Pages:"), 10);
+  const std::string md = slurp(dir.path("report/report.md")), atlas = slurp(dir.path("report/atlas.html"));
   int figures = 0;
   for (const auto& e : std::filesystem::directory_iterator(dir.path("report/figures"))) {
     if (e.path().extension() != ".pdf") continue;
     ++figures;
     EXPECT_GE(smallest_text_pt(e.path().string(), dir), 7.95) << e.path();
-    const std::string stem = e.path().stem().string();  // fig<n>_<script>: its number in the report
-    const int n = std::stoi(stem.substr(3));
-    EXPECT_NE(md.find(fmt::format("![Figure {}: ", n)), std::string::npos) << stem;
-    EXPECT_NE(md.find("figures/" + stem + ".png"), std::string::npos) << stem;
+    EXPECT_NE(atlas.find("figures/" + e.path().stem().string() + ".svg"), std::string::npos) << e.path();
   }
   EXPECT_GE(figures, 8);
+  static const std::regex shown(R"re(!\[Figure (\d+): [^\]]*\]\(figures/(fig\d+_\w+)\.png\))re");
+  int k = 0;
+  for (auto it = std::sregex_iterator(md.begin(), md.end(), shown); it != std::sregex_iterator(); ++it) {
+    EXPECT_EQ(std::stoi((*it)[1]), ++k);
+    EXPECT_TRUE(std::filesystem::exists(dir.path("report/figures/" + (*it)[2].str() + ".png"))) << (*it)[2];
+  }
+  EXPECT_GE(k, 4);  // the regions, the sheet's energy, convergence and the triangle
+  static const std::regex link(R"re(\]\(atlas\.html#([^)]+)\))re");
+  int links = 0;
+  for (auto it = std::sregex_iterator(md.begin(), md.end(), link); it != std::sregex_iterator(); ++it, ++links)
+    EXPECT_NE(atlas.find("id=\"" + (*it)[1].str() + "\""), std::string::npos) << (*it)[1];
+  EXPECT_GE(links, 5);  // one per brief section
   const Result claims = verify_claims(dir.path("report"));
   EXPECT_EQ(claims.status, 0) << claims.out << claims.err;
   // The atlas in a real browser (tests/atlas_browser_check.py): every image loads, no error, every

@@ -5,7 +5,7 @@
 ncol = npanel <= 3 ? npanel : npanel == 4 ? 2 : 3
 nrow = (npanel + ncol - 1) / ncol
 load "styles.gp"  # each method's style, the terminal and the fonts
-eval terminal(360 * nrow + 60, 4.8 * nrow + 0.6)
+eval terminal(330 * nrow + 60, 4.2 * nrow + 0.6)
 set output outfile
 set grid lc rgb "#dddddd"
 set key below horizontal samplen 1.5 spacing 0.9 font kfont noenhanced  # method names have underscores

@@ -7,7 +7,7 @@
 ncol = npanel <= 3 ? npanel : npanel == 4 ? 2 : 3
 nrow = (npanel + ncol - 1) / ncol
 load "styles.gp"  # each method's style, the terminal and the fonts
-eval terminal(330 * nrow + 80, 4.2 * nrow + 0.9)
+eval terminal(300 * nrow + 80, 3.8 * nrow + 0.9)
 set output outfile
 set grid lc rgb "#dddddd"
 set key below horizontal samplen 1.5 spacing 0.9 font kfont noenhanced  # method names have underscores

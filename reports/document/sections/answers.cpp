@@ -14,6 +14,7 @@
 #include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
+#include "reports/document/sections/answers.hpp"
 #include "reports/document/sections/long_time.hpp"
 
 namespace steplab {
@@ -71,23 +72,6 @@ std::string stable_answer(const Page& page) {
                          methods_of(x.f, x.f.always_stable));
     }
   return md + "\n";
-}
-
-// Stable for how long: the orbit's runs by their energy error, and whether the structure or the order decides.
-std::string long_time_answer(const Page& page) {
-  const LongTimeResult& r = page.data.long_time_orbit;
-  const LongTimeSides s = sides(r);
-  std::string md = fmt::format("- **Stable for how long?** Over {:g} periods of {} the energy error stays bounded with {} and "
-                               "drifts with {}",
-                               r.config.periods, scene_kernel(r.config.scene).title, method_list(s.bounded), method_list(s.drifting));
-  if (!s.lost.empty()) md += fmt::format("; {} {} the orbit", method_list(s.lost), s.lost.size() == 1 ? "loses" : "lose");
-  md += ".";
-  if (s.not_by_order)
-    md += fmt::format(" Bounded are the symplectic ones, whatever their order: `{}` (order {}) drifts, `{}` (order {}) does not.",
-                      name(*s.high_drift), method_info(*s.high_drift).order, name(*s.low_bounded), method_info(*s.low_bounded).order);
-  md += fmt::format(" The growth exponents, the angular momentum and the phase are in \"Stable for how long?\"{}.\n", see(page, "long_time"));
-  if (page.ledger) claim_long_time_sides(*page.ledger, r, s, "long_time", "answers.long_time", "answers", md);
-  return md;
 }
 
 std::string order_answer(const Page& page) {
@@ -161,6 +145,27 @@ std::string energy_answer(const Page& page) {
       claim_energy(*l, page.data, fmt::format("answers.energy.{}", id_word(to_text(kind))), "answers", md, kind, methods_of_kind(e, kind));
     if (!symplectic.empty()) claim_energy(*l, page.data, "answers.energy.bounded_symplectic", "answers", md, EnergyKind::Bounded, symplectic, true);
   }
+  return md;
+}
+
+}  // namespace
+
+// Stable for how long: the orbit's runs by their energy error, and whether the structure or the order decides.
+std::string long_time_answer(const Page& page) {
+  const LongTimeResult& r = page.data.long_time_orbit;
+  const LongTimeSides s = sides(r);
+  std::string md = fmt::format("- **Stable for how long?** Over {:g} periods of {} the energy error stays bounded with {} and "
+                               "drifts with {}",
+                               r.config.periods, scene_kernel(r.config.scene).title, method_list(s.bounded), method_list(s.drifting));
+  if (!s.lost.empty()) md += fmt::format("; {} {} the orbit", method_list(s.lost), s.lost.size() == 1 ? "loses" : "lose");
+  md += ".";
+  if (s.not_by_order)
+    md += fmt::format(" Bounded are the symplectic ones, whatever their order: `{}` (order {}) drifts, `{}` (order {}) does not.",
+                      name(*s.high_drift), method_info(*s.high_drift).order, name(*s.low_bounded), method_info(*s.low_bounded).order);
+  if (!page.handout)  // the hand-out's brief section is that section
+    md += fmt::format(" The growth exponents, the angular momentum and the phase are in \"Stable for how long?\"{}.", see(page, "long_time"));
+  md += "\n";
+  if (page.ledger) claim_long_time_sides(*page.ledger, r, s, "long_time", "answers.long_time", "answers", md);
   return md;
 }
 
@@ -268,6 +273,10 @@ std::string implicit_answer(const Page& page) {
   return md;
 }
 
+std::string answer_paragraph(const std::string& bullet) { return bullet.rfind("- ", 0) == 0 ? bullet.substr(2) : bullet; }
+
+namespace {
+
 class Answers : public Section {
  public:
   std::string title() const override { return "Answers"; }
@@ -286,6 +295,10 @@ class Answers : public Section {
       md += stable_answer(page);
       md += order_answer(page);
       md += energy_answer(page);
+    }
+    if (page.handout) {  // the hand-out answers the next questions in the brief sections that close it
+      return md + "\nThe questions a simulation asks next (stiffness, cost, size, a frame budget, long runs) are answered in "
+                  "the short sections that close this hand-out, each with a link to its study in the atlas.\n\n";
     }
     if (d.studies & kStiffOrderStudy) md += stiff_answer(page);
     if (d.studies & kWorkPrecisionStudy) md += cost_answer(page);

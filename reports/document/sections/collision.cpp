@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/defaults.hpp"
 #include "reports/data/studies.hpp"
 #include "reports/document/claims.hpp"
 #include "reports/document/report_text.hpp"
@@ -18,6 +19,10 @@ class Collision : public Section {
  public:
   std::string title() const override { return "Collision"; }
   unsigned needs() const override { return kCollisionStudy | kConvergenceStudy; }
+  // The hand-in shows the falling triangle alone, with the sheet's methods: it needs that scene only.
+  std::string missing(const ReportConfig& c) const override {
+    return c.hand_in() ? uncovered(c, {c.body.scene}) : uncovered_for(c, needs());
+  }
   void write_data(const ReportData& d, const DataDir& dat) const override {
     dat.write("collision.json", collision_json(d.collision).dump(1) + "\n");
     for (std::size_t m : d.collision.config.methods) {
@@ -26,6 +31,14 @@ class Collision : public Section {
         if (r.method == m && !r.bounces.empty()) s += num(r.dt) + " " + num(r.bounces.back().energy_ratio) + "\n";
       dat.write("bounce_" + name(m) + ".dat", s);
     }
+    // The triangle's path with the sheet's methods: its lowest corner (the least of the three
+    // particles' heights) and its energy over the first sample's.
+    for (const CollisionRun* run : sheet_triangles(d)) {
+      std::string s = "# t lowest_y energy_ratio\n";
+      for (const auto& p : run->path)
+        s += num(p.t) + " " + num(std::min({p.x[1], p.x[3], p.x[5]})) + " " + num(p.energy / run->path.front().energy) + "\n";
+      dat.write("triangle_" + name(run->method) + ".dat", s);
+    }
   }
 
   std::vector<FigureSpec> figures(const ReportData& d) const override {
@@ -33,9 +46,13 @@ class Collision : public Section {
       return std::any_of(d.collision.bounce.begin(), d.collision.bounce.end(),
                          [&](const CollisionRun& r) { return r.method == m && !r.bounces.empty(); });
     };
+    std::vector<FigureSpec> out;
+    std::vector<std::string> sheet;
+    for (const CollisionRun* run : sheet_triangles(d)) sheet.push_back(name(run->method));
+    if (!sheet.empty()) out.push_back({"triangle", "", {{"lowest corner", sheet}, {"energy", sheet}}});
     std::vector<Panel> panels = family_panels(d.collision.config.methods, bounced);
-    if (panels.empty()) return {};
-    return {{"bounce_energy", "", std::move(panels)}};
+    if (!panels.empty() && !d.config.hand_in()) out.push_back({"bounce_energy", "", std::move(panels)});
+    return out;
   }
 
   std::string markdown(Page& page) const override {
@@ -43,6 +60,7 @@ class Collision : public Section {
     const ReportConfig& c = d.config;
     const CollisionResult& r = d.collision;
     std::string md = "## " + title() + "\n\n";
+    if (c.hand_in()) return md + "The slides' contact: a penalty spring pushes a body back above the ground y = -1. " + triangle(page);
     md += fmt::format("The slides' contact: a penalty spring pushes a body back above the ground y = -1. The undamped bounce ({}; "
                       "dropped from y = 0) should keep its energy from bounce to bounce; over {} s, by method and step:\n\n",
                       params_text(c.rebound.scene, c.rebound.params), c.collision.t_end);
@@ -64,13 +82,33 @@ class Collision : public Section {
       md += fmt::format("| `{}` | {} |{} {:.4f} |\n", name(m), bounces, cells, deepest);
     }
     md += fmt::format("\nBounces and penetration at dt {}. {}\n\n", r.config.dts.front(), bounce_orders(d, page.ledger));
-    md += triangle_sentence(d, page.ledger);
-    if (page.has("bounce_energy"))
+    md += triangle(page);
+    if (page.has("bounce_energy") && !page.handout)
       md += page.figure("bounce_energy", "The bounce: E/E0 after the last bounce against dt, a panel per family");
     return md;
   }
 
  private:
+  // The falling triangle: its sentence and its figure.
+  static std::string triangle(Page& page) {
+    std::string md = triangle_sentence(page.data, page.ledger);
+    if (page.has("triangle"))
+      md += page.figure("triangle", fmt::format("The falling triangle at dt = {} with the sheet's methods: its lowest corner against "
+                                                "the ground y = -1 (left) and E/E0 (right) over t; each contact dips the corner below "
+                                                "the ground by the penetration above, and the energy ends apart by the method",
+                                                page.data.collision.config.triangle_dt));
+    return md;
+  }
+
+  // The triangle's runs of the sheet's methods, in the sheet's order, with a path to draw.
+  static std::vector<const CollisionRun*> sheet_triangles(const ReportData& d) {
+    std::vector<const CollisionRun*> out;
+    for (std::string_view n : kSheetMethods)
+      for (const CollisionRun& run : d.collision.triangle)
+        if (name(run.method) == n && run.path.size() > 1) out.push_back(&run);
+    return out;
+  }
+
   // The orders against the exact bounce, each against its declared order: kept where the bound
   // holds it or the fit is within kKeptOrder of it, lost where the bound lies below it. An order
   // whose bound is wider than +-0.5 is not a finding.
@@ -133,23 +171,33 @@ class Collision : public Section {
       if (!deep || run.max_penetration > deep->max_penetration) deep = &run;
     }
     if (!shallow) return {};
+    const CollisionRun *low = shallow, *high = shallow;  // the energy at the end, least and most
+    for (const CollisionRun& run : r.triangle)
+      if (run.status == RunStatus::Ok) {
+        if (run.energy_ratio_final < low->energy_ratio_final) low = &run;
+        if (run.energy_ratio_final > high->energy_ratio_final) high = &run;
+      }
     std::string md = fmt::format(
         "The falling triangle ({}; the slides' problem 3) at dt {} over {} s: its deepest point goes {:.3g} m into the ground "
-        "with `{}` and {:.3g} m with `{}`", params_text(d.config.body.scene, d.config.body.params), r.config.triangle_dt,
-        d.config.collision.t_end, shallow->max_penetration, name(shallow->method), deep->max_penetration, name(deep->method));
+        "with `{}` and {:.3g} m with `{}`; E/E0 at the end is {:.3g} with `{}` and {:.3g} with `{}`",
+        params_text(d.config.body.scene, d.config.body.params), r.config.triangle_dt, d.config.collision.t_end,
+        shallow->max_penetration, name(shallow->method), deep->max_penetration, name(deep->method), low->energy_ratio_final,
+        name(low->method), high->energy_ratio_final, name(high->method));
     if (!diverged.empty()) md += fmt::format("; {} diverge", method_list(diverged));
     md += ".\n\n";
     if (l) {  // the shallowest and the deepest of the runs that ended well
       l->document(kCollisionDocument, [&] { return collision_json(r); });
-      const auto extreme = [&](const char* what, const char* op, double limit) {
+      const auto extreme = [&](const char* what, const char* field, const char* op, double limit) {
         Claim c = claim_text(fmt::format("collision.triangle.{}", what), "collision", md);
         c.kind = "threshold", c.rule = {{"op", op}, {"limit", limit}};
         for (std::size_t i = 0; i < r.triangle.size(); ++i)
-          if (r.triangle[i].status == RunStatus::Ok) c.evidence.push_back(l->at(kCollisionDocument, fmt::format("/triangle/{}/max_penetration", i)));
+          if (r.triangle[i].status == RunStatus::Ok) c.evidence.push_back(l->at(kCollisionDocument, fmt::format("/triangle/{}/{}", i, field)));
         l->add(std::move(c));
       };
-      extreme("shallowest", ">=", shallow->max_penetration);
-      extreme("deepest", "<=", deep->max_penetration);
+      extreme("shallowest", "max_penetration", ">=", shallow->max_penetration);
+      extreme("deepest", "max_penetration", "<=", deep->max_penetration);
+      extreme("least_energy", "energy_ratio_final", ">=", low->energy_ratio_final);
+      extreme("most_energy", "energy_ratio_final", "<=", high->energy_ratio_final);
     }
     return md;
   }

@@ -16,6 +16,7 @@
 #include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
+#include "reports/document/sections/answers.hpp"
 
 namespace steplab {
 namespace {
@@ -45,6 +46,7 @@ std::string counts_cell(const WorkPoint& p) {
 class Cost : public Section {
  public:
   std::string title() const override { return "What accuracy costs"; }
+  std::string brief(Page& page) const override { return brief_markdown(title(), answer_paragraph(cost_answer(page))); }
   unsigned needs() const override { return kWorkPrecisionStudy; }
   void write_data(const ReportData& d, const DataDir& dat) const override {
     dat.write("work_precision.json", work_precision_json(d.work).dump(1) + "\n");

@@ -108,6 +108,7 @@ class Families : public Section {
                                                "points: where it leaves a region at the predicted dt* and where it enters it "
                                                "again", gamma));
     }
+    md += by_hand(d, page.findings, page.ledger);
     md += splitting(d, page.findings, page.ledger);
     return md;
   }
@@ -185,6 +186,57 @@ class Families : public Section {
                        "(damping {}) is **{:.2f}**, {}, {}. One number mixes families whose dt* moves in different directions "
                        "with the order (the table above), so it answers none of them.\n\n",
                        f.spearman_n, gamma, f.spearman, correlation_words(f.spearman), chance_words(f.spearman, f.spearman_n));
+  }
+
+  // Two of the sheet's methods by hand, beside their measured dt*. On m y'' = -k u - gamma u' the
+  // eigenvalues are lambda = -gamma / (2m) +- i beta, |lambda|^2 = k / m = omega^2.
+  //   Explicit Euler multiplies an eigencomponent by 1 + h lambda, and
+  //     |1 + h lambda|^2 = 1 + 2 h Re(lambda) + h^2 |lambda|^2 <= 1  <=>  h <= -2 Re(lambda) / |lambda|^2 = gamma / k;
+  //   undamped (Re(lambda) = 0) it is 1 + omega^2 h^2 > 1 at every h > 0: dt* = 0.
+  //   Symplectic Euler (v+ = v - h omega^2 x, x+ = x + h v+) has the step matrix
+  //     M = [[1 - h^2 omega^2, h], [-h omega^2, 1]],  det M = 1,  tr M = 2 - h^2 omega^2;
+  //   its eigenvalues are on the unit circle, distinct, while |tr M| < 2: h omega < 2, dt* = 2 / omega.
+  static std::string by_hand(const ReportData& d, const Findings& f, Ledger* l) {
+    const Spring s(d.config.oscillator.params);
+    const double omega = std::sqrt(s.k / s.m), gamma = d.config.damping();
+    const MethodFinding *euler = nullptr, *symplectic = nullptr;
+    for (const MethodFinding& r : f.rows) {
+      if (name(r.method) == "explicit_euler") euler = &r;
+      if (name(r.method) == "symplectic_euler") symplectic = &r;
+    }
+    if (!euler && !symplectic) return {};
+    std::string md = fmt::format("Two of the sheet's methods by hand, on the spring's $u'' = -\\omega^2 u - (\\gamma/m) u'$ with "
+                                 "eigenvalues $\\lambda = -\\gamma/2m \\pm i\\beta$, $|\\lambda| = \\omega = \\sqrt{{k/m}} = {:.4g}$:\n\n",
+                                 omega);
+    const std::string euler_theory =
+        "Explicit Euler multiplies each eigencomponent by $1 + h\\lambda$, and $|1 + h\\lambda|^2 = 1 + 2h\\,\\mathrm{Re}\\,\\lambda + "
+        "h^2\\omega^2 \\le 1$ exactly when $h \\le -2\\,\\mathrm{Re}\\,\\lambda/\\omega^2 = \\gamma/k$; undamped, $|1 + i\\omega h|^2 = "
+        "1 + \\omega^2 h^2 > 1$ at every $h > 0$";
+    const std::string symplectic_theory =
+        "Symplectic Euler ($v_{n+1} = v_n - h\\omega^2 x_n$, $x_{n+1} = x_n + h v_{n+1}$) has the step matrix "
+        "$M = \\begin{pmatrix} 1 - h^2\\omega^2 & h \\\\ -h\\omega^2 & 1 \\end{pmatrix}$ with $\\det M = 1$ and "
+        "$\\mathrm{tr}\\, M = 2 - h^2\\omega^2$: its eigenvalues stay on the unit circle while $|\\mathrm{tr}\\, M| < 2$, that is "
+        "$h\\omega < 2$";
+    if (euler) {
+      const std::string line = fmt::format("- {}: predicted dt* = 0 undamped and $\\gamma/k$ = {:.4g} at damping {}; measured {} and {:.4g}.\n",
+                                           euler_theory, gamma / s.k, gamma, dt_text(euler->dt_undamped_measured), euler->dt_measured);
+      md += line;
+      if (l) {
+        l->theory("families", euler_theory);
+        claim_measured_as_predicted(*l, {d}, "families.by_hand.explicit_euler.damping_0", "families", line, {euler->method}, 0, 5e-4);
+        claim_measured_as_predicted(*l, {d}, "families.by_hand.explicit_euler", "families", line, {euler->method}, gamma, 5e-4);
+      }
+    }
+    if (symplectic) {
+      const std::string line = fmt::format("- {}: predicted dt* = $2/\\omega$ = {:.4g} undamped; measured {:.4g}.\n", symplectic_theory,
+                                           2 / omega, symplectic->dt_undamped_measured);
+      md += line;
+      if (l) {
+        l->theory("families", symplectic_theory);
+        claim_measured_as_predicted(*l, {d}, "families.by_hand.symplectic_euler", "families", line, {symplectic->method}, 0, 5e-4);
+      }
+    }
+    return md + "\n";
   }
 
   // The splitting methods have no scalar R(z); on the test equation x'' = -omega^2 x their step

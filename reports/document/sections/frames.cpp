@@ -79,6 +79,12 @@ class Frames : public Section {
     return md;
   }
 
+  std::string brief(Page& page) const override {
+    return brief_markdown(title(), fmt::format("At {} frames a second on the {} of {} springs, with a budget of {} sweeps a frame: {}",
+                                               r_.config.fps, scene_name(r_.config.scene), r_.springs, r_.config.budget,
+                                               as_accurate(page.ledger)));
+  }
+
  private:
   FramesResult r_;
 
@@ -181,27 +187,51 @@ class Frames : public Section {
     return md + "\n\n";
   }
 
+  // "runs[i] is the least of `among` by `field`" (others ascending; tied where the next is equal).
+  void least(Ledger* l, std::string claim_id, std::string sentence, std::size_t i, std::vector<std::size_t> among, const char* field) const {
+    if (!l) return;
+    const auto value = [&](std::size_t k) { return field == std::string("error_max") ? r_.runs[k].error : frame_cost(r_.runs[k]); };
+    std::erase(among, i);
+    std::stable_sort(among.begin(), among.end(), [&](std::size_t a, std::size_t b) { return value(a) < value(b); });
+    const auto at = [&](std::size_t k) { return l->at(kFramesDocument, fmt::format("/runs/{}/{}", k, field)); };
+    std::vector<Evidence> others;
+    for (std::size_t k : among) others.push_back(at(k));
+    const bool tie = !among.empty() && value(among.front()) == value(i);
+    claim_group(*l, claim_text(std::move(claim_id), "frames", std::move(sentence)),
+                comparison_group(at(i), std::move(others), {}, tie ? "tie" : "less", 1.0));
+  }
+
+  std::string cost(const FrameRun& x) const {
+    return r_.config.timing ? fmt::format("{:.4g} spring visits a frame ({:.3g} µs)", x.spring_visits, 1e6 * x.seconds)
+                            : fmt::format("{:.4g} spring visits a frame", x.spring_visits);
+  }
+
+  // The cheapest set-up of all that reaches the error of the most accurate position-based one,
+  // claimed; "" where none does.
+  std::string as_accurate(Ledger* l) const {
+    double target = INFINITY;
+    for (const FrameRun& x : r_.runs)
+      if (x.stable && method_info(x.setup.method).family == Family::PositionBased) target = std::min(target, x.error);
+    std::vector<std::size_t> reach;  // the stable set-ups as accurate as that
+    for (std::size_t i = 0; i < r_.runs.size(); ++i)
+      if (r_.runs[i].stable && r_.runs[i].error <= target) reach.push_back(i);
+    const auto best = std::min_element(reach.begin(), reach.end(), [&](std::size_t a, std::size_t b) {
+      const double ca = frame_cost(r_.runs[a]), cb = frame_cost(r_.runs[b]);
+      return ca != cb ? ca < cb : r_.runs[a].error < r_.runs[b].error;
+    });
+    if (best == reach.end() || !std::isfinite(target)) return {};
+    const FrameRun& b = r_.runs[*best];
+    const std::string sentence = fmt::format("The cheapest set-up as accurate as the best position-based one (error {}): `{}` {}, {}.",
+                                             g3(target), name(b.setup.method), frame_setup_text(b.setup), cost(b));
+    if (l) l->document(kFramesDocument, [&] { return frames_json(r_); });
+    least(l, "frames.as_accurate", sentence, *best, reach, "spring_visits_per_frame");
+    return sentence + "\n\n";
+  }
+
   // Each family's cheapest stable set-up and its most accurate, and the cheapest set-up of all that
   // reaches the error of the most accurate position-based one; each a claim. The cost is the spring
   // visits a frame (frame_cost: a count, the same on every machine), the time beside it.
   std::string fronts(Ledger* l) const {
-    const auto cost = [&](const FrameRun& x) {
-      return r_.config.timing ? fmt::format("{:.4g} spring visits a frame ({:.3g} µs)", x.spring_visits, 1e6 * x.seconds)
-                              : fmt::format("{:.4g} spring visits a frame", x.spring_visits);
-    };
-    // "runs[i] is the least of `among` by `field`" (others ascending; tied where the next is equal).
-    const auto least = [&](std::string claim_id, std::string sentence, std::size_t i, std::vector<std::size_t> among, const char* field) {
-      if (!l) return;
-      const auto value = [&](std::size_t k) { return field == std::string("error_max") ? r_.runs[k].error : frame_cost(r_.runs[k]); };
-      std::erase(among, i);
-      std::stable_sort(among.begin(), among.end(), [&](std::size_t a, std::size_t b) { return value(a) < value(b); });
-      const auto at = [&](std::size_t k) { return l->at(kFramesDocument, fmt::format("/runs/{}/{}", k, field)); };
-      std::vector<Evidence> others;
-      for (std::size_t k : among) others.push_back(at(k));
-      const bool tie = !among.empty() && value(among.front()) == value(i);
-      claim_group(*l, claim_text(std::move(claim_id), "frames", std::move(sentence)),
-                  comparison_group(at(i), std::move(others), {}, tie ? "tie" : "less", 1.0));
-    };
     const auto stable_of = [&](Family f) {
       std::vector<std::size_t> out;
       for (std::size_t i = 0; i < r_.runs.size(); ++i)
@@ -214,29 +244,12 @@ class Frames : public Section {
       const std::string row = fmt::format("| {} | `{}` {}, {} | {} | `{}` {}, {} | {} |\n", to_string(f.family), name(lo.setup.method),
                                           frame_setup_text(lo.setup), cost(lo), g3(lo.error), name(hi.setup.method),
                                           frame_setup_text(hi.setup), cost(hi), g3(hi.error));
-      least(fmt::format("frames.cheapest.{}", id_word(to_string(f.family))), row, f.runs.front(), stable_of(f.family),
+      least(l, fmt::format("frames.cheapest.{}", id_word(to_string(f.family))), row, f.runs.front(), stable_of(f.family),
             "spring_visits_per_frame");
-      least(fmt::format("frames.most_accurate.{}", id_word(to_string(f.family))), row, f.runs.back(), stable_of(f.family), "error_max");
+      least(l, fmt::format("frames.most_accurate.{}", id_word(to_string(f.family))), row, f.runs.back(), stable_of(f.family), "error_max");
       md += row;
     }
-    double target = INFINITY;
-    for (const FrameRun& x : r_.runs)
-      if (x.stable && method_info(x.setup.method).family == Family::PositionBased) target = std::min(target, x.error);
-    std::vector<std::size_t> reach;  // the stable set-ups as accurate as that
-    for (std::size_t i = 0; i < r_.runs.size(); ++i)
-      if (r_.runs[i].stable && r_.runs[i].error <= target) reach.push_back(i);
-    const auto best = std::min_element(reach.begin(), reach.end(), [&](std::size_t a, std::size_t b) {
-      const double ca = frame_cost(r_.runs[a]), cb = frame_cost(r_.runs[b]);
-      return ca != cb ? ca < cb : r_.runs[a].error < r_.runs[b].error;
-    });
-    md += "\n";
-    if (best != reach.end() && std::isfinite(target)) {
-      const FrameRun& b = r_.runs[*best];
-      const std::string sentence = fmt::format("The cheapest set-up as accurate as the best position-based one (error {}): `{}` {}, {}.",
-                                               g3(target), name(b.setup.method), frame_setup_text(b.setup), cost(b));
-      least("frames.as_accurate", sentence, *best, reach, "spring_visits_per_frame");
-      md += sentence + "\n\n";
-    }
+    md += "\n" + as_accurate(l);
     md += "The cost is the spring visits a frame, the same on every machine: a projection visits one spring; a force evaluation, "
           "a Jacobian, a factorisation, a linear solve or a CG product all of them (each a pass over the rope's tridiagonal "
           "system). A set-up is on its family's front where none of the family with as many visits or fewer has a smaller error; "

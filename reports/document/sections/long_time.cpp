@@ -16,6 +16,7 @@
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
 #include "reports/document/sections/long_time.hpp"
+#include "reports/document/sections/answers.hpp"
 
 namespace steplab {
 
@@ -110,6 +111,7 @@ std::string g2(double x) { return std::isfinite(x) ? fmt::format("{:.2g}", x) : 
 class LongTime : public Section {
  public:
   std::string title() const override { return "Stable for how long? Energy, angular momentum and phase over many periods"; }
+  std::string brief(Page& page) const override { return brief_markdown(title(), answer_paragraph(page.data.long_time_orbit.rows.empty() ? std::string() : long_time_answer(page))); }
   std::string missing(const ReportConfig& c) const override {
     return uncovered(c, {scene_index(kLongTimeScene), scene_index(kLongTimeSheetScene)});
   }

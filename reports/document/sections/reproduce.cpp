@@ -36,7 +36,7 @@ std::string assignment(const std::string& var, const std::string& list) {
   while (start < list.size()) {
     std::size_t next = list.find(',', start);
     next = next == std::string::npos ? list.size() : next + 1;
-    if (line.size() + next - start > 76 - var.size()) out += line + "\\\n", line.clear();
+    if (line.size() + next - start > kCodeColumns - var.size()) out += line + "\\\n", line.clear();
     line += list.substr(start, next - start);
     start = next;
   }

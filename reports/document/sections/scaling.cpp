@@ -18,6 +18,7 @@
 #include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
+#include "reports/document/sections/answers.hpp"
 
 namespace steplab {
 namespace {
@@ -267,6 +268,7 @@ std::string map_markdown(const ScalingResult& r, Page& page) {
 class ScalingSection : public Section {
  public:
   std::string title() const override { return "As the system grows"; }
+  std::string brief(Page& page) const override { return brief_markdown(title(), answer_paragraph(implicit_answer(page))); }
   unsigned needs() const override { return kScalingStudy; }
   std::string missing(const ReportConfig& c) const override {
     for (const ReportSizes& s : c.scaling)

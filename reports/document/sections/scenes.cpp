@@ -72,8 +72,8 @@ class SceneFigures : public Section {
       for (std::size_t k = 0; k < c.spring_figure_dts.size(); ++k)
         md += fmt::format("{}The spring at dt = {}: each method's largest distance from the exact height over t <= {:g}: {}.",
                           k ? " " : "", c.spring_figure_dts[k], c.spring_figure_t_end, deviations(d, c.oscillator, d.spring[k]));
-      md += "\n\n" + page.figure("spring", fmt::format("The spring's height y(t) against the exact solution (grey), a row per "
-                                                       "family, a column per dt: {}", words(c.spring_figure_dts)));
+      md += "\n\n" + page.figure("spring", fmt::format("The spring's height y(t) against the exact solution (grey), a panel "
+                                                       "per family and dt ({})", words(c.spring_figure_dts)));
     }
     return md;
   }

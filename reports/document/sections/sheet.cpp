@@ -74,7 +74,9 @@ class Sheet : public Section {
       if (std::find(page.data.methods.begin(), page.data.methods.end(), m) == page.data.methods.end()) left_out.push_back(m);
     md += fmt::format("The 2018 sheet (exercise 1, time integration) asks for {} on two scenes, each compared with the analytic "
                       "solution.", method_list(sheet));
-    if (!added.empty()) md += fmt::format(" Beside them this hand-in measures {}, chosen with `--methods`.", method_list(added));
+    if (!added.empty())  // the hand-in's are a user's choice; the full report's are every family's
+      md += c.hand_in() ? fmt::format(" Beside them this hand-in measures {}, chosen with `--methods`.", method_list(added))
+                                    : fmt::format(" Beside them this report measures {} more methods, family by family.", added.size());
     if (!left_out.empty()) md += fmt::format(" It leaves out {}, not chosen.", method_list(left_out));
     md += "\n\n";
     md += fmt::format("- **Problem 1, the cannon ball** ({}): from the origin with v0 = ({:.4g}, {:.4g}); the analytic solution is "

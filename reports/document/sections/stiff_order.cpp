@@ -15,6 +15,7 @@
 #include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
+#include "reports/document/sections/answers.hpp"
 
 namespace steplab {
 namespace {
@@ -25,6 +26,7 @@ std::string x(double v) { return std::isnan(v) ? std::string("?") : dt_text(v); 
 class StiffOrder : public Section {
  public:
   std::string title() const override { return "Does the order hold when stiff?"; }
+  std::string brief(Page& page) const override { return brief_markdown(title(), answer_paragraph(stiff_answer(page))); }
   unsigned needs() const override { return kStiffOrderStudy; }
   std::string missing(const ReportConfig& c) const override { return uncovered(c, {c.stiffened.scene}); }
 
