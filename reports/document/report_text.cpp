@@ -81,10 +81,18 @@ std::string wrapped(const std::string& cmd) {
   while (start < cmd.size()) {
     std::size_t next = cmd.find(" --", start + 1);
     if (next == std::string::npos) next = cmd.size();
-    const std::string piece = cmd.substr(start, next - start);
-    if (!line.empty() && line.size() + piece.size() > kCodeColumns) {
-      out += line + " \\\n   ";
+    std::string piece = cmd.substr(start, next - start);
+    if (line.find_first_not_of(' ') != std::string::npos && line.size() + piece.size() > kCodeColumns) {
+      out += line + " \\\n";
+      line = "   ";  // the continuation's indent
+    }
+    // A piece longer than a line (a long list) is broken after a comma: the shell removes a
+    // backslash-newline inside a word, so the list reads back whole.
+    for (std::size_t cut; line.size() + piece.size() > kCodeColumns &&
+                          (cut = piece.rfind(',', kCodeColumns - line.size() - 2)) != std::string::npos && cut > 0;) {
+      out += line + piece.substr(0, cut + 1) + "\\\n";
       line.clear();
+      piece.erase(0, cut + 1);
     }
     line += piece;
     start = next;

@@ -28,7 +28,7 @@ std::string params_text(std::size_t scene, const std::vector<double>& values, in
 // The characters of code a line of the PDF holds: 18 cm of text width (A4, 1.5 cm margins) in 10 pt
 // Latin Modern Typewriter, 0.525 em a character, hold 97; a few kept spare.
 inline constexpr std::size_t kCodeColumns = 88;
-std::string wrapped(const std::string& cmd);              // a shell command broken for the page
+std::string wrapped(const std::string& cmd);              // a shell command broken for the page, a long list after a comma
 std::string words(const std::vector<double>& v);          // gnuplot word list: "a b c"
 std::string join(const std::vector<double>& v);           // CLI list: "a,b,c"
 // x to two significant digits as "{:.2g}" prints it, rounded down or up so that the printed value

@@ -255,13 +255,15 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force, 
     write_atlas(atlas, staging, out);
     write_atomic((staging / "report-pdf.md").string(), report_markdown(report, "pdf", footer, nullptr, true));
     // Each figure in the section that cites it: no float passes the next section's heading (a
-    // \FloatBarrier, placeins', before each; the sections are LaTeX's subsections under the title);
+    // \FloatBarrier, placeins', before each; the sections are LaTeX's subsections under the title),
+    // and no heading ends a page (five lines kept below it, needspace);
     // a figure may fill up to 90 % of a text page, so that a large one sits among the text rather
     // than alone on a half-empty float page.
     run_pandoc(staging, out, "report-pdf.md", "report.pdf",
                "--pdf-engine=pdflatex -V papersize=a4 -V geometry:margin=1.5cm -V fontsize=10pt -V colorlinks=true "
-               "-V 'header-includes=\\usepackage{float}\\floatplacement{figure}{!htbp}\\usepackage{placeins}"
-               "\\let\\plainsubsection\\subsection\\renewcommand{\\subsection}{\\FloatBarrier\\plainsubsection}"
+               "-V 'header-includes=\\usepackage{float}\\floatplacement{figure}{!htbp}\\usepackage{placeins}\\usepackage{needspace}"
+               "\\let\\plainsubsection\\subsection"
+               "\\renewcommand{\\subsection}{\\FloatBarrier\\needspace{5\\baselineskip}\\plainsubsection}"
                "\\renewcommand{\\topfraction}{0.9}\\renewcommand{\\bottomfraction}{0.9}\\renewcommand{\\textfraction}{0.07}"
                "\\renewcommand{\\floatpagefraction}{0.85}'");
     data.write("stamp", stamp);

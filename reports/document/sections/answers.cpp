@@ -57,7 +57,8 @@ std::string stable_answer(const Page& page) {
                                   : fmt::format("{} {} not: {} energy grows.", unstable_words(rates_over(src, &Findings::unstable_undamped, true)),
                                                 unstable_undamped.size() == 1 ? "is" : "are", unstable_undamped.size() == 1 ? "its" : "their");
   if (!always.empty()) md += fmt::format(" Stable at every step tried: {}.", method_list(always));
-  md += fmt::format(" Each method's largest stable step dt* is in the summary table{}.", see(page, "regions"));
+  md += " Each method's largest stable step dt* is in the summary table";
+  md += page.has("regions") ? fmt::format(", its stability region in figure {}.", page.number("regions")) : std::string(".");
   if (Ledger* l = page.ledger)
     for (const ShownStudy& x : src) {
       const StabilitySource s = x.study;
@@ -304,7 +305,7 @@ class Answers : public Section {
     if (d.studies & kWorkPrecisionStudy) md += cost_answer(page);
     if (d.studies & kScalingStudy) md += implicit_answer(page);
     if ((d.studies & kLongTimeStudy) && !d.long_time_orbit.rows.empty()) md += long_time_answer(page);
-    if (d.config.has_section("advice")) md += "\nWhat to use when closes the report.\n";
+    if (d.config.has_section("advice")) md += "\nThe report closes with what to use when.\n";
     return md + "\n";
   }
 };

@@ -94,12 +94,12 @@ class Energy : public Section {
     std::string md = "## " + title() + "\n\n";
     md += fmt::format("The undamped spring has a conserved energy; a method's E/E0 - 1 over a long run at the sheet's step "
                       "(dt = {}, t = {:g}) is what a long simulation would show. E/E0 on a log axis shows growth and decay by powers of "
-                      "ten; E/E0 - 1 on a linear axis (the family panels) shows a bounded band and a slow drift. A run "
+                      "ten; E/E0 - 1 on a linear axis (the family panels{}) shows a bounded band and a slow drift. A run "
                       "counts as bounded when the largest |E/E0 - 1| over its second half is at most {:g} times that over its "
                       "first, or within round-off ({:g} u sqrt(steps)), as drifting when it keeps growing, as damped out when "
                       "E/E0 falls below 1/{:g} (the method's own damping), as blown up when it passes {:g} or the state "
                       "diverges.\n\n",
-                      c.large_dt, c.energy_t_end, kBoundedGrowth, kRoundOff, kBlownRatio, kBlownRatio);
+                      c.large_dt, c.energy_t_end, page.handout ? ", in the atlas" : "", kBoundedGrowth, kRoundOff, kBlownRatio, kBlownRatio);
     // A line per kind: its runs, each with what shows it (its range, its drift, where it ended).
     const auto item = [](const EnergyBehaviour& b) {
       const std::string n = fmt::format("`{}`{}", name(b.method), method_info(b.method).symplectic ? " (symplectic)" : "");
@@ -112,8 +112,8 @@ class Energy : public Section {
       }
       return b.ended >= 0 ? fmt::format("{} (diverged at t = {:g})", n, b.ended) : fmt::format("{} (E/E0 {:.3g} at the end)", n, b.final_ratio);
     };
-    const char* heads[] = {"- **Bounded**: ", "- **Drifts**, E/E0 - 1 at the end: ", "- **Damped out** by the method (left out of the figure): ",
-                           "- **Blows up** (left out of the figure): "};  // kEnergyKinds' order
+    const char* heads[] = {"- **Bounded**: ", "- **Drifts**, E/E0 - 1 at the end: ", "- **Damped out** by the method: ",
+                           "- **Blows up**: "};  // kEnergyKinds' order
     for (std::size_t k = 0; k < std::size(kEnergyKinds); ++k) {
       std::vector<std::string> items;
       for (const EnergyBehaviour& b : e)
@@ -125,6 +125,7 @@ class Energy : public Section {
         claim_energy(*page.ledger, d, fmt::format("energy.{}", id_word(to_text(kEnergyKinds[k]))), "energy", line, kEnergyKinds[k],
                      methods_of_kind(e, kEnergyKinds[k]));
     }
+    if (page.has("energy")) md += "The family panels leave out the runs damped out or blown up.\n";
     std::vector<std::size_t> symplectic, symplectic_unbounded;
     for (const EnergyBehaviour& b : e)
       if (method_info(b.method).symplectic) {

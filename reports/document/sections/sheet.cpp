@@ -76,7 +76,8 @@ class Sheet : public Section {
                       "solution.", method_list(sheet));
     if (!added.empty())  // the hand-in's are a user's choice; the full report's are every family's
       md += c.hand_in() ? fmt::format(" Beside them this hand-in measures {}, chosen with `--methods`.", method_list(added))
-                                    : fmt::format(" Beside them this report measures {} more methods, family by family.", added.size());
+                                    : fmt::format(" Beside them this report measures {} more ODE methods, family by family{}.",
+                                                  added.size(), page.springs ? ", and the methods on springs" : "");
     if (!left_out.empty()) md += fmt::format(" It leaves out {}, not chosen.", method_list(left_out));
     md += "\n\n";
     md += fmt::format("- **Problem 1, the cannon ball** ({}): from the origin with v0 = ({:.4g}, {:.4g}); the analytic solution is "

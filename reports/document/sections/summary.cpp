@@ -71,7 +71,7 @@ class Summary : public Section {
         "\nFitted order: on the spring, the final position error over t = {}, with its bound (Convergence). dt*: the "
         "largest step with every smaller step stable, measured ($\\infty$: every step tried is stable); where a method is "
         "stable again beyond it, from where. Stable: energy growing by at most {:g} per unit time over {} steps.{}\n\n",
-        c.convergence.t_end, kStableRate, kRateSteps, c.has_section("physics") ? " The terms: the appendix." : "");
+        c.convergence.t_end, kStableRate, kRateSteps, !c.has_section("physics") ? "" : page.handout ? " The terms: the atlas's appendix." : " The terms: the appendix.");
     if (page.springs)
       md += fmt::format("The methods on springs ({}) are measured here on the sheet's spring, a single spring, where one XPBD "
                         "sweep or one CG iteration solves the step: at a frame budget on a rope of many springs they are the "
