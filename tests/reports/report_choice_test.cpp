@@ -122,6 +122,22 @@ TEST(ReportChoice, ReproducesItsMethodListThroughTheShell) {
   EXPECT_EQ(r.out, fmt::format("{}", fmt::join(names, ","))) << assignment;
 }
 
+// A Reproduce command whose list is longer than a line (the stiffness sweep's) is broken after a
+// comma inside the word: every line fits the page, and the shell reads the words back as written.
+TEST(ReportChoice, ALongListInACommandIsBrokenWhereTheShellJoinsIt) {
+  std::string list;
+  for (int k = 0; k < 30; ++k) list += fmt::format("{}1e+{}", k ? "," : "", k);
+  const std::string cmd = "build/steplab study convergence --scene target --points 9 --sweep stiffness=" + list + " --methods $N";
+  const std::string out = wrapped(cmd);
+  std::size_t lines = 0;
+  for (std::size_t at = 0, nl; (nl = out.find('\n', at)) != std::string::npos; at = nl + 1, ++lines)
+    EXPECT_LE(nl - at, kCodeColumns + 1) << out;  // the code a line of the PDF holds, and the backslash
+  EXPECT_GE(lines, 3u) << out;
+  const Result r = run_shell("N=x; printf '%s ' " + out.substr(0, out.size() - 1));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "build/steplab study convergence --scene target --points 9 --sweep stiffness=" + list + " --methods x ") << out;
+}
+
 TEST(ReportChoice, AFamilyWithOneChosenMethodClaimsNoTrend) {
   const Report r = build_report(chosen({"rk4", "symplectic_euler", "velocity_verlet"}, {"families"}));
   const std::string md = report_markdown(r, "png", "");
