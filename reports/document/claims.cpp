@@ -31,15 +31,11 @@ Evidence Ledger::order_of(std::size_t method) const {
 }
 
 void Ledger::add(Claim c) {
-  const auto same = [](const std::vector<Evidence>& a, const std::vector<Evidence>& b) {
-    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
-                      [](const Evidence& x, const Evidence& y) { return x.file == y.file && x.pointer == y.pointer && x.value == y.value; });
-  };
   for (const Claim& o : claims_)
     if (o.id == c.id) {
       // The hand-out states again what the atlas states: the same finding, kept once (in the
       // atlas's words, which may point to a figure the hand-out leaves out).
-      if (o.kind == c.kind && o.rule == c.rule && same(o.evidence, c.evidence)) return;
+      if (o.kind == c.kind && o.rule == c.rule && o.evidence == c.evidence) return;
       throw std::logic_error("claim id used twice: " + c.id);
     }
   claims_.push_back(std::move(c));

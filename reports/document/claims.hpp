@@ -27,6 +27,7 @@ struct Evidence {
   std::string file;     // under data/; "claims.json" is the ledger itself (its methods table)
   std::string pointer;  // RFC 6901
   Json value;           // what the pointer finds there
+  bool operator==(const Evidence&) const = default;
 };
 
 struct Claim {

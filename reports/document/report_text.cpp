@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/defaults.hpp"
 
 namespace steplab {
 
@@ -72,6 +73,13 @@ std::string params_text(std::size_t scene, const std::vector<double>& v, int ski
   std::string out;
   for (std::size_t i = 0; i < params.size(); ++i)
     if (static_cast<int>(i) != skip) out += fmt::format("{}{} {}", out.empty() ? "" : ", ", params[i].name, v[i]);
+  return out;
+}
+
+std::vector<std::size_t> sheet_methods() {
+  std::vector<std::size_t> out;
+  for (std::string_view n : kSheetMethods)
+    if (const auto m = find_method(n); m && !method_info(*m).exact_flow) out.push_back(*m);
   return out;
 }
 

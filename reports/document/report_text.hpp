@@ -21,6 +21,7 @@ std::string order_text(std::size_t method);               // declared order, or 
 std::string fitted_text(const ConvergenceFit& fit);       // headline order and its bound
 std::string and_list(const std::vector<std::string>& items);       // a, b and c
 std::string method_list(const std::vector<std::size_t>& methods);  // `a`, `b` and `c`; "none"
+std::vector<std::size_t> sheet_methods();                           // the sheet's four, in its order (not the exact flow)
 std::string quoted_list(const std::vector<std::string>& names);    // `a`, `b` and `c` (a method's or a peer's)
 std::string fits_table(const ConvergenceResult& r);       // the Markdown table of fitted orders (not the exact ones)
 // "mass 1, stiffness 5, ..." in table order; `skip`: a parameter's index to leave out (-1: none).

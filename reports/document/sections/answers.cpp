@@ -284,14 +284,11 @@ class Answers : public Section {
   std::string markdown(Page& page) const override {
     const ReportData& d = page.data;
     std::string md = "## " + title() + "\n\n";
-    std::vector<std::size_t> sheet;
-    for (std::string_view n : kSheetMethods)
-      if (const auto m = find_method(n); m && !method_info(*m).exact_flow) sheet.push_back(*m);
     md += fmt::format("The 2018 exercise sheet asks for {} on a cannon ball and a cube hanging on a damped spring, and two "
                       "questions: which method is stable, and is stability correlated with the order? The answers below, "
                       "and the ones a simulation asks next, are computed from this report's measurements; the sections after "
                       "them show the data.\n\n",
-                      method_list(sheet));
+                      method_list(sheet_methods()));
     if ((d.studies & kFindings) == kFindings) {  // one at a time: each records its claims in the page's order
       md += stable_answer(page);
       md += order_answer(page);

@@ -6,7 +6,6 @@
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
-#include "analysis/studies/defaults.hpp"
 #include "reports/data/studies.hpp"
 #include "reports/document/claims.hpp"
 #include "reports/document/report_text.hpp"
@@ -103,9 +102,9 @@ class Collision : public Section {
   // The triangle's runs of the sheet's methods, in the sheet's order, with a path to draw.
   static std::vector<const CollisionRun*> sheet_triangles(const ReportData& d) {
     std::vector<const CollisionRun*> out;
-    for (std::string_view n : kSheetMethods)
+    for (std::size_t m : sheet_methods())
       for (const CollisionRun& run : d.collision.triangle)
-        if (name(run.method) == n && run.path.size() > 1) out.push_back(&run);
+        if (run.method == m && run.path.size() > 1) out.push_back(&run);
     return out;
   }
 

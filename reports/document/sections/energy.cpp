@@ -12,7 +12,6 @@
 
 #include <fmt/format.h>
 
-#include "analysis/studies/defaults.hpp"
 #include "analysis/kernel/kernel.hpp"
 #include "core/scenes/spring.hpp"
 #include "analysis/studies/long_time.hpp"
@@ -159,11 +158,9 @@ class Energy : public Section {
   // figure computes that itself).
   static std::vector<std::size_t> sheet_rows(const ReportData& d) {
     std::vector<std::size_t> out;
-    for (std::string_view n : kSheetMethods)
+    for (std::size_t m : sheet_methods())
       for (std::size_t i = 0; i < d.methods.size() && i < d.energy.size() && i < d.energy_damped.size(); ++i)
-        if (name(d.methods[i]) == n && !method_info(d.methods[i]).exact_flow && !d.energy[i].samples.empty() &&
-            !d.energy_damped[i].samples.empty())
-          out.push_back(i);
+        if (d.methods[i] == m && !d.energy[i].samples.empty() && !d.energy_damped[i].samples.empty()) out.push_back(i);
     return out;
   }
 

@@ -65,9 +65,8 @@ class Sheet : public Section {
     const Spring s(c.oscillator.params);
     std::string md = "## " + title() + "\n\n";
     // The sheet's own methods, and those of this hand-in that are not the sheet's (a user's choice).
-    std::vector<std::size_t> sheet, added, left_out;
-    for (std::string_view n : kSheetMethods)
-      if (const std::size_t m = *find_method(n); !method_info(m).exact_flow) sheet.push_back(m);
+    const std::vector<std::size_t> sheet = sheet_methods();
+    std::vector<std::size_t> added, left_out;
     for (std::size_t m : page.data.numerical_methods())
       if (std::find(sheet.begin(), sheet.end(), m) == sheet.end()) added.push_back(m);
     for (std::size_t m : sheet)
