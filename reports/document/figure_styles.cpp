@@ -28,12 +28,13 @@ std::string_view family_hue(Family f) {
   }
 }
 
-// The hue scaled towards black by the order: 1, 0.8, 0.62, 0.48, 0.38 of its brightness.
-std::string shade(std::string_view hue, int order) {
+// The hue scaled towards black by the order: 1, 0.8, 0.62, 0.48, 0.38 of its brightness; a
+// second member of a family with the same order is the hue's tint instead (halfway to white).
+std::string shade(std::string_view hue, int order, bool tint) {
   constexpr double scale[] = {1.0, 1.0, 0.8, 0.62, 0.48, 0.38};
-  const double k = scale[order];
   const auto channel = [&](int at) {
-    return static_cast<int>(std::lround(k * std::stoi(std::string(hue.substr(at, 2)), nullptr, 16)));
+    const int c = std::stoi(std::string(hue.substr(at, 2)), nullptr, 16);
+    return static_cast<int>(std::lround(tint ? c + 0.5 * (255 - c) : scale[order] * c));
   };
   return fmt::format("#{:02X}{:02X}{:02X}", channel(1), channel(3), channel(5));
 }
@@ -54,34 +55,39 @@ std::string solver_group(std::string_view solver) {
   return p && p->implicit ? std::string(p->lib->group) : "adaptive explicit";
 }
 
+// Point by the order: filled circle, square, triangle, diamond, triangle down (gnuplot's filled
+// points; open is the filled point - 1); the exact flow (order 0) a star. Dash: the (order + family)-th of six patterns, so the
+// members of a family differ in dash as in point, and two methods of one order from different
+// families (a panel of the sheet's methods, the explicit fixed-step ones) differ in dash: no two
+// methods share both point and dash, and a panel reads in grey scale, with lines or with points.
 MethodStyle method_style(std::size_t method) {
+  constexpr int points[] = {3, 7, 5, 9, 13, 11};
+  constexpr std::string_view dashes[] = {"1", "2", "4", "3", "5", "(8,3,2,3,2,3)"};
+  constexpr int kDashes = 6;
   const MethodInfo& info = method_info(method);
-  // by order: filled circle, square, triangle, diamond, triangle down; solid, dashed, dash-dot,
-  // dotted, dash-dot-dot
-  constexpr int points[] = {7, 7, 5, 9, 13, 11}, dashes[] = {1, 1, 2, 4, 3, 5};
   // order 0 is the exact flow's; a method that claims none (PBD) is styled as a first-order one
   const auto order_of = [](const MethodInfo& i) { return std::clamp(i.exact_flow ? 0 : std::max(i.order, 1), 0, 5); };
+  const auto dash_of = [&](const MethodInfo& i) { return (order_of(i) + static_cast<int>(i.family)) % kDashes; };
   const int o = order_of(info);
   // A method after another of the same family and order (Baraff-Witkin beside implicit Euler, PBD
-  // beside XPBD, a plug-in's: steplab_add_executable) gets the open point (gnuplot's filled
-  // point - 1) and the first dash no other member of its family has by its order.
+  // beside XPBD, a plug-in's: steplab_add_executable) gets the open point, its hue's tint and the
+  // first dash no other member of its family has.
   bool shares = false;
-  std::array<bool, 7> used{};
+  std::array<bool, kDashes> used{};
   for (std::size_t m = 0; m < method_count(); ++m)
     if (m != method && method_info(m).family == info.family) {
-      used[static_cast<std::size_t>(dashes[order_of(method_info(m))])] = true;
+      used[static_cast<std::size_t>(dash_of(method_info(m)))] = true;
       shares = shares || (m < method && order_of(method_info(m)) == o);
     }
-  if (shares) {
-    int dash = 6;
-    for (int d : {1, 2, 4, 3, 5, 6})
-      if (!used[static_cast<std::size_t>(d)]) {
-        dash = d;
+  int dash = dash_of(info);
+  if (shares)
+    for (int d = 0; d < kDashes; ++d)
+      if (!used[static_cast<std::size_t>((dash + d) % kDashes)]) {
+        dash = (dash + d) % kDashes;
         break;
       }
-    return {shade(family_hue(info.family), std::max(o, 1)), points[o] - 1, dash};
-  }
-  return {shade(family_hue(info.family), std::max(o, 1)), points[o], dashes[o]};
+  return {shade(family_hue(info.family), std::max(o, 1), shares), shares ? points[o] - 1 : points[o],
+          std::string(dashes[dash])};
 }
 
 std::string styles_gp() {
@@ -117,6 +123,19 @@ std::string styles_gp() {
          "sprintf(\"set terminal %s enhanced size 1100,%d font ',12'%s\", format eq \"svg\" ? \"svg\" : \"pngcairo\", int(h), "
          "format eq \"svg\" ? \" background rgb 'white'\" : \"\")\n";
   out += "kfont = format eq \"pdf\" ? \",8\" : \",11\"  # the keys and labels\n";
+  // The figure rules' ticks (docs/design.md): at most six labelled ones an axis. Over [lo, hi]
+  // a step s puts at most (hi - lo)/s + 1 labels: on a log axis every ceil(decades / 5)-th decade
+  // (a minor tick at the others), on a linear one the least of 1, 2, 2.5, 5 x 10^p at least
+  // (hi - lo)/5. A script that lets gnuplot pick a range draws its panels twice: pass 1 into a
+  // table (nothing drawn; `eval keep_ranges(k)` after panel k's plot keeps the ranges gnuplot
+  // picked), pass 2 for real (`eval tics("y", k, log)` before it fixes that range and its ticks).
+  out += "log_step(lo, hi) = hi > lo ? ceil(log10(hi / lo) / 5.0 - 1e-9) : 1\n"
+         "nice(s) = s > 0 ? (tp = 10**floor(log10(s)), ts = s / tp, (ts <= 1 ? 1 : ts <= 2 ? 2 : ts <= 2.5 ? 2.5 : ts <= 5 ? 5 : 10) * tp) : 1\n"
+         "axis_tics(a, lo, hi, log) = sprintf(\"set %srange [%.17g:%.17g]; \", a, lo, hi) . (log ? "
+         "sprintf(\"set %stics 1e%d; set m%stics %s\", a, log_step(lo, hi), a, log_step(lo, hi) > 1 ? sprintf(\"%d\", log_step(lo, hi)) : \"default\") : "
+         "sprintf(\"set %stics %.17g\", a, nice((hi - lo) / 5.0)))\n"
+         "keep_ranges(k) = sprintf(\"xlo_%d = GPVAL_X_MIN; xhi_%d = GPVAL_X_MAX; ylo_%d = GPVAL_Y_MIN; yhi_%d = GPVAL_Y_MAX\", k, k, k, k)\n"
+         "tics(a, k, log) = axis_tics(a, value(sprintf(\"%slo_%d\", a, k)), value(sprintf(\"%shi_%d\", a, k)), log)\n";
   return out;
 }
 

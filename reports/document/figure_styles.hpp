@@ -13,12 +13,12 @@ namespace steplab {
 struct MethodStyle {
   std::string colour;  // "#rrggbb"
   int point;           // gnuplot point type
-  int dash;            // gnuplot dash type
+  std::string dash;    // gnuplot dash type: a number (1..5) or a pattern "(8,3,2,3)"
 };
 
 // Colour: the family's hue from the Okabe-Ito palette (told apart with any colour vision),
-// darker with the order. Point and dash: by the order, so the members of one family panel differ
-// in all three, and in grey scale in point, dash and grey level.
+// darker with the order. Point by the order, dash by order and family: the methods of one panel
+// differ in colour and in point and dash, whatever families the panel mixes.
 MethodStyle method_style(std::size_t method);
 
 // A solver's colour on the crossover map: a method's family hue; CVODE sky blue, ARKODE's DIRK

@@ -16,6 +16,7 @@
 #include "analysis/kernel/parallel.hpp"
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/studies/defaults.hpp"
+#include "analysis/peers/peers.hpp"
 #include "reports/document/claims.hpp"
 #include "reports/document/figure_styles.hpp"
 #include "reports/data/output.hpp"
@@ -88,6 +89,32 @@ std::vector<Panel> family_panels(const std::vector<std::size_t>& methods, const 
   return out;
 }
 
+std::vector<Panel> solver_panels(const std::vector<std::size_t>& methods, const std::vector<std::string>& adaptive,
+                                 const std::function<bool(std::string_view)>& drawn) {
+  Panel explicit_{"explicit Runge-Kutta and Adams-Bashforth", {}}, splitting{"symplectic splitting", {}},
+      implicit_{"implicit methods", {}}, explicit_adaptive{"explicit adaptive solvers", {}},
+      implicit_adaptive{"implicit adaptive solvers", {}};
+  for (std::size_t m : methods)
+    if (drawn(name(m)))
+      (method_info(m).implicit ? implicit_ : method_info(m).family == Family::Splitting ? splitting : explicit_)
+          .solvers.push_back(name(m));
+  for (const std::string& a : adaptive) {
+    const PeerInfo* p = find_peer(a);
+    if (drawn(a)) (p && p->implicit ? implicit_adaptive : explicit_adaptive).solvers.push_back(a);
+  }
+  std::vector<Panel> out;
+  for (Panel* p : {&explicit_, &splitting, &implicit_, &explicit_adaptive, &implicit_adaptive}) {
+    // a group of more than six (a config's longer list) in panels of at most six, "(1 of 2)" ...
+    const std::size_t n = p->solvers.size(), parts = (n + 5) / 6;
+    for (std::size_t k = 0; k < parts; ++k) {
+      Panel part{parts > 1 ? fmt::format("{} ({} of {})", p->title, k + 1, parts) : p->title, {}};
+      for (std::size_t i = k * n / parts; i < (k + 1) * n / parts; ++i) part.solvers.push_back(p->solvers[i]);
+      out.push_back(std::move(part));
+    }
+  }
+  return out;
+}
+
 std::string uncovered(const ReportConfig& c, std::initializer_list<std::size_t> scenes) {
   std::vector<std::string> missing;
   for (std::size_t s : scenes)
@@ -134,7 +161,7 @@ Report::~Report() = default;
 std::vector<std::string> figure_order(const Report& r) {
   std::vector<std::string> out;
   for (const auto& s : r.sections)
-    for (const FigureSpec& f : s->figures(r.data)) out.push_back(f.script);
+    for (const FigureSpec& f : s->figures(r.data)) out.push_back(f.key());
   return out;
 }
 

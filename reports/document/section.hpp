@@ -10,6 +10,7 @@
 #include <initializer_list>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "reports/document/report.hpp"
@@ -45,6 +46,8 @@ struct FigureSpec {
   std::string script;
   std::string vars;
   std::vector<Panel> panels;
+  std::string name = {};  // a second figure of one script: its own name (fig<n>_<name>), else the script's
+  const std::string& key() const { return name.empty() ? script : name; }
 };
 
 // A panel per family of the report (kReportFamilies), each with its members among `methods` that
@@ -53,6 +56,12 @@ struct FigureSpec {
 // as well, and alone there it would be drawn twice.
 std::vector<Panel> family_panels(const std::vector<std::size_t>& methods,
                                  const std::function<bool(std::size_t)>& drawn = nullptr);
+// Panels of at most six curves over fixed-step methods and adaptive solvers, those `drawn`
+// accepts: the explicit Runge-Kutta and Adams-Bashforth methods, the symplectic splittings, the
+// implicit methods, the explicit adaptive solvers, the implicit ones (a group of more than six
+// split in order).
+std::vector<Panel> solver_panels(const std::vector<std::size_t>& methods, const std::vector<std::string>& adaptive,
+                                 const std::function<bool(std::string_view)>& drawn);
 
 // What a section's Markdown may use: the shared data and findings, and the figure numbering.
 // The report draws every figure its sections list (Section::figures), numbered in that order:

@@ -216,21 +216,25 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force, 
     int number = 0;
     for (const auto& s : report.sections)
       for (const FigureSpec& fig : s->figures(d)) {
-        const std::string file = figure_file(++number, fig.script);
+        const std::string file = figure_file(++number, fig.key());
         const auto gp = std::find_if(gnuplot_scripts.begin(), gnuplot_scripts.end(), [&](const GnuplotScript& g) { return g.name == fig.script; });
         if (gp == gnuplot_scripts.end()) throw std::logic_error("no gnuplot script " + fig.script);
         DataDir(staging / "figures").write(fig.script + ".gp", std::string(gp->text));
         for (const char* fmt_name : {"png", "svg", "pdf"})
           drawings.push_back({fig.script, fmt_name, fmt::format(
-              "cd '{}' && gnuplot -e \"datadir='../data/{}'; outfile='{}.{}'; format='{}'; methods='{}'; numeric='{}'; "
+              "gnuplot -e \"datadir='../data/{}'; outfile='{}.{}'; format='{}'; methods='{}'; numeric='{}'; "
               "springdts='{}'; largedt='{}'; {}{}\" '{}.gp'",
-              (staging / "figures").string(), s->id, file, fmt_name, fmt_name, all, numeric, words(c.spring_figure_dts),
-              c.large_dt, panel_vars(fig.panels), fig.vars, fig.script)});
+              s->id, file, fmt_name, fmt_name, all, numeric, words(c.spring_figure_dts), c.large_dt,
+              panel_vars(fig.panels), fig.vars, fig.script)});
       }
+    // figures/redraw.sh: each drawing's command, to redraw a figure after editing its script
+    std::string redraw = "#!/bin/sh\n# Redraws every figure from data/ (run it in figures/ after editing a script).\nset -e\n";
+    for (const Drawing& g : drawings) redraw += g.cmd + "\n";
+    DataDir(staging / "figures").write("redraw.sh", redraw);
     parallel_for(drawings.size(), Workers{d.workers.threads}, [&](std::size_t i) {
       const Drawing& g = drawings[i];
       const fs::path log = staging / "figures" / fmt::format("{}.{}.{}.log", g.script, g.format, i);
-      if (run_tool(g.cmd, log) != 0)
+      if (run_tool(fmt::format("cd '{}' && {}", (staging / "figures").string(), g.cmd), log) != 0)
         throw ToolFailed(fmt::format("gnuplot failed on {}.gp ({}):{}\nthe script, its data and gnuplot's log are kept in "
                                      "{} (the next report into {} removes them)",
                                      g.script, g.format, tool_errors(log), (staging / "figures").string(), out.string()));

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <set>
 #include <string>
-#include <tuple>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -26,11 +26,17 @@ std::vector<std::size_t> every_method() {
   return all;
 }
 
-TEST(FigureStyles, EachMethodHasItsOwn) {
-  std::set<std::tuple<std::string, int, int>> seen;
+// Every method its own colour, and its own pair of point and dash: any two methods drawn in one
+// panel (a family's, the sheet's four, the explicit fixed-step ones) differ in colour and in point
+// and dash, as the figure rules ask (docs/design.md; tests/figure_rules_check.py checks the drawn
+// figures).
+TEST(FigureStyles, EachMethodHasItsOwnColourAndItsOwnPointAndDash) {
+  std::set<std::string> colours;
+  std::set<std::pair<int, std::string>> marks;
   for (std::size_t m = 0; m < method_count(); ++m) {
     const MethodStyle s = method_style(m);
-    EXPECT_TRUE(seen.insert({s.colour, s.point, s.dash}).second) << name(m);
+    EXPECT_TRUE(colours.insert(s.colour).second) << name(m) << " " << s.colour;
+    EXPECT_TRUE(marks.insert({s.point, s.dash}).second) << name(m) << " " << s.point << " " << s.dash;
   }
 }
 
@@ -38,14 +44,27 @@ TEST(FigureStyles, EachMethodHasItsOwn) {
 // methods share a point type or a dash type, so the panel reads in grey scale.
 TEST(FigureStyles, APanelsMethodsDifferInPointAndDash) {
   for (Family f : kReportFamilies) {
-    std::set<int> points, dashes;
+    std::set<int> points;
+    std::set<std::string> dashes;
     const auto members = family_members(every_method(), f);
-    EXPECT_LE(members.size(), 6u) << to_string(f);  // at most about six curves a panel
+    EXPECT_LE(members.size(), 6u) << to_string(f);  // at most six curves a panel
     for (std::size_t m : members) {
       EXPECT_TRUE(points.insert(method_style(m).point).second) << name(m) << " in " << to_string(f);
       EXPECT_TRUE(dashes.insert(method_style(m).dash).second) << name(m) << " in " << to_string(f);
     }
   }
+}
+
+// The sheet's four methods, drawn in one panel: each its own point or dash (three are first order).
+TEST(FigureStyles, TheSheetsMethodsDifferInPointOrDash) {
+  std::set<std::pair<int, std::string>> marks;
+  for (const char* m : {"explicit_euler", "symplectic_euler", "explicit_midpoint", "implicit_euler"}) {
+    const MethodStyle s = method_style(*find_method(m));
+    EXPECT_TRUE(marks.insert({s.point, s.dash}).second) << m;
+  }
+  // the same order, the same family: the open point and the hue's tint
+  EXPECT_EQ(method_style(*find_method("baraff_witkin")).point, method_style(*find_method("implicit_euler")).point - 1);
+  EXPECT_EQ(method_style(*find_method("baraff_witkin")).colour, "#80CFB9");  // (00, 9E, 73) halfway to white
 }
 
 // The family hues are Okabe-Ito's; the first member of a family carries the hue itself.

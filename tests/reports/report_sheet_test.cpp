@@ -228,6 +228,12 @@ TEST(ReportPages, DefaultWithinItsBudget) {
   const std::string check = std::string("python3 ") + STEPLAB_SOURCE_DIR + "/tests/atlas_browser_check.py " + dir.path("report") + " " +
                             shot + " > " + dir.path("atlas.txt") + " 2>&1";
   EXPECT_EQ(std::system(check.c_str()), 0) << slurp(dir.path("atlas.txt"));
+  // Every figure by the written figure rules (docs/design.md), read from what gnuplot drew
+  // (tests/figure_rules_check.py: panels, curves a panel and their styles, ticks, text size, the
+  // hand-out's captions).
+  const std::string rules = std::string("python3 ") + STEPLAB_SOURCE_DIR + "/tests/figure_rules_check.py " + dir.path("report") +
+                            " > " + dir.path("rules.txt") + " 2>&1";
+  EXPECT_EQ(std::system(rules.c_str()), 0) << slurp(dir.path("rules.txt"));
 }
 
 TEST(ReportScenes, ASectionThatNeedsASceneNotChosenIsLeftOutWithOneLine) {

@@ -11,11 +11,17 @@ set grid lc rgb "#dddddd"
 set key below horizontal samplen 1.5 spacing 0.9 font kfont noenhanced  # method names have underscores
 set xlabel "damping (kg/s)"
 set ylabel "d ln E / dt (1/s)"
-set multiplot layout nrow, ncol
-do for [f=1:npanel] {
-  ms = value("panel".f)
-  set title value("ptitle".f) noenhanced
-  plot for [m in ms] datadir."/predicted_".m.".dat" using 1:2 with lines lt mlt(m) notitle, \
-       for [m in ms] datadir."/sweep_".m.".dat" using 1:2 with points lt mlt(m) title m
+# drawn twice: into a table for the ranges gnuplot picks, then with at most six ticks an axis
+do for [pass=1:2] {
+  if (pass == 1) { set table $ranges } else { set multiplot layout nrow, ncol }
+  do for [f=1:npanel] {
+    ms = value("panel".f)
+    set title value("ptitle".f) noenhanced
+    if (pass == 2) { eval tics("x", f, 0); eval tics("y", f, 0) }
+    plot for [m in ms] datadir."/predicted_".m.".dat" using 1:2 with lines lt mlt(m) notitle, \
+         for [m in ms] datadir."/sweep_".m.".dat" using 1:2 with points lt mlt(m) title m
+    if (pass == 1) { eval keep_ranges(f) }
+  }
+  if (pass == 1) { unset table; set autoscale }
 }
 unset multiplot

@@ -10,7 +10,7 @@ eval terminal(322 * nrow + 60, 4.0 * nrow + 0.6)
 set output outfile
 set grid lc rgb "#dddddd"
 set key below horizontal samplen 1.5 spacing 0.9 font kfont noenhanced  # method names have underscores
-set yrange [-reach:reach]
+eval axis_tics("y", -reach, reach, 0)
 set format y "%.2g"
 set multiplot layout nrow, ncol
 do for [f=1:npanel] {

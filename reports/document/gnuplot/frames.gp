@@ -15,4 +15,9 @@ set xlabel xname
 set ylabel "largest error over the frames"
 set title ptitle1 noenhanced
 ms = panel1
-plot for [m in ms] datadir."/frames_".m.".dat" using xcol:5 with linespoints lt mlt(m) title m
+# drawn twice: into a table for the ranges gnuplot picks, then with at most six ticks an axis
+do for [pass=1:2] {
+  if (pass == 1) { set table $ranges } else { eval tics("x", 1, 1); eval tics("y", 1, 1) }
+  plot for [m in ms] datadir."/frames_".m.".dat" using xcol:5 with linespoints lt mlt(m) title m
+  if (pass == 1) { unset table; eval keep_ranges(1) }
+}

@@ -14,10 +14,16 @@ set logscale xy
 set format y "10^{%L}"
 set xlabel "masses N"
 set ylabel costname
-set multiplot layout nrow,ncol
-do for [f=1:npanel] {
-  ms = value("panel".f)
-  set title value("ptitle".f) noenhanced
-  plot for [m in ms] datadir."/scaling_".m.".dat" using 1:2 with linespoints lt mlt(m) title m
+# drawn twice: into a table for the ranges gnuplot picks, then with at most six ticks an axis
+do for [pass=1:2] {
+  if (pass == 1) { set table $ranges } else { set multiplot layout nrow,ncol }
+  do for [f=1:npanel] {
+    ms = value("panel".f)
+    set title value("ptitle".f) noenhanced
+    if (pass == 2) { eval tics("x", f, 1); eval tics("y", f, 1) }
+    plot for [m in ms] datadir."/scaling_".m.".dat" using 1:2 with linespoints lt mlt(m) title m
+    if (pass == 1) { eval keep_ranges(f) }
+  }
+  if (pass == 1) { unset table; set autoscale }
 }
 unset multiplot

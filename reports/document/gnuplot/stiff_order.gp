@@ -13,8 +13,10 @@ set grid lc rgb "#dddddd"
 set key below horizontal samplen 1.5 spacing 0.9 font kfont noenhanced  # method names have underscores
 set logscale x
 set format x "10^{%L}"
-set xrange [kmin : kmax]
+eval axis_tics("x", kmin, kmax, 1)
 set yrange [0 : 6.5]
+set ytics 2
+set mytics 2
 set xlabel "stiffness k"
 set ylabel "fitted order"
 set multiplot layout nrow,ncol

@@ -24,7 +24,13 @@ unset key
 set title ptitle2 noenhanced
 set ylabel "E/E0"
 set autoscale y
-set ytics autofreq
+# E/E0's range: every method's, for at most six ticks on it
+elo = 1e300; ehi = -1e300
+do for [m in ms] {
+  stats datadir."/triangle_".m.".dat" using 3 nooutput
+  elo = STATS_min < elo ? STATS_min : elo; ehi = STATS_max > ehi ? STATS_max : ehi
+}
+eval axis_tics("y", nice((ehi - elo) / 5.0) * floor(elo / nice((ehi - elo) / 5.0)), nice((ehi - elo) / 5.0) * ceil(ehi / nice((ehi - elo) / 5.0)), 0)
 plot for [j=1:words(ms)] datadir."/triangle_".word(ms, j).".dat" using 1:3 with lines lt mlt(word(ms, j)) lw 1.2 notitle, \
      for [j=1:words(ms)] datadir."/triangle_".word(ms, j).".dat" using 1:3 every nth::((j - 1) * nth / words(ms)) with points lt mlt(word(ms, j)) notitle
 unset multiplot

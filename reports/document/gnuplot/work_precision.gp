@@ -19,8 +19,8 @@ set ylabel "largest error (m)"
 set multiplot layout nrow,ncol
 do for [k=1:npanel] {
   ms = value("panel".k)
-  set xrange [value("xlo".k) : value("xhi".k)]
-  set yrange [value("ylo".k) : value("yhi".k)]
+  eval axis_tics("x", value("xlo".k), value("xhi".k), 1)
+  eval axis_tics("y", value("ylo".k), value("yhi".k), 1)
   set title value("ptitle".k) noenhanced
   plot for [m in ms] datadir."/wp_".value("pscene".k)."_".m.".dat" using xcol:2 with linespoints lt mlt(m) title m
 }

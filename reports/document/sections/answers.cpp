@@ -239,7 +239,10 @@ std::string cost_answer(const Page& page) {
       }
     }
   }
-  md += fmt::format("{}.\n", see(page, "work_precision"));
+  std::vector<std::string> figures;  // a work-precision figure per scene
+  for (const SceneWork& w : page.data.work.scenes)
+    if (const int n = page.number("work_precision_" + std::string(scene_name(w.scene)))) figures.push_back(std::to_string(n));
+  md += figures.empty() ? ".\n" : fmt::format(" (figure{} {}).\n", figures.size() > 1 ? "s" : "", and_list(figures));
   if (page.ledger)
     for (const auto& [w, win] : wins)
       claim_cheapest(*page.ledger, page.data, fmt::format("answers.cheapest.{}", scene_name(w->scene)), "answers", md, *w, level, timed, win);

@@ -92,10 +92,13 @@ class Collision : public Section {
   static std::string triangle(Page& page) {
     std::string md = triangle_sentence(page.data, page.ledger);
     if (page.has("triangle"))
-      md += page.figure("triangle", fmt::format("The falling triangle at dt = {} with the sheet's methods: its lowest corner against "
-                                                "the ground y = -1 (left) and E/E0 (right) over t; each contact dips the corner below "
-                                                "the ground by the penetration above, and the energy ends apart by the method",
-                                                page.data.collision.config.triangle_dt));
+      if (const auto [low, high] = energy_extremes(page.data.collision); low)
+        md += page.figure("triangle", fmt::format("The falling triangle at dt = {} with the sheet's methods: its lowest corner "
+                                                  "against the ground y = -1 (left) and E/E0 (right) over t; each contact dips the "
+                                                  "corner below the ground by the penetration above. E/E0 ends at {:.3g} with `{}` "
+                                                  "and at {:.3g} with `{}`.",
+                                                  page.data.collision.config.triangle_dt, low->energy_ratio_final,
+                                                  name(low->method), high->energy_ratio_final, name(high->method)));
     return md;
   }
 
@@ -157,6 +160,17 @@ class Collision : public Section {
 
   // The falling triangle (the slides' problem 3): how deep it sinks into the ground and what
   // becomes of its energy, over the methods.
+  // The triangle's runs that ended well with the least and the most energy at the end (null if none).
+  static std::pair<const CollisionRun*, const CollisionRun*> energy_extremes(const CollisionResult& r) {
+    const CollisionRun *low = nullptr, *high = nullptr;
+    for (const CollisionRun& run : r.triangle)
+      if (run.status == RunStatus::Ok) {
+        if (!low || run.energy_ratio_final < low->energy_ratio_final) low = &run;
+        if (!high || run.energy_ratio_final > high->energy_ratio_final) high = &run;
+      }
+    return {low, high};
+  }
+
   static std::string triangle_sentence(const ReportData& d, Ledger* l) {
     const CollisionResult& r = d.collision;
     const CollisionRun *shallow = nullptr, *deep = nullptr;
@@ -170,12 +184,7 @@ class Collision : public Section {
       if (!deep || run.max_penetration > deep->max_penetration) deep = &run;
     }
     if (!shallow) return {};
-    const CollisionRun *low = shallow, *high = shallow;  // the energy at the end, least and most
-    for (const CollisionRun& run : r.triangle)
-      if (run.status == RunStatus::Ok) {
-        if (run.energy_ratio_final < low->energy_ratio_final) low = &run;
-        if (run.energy_ratio_final > high->energy_ratio_final) high = &run;
-      }
+    const auto [low, high] = energy_extremes(r);
     std::string md = fmt::format(
         "The falling triangle ({}; the slides' problem 3) at dt {} over {} s: its deepest point goes {:.3g} m into the ground "
         "with `{}` and {:.3g} m with `{}`; E/E0 at the end is {:.3g} with `{}` and {:.3g} with `{}`",

@@ -45,7 +45,9 @@ class Convergence : public Section {
       dat.write("conv_" + name(m) + ".dat", s);
       dat.write("fit_" + name(m) + ".dat", line);
     }
-    // reference slopes 1, 2, 4 over the sweep's largest decade, under the lowest fitted curve there
+    // reference slopes 1, 2, 4 from the sweep's largest dt under the lowest fitted curve there, each
+    // over two decades or the four decades of error it falls (so their left ends, where the figure
+    // labels them, lie apart)
     double anchor = INFINITY;
     const double top = conv.dts.front();
     for (const ConvergenceFit& f : conv.fits)
@@ -54,7 +56,7 @@ class Convergence : public Section {
     std::string ref;
     for (int p : {1, 2, 4}) {
       ref += fmt::format("# slope {}\n", p);
-      for (double x : {top / 10, top}) ref += num(x) + " " + num(0.1 * anchor * std::pow(x / top, p)) + "\n";
+      for (double x : {top / std::pow(10.0, std::min(2.0, 4.0 / p)), top}) ref += num(x) + " " + num(0.1 * anchor * std::pow(x / top, p)) + "\n";
       ref += "\n\n";
     }
     dat.write("reference_slopes.dat", ref);
@@ -107,9 +109,17 @@ class Convergence : public Section {
       md += scene_fits(r, page.ledger);
     }
     const std::string on = shown.config.scene == c.oscillator.scene ? "the spring" : std::string(scene_kernel(shown.config.scene).title);
-    if (page.has("convergence"))
+    const ConvergenceFit *flat = nullptr, *steep = nullptr;  // the shallowest and the steepest fitted line
+    for (const ConvergenceFit& f : shown.fits)
+      if (f.fit.fitted && !method_info(f.method).exact_flow) {
+        if (!flat || f.fit.order < flat->fit.order) flat = &f;
+        if (!steep || f.fit.order > steep->fit.order) steep = &f;
+      }
+    if (page.has("convergence") && flat)
       md += page.figure("convergence", fmt::format("Error against dt on {}, a panel per family: least-squares lines over the "
-                                                   "fitted window (solid), slopes 1, 2 and 4 for reference (grey, dashed)", on));
+                                                   "fitted window (solid), slopes 1, 2 and 4 for reference (grey, dashed). The "
+                                                   "fitted orders run from {:.2f} (`{}`) to {:.2f} (`{}`).",
+                                                   on, flat->fit.order, name(flat->method), steep->fit.order, name(steep->method)));
     return md;
   }
 

@@ -60,13 +60,13 @@ class Cost : public Section {
       }
   }
 
-  // A row per scene, common axes along it; three panels a row: the explicit fixed-step methods, the
-  // implicit ones, the adaptive solvers (each of them with a point to draw).
+  // A figure per scene, common axes in it; its panels of at most six solvers (solver_panels), each
+  // of them with a point to draw.
   std::vector<FigureSpec> figures(const ReportData& d) const override {
     const bool timed = d.config.timing;
-    std::string vars = fmt::format("xcol={}; xname='{}'; ", timed ? 3 : 4, timed ? "run time (s)" : "force evaluations");
-    std::vector<Panel> panels;
+    std::vector<FigureSpec> out;
     for (std::size_t k = 0; k < d.work.scenes.size(); ++k) {
+      std::string vars = fmt::format("xcol={}; xname='{}'; ", timed ? 3 : 4, timed ? "run time (s)" : "force evaluations");
       const SceneWork& w = d.work.scenes[k];
       double x0 = INFINITY, x1 = 0, y0 = INFINITY, y1 = 0;
       for (const WorkPoint& p : w.points) {
@@ -79,21 +79,13 @@ class Cost : public Section {
         return std::any_of(w.points.begin(), w.points.end(),
                            [&](const WorkPoint& p) { return p.method == solver && p.status == RunStatus::Ok && p.error > 0; });
       };
-      Panel explicit_{scene_word(w) + ": explicit methods", {}}, implicit_{scene_word(w) + ": implicit methods", {}},
-          adaptive{scene_word(w) + ": adaptive solvers", {}};
-      for (std::size_t m : d.work.config.methods)
-        if (has_points(name(m))) (method_info(m).implicit ? implicit_ : explicit_).solvers.push_back(name(m));
-      for (const std::string& a : d.work.config.adaptive)
-        if (has_points(a)) adaptive.solvers.push_back(a);
-      for (Panel* p : {&explicit_, &implicit_, &adaptive})
-        if (!p->solvers.empty()) {
-          panels.push_back(std::move(*p));
-          vars += fmt::format("pscene{0}='{1}'; xlo{0}={2}; xhi{0}={3}; ylo{0}={4}; yhi{0}={5}; ", panels.size(), scene_word(w),
-                              num(x0 / 1.5), num(x1 * 1.5), num(y0 / 3), num(std::min(y1 * 3, 1e3)));
-        }
+      std::vector<Panel> panels = solver_panels(d.work.config.methods, d.work.config.adaptive, has_points);
+      for (std::size_t p = 1; p <= panels.size(); ++p)
+        vars += fmt::format("pscene{0}='{1}'; xlo{0}={2}; xhi{0}={3}; ylo{0}={4}; yhi{0}={5}; ", p, scene_word(w), num(x0 / 1.5),
+                            num(x1 * 1.5), num(y0 / 3), num(std::min(y1 * 3, 1e3)));
+      if (!panels.empty()) out.push_back({"work_precision", vars, std::move(panels), "work_precision_" + scene_word(w)});
     }
-    if (panels.empty()) return {};
-    return {{"work_precision", vars, std::move(panels)}};
+    return out;
   }
 
   std::string markdown(Page& page) const override {
@@ -115,10 +107,13 @@ class Cost : public Section {
                         scene_word(stiff), params_text(stiff.scene, stiff.params), fast_over_slow(stiff));
     }
     md += cheapest_table(page, timed);
-    if (page.has("work_precision"))
-      md += page.figure("work_precision", fmt::format("Work against precision: the largest error along a run against its {}, a "
-                                                      "row per scene; the explicit fixed-step methods, the implicit ones and the "
-                                                      "adaptive solvers in a panel each", timed ? "run time" : "force evaluations"));
+    for (const SceneWork& w : r.scenes)
+      if (page.has("work_precision_" + scene_word(w)))
+        md += page.figure("work_precision_" + scene_word(w),
+                          fmt::format("Work against precision on the {}: the largest error along a run against its {}; the "
+                                      "explicit fixed-step methods, the symplectic splittings, the implicit methods and the "
+                                      "adaptive solvers in panels of at most six",
+                                      scene_word(w), timed ? "run time" : "force evaluations"));
     md += peer_table(page, timed) + dopri5_sentences(page, timed);
     if (r.stiff >= 0) md += limits_text(r, page.ledger) + stiffness_text(page, timed);
     return md;

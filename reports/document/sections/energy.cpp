@@ -171,8 +171,8 @@ class Energy : public Section {
       for (const EnergyBehaviour& b : e)
         if (b.method == d.methods[i]) parts.push_back(fmt::format("`{}` {}", name(b.method), to_text(b.kind)));
     return fmt::format("E/E0 of the sheet's methods at dt = {} over t = {:g} (log axis) beside the exact flow (grey): undamped "
-                       "(left) the exact E/E0 is 1, and {}; damped (right) the exact energy decays and a method's own damping "
-                       "or growth adds to it",
+                       "(left) the exact E/E0 is 1; damped (right) the exact energy decays and a method's own damping or "
+                       "growth adds to it. Undamped, {}.",
                        d.config.large_dt, d.config.energy_t_end, and_list(parts));
   }
 };

@@ -68,7 +68,7 @@ class Families : public Section {
     dat.write("ray.dat", ray);
   }
 
-  // A panel per family with a scalar stability function, each method's region filled in its colour.
+  // A panel per family with a scalar stability function, each method's region lightly filled and edged in its style.
   std::vector<FigureSpec> figures(const ReportData& d) const override {
     const auto has_region = [&](std::size_t m) {
       return std::any_of(regions_.regions.begin(), regions_.regions.end(), [&](const StabilityRegion& r) { return r.method == m; });
@@ -79,6 +79,24 @@ class Families : public Section {
     for (const StabilityRegion& r : regions_.regions)
       vars += fmt::format("rgb_{}={}; ", name(r.method), std::stoi(method_style(r.method).colour.substr(1), nullptr, 16));
     return {{"regions", vars, std::move(panels)}};
+  }
+
+  // The regions figure's sentence of what to see: along the spring's ray at `gamma`, the region left
+  // first (the least predicted dt*) and the methods whose region holds the whole ray.
+  std::string ray_sentence(const ReportData& d, double gamma) const {
+    const ThresholdRow* first = nullptr;
+    std::vector<std::size_t> whole;
+    for (const ThresholdRow& r : d.thresholds) {
+      const bool drawn = std::any_of(regions_.regions.begin(), regions_.regions.end(),
+                                     [&](const StabilityRegion& g) { return g.method == r.method; });
+      if (!drawn || r.damping != gamma) continue;
+      if (std::isinf(r.dt_theory)) whole.push_back(r.method);
+      else if (!first || r.dt_theory < first->dt_theory) first = &r;
+    }
+    std::string out;
+    if (first) out = fmt::format("The ray leaves `{}`'s region first, at dt* = {:.4g}", name(first->method), first->dt_theory);
+    if (!whole.empty()) out += fmt::format("{} stays inside the regions of {}", out.empty() ? "The ray" : ", and", method_list(whole));
+    return out.empty() ? out : out + ".";
   }
 
   std::string markdown(Page& page) const override {
@@ -104,9 +122,10 @@ class Families : public Section {
                         page.number("regions"));
       md += page.figure("regions", fmt::format("Stability regions in z = h lambda: where |R(z)| <= 1 (a one-step method) or the "
                                                "root condition holds (a multistep one), from each method's own step map, each "
-                                               "filled in its colour; red line: the spring's eigenvalue ray at damping {}; "
+                                               "lightly filled and edged in its colour and dash; red line with crosses: the "
+                                               "spring's eigenvalue ray at damping {}; "
                                                "points: where it leaves a region at the predicted dt* and where it enters it "
-                                               "again", gamma));
+                                               "again. {}", gamma, ray_sentence(d, gamma)));
     }
     md += by_hand(d, page.findings, page.ledger);
     md += splitting(d, page.findings, page.ledger);

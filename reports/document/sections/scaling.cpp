@@ -295,7 +295,7 @@ class ScalingSection : public Section {
     }
   }
 
-  // A panel per family and one of the adaptive solvers, each of the solvers that reached the target at some N.
+  // Panels of at most six solvers (solver_panels), each of those that reached the target at some N.
   std::vector<FigureSpec> figures(const ReportData& d) const override {
     std::vector<FigureSpec> out;
     if (!d.scaling.empty()) {
@@ -303,11 +303,7 @@ class ScalingSection : public Section {
       const auto reached = [&](std::string_view solver) {
         return std::any_of(first.rows.begin(), first.rows.end(), [&](const ScalingRow& w) { return w.solver == solver && w.reached(); });
       };
-      std::vector<Panel> panels = family_panels(first.config.methods, [&](std::size_t m) { return reached(name(m)); });
-      Panel adaptive{"adaptive solvers", {}};
-      for (const std::string& a : first.config.adaptive)
-        if (reached(a)) adaptive.solvers.push_back(a);
-      if (!adaptive.solvers.empty()) panels.push_back(std::move(adaptive));
+      std::vector<Panel> panels = solver_panels(first.config.methods, first.config.adaptive, reached);
       if (!panels.empty())
         out.push_back({"scaling", fmt::format("costname='{}'", first.config.timing ? "run time (s)" : "force evaluations x N"),
                        std::move(panels)});
@@ -323,8 +319,10 @@ class ScalingSection : public Section {
       const ScalingResult& r = d.scaling[i];
       md += scene_paragraph(r, i == 0) + exponents_table(r, page.ledger) + findings(r, page.ledger);
       if (i == 0 && page.has("scaling"))
-        md += page.figure("scaling", fmt::format("{}: the whole run's cost at the target error against N, a panel per family and "
-                                                 "one for the adaptive solvers", scene_kernel(scene_index(r.config.scene)).title));
+        md += page.figure("scaling", fmt::format("{}: the whole run's cost at the target error against N; the explicit "
+                                                 "fixed-step methods, the symplectic splittings, the implicit methods and the "
+                                                 "adaptive solvers in panels of at most six",
+                                                 scene_kernel(scene_index(r.config.scene)).title));
     }
     if (d.scaling_map) md += map_markdown(*d.scaling_map, page);
     return md;

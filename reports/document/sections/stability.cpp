@@ -120,7 +120,8 @@ class Stability : public Section {
     if (page.has("maps"))
       md += page.figure("maps", "The edge of stability over (dt, damping): the measured dt* of each damping's row of runs "
                                 "(points: the largest step of the grid with every smaller one stable), the predicted one "
-                                "(lines), and where a row is stable again further out (open points), a panel per family");
+                                "(lines), and where a row is stable again further out (open points), a panel per family. "
+                                + fmt::format("{} of the {} cells disagree with the prediction.", disagree, cells));
     return md;
   }
 };
