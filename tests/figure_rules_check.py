@@ -11,8 +11,8 @@ gnuplot_plot_<k><panel letter>):
   - two curves of a panel differ in colour, and in dash or marker (as their key samples draw them);
   - at most 6 labelled ticks an axis, and on an axis labelled in powers of ten only whole decades;
   - no text under 8 pt in print (9.6 px on the 1100 px wide screen figure, whose 12 px is 10 pt).
-For each figure of the hand-out (report.md): the caption ends with a sentence that carries a
-number or a method (`name`), the one computed sentence of what to see.
+For each figure of report.md and atlas.md: the caption ends with a sentence that carries a number
+or a method (`name`), the one computed sentence of what to see.
 Prints one line per broken rule and exits 1 if there is any.
 """
 import pathlib
@@ -121,10 +121,10 @@ def check_svg(path, problems):
             break
 
 
-def check_captions(atlas, problems):
-    for m in re.finditer(r"^!\[(Figure \d+): (.*)\]\((figures/[^)]*)\)", atlas, re.M):
+def check_captions(markdown, problems):
+    for m in re.finditer(r"^!\[(Figure \d+): (.*)\]\((figures/[^)]*)\)", markdown, re.M):
         caption = m.group(2)
-        sentences = [s for s in re.split(r"(?<=[.;])\s+(?=[A-Z`])", caption) if s]
+        sentences = [s for s in re.split(r"(?<=[.;])\s+(?=[A-Z`0-9])", caption) if s]
         last = sentences[-1] if len(sentences) > 1 else ""
         if not re.search(r"\d|`[a-z0-9_]+`", last):
             problems.append(f"{m.group(1)} ({m.group(3)}): the caption does not end with a computed sentence of what to see")
@@ -141,7 +141,9 @@ def main():
         problems.append(f"{root}/figures: no SVG figure")
     for svg in svgs:
         check_svg(svg, problems)
-    check_captions((root / "report.md").read_text(), problems)
+    for md in ("report.md", "atlas.md"):
+        if (root / md).exists():
+            check_captions((root / md).read_text(), problems)
     for p in problems:
         print(p)
     print(f"figure rules: {len(svgs)} figures, {len(problems)} problems")

@@ -167,6 +167,15 @@ double smallest_text_pt(const std::string& pdf, const TempDir& dir) {
 
 // The whole hand-in, as a student makes it: at most 5 pages of PDF (the bound; 5 with the
 // sheet's defaults), its figures drawn.
+// Every figure of the report in `folder` by the written figure rules (docs/design.md), read from
+// what gnuplot drew (tests/figure_rules_check.py: panels, curves a panel and their styles, ticks,
+// text size, each caption's computed sentence).
+void expect_figure_rules(const TempDir& dir, const std::string& folder) {
+  const std::string rules = std::string("python3 ") + STEPLAB_SOURCE_DIR + "/tests/figure_rules_check.py " + dir.path(folder) +
+                            " > " + dir.path("rules.txt") + " 2>&1";
+  EXPECT_EQ(std::system(rules.c_str()), 0) << slurp(dir.path("rules.txt"));
+}
+
 TEST(ReportSheet, HandInIsAtMostFivePages) {
   TempDir dir;
   const Result r = run_steplab("report --sheet --out " + dir.path("hand-in"));
@@ -187,6 +196,7 @@ TEST(ReportSheet, HandInIsAtMostFivePages) {
     if (e.path().extension() == ".pdf") {
       EXPECT_GE(smallest_text_pt(e.path().string(), dir), 7.95) << e.path();
     }
+  expect_figure_rules(dir, "hand-in");
 }
 
 // The default report within its budget (docs/design.md, "A report section"): a hand-out of at most
@@ -228,12 +238,7 @@ TEST(ReportPages, DefaultWithinItsBudget) {
   const std::string check = std::string("python3 ") + STEPLAB_SOURCE_DIR + "/tests/atlas_browser_check.py " + dir.path("report") + " " +
                             shot + " > " + dir.path("atlas.txt") + " 2>&1";
   EXPECT_EQ(std::system(check.c_str()), 0) << slurp(dir.path("atlas.txt"));
-  // Every figure by the written figure rules (docs/design.md), read from what gnuplot drew
-  // (tests/figure_rules_check.py: panels, curves a panel and their styles, ticks, text size, the
-  // hand-out's captions).
-  const std::string rules = std::string("python3 ") + STEPLAB_SOURCE_DIR + "/tests/figure_rules_check.py " + dir.path("report") +
-                            " > " + dir.path("rules.txt") + " 2>&1";
-  EXPECT_EQ(std::system(rules.c_str()), 0) << slurp(dir.path("rules.txt"));
+  expect_figure_rules(dir, "report");
 }
 
 TEST(ReportScenes, ASectionThatNeedsASceneNotChosenIsLeftOutWithOneLine) {

@@ -34,7 +34,7 @@ do for [f=1:2] {
   stats datadir."/".word(files, f).word(ms, 1).".dat" using 1 nooutput
   nth = STATS_records > 20 ? int(STATS_records / 10) : 1
   if (f == 1) { set key } else { unset key }
-  plot datadir."/sheet_exact.dat" using 1:(column(f + 1)) with lines lw 4 lc rgb "#bbbbbb" title "exact", \
+  plot datadir."/sheet_exact.dat" using 1:(column(f + 1)) with lines dt 1 lw 4 lc rgb "#bbbbbb" title "exact", \
        for [j=1:words(ms)] datadir."/".word(files, f).word(ms, j).".dat" using 1:2 with lines lt mlt(word(ms, j)) lw 1.2 notitle, \
        for [j=1:words(ms)] datadir."/".word(files, f).word(ms, j).".dat" using 1:2 every nth::((j - 1) * nth / words(ms)) with points lt mlt(word(ms, j)) notitle, \
        for [j=1:words(ms)] keyentry with linespoints lt mlt(word(ms, j)) lw 1.2 title word(ms, j)

@@ -40,7 +40,7 @@ do for [cell=1:rows * cols] {
   }
   ystep = span <= 5 ? 1 : span <= 10 ? 2 : 5
   set ytics ystep
-  plot datadir."/spring_exact.dat" using 1:2 with lines lw 4 lc rgb "#bbbbbb" title "exact", \
+  plot datadir."/spring_exact.dat" using 1:2 with lines dt 1 lw 4 lc rgb "#bbbbbb" title "exact", \
        for [j=1:words(ms)] datadir."/spring".(k-1)."_".word(ms, j).".dat" using 1:2 with lines lt mlt(word(ms, j)) lw 1.2 notitle, \
        for [j=1:words(ms)] datadir."/spring".(k-1)."_".word(ms, j).".dat" using 1:2 every nth::((j - 1) * nth / words(ms)) with points lt mlt(word(ms, j)) notitle, \
        for [j=1:words(ms)] keyentry with linespoints lt mlt(word(ms, j)) lw 1.2 title word(ms, j)

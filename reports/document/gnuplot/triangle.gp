@@ -16,7 +16,7 @@ set title ptitle1 noenhanced
 set ylabel "lowest corner y (m)"
 set yrange [-1.25:-0.25]
 set ytics 0.25
-plot -1 with lines lw 4 lc rgb "#bbbbbb" title "ground", \
+plot -1 with lines dt 1 lw 4 lc rgb "#bbbbbb" title "ground", \
      for [j=1:words(ms)] datadir."/triangle_".word(ms, j).".dat" using 1:2 with lines lt mlt(word(ms, j)) lw 1.2 notitle, \
      for [j=1:words(ms)] datadir."/triangle_".word(ms, j).".dat" using 1:2 every nth::((j - 1) * nth / words(ms)) with points lt mlt(word(ms, j)) notitle, \
      for [j=1:words(ms)] keyentry with linespoints lt mlt(word(ms, j)) lw 1.2 title word(ms, j)

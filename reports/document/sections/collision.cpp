@@ -67,7 +67,12 @@ class Collision : public Section {
     std::string rule = "|------------|--|";
     for (double dt : r.config.dts) md += fmt::format(" E/E0 after the last, dt {} |", dt), rule += "-----|";
     md += " deepest penetration |\n" + rule + "-----|\n";
+    // the hand-out's rows: the sheet's methods where it has any (the atlas has every method's)
+    const std::vector<std::size_t> sheet = sheet_methods();
+    const auto on_sheet = [&](std::size_t m) { return std::find(sheet.begin(), sheet.end(), m) != sheet.end(); };
+    const bool sheet_only = page.handout && std::any_of(r.config.methods.begin(), r.config.methods.end(), on_sheet);
     for (std::size_t m : r.config.methods) {
+      if (sheet_only && !on_sheet(m)) continue;
       std::string cells;
       std::size_t bounces = 0;
       double deepest = 0;
@@ -80,10 +85,12 @@ class Collision : public Section {
         }
       md += fmt::format("| `{}` | {} |{} {:.4f} |\n", name(m), bounces, cells, deepest);
     }
-    md += fmt::format("\nBounces and penetration at dt {}. {}\n\n", r.config.dts.front(), bounce_orders(d, page.ledger));
+    md += fmt::format("\n{}Bounces and penetration at dt {}. {}\n\n",
+                      sheet_only ? fmt::format("The sheet's methods; [the atlas]({}) has every method's row. ", Page::atlas_link(title())) : "",
+                      r.config.dts.front(), bounce_orders(d, page.ledger));
     md += triangle(page);
     if (page.has("bounce_energy") && !page.handout)
-      md += page.figure("bounce_energy", "The bounce: E/E0 after the last bounce against dt, a panel per family");
+      md += page.figure("bounce_energy", "The bounce: E/E0 after the last bounce against dt, a panel per family. " + bounce_spread(r));
     return md;
   }
 
@@ -91,14 +98,17 @@ class Collision : public Section {
   // The falling triangle: its sentence and its figure.
   static std::string triangle(Page& page) {
     std::string md = triangle_sentence(page.data, page.ledger);
-    if (page.has("triangle"))
-      if (const auto [low, high] = energy_extremes(page.data.collision); low)
-        md += page.figure("triangle", fmt::format("The falling triangle at dt = {} with the sheet's methods: its lowest corner "
-                                                  "against the ground y = -1 (left) and E/E0 (right) over t; each contact dips the "
-                                                  "corner below the ground by the penetration above. E/E0 ends at {:.3g} with `{}` "
-                                                  "and at {:.3g} with `{}`.",
-                                                  page.data.collision.config.triangle_dt, low->energy_ratio_final,
-                                                  name(low->method), high->energy_ratio_final, name(high->method)));
+    if (page.has("triangle")) {
+      const auto [low, high] = energy_extremes(page.data.collision);
+      md += page.figure("triangle", fmt::format("The falling triangle at dt = {} with the sheet's methods: its lowest corner "
+                                                "against the ground y = -1 (left) and E/E0 (right) over t; each contact dips the "
+                                                "corner below the ground by the penetration above. {}",
+                                                page.data.collision.config.triangle_dt,
+                                                low ? fmt::format("E/E0 ends at {:.3g} with `{}` and at {:.3g} with `{}`.",
+                                                                  low->energy_ratio_final, name(low->method),
+                                                                  high->energy_ratio_final, name(high->method))
+                                                    : std::string("No run ends well.")));
+    }
     return md;
   }
 
@@ -160,6 +170,21 @@ class Collision : public Section {
 
   // The falling triangle (the slides' problem 3): how deep it sinks into the ground and what
   // becomes of its energy, over the methods.
+  // The bounce figure's sentence of what to see: at the largest step, the least and the most
+  // energy left after the last bounce.
+  static std::string bounce_spread(const CollisionResult& r) {
+    const double dt = *std::max_element(r.config.dts.begin(), r.config.dts.end());
+    const CollisionRun *low = nullptr, *high = nullptr;
+    for (const CollisionRun& run : r.bounce)
+      if (run.dt == dt && run.status == RunStatus::Ok && !run.bounces.empty()) {
+        if (!low || run.bounces.back().energy_ratio < low->bounces.back().energy_ratio) low = &run;
+        if (!high || run.bounces.back().energy_ratio > high->bounces.back().energy_ratio) high = &run;
+      }
+    if (!low) return fmt::format("At dt {} no run bounces.", dt);
+    return fmt::format("At dt {}, E/E0 after the last bounce runs from {:.4f} (`{}`) to {:.4f} (`{}`).", dt,
+                       low->bounces.back().energy_ratio, name(low->method), high->bounces.back().energy_ratio, name(high->method));
+  }
+
   // The triangle's runs that ended well with the least and the most energy at the end (null if none).
   static std::pair<const CollisionRun*, const CollisionRun*> energy_extremes(const CollisionResult& r) {
     const CollisionRun *low = nullptr, *high = nullptr;

@@ -102,8 +102,8 @@ class Convergence : public Section {
     for (const ConvergenceResult& r : d.convergence) {
       if (r.config.scene == c.rebound.scene) continue;  // in the collision section
       if (r.config.scene == c.oscillator.scene && c.has_section("summary")) {
-        md += "Spring: its fitted orders are the summary's; the steps each was fitted over are in "
-              "`data/convergence/convergence_spring.json`.\n\n";
+        md += "Spring: its fitted orders are the summary's; the steps each was fitted over are in data/convergence/ "
+              "(`convergence_spring.json`).\n\n";
         continue;
       }
       md += scene_fits(r, page.ledger);
@@ -115,11 +115,13 @@ class Convergence : public Section {
         if (!flat || f.fit.order < flat->fit.order) flat = &f;
         if (!steep || f.fit.order > steep->fit.order) steep = &f;
       }
-    if (page.has("convergence") && flat)
+    if (page.has("convergence"))
       md += page.figure("convergence", fmt::format("Error against dt on {}, a panel per family: least-squares lines over the "
-                                                   "fitted window (solid), slopes 1, 2 and 4 for reference (grey, dashed). The "
-                                                   "fitted orders run from {:.2f} (`{}`) to {:.2f} (`{}`).",
-                                                   on, flat->fit.order, name(flat->method), steep->fit.order, name(steep->method)));
+                                                   "fitted window (solid), slopes 1, 2 and 4 for reference (grey, dashed). {}", on,
+                                                   flat ? fmt::format("The fitted orders run from {:.2f} (`{}`) to {:.2f} (`{}`).",
+                                                                      flat->fit.order, name(flat->method), steep->fit.order,
+                                                                      name(steep->method))
+                                                        : std::string("No method's errors reach their asymptotic range.")));
     return md;
   }
 

@@ -149,7 +149,7 @@ class Energy : public Section {
     if (page.has("energy_sheet")) md += page.figure("energy_sheet", sheet_caption(d, e));
     if (page.has("energy") && !page.handout)
       md += page.figure("energy", fmt::format("E/E0 - 1 of the undamped spring at dt = {} over t = {:g}, a panel per family "
-                                              "(linear axis)", c.large_dt, c.energy_t_end));
+                                              "(linear axis). {}", c.large_dt, c.energy_t_end, band_sentence(e)));
     return md;
   }
 
@@ -165,6 +165,20 @@ class Energy : public Section {
   }
 
   // What the sheet's figure shows, from the kinds the section's list states (and claims) above.
+  // The family figure's sentence of what to see: the widest and the narrowest band of E/E0 among the
+  // bounded runs.
+  static std::string band_sentence(const std::vector<EnergyBehaviour>& e) {
+    const EnergyBehaviour *wide = nullptr, *narrow = nullptr;
+    for (const EnergyBehaviour& b : e)
+      if (b.kind == EnergyKind::Bounded) {
+        if (!wide || b.hi - b.lo > wide->hi - wide->lo) wide = &b;
+        if (!narrow || b.hi - b.lo < narrow->hi - narrow->lo) narrow = &b;
+      }
+    if (!wide) return "No run keeps its energy bounded.";
+    return fmt::format("Of the bounded runs, `{}` swings widest (E/E0 from {:.3g} to {:.3g}) and `{}` least (from {:.6g} to {:.6g}).",
+                       name(wide->method), wide->lo, wide->hi, name(narrow->method), narrow->lo, narrow->hi);
+  }
+
   static std::string sheet_caption(const ReportData& d, const std::vector<EnergyBehaviour>& e) {
     std::vector<std::string> parts;
     for (std::size_t i : sheet_rows(d))

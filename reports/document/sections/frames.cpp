@@ -72,9 +72,15 @@ class Frames : public Section {
     md += large_steps();
     md += stability(page.ledger);
     md += fronts(page.ledger);
+    const FrameRun* best = nullptr;  // the least error of a stable split
+    for (const FrameRun& run : r_.runs)
+      if (run.stable && run.status == RunStatus::Ok && (!best || run.error < best->error)) best = &run;
     md += page.figure("frames", fmt::format("Error against cost a frame ({}), {} at {} frames a second: each method's splits of "
-                                            "the budget {}, the stable ones",
-                                            c.timing ? "time" : "spring visits", scene_name(c.scene), c.fps, c.budget));
+                                            "the budget {}, the stable ones. {}",
+                                            c.timing ? "time" : "spring visits", scene_name(c.scene), c.fps, c.budget,
+                                            best ? fmt::format("The least error, {:.3g}, is `{}`'s at {} substeps a frame.", best->error,
+                                                               name(best->setup.method), best->setup.substeps)
+                                                 : std::string("No split is stable.")));
     md += family_answer();
     return md;
   }

@@ -41,7 +41,8 @@ class HandInLongRun : public Section {
                       params_text(c.scene, c.params), c.periods, r_.period, c.steps_per_period.front(), c.fit_from);
     md += structure_answer(r_, page.ledger, "long_run", "long_run") + symmetry_note(r_) + "\n\n";
     if (!drawn_methods().empty())
-      md += page.figure("long_time", "The sheet's spring swinging in a plane: the largest relative energy error up to t (in periods)");
+      md += page.figure("long_time", "The sheet's spring swinging in a plane: the largest relative energy error up to t (in periods). " +
+                                         extremes_sentence(r_));
     return md;
   }
 

@@ -14,6 +14,9 @@ namespace steplab {
 // Its runs as data files lt_<scene>_<method>.dat: t in periods, each invariant's largest relative
 // error up to t, the position error where the scene has an exact solution.
 void write_long_time_data(const LongTimeResult& r, const DataDir& dat);
+// The figure's sentence of what to see: at the first steps a period, the run that ends with the
+// largest energy error and the one with the least.
+std::string extremes_sentence(const LongTimeResult& r);
 // The energy error from which the report calls an orbit (or a swing) lost (energy_verdict).
 inline constexpr double kLostAt = 0.1;
 // The runs by their energy error (energy_verdict at kLostAt): bounded, drifting, unclear, lost; the highest order that drifts and the lowest that stays bounded;

@@ -28,6 +28,16 @@ constexpr double kExponentHalfWidth = 0.5;
 bool finding(const Exponent& e) { return e.fitted() && e.hi - e.lo <= 2 * kExponentHalfWidth; }
 std::string finding_text(const Exponent& e) { return finding(e) ? exponent_text(e) : "-"; }
 
+// The cost figure's sentence of what to see: how many of the solvers reach the target at the
+// largest size (a count, not a timing, which may flip under load).
+std::string reach_sentence(const ScalingResult& r) {
+  int largest = 0, masses = 0, reached = 0;
+  for (const ScalingRow& w : r.rows) largest = std::max(largest, w.n);
+  for (const ScalingRow& w : r.rows)
+    if (w.n == largest) masses = w.masses, reached += w.reached();
+  return fmt::format("At N = {}, {} of the {} solvers reach the target.", masses, reached, r.solvers());
+}
+
 std::string params_but_size(std::size_t scene, const std::vector<double>& params) {
   return params_text(scene, params, scene_kernel(scene).size_param);
 }
@@ -233,6 +243,15 @@ std::string map_findings(const ScalingResult& r, Ledger* l) {
   return md + "\n";
 }
 
+// The map figure's sentence of what to see: the clear wins of each group and the ties at the first target.
+std::string tally_sentence(const ScalingResult& r) {
+  const MapTally counts = map_tally(r, 0);
+  std::string tally;
+  for (const auto& [group, n] : counts.wins) tally += fmt::format("{}{} {}", tally.empty() ? "" : ", ", group, n);
+  return fmt::format("At error {}, of {} cells: {}; {} tied or undecided, {} at rest.", target_text(r.config, r.blocks.front()),
+                     counts.cells, tally.empty() ? "no clear win" : "clear wins " + tally, counts.ties, counts.still);
+}
+
 // The map's paragraph, figure and findings.
 std::string map_markdown(const ScalingResult& r, Page& page) {
   const ScalingConfig& c = r.config;
@@ -260,8 +279,8 @@ std::string map_markdown(const ScalingResult& r, Page& page) {
     md += page.figure("map", fmt::format("{}: the cheapest solver in each cell (masses N, {}); colour by group: explicit "
                                          "Runge-Kutta blue, symplectic splitting vermillion, implicit Runge-Kutta green, "
                                          "Adams-Bashforth purple, BDF orange, CVODE sky blue, ARKODE teal, RADAU5 rose, explicit "
-                                         "adaptive grey, a tie or a cell at rest white",
-                                         s.title, stiffness_name));
+                                         "adaptive grey, a tie or a cell at rest white. {}",
+                                         s.title, stiffness_name, tally_sentence(r)));
   return md;
 }
 
@@ -321,8 +340,8 @@ class ScalingSection : public Section {
       if (i == 0 && page.has("scaling"))
         md += page.figure("scaling", fmt::format("{}: the whole run's cost at the target error against N; the explicit "
                                                  "fixed-step methods, the symplectic splittings, the implicit methods and the "
-                                                 "adaptive solvers in panels of at most six",
-                                                 scene_kernel(scene_index(r.config.scene)).title));
+                                                 "adaptive solvers in panels of at most six. {}",
+                                                 scene_kernel(scene_index(r.config.scene)).title, reach_sentence(r)));
     }
     if (d.scaling_map) md += map_markdown(*d.scaling_map, page);
     return md;

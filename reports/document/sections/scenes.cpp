@@ -63,26 +63,36 @@ class SceneFigures : public Section {
     const ReportConfig& c = d.config;
     std::string md = "## " + title() + "\n\n";
     if (c.covers(c.projectile.scene)) {
+      const std::vector<Deviation> dev = deviation_of(d, c.projectile, d.cannon);
       md += fmt::format("The cannon ball at dt = {}: each method's largest distance from the exact parabola over t <= {:g}: {}.\n\n",
-                        c.cannonball_dt, c.cannonball_t_end, deviations(d, c.projectile, d.cannon));
-      md += page.figure("cannonball", fmt::format("Cannon ball paths at dt = {} beside the exact parabola (grey), a panel per family",
-                                                  c.cannonball_dt));
+                        c.cannonball_dt, c.cannonball_t_end, deviations(dev));
+      md += page.figure("cannonball", fmt::format("Cannon ball paths at dt = {} beside the exact parabola (grey), a panel per family. {}",
+                                                  c.cannonball_dt, farthest(dev, "Over the flight")));
     }
     if (c.covers(c.oscillator.scene)) {
-      for (std::size_t k = 0; k < c.spring_figure_dts.size(); ++k)
+      std::string far;  // at the largest step
+      for (std::size_t k = 0; k < c.spring_figure_dts.size(); ++k) {
+        const std::vector<Deviation> dev = deviation_of(d, c.oscillator, d.spring[k]);
         md += fmt::format("{}The spring at dt = {}: each method's largest distance from the exact height over t <= {:g}: {}.",
-                          k ? " " : "", c.spring_figure_dts[k], c.spring_figure_t_end, deviations(d, c.oscillator, d.spring[k]));
+                          k ? " " : "", c.spring_figure_dts[k], c.spring_figure_t_end, deviations(dev));
+        if (k + 1 == c.spring_figure_dts.size()) far = farthest(dev, fmt::format("At dt = {}", c.spring_figure_dts[k]));
+      }
       md += "\n\n" + page.figure("spring", fmt::format("The spring's height y(t) against the exact solution (grey), a panel "
-                                                       "per family and dt ({})", words(c.spring_figure_dts)));
+                                                       "per family and dt ({}). {}", words(c.spring_figure_dts), far));
     }
     return md;
   }
 
  private:
-  // "`rk4` 3.2e-10 m, ...": each numerical method's largest distance from the exact state over its run.
+  // Each numerical method's largest distance from the exact state over its run (diverged: not ok).
+  struct Deviation {
+    std::size_t method;
+    double worst;
+    bool ok;
+  };
   template <int D>
-  static std::string deviations(const ReportData& d, const ReportScene& scene, const std::vector<RunResult<D>>& runs) {
-    std::vector<std::string> out;
+  static std::vector<Deviation> deviation_of(const ReportData& d, const ReportScene& scene, const std::vector<RunResult<D>>& runs) {
+    std::vector<Deviation> out;
     for (std::size_t i = 0; i < d.methods.size() && i < runs.size(); ++i) {
       if (method_info(d.methods[i]).exact_flow || runs[i].samples.empty()) continue;
       double worst = 0;
@@ -92,10 +102,23 @@ class SceneFigures : public Section {
         for (int j = 0; j < s.x.size(); ++j) e += (s.x[j] - y.x[j]) * (s.x[j] - y.x[j]);
         worst = std::max(worst, std::sqrt(e));
       }
-      out.push_back(runs[i].status == RunStatus::Ok ? fmt::format("`{}` {:.2g} m", name(d.methods[i]), worst)
-                                                    : fmt::format("`{}` diverged", name(d.methods[i])));
+      out.push_back({d.methods[i], worst, runs[i].status == RunStatus::Ok});
     }
+    return out;
+  }
+  // "`rk4` 3.2e-10 m, ...", and the figure's sentence of what to see: the farthest of the runs that ended well.
+  static std::string deviations(const std::vector<Deviation>& dev) {
+    std::vector<std::string> out;
+    for (const Deviation& v : dev)
+      out.push_back(v.ok ? fmt::format("`{}` {:.2g} m", name(v.method), v.worst) : fmt::format("`{}` diverged", name(v.method)));
     return and_list(out);
+  }
+  static std::string farthest(const std::vector<Deviation>& dev, const std::string& at) {
+    const Deviation* far = nullptr;
+    for (const Deviation& v : dev)
+      if (v.ok && (!far || v.worst > far->worst)) far = &v;
+    return far ? fmt::format("{} the farthest from the exact path is `{}`, {:.2g} m.", at, name(far->method), far->worst)
+               : at + " every run diverged.";
   }
 };
 

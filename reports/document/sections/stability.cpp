@@ -108,9 +108,16 @@ class Stability : public Section {
         fmt::format("The measured dt* is within {:g} % of the prediction in {} of these {} cases.", 100 * kAgree, agree, cases.size());
     md += "\n" + agreement + "\n\n";
     if (page.ledger) claim_thresholds_agree(*page.ledger, {d}, "stability.thresholds_agree", "stability", agreement, cases, kAgree, agree);
+    const SweepRow* fastest = nullptr;  // the fastest measured loss of energy at the figure's dt
+    for (const SweepRow& r : d.sweep)
+      if (r.dt == c.large_dt && std::isfinite(r.run.rate) && (!fastest || r.run.rate < fastest->run.rate)) fastest = &r;
     if (page.has("damping"))
       md += page.figure("damping", fmt::format("Energy growth rate d ln E / dt against damping at dt = {}: measured (points), "
-                                               "predicted 2 ln(rho) / h from the step map (lines), a panel per family", c.large_dt));
+                                               "predicted 2 ln(rho) / h from the step map (lines), a panel per family. {}",
+                                               c.large_dt,
+                                               fastest ? fmt::format("The fastest measured loss: `{}` at damping {:g}, {:.3g} per second.",
+                                                                     name(fastest->method), fastest->damping, fastest->run.rate)
+                                                       : std::string("No rate could be fitted.")));
     std::size_t disagree = 0;
     for (std::size_t i = 0; i < d.map.methods.size(); ++i) disagree += disagreeing_cells(d.map, i);
     const std::size_t cells = d.map.methods.size() * d.map.damping.size() * d.map.dt.size();

@@ -74,6 +74,24 @@ class StiffOrder : public Section {
       "one falls to its stage order q, one with |R(infinity)| < 1 or R(infinity) = -1 to q + 1, one with R(infinity) = 1 to q; "
       "a multistep method's own error vanishes as 1 / lambda, leaving its one-step start's.";
 
+  // The figure's sentence of what to see: the method whose fitted order falls furthest from the
+  // least stiffness to the greatest (each fitted and stable at both).
+  static std::string drop_sentence(const OrderReduction& r) {
+    const std::vector<ConvergenceResult>& st = r.sweep.studies;
+    const std::size_t last = st.size() - 1;
+    std::size_t most = r.methods.size();
+    double drop = 0;
+    for (std::size_t m = 0; m < r.methods.size(); ++m) {
+      const OrderFit &a = st.front().fits[m].fit, &b = st[last].fits[m].fit;
+      if (!a.fitted || !b.fitted || r.methods[m].past_stable[0] || r.methods[m].past_stable[last]) continue;
+      if (a.order - b.order > drop) drop = a.order - b.order, most = m;
+    }
+    if (most == r.methods.size()) return "No fitted order falls from the least stiffness to the greatest.";
+    return fmt::format("From k = {:g} to {:g}, `{}` falls furthest: from order {:.2f} to {:.2f}.", r.sweep.values.front(),
+                       r.sweep.values.back(), name(r.methods[most].method), st.front().fits[most].fit.order,
+                       st[last].fits[most].fit.order);
+  }
+
   std::string markdown(Page& page) const override {
     const OrderReduction& r = page.data.stiff_order;
     const ConvergenceSweep& s = r.sweep;
@@ -100,7 +118,7 @@ class StiffOrder : public Section {
     md += table(r);
     if (page.has("stiff_order"))
       md += page.figure("stiff_order", fmt::format("The fitted order against the stiffness on `{}`, a panel per family, each fit's "
-                                                   "bound as an error bar; dashed: the theory's two limits", scene));
+                                                   "bound as an error bar; dashed: the theory's two limits. {}", scene, drop_sentence(r)));
     return md;
   }
 
