@@ -1,6 +1,8 @@
-// The claims of the energy, long-time and stiff-order findings and of the crossover map, and the
-// documents they cite (claims.hpp): each restates, over the cited document's own fields, the rule
-// findings.hpp and analysis/studies apply, so that the verifier re-derives each class or verdict.
+// The claims of the energy, long-time and stiff-order findings, of the work-precision study's
+// cheapest runs and crossover and of the crossover map, and the documents they cite (claims.hpp):
+// each restates, over the cited document's own fields, the rule findings.hpp and analysis/studies
+// apply, so that the verifier re-derives each class or verdict.
+#include <algorithm>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -124,6 +126,51 @@ void claim_long_time_sides(Ledger& l, const LongTimeResult& r, const LongTimeSid
   if (s.not_by_order)  // "the bounded ones are the symplectic ones"
     claim_members(l, claim_text(id + ".symplectic", section, sentence), cite_long_time(l, r, folder), "/rows", Json::object(), "method",
                   true, test_field("/symplectic", "==", true), method_names(s.bounded));
+}
+
+Evidence work_point_at(Ledger& l, const ReportData& d, const SceneWork& w, const WorkPoint& p, const char* field) {
+  l.document(kWorkDocument, [&] { return work_precision_json(d.work); });
+  return l.at(kWorkDocument, fmt::format("/scenes/{}/points/{}/{}", &w - d.work.scenes.data(), &p - w.points.data(), field));
+}
+
+void claim_cheapest(Ledger& l, const ReportData& d, std::string id, std::string section, std::string sentence, const SceneWork& w,
+                    double level, bool timed, const LevelWinner& win) {
+  if (!win.point || !win.undecided.empty()) return;
+  const auto at = [&](const WorkPoint* p, const char* field) { return work_point_at(l, d, w, *p, field); };
+  const char* cost = point_cost_field(timed);
+  std::vector<const WorkPoint*> others;  // the runner-up first, then every other solver's cheapest run
+  std::vector<std::string> seen{win.point->method};
+  for (const WorkPoint& p : w.points)
+    if (std::find(seen.begin(), seen.end(), p.method) == seen.end()) {
+      seen.push_back(p.method);
+      if (const WorkPoint* q = cheapest_point(w, p.method, level, timed))
+        others.insert(p.method == win.next ? others.begin() : others.end(), q);
+    }
+  std::vector<Evidence> costs, noise;
+  for (const WorkPoint* p : others) costs.push_back(at(p, cost));
+  if (timed && !others.empty()) noise = {at(win.point, "seconds_spread"), at(others.front(), "seconds_spread")};
+  claim_group(l, claim_text(std::move(id), std::move(section), std::move(sentence)),
+              comparison_group(at(win.point, cost), std::move(costs), std::move(noise), win.tie ? "tie" : "less", timed ? kTieMargin : 1.0));
+}
+
+void claim_crossover(Ledger& l, const ReportData& d, std::string id, std::string section, std::string sentence) {
+  const WorkPrecisionResult& r = d.work;
+  if (!d.config.timing || !(r.crossover_ratio > 0)) return;
+  l.document(kWorkDocument, [&] { return work_precision_json(r); });
+  std::vector<ClaimGroup> from, below;  // the rows from the crossover on; the one before it
+  for (std::size_t i = 0; i < r.stiffness.size(); ++i) {
+    const StiffnessRow& row = r.stiffness[i];
+    const bool on = row.ratio >= r.crossover_ratio;
+    if (!on && (i + 1 >= r.stiffness.size() || r.stiffness[i + 1].ratio < r.crossover_ratio)) continue;
+    std::vector<Evidence> explicit_run;  // none where no explicit method reached the error
+    if (!row.best_explicit.empty()) explicit_run.push_back(l.at(kWorkDocument, fmt::format("/stiffness_sweep/{}/explicit_seconds", i)));
+    (on ? from : below)
+        .push_back(comparison_group(l.at(kWorkDocument, fmt::format("/stiffness_sweep/{}/implicit_seconds", i)), std::move(explicit_run),
+                                    {}, "less", kTieMargin));
+  }
+  const int n = static_cast<int>(from.size());
+  claim_count(l, claim_text(id + ".from", section, sentence), std::move(from), n);
+  claim_count(l, claim_text(id + ".before", section, sentence), std::move(below), 0);
 }
 
 namespace {

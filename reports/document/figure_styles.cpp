@@ -129,13 +129,16 @@ std::string styles_gp() {
   // (hi - lo)/5. A script that lets gnuplot pick a range draws its panels twice: pass 1 into a
   // table (nothing drawn; `eval keep_ranges(k)` after panel k's plot keeps the ranges gnuplot
   // picked), pass 2 for real (`eval tics("y", k, log)` before it fixes that range and its ticks).
+  // `eval span_tics("y", lo, hi)`: a linear axis over data from lo to hi, its range widened to
+  // the step's multiples.
   out += "log_step(lo, hi) = hi > lo ? ceil(log10(hi / lo) / 5.0 - 1e-9) : 1\n"
          "nice(s) = s > 0 ? (tp = 10**floor(log10(s)), ts = s / tp, (ts <= 1 ? 1 : ts <= 2 ? 2 : ts <= 2.5 ? 2.5 : ts <= 5 ? 5 : 10) * tp) : 1\n"
          "axis_tics(a, lo, hi, log) = sprintf(\"set %srange [%.17g:%.17g]; \", a, lo, hi) . (log ? "
          "sprintf(\"set %stics 1e%d; set m%stics %s\", a, log_step(lo, hi), a, log_step(lo, hi) > 1 ? sprintf(\"%d\", log_step(lo, hi)) : \"default\") : "
          "sprintf(\"set %stics %.17g\", a, nice((hi - lo) / 5.0)))\n"
          "keep_ranges(k) = sprintf(\"xlo_%d = GPVAL_X_MIN; xhi_%d = GPVAL_X_MAX; ylo_%d = GPVAL_Y_MIN; yhi_%d = GPVAL_Y_MAX\", k, k, k, k)\n"
-         "tics(a, k, log) = axis_tics(a, value(sprintf(\"%slo_%d\", a, k)), value(sprintf(\"%shi_%d\", a, k)), log)\n";
+         "tics(a, k, log) = axis_tics(a, value(sprintf(\"%slo_%d\", a, k)), value(sprintf(\"%shi_%d\", a, k)), log)\n"
+         "span_tics(a, lo, hi) = (ts_ = nice((hi - lo) / 5.0), axis_tics(a, ts_ * floor(lo / ts_), ts_ * ceil(hi / ts_), 0))\n";
   return out;
 }
 

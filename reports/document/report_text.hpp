@@ -2,8 +2,11 @@
 // them, lists of methods in a sentence, fitted orders, and data-file lines.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
+#include <ranges>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "analysis/studies/convergence.hpp"
@@ -29,6 +32,15 @@ std::string params_text(std::size_t scene, const std::vector<double>& values, in
 // The characters of code a line of the PDF holds: 18 cm of text width (A4, 1.5 cm margins) in 10 pt
 // Latin Modern Typewriter, 0.525 em a character, hold 97; a few kept spare.
 inline constexpr std::size_t kCodeColumns = 88;
+// The first row of `rows` with the least `key` among those `keep` accepts, and the first with the
+// greatest (both null where it accepts none): a figure caption's extremes.
+template <class Row, class Keep, class Key>
+std::pair<const Row*, const Row*> least_and_most(const std::vector<Row>& rows, Keep keep, Key key) {
+  auto kept = rows | std::views::filter(keep);
+  const auto least = std::ranges::min_element(kept, {}, key), most = std::ranges::max_element(kept, {}, key);
+  if (least == kept.end()) return {nullptr, nullptr};
+  return {&*least, &*most};
+}
 std::string wrapped(const std::string& cmd);              // a shell command broken for the page, a long list after a comma
 std::string words(const std::vector<double>& v);          // gnuplot word list: "a b c"
 std::string join(const std::vector<double>& v);           // CLI list: "a,b,c"

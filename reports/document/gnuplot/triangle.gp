@@ -30,7 +30,7 @@ do for [m in ms] {
   stats datadir."/triangle_".m.".dat" using 3 nooutput
   elo = STATS_min < elo ? STATS_min : elo; ehi = STATS_max > ehi ? STATS_max : ehi
 }
-eval axis_tics("y", nice((ehi - elo) / 5.0) * floor(elo / nice((ehi - elo) / 5.0)), nice((ehi - elo) / 5.0) * ceil(ehi / nice((ehi - elo) / 5.0)), 0)
+eval span_tics("y", elo, ehi)
 plot for [j=1:words(ms)] datadir."/triangle_".word(ms, j).".dat" using 1:3 with lines lt mlt(word(ms, j)) lw 1.2 notitle, \
      for [j=1:words(ms)] datadir."/triangle_".word(ms, j).".dat" using 1:3 every nth::((j - 1) * nth / words(ms)) with points lt mlt(word(ms, j)) notitle
 unset multiplot

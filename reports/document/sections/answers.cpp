@@ -20,11 +20,14 @@
 namespace steplab {
 namespace {
 
-// " (figure 3)", or "" where the report does not draw it.
-std::string see(const Page& page, const std::string& figure) {
-  const int n = page.number(figure);
-  return n ? fmt::format(" (figure {})", n) : "";
+// " (figure 3)", " (figures 7 and 8)", or "" where the report draws none of them.
+std::string see(const Page& page, const std::vector<std::string>& figures) {
+  std::vector<std::string> numbers;
+  for (const std::string& f : figures)
+    if (const int n = page.number(f)) numbers.push_back(std::to_string(n));
+  return numbers.empty() ? "" : fmt::format(" (figure{} {})", numbers.size() > 1 ? "s" : "", and_list(numbers));
 }
+std::string see(const Page& page, const std::string& figure) { return see(page, std::vector<std::string>{figure}); }
 
 // One list of Findings rows (`Findings::unstable_large`, ...) over the sources, as methods.
 std::vector<std::size_t> over(const std::vector<ShownStudy>& s, std::vector<std::size_t> Findings::*list) {
@@ -240,9 +243,8 @@ std::string cost_answer(const Page& page) {
     }
   }
   std::vector<std::string> figures;  // a work-precision figure per scene
-  for (const SceneWork& w : page.data.work.scenes)
-    if (const int n = page.number("work_precision_" + std::string(scene_name(w.scene)))) figures.push_back(std::to_string(n));
-  md += figures.empty() ? ".\n" : fmt::format(" (figure{} {}).\n", figures.size() > 1 ? "s" : "", and_list(figures));
+  for (const SceneWork& w : page.data.work.scenes) figures.push_back(work_precision_figure(w.scene));
+  md += see(page, figures) + ".\n";
   if (page.ledger)
     for (const auto& [w, win] : wins)
       claim_cheapest(*page.ledger, page.data, fmt::format("answers.cheapest.{}", scene_name(w->scene)), "answers", md, *w, level, timed, win);
@@ -276,6 +278,8 @@ std::string implicit_answer(const Page& page) {
     for (std::size_t t = 0; t < c.targets.size(); ++t) claim_map(*page.ledger, r, t, fmt::format("answers.map.target_{}", t), "answers", md, tallies[t]);
   return md;
 }
+
+std::string work_precision_figure(std::size_t scene) { return "work_precision_" + std::string(scene_name(scene)); }
 
 std::string answer_paragraph(const std::string& bullet) { return bullet.rfind("- ", 0) == 0 ? bullet.substr(2) : bullet; }
 

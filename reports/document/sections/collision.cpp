@@ -168,18 +168,13 @@ class Collision : public Section {
     return md;
   }
 
-  // The falling triangle (the slides' problem 3): how deep it sinks into the ground and what
-  // becomes of its energy, over the methods.
   // The bounce figure's sentence of what to see: at the largest step, the least and the most
   // energy left after the last bounce.
   static std::string bounce_spread(const CollisionResult& r) {
     const double dt = *std::max_element(r.config.dts.begin(), r.config.dts.end());
-    const CollisionRun *low = nullptr, *high = nullptr;
-    for (const CollisionRun& run : r.bounce)
-      if (run.dt == dt && run.status == RunStatus::Ok && !run.bounces.empty()) {
-        if (!low || run.bounces.back().energy_ratio < low->bounces.back().energy_ratio) low = &run;
-        if (!high || run.bounces.back().energy_ratio > high->bounces.back().energy_ratio) high = &run;
-      }
+    const auto [low, high] = least_and_most(
+        r.bounce, [&](const CollisionRun& run) { return run.dt == dt && run.status == RunStatus::Ok && !run.bounces.empty(); },
+        [](const CollisionRun& run) { return run.bounces.back().energy_ratio; });
     if (!low) return fmt::format("At dt {} no run bounces.", dt);
     return fmt::format("At dt {}, E/E0 after the last bounce runs from {:.4f} (`{}`) to {:.4f} (`{}`).", dt,
                        low->bounces.back().energy_ratio, name(low->method), high->bounces.back().energy_ratio, name(high->method));
@@ -187,15 +182,12 @@ class Collision : public Section {
 
   // The triangle's runs that ended well with the least and the most energy at the end (null if none).
   static std::pair<const CollisionRun*, const CollisionRun*> energy_extremes(const CollisionResult& r) {
-    const CollisionRun *low = nullptr, *high = nullptr;
-    for (const CollisionRun& run : r.triangle)
-      if (run.status == RunStatus::Ok) {
-        if (!low || run.energy_ratio_final < low->energy_ratio_final) low = &run;
-        if (!high || run.energy_ratio_final > high->energy_ratio_final) high = &run;
-      }
-    return {low, high};
+    return least_and_most(r.triangle, [](const CollisionRun& run) { return run.status == RunStatus::Ok; },
+                          &CollisionRun::energy_ratio_final);
   }
 
+  // The falling triangle (the slides' problem 3): how deep it sinks into the ground and what
+  // becomes of its energy, over the methods.
   static std::string triangle_sentence(const ReportData& d, Ledger* l) {
     const CollisionResult& r = d.collision;
     const CollisionRun *shallow = nullptr, *deep = nullptr;

@@ -109,12 +109,10 @@ class Convergence : public Section {
       md += scene_fits(r, page.ledger);
     }
     const std::string on = shown.config.scene == c.oscillator.scene ? "the spring" : std::string(scene_kernel(shown.config.scene).title);
-    const ConvergenceFit *flat = nullptr, *steep = nullptr;  // the shallowest and the steepest fitted line
-    for (const ConvergenceFit& f : shown.fits)
-      if (f.fit.fitted && !method_info(f.method).exact_flow) {
-        if (!flat || f.fit.order < flat->fit.order) flat = &f;
-        if (!steep || f.fit.order > steep->fit.order) steep = &f;
-      }
+    // the shallowest and the steepest fitted line
+    const auto [flat, steep] = least_and_most(
+        shown.fits, [](const ConvergenceFit& f) { return f.fit.fitted && !method_info(f.method).exact_flow; },
+        [](const ConvergenceFit& f) { return f.fit.order; });
     if (page.has("convergence"))
       md += page.figure("convergence", fmt::format("Error against dt on {}, a panel per family: least-squares lines over the "
                                                    "fitted window (solid), slopes 1, 2 and 4 for reference (grey, dashed). {}", on,

@@ -83,7 +83,7 @@ class Cost : public Section {
       for (std::size_t p = 1; p <= panels.size(); ++p)
         vars += fmt::format("pscene{0}='{1}'; xlo{0}={2}; xhi{0}={3}; ylo{0}={4}; yhi{0}={5}; ", p, scene_word(w), num(x0 / 1.5),
                             num(x1 * 1.5), num(y0 / 3), num(std::min(y1 * 3, 1e3)));
-      if (!panels.empty()) out.push_back({"work_precision", vars, std::move(panels), "work_precision_" + scene_word(w)});
+      if (!panels.empty()) out.push_back({"work_precision", vars, std::move(panels), work_precision_figure(w.scene)});
     }
     return out;
   }
@@ -108,11 +108,10 @@ class Cost : public Section {
     }
     md += cheapest_table(page, timed);
     for (const SceneWork& w : r.scenes) {
-      const WorkPoint* least = nullptr;  // the smallest error any run reaches
-      for (const WorkPoint& p : w.points)
-        if (p.status == RunStatus::Ok && p.error > 0 && (!least || p.error < least->error)) least = &p;
-      if (page.has("work_precision_" + scene_word(w)) && least)  // a figure only of scenes with such a point
-        md += page.figure("work_precision_" + scene_word(w),
+      const WorkPoint* least =  // the smallest error any run reaches
+          least_and_most(w.points, [](const WorkPoint& p) { return p.status == RunStatus::Ok && p.error > 0; }, &WorkPoint::error).first;
+      if (page.has(work_precision_figure(w.scene)) && least)  // a figure only of scenes with such a point
+        md += page.figure(work_precision_figure(w.scene),
                           fmt::format("Work against precision on the {}: the largest error along a run against its {}; the "
                                       "explicit fixed-step methods, the symplectic splittings, the implicit methods and the "
                                       "adaptive solvers in panels of at most six. The smallest error reached, {:.2g}, is `{}`'s.",

@@ -164,21 +164,17 @@ class Energy : public Section {
     return out;
   }
 
-  // What the sheet's figure shows, from the kinds the section's list states (and claims) above.
   // The family figure's sentence of what to see: the widest and the narrowest band of E/E0 among the
   // bounded runs.
   static std::string band_sentence(const std::vector<EnergyBehaviour>& e) {
-    const EnergyBehaviour *wide = nullptr, *narrow = nullptr;
-    for (const EnergyBehaviour& b : e)
-      if (b.kind == EnergyKind::Bounded) {
-        if (!wide || b.hi - b.lo > wide->hi - wide->lo) wide = &b;
-        if (!narrow || b.hi - b.lo < narrow->hi - narrow->lo) narrow = &b;
-      }
+    const auto [narrow, wide] = least_and_most(
+        e, [](const EnergyBehaviour& b) { return b.kind == EnergyKind::Bounded; }, [](const EnergyBehaviour& b) { return b.hi - b.lo; });
     if (!wide) return "No run keeps its energy bounded.";
     return fmt::format("Of the bounded runs, `{}` swings widest (E/E0 from {:.3g} to {:.3g}) and `{}` least (from {:.6g} to {:.6g}).",
                        name(wide->method), wide->lo, wide->hi, name(narrow->method), narrow->lo, narrow->hi);
   }
 
+  // What the sheet's figure shows, from the kinds the section's list states (and claims) above.
   static std::string sheet_caption(const ReportData& d, const std::vector<EnergyBehaviour>& e) {
     std::vector<std::string> parts;
     for (std::size_t i : sheet_rows(d))

@@ -70,15 +70,17 @@ class Families : public Section {
 
   // A panel per family with a scalar stability function, each method's region lightly filled and edged in its style.
   std::vector<FigureSpec> figures(const ReportData& d) const override {
-    const auto has_region = [&](std::size_t m) {
-      return std::any_of(regions_.regions.begin(), regions_.regions.end(), [&](const StabilityRegion& r) { return r.method == m; });
-    };
-    std::vector<Panel> panels = family_panels(d.methods, has_region);
+    std::vector<Panel> panels = family_panels(d.methods, [&](std::size_t m) { return has_region(m); });
     if (panels.empty()) return {};
     std::string vars;
     for (const StabilityRegion& r : regions_.regions)
       vars += fmt::format("rgb_{}={}; ", name(r.method), std::stoi(method_style(r.method).colour.substr(1), nullptr, 16));
     return {{"regions", vars, std::move(panels)}};
+  }
+
+  // Whether the study found `m`'s stability region (a method with a scalar stability function).
+  bool has_region(std::size_t m) const {
+    return std::any_of(regions_.regions.begin(), regions_.regions.end(), [&](const StabilityRegion& r) { return r.method == m; });
   }
 
   // The regions figure's sentence of what to see: along the spring's ray at `gamma`, the region left
@@ -87,9 +89,7 @@ class Families : public Section {
     const ThresholdRow* first = nullptr;
     std::vector<std::size_t> whole;
     for (const ThresholdRow& r : d.thresholds) {
-      const bool drawn = std::any_of(regions_.regions.begin(), regions_.regions.end(),
-                                     [&](const StabilityRegion& g) { return g.method == r.method; });
-      if (!drawn || r.damping != gamma) continue;
+      if (!has_region(r.method) || r.damping != gamma) continue;
       if (std::isinf(r.dt_theory)) whole.push_back(r.method);
       else if (!first || r.dt_theory < first->dt_theory) first = &r;
     }

@@ -72,9 +72,8 @@ class Frames : public Section {
     md += large_steps();
     md += stability(page.ledger);
     md += fronts(page.ledger);
-    const FrameRun* best = nullptr;  // the least error of a stable split
-    for (const FrameRun& run : r_.runs)
-      if (run.stable && run.status == RunStatus::Ok && (!best || run.error < best->error)) best = &run;
+    const FrameRun* best =  // the least error of a stable split
+        least_and_most(r_.runs, [](const FrameRun& run) { return run.stable && run.status == RunStatus::Ok; }, &FrameRun::error).first;
     md += page.figure("frames", fmt::format("Error against cost a frame ({}), {} at {} frames a second: each method's splits of "
                                             "the budget {}, the stable ones. {}",
                                             c.timing ? "time" : "spring visits", scene_name(c.scene), c.fps, c.budget,

@@ -20,23 +20,23 @@
 
 namespace steplab {
 
-// The data files of a long-time run: lt_<scene>_<method>.dat (t in periods, each invariant's
-// largest relative error up to t, the position error where the scene has an exact solution):
-// shared with the hand-in's paragraph (reports/document/sections/long_run.cpp).
 std::string extremes_sentence(const LongTimeResult& r) {
-  const LongTimeRow *most = nullptr, *least = nullptr;
   const auto last = [](const LongTimeRow& w) { return w.error.front().back(); };
-  for (const LongTimeRow& w : r.rows)
-    if (w.steps_per_period == r.config.steps_per_period.front() && w.status == RunStatus::Ok && !w.error.empty() &&
-        !w.error.front().empty()) {
-      if (!most || last(w) > last(*most)) most = &w;
-      if (!least || last(w) < last(*least)) least = &w;
-    }
+  const auto [least, most] = least_and_most(
+      r.rows,
+      [&](const LongTimeRow& w) {
+        return w.steps_per_period == r.config.steps_per_period.front() && w.status == RunStatus::Ok && !w.error.empty() &&
+               !w.error.front().empty();
+      },
+      last);
   if (!most) return "No run ends well.";
   return fmt::format("After {:g} periods the largest energy error is `{}`'s ({:.2g}), the least `{}`'s ({:.2g}).",
                      most->times.back(), name(most->method), last(*most), name(least->method), last(*least));
 }
 
+// The data files of a long-time run: lt_<scene>_<method>.dat (t in periods, each invariant's
+// largest relative error up to t, the position error where the scene has an exact solution):
+// shared with the hand-in's paragraph (reports/document/sections/long_run.cpp).
 void write_long_time_data(const LongTimeResult& r, const DataDir& dat) {
   for (const LongTimeRow& row : r.rows) {
     std::string s = "# t_periods";

@@ -198,6 +198,13 @@ std::string map_vars(const ScalingResult& r) {
                      s.params[static_cast<std::size_t>(s.stiffness_param)].name, titles);
 }
 
+// "clear wins BDF 3, CVODE 2" (each group's clear wins), or "no clear win".
+std::string wins_text(const MapTally& counts) {
+  std::string tally;
+  for (const auto& [group, n] : counts.wins) tally += fmt::format("{}{} {}", tally.empty() ? "" : ", ", group, n);
+  return tally.empty() ? "no clear win" : "clear wins " + tally;
+}
+
 // The map's findings at each target: the clear wins of each group and the ties, where implicit
 // wins, its margin against the best explicit solver and CVODE in the stiffest, largest cell, and
 // where the target exceeds the body's motion.
@@ -217,10 +224,7 @@ std::string map_findings(const ScalingResult& r, Ledger* l) {
       for (const ScalingCell& m : b.cells) motion = std::max(motion, m.motion);
       if (motion < b.error) still.push_back(fmt::format("{:g}", b.stiffness)), still_motion = std::max(still_motion, motion);
     }
-    std::string tally;
-    for (const auto& [group, n] : counts.wins) tally += fmt::format("{}{} {}", tally.empty() ? "" : ", ", group, n);
-    md += fmt::format("- At error {}, of {} cells: {}{}.", target_text(c, *stiffest), counts.cells,
-                      tally.empty() ? "no clear win" : "clear wins " + tally,
+    md += fmt::format("- At error {}, of {} cells: {}{}.", target_text(c, *stiffest), counts.cells, wins_text(counts),
                       counts.ties ? fmt::format("; {} tie{}{}", counts.ties, counts.ties == 1 ? "" : "s", c.timing ? "" : " or undecided") : "");
     md += counts.implicit.empty() ? " No implicit fixed-step method is clearly the cheapest anywhere."
                                   : fmt::format(" An implicit fixed-step method is clearly the cheapest in {} (stiffness/N: {}).",
@@ -246,10 +250,8 @@ std::string map_findings(const ScalingResult& r, Ledger* l) {
 // The map figure's sentence of what to see: the clear wins of each group and the ties at the first target.
 std::string tally_sentence(const ScalingResult& r) {
   const MapTally counts = map_tally(r, 0);
-  std::string tally;
-  for (const auto& [group, n] : counts.wins) tally += fmt::format("{}{} {}", tally.empty() ? "" : ", ", group, n);
   return fmt::format("At error {}, of {} cells: {}; {} tied or undecided, {} at rest.", target_text(r.config, r.blocks.front()),
-                     counts.cells, tally.empty() ? "no clear win" : "clear wins " + tally, counts.ties, counts.still);
+                     counts.cells, wins_text(counts), counts.ties, counts.still);
 }
 
 // The map's paragraph, figure and findings.

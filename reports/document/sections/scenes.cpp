@@ -114,9 +114,7 @@ class SceneFigures : public Section {
     return and_list(out);
   }
   static std::string farthest(const std::vector<Deviation>& dev, const std::string& at) {
-    const Deviation* far = nullptr;
-    for (const Deviation& v : dev)
-      if (v.ok && (!far || v.worst > far->worst)) far = &v;
+    const Deviation* far = least_and_most(dev, [](const Deviation& v) { return v.ok; }, &Deviation::worst).second;
     return far ? fmt::format("{} the farthest from the exact path is `{}`, {:.2g} m.", at, name(far->method), far->worst)
                : at + " every run diverged.";
   }

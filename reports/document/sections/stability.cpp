@@ -108,9 +108,9 @@ class Stability : public Section {
         fmt::format("The measured dt* is within {:g} % of the prediction in {} of these {} cases.", 100 * kAgree, agree, cases.size());
     md += "\n" + agreement + "\n\n";
     if (page.ledger) claim_thresholds_agree(*page.ledger, {d}, "stability.thresholds_agree", "stability", agreement, cases, kAgree, agree);
-    const SweepRow* fastest = nullptr;  // the fastest measured loss of energy at the figure's dt
-    for (const SweepRow& r : d.sweep)
-      if (r.dt == c.large_dt && std::isfinite(r.run.rate) && (!fastest || r.run.rate < fastest->run.rate)) fastest = &r;
+    const SweepRow* fastest =  // the fastest measured loss of energy at the figure's dt
+        least_and_most(d.sweep, [&](const SweepRow& r) { return r.dt == c.large_dt && std::isfinite(r.run.rate); },
+                       [](const SweepRow& r) { return r.run.rate; }).first;
     if (page.has("damping"))
       md += page.figure("damping", fmt::format("Energy growth rate d ln E / dt against damping at dt = {}: measured (points), "
                                                "predicted 2 ln(rho) / h from the step map (lines), a panel per family. {}",
