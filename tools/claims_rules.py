@@ -1,6 +1,7 @@
 """The rules of a report's claims (docs/json.md, "A report's claims"), as pure functions over
 values: RFC 6901 pointers into a value, and each kind's rule check but membership's (trend,
-statistic, comparison, threshold, equality, ratio, count).  A check returns the list of reasons
+statistic, comparison, threshold, equality, ratio, count; extreme and mismatch in
+claims_extremes.py).  A check returns the list of reasons
 its claim does not hold ([] where it holds) and raises Fail where the rule cannot be evaluated
 (which does not hold either).  The row-test language and the membership check:
 tools/claims_rows.py; reading the files and the claim loop: tools/verify_claims.py.  Standard
@@ -21,6 +22,8 @@ RULE_FIELDS = {
     "equality": ("pairs", "relative", "absolute"),
     "ratio": ("ratios", "least", "greatest", "digits"),
     "count": ("groups", "count"),
+    "extreme": ("a", "others", "which"),  # and optionally "printed", "digits"
+    "mismatch": ("pairs", "count"),
 }
 GROUP_KINDS = ("equality", "comparison", "threshold")  # the kinds a `count` group may have
 THRESHOLD_OPS = {"<": lambda v, l: v < l, "<=": lambda v, l: v <= l,
@@ -373,3 +376,8 @@ def checked_rule(kind, rule):
     if not isinstance(rule, dict) or any(f not in rule for f in RULE_FIELDS[kind]):
         raise Fail("rule lacks one of %s" % ", ".join(RULE_FIELDS[kind]))
     return rule
+
+# extreme and mismatch (a caption's least or greatest, the map's cells): claims_extremes.py,
+# imported last since it reads this module's helpers
+from claims_extremes import check_extreme, check_mismatch  # noqa: E402
+CHECKS.update(extreme=check_extreme, mismatch=check_mismatch)

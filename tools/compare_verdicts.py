@@ -5,7 +5,8 @@
 
 A verdict is what a claim decides, not the numbers it rests on (times move with the machine's
 load): a membership claim's set, a trend's word, a statistic's words, a threshold's rows, a
-comparison's winner, or that it is a tie, an equality's pairs and a count's number of its groups.
+comparison's winner, or that it is a tie, an equality's pairs, a count's number of its groups, an
+extreme's holder and a mismatch's number of differing cells.
 A ratio claim is a measured value, not a verdict: its verdict is how many ratios it spans (which
 runs it is measured from is chosen by time too), so two reports whose ratios differ in value, or
 were measured on other runs, agree on it. Prints
@@ -37,6 +38,11 @@ def verdict(claim):
         return ("count", rule.get("count"), len(rule.get("groups", [])))
     if kind == "equality":  # the pairs it says are equal
         return ("equality", sorted(pointers))
+    if kind == "extreme":  # which run holds the least or the greatest
+        a = rule.get("a")
+        return ("extreme", rule.get("which"), pointers[a] if isinstance(a, int) and a < len(pointers) else None)
+    if kind == "mismatch":  # how many cells differ
+        return ("mismatch", rule.get("count"))
     if kind == "ratio":  # a measured value, not a verdict: how many ratios it spans
         return ("ratio", len(rule.get("ratios", [])))
     return (kind, json.dumps(rule, sort_keys=True))

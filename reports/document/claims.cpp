@@ -178,6 +178,40 @@ void claim_rate(Ledger& l, StabilitySource s, std::string id, std::string sectio
   l.add(std::move(c));
 }
 
+void claim_map_cells(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence, std::size_t disagree) {
+  stability_doc(l, s);
+  std::vector<std::pair<Evidence, Evidence>> pairs;
+  for (std::size_t m : s.data.map.methods)
+    pairs.push_back({l.at(s.file, "/map/stable/" + name(m)), l.at(s.file, "/map/predicted/" + name(m))});
+  claim_mismatch(l, claim_text(std::move(id), std::move(section), std::move(sentence)), pairs, disagree);
+}
+
+void claim_extreme_rate(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
+                        const std::vector<const SweepRow*>& rows, const SweepRow* extreme, Extreme which, Digits d) {
+  std::vector<Evidence> values;
+  std::size_t a = rows.size();
+  for (const SweepRow* r : rows) {
+    if (r == extreme) a = values.size();
+    const auto rate = field_of(l, s, "sweep", {{"method", name(r->method)}, {"dt", r->dt}, {"damping", r->damping}}, "rate_measured");
+    if (!rate) throw std::logic_error("claim_extreme_rate: " + name(r->method) + " without its sweep row");
+    values.push_back(*rate);
+  }
+  claim_extreme(l, claim_text(std::move(id), std::move(section), std::move(sentence)), std::move(values), a, which, d);
+}
+
+void claim_least_threshold(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
+                           const std::vector<std::size_t>& methods, std::size_t least, double damping, const char* field, Digits d) {
+  std::vector<Evidence> values;
+  std::size_t a = methods.size();
+  for (std::size_t m : methods) {
+    const auto v = field_of(l, s, "thresholds", {{"method", name(m)}, {"damping", damping}}, field);
+    if (!v) throw std::logic_error("claim_least_threshold: " + name(m) + " without its thresholds row");
+    if (m == least) a = values.size();
+    values.push_back(*v);
+  }
+  claim_extreme(l, claim_text(std::move(id), std::move(section), std::move(sentence)), std::move(values), a, Extreme::Least, d);
+}
+
 void claim_family_trend(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
                         const FamilyTrend& t, double damping) {
   Claim c{std::move(id), std::move(section), std::move(sentence), "trend", {}, {}};
@@ -354,6 +388,55 @@ void claim_ratios(Ledger& l, Claim c, const std::vector<Ratio>& ratios, double l
   c.rule = {{"ratios", std::move(terms)}, {"least", printed(least, d)}, {"greatest", printed(greatest, d)},
             {"digits", {{d.significant ? "significant" : "decimals", d.n}}}};
   l.add(std::move(c));
+}
+
+void claim_extreme(Ledger& l, Claim c, std::vector<Evidence> values, std::size_t a, Extreme which, std::optional<Digits> d) {
+  if (a >= values.size()) throw std::logic_error("claim_extreme: " + c.id + " without its value");
+  Json others = Json::array();
+  for (std::size_t k = 0; k < values.size(); ++k)
+    if (k != a) others.push_back(k);
+  c.kind = "extreme";
+  c.rule = {{"a", a}, {"others", std::move(others)}, {"which", which == Extreme::Least ? "least" : "greatest"}};
+  if (d) c.rule["printed"] = printed(values[a].value.get<double>(), *d), c.rule["digits"] = {{d->significant ? "significant" : "decimals", d->n}};
+  c.evidence = std::move(values);
+  l.add(std::move(c));
+}
+
+void claim_greatest_fall(Ledger& l, Claim c, const std::vector<std::pair<Evidence, Evidence>>& pairs, std::size_t a) {
+  if (a >= pairs.size()) throw std::logic_error("claim_greatest_fall: " + c.id + " without its pair");
+  Json others = Json::array();
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    if (k != a) others.push_back({2 * k, 2 * k + 1});
+    c.evidence.push_back(pairs[k].first), c.evidence.push_back(pairs[k].second);
+  }
+  c.kind = "extreme";
+  c.rule = {{"a", {2 * a, 2 * a + 1}}, {"others", std::move(others)}, {"which", "greatest"}};
+  l.add(std::move(c));
+}
+
+void claim_mismatch(Ledger& l, Claim c, const std::vector<std::pair<Evidence, Evidence>>& pairs, std::size_t count) {
+  if (pairs.empty()) return;
+  Json ids = Json::array();
+  for (const auto& [a, b] : pairs) ids.push_back({c.evidence.size(), c.evidence.size() + 1}), c.evidence.push_back(a), c.evidence.push_back(b);
+  c.kind = "mismatch";
+  c.rule = {{"pairs", std::move(ids)}, {"count", count}};
+  l.add(std::move(c));
+}
+
+void claim_range(Ledger& l, const std::string& id, const std::string& section, const std::string& sentence, const std::vector<Evidence>& values,
+                 std::size_t least, std::size_t most, std::optional<Digits> d) {
+  claim_extreme(l, claim_text(id + ".least", section, sentence), values, least, Extreme::Least, d);
+  claim_extreme(l, claim_text(id + ".greatest", section, sentence), values, most, Extreme::Greatest, d);
+}
+
+Evidence row_field(const Ledger& l, const std::string& file, const std::string& rows, const Json& where, const std::string& field) {
+  const Json& table = l.documents().at(file).at(Json::json_pointer(rows));
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    bool all = true;
+    for (const auto& [k, v] : where.items()) all = all && table[i].contains(k) && table[i][k] == v;
+    if (all) return l.at(file, fmt::format("{}/{}/{}", rows, i, field));
+  }
+  throw std::logic_error("row_field: no row of " + file + rows + " matches " + where.dump());
 }
 
 }  // namespace steplab

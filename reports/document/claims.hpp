@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -31,7 +32,7 @@ struct Evidence {
 };
 
 struct Claim {
-  std::string id, section, sentence, kind;  // kind: membership, trend, statistic, threshold, comparison, equality, count, ratio (docs/json.md)
+  std::string id, section, sentence, kind;  // kind: membership, trend, statistic, threshold, comparison, equality, count, ratio, extreme, mismatch (docs/json.md)
   Json rule;
   std::vector<Evidence> evidence;
 };
@@ -124,6 +125,23 @@ struct Ratio {
 void claim_ratios(Ledger& l, Claim c, const std::vector<Ratio>& ratios, double least, double greatest, Digits d);
 inline void claim_ratio(Ledger& l, Claim c, Ratio r, double value, Digits d) { claim_ratios(l, std::move(c), {std::move(r)}, value, value, d); }
 
+// "`values[a]` is the least (the greatest) of `values`", and where `d` is given, printed as the
+// sentence prints it (printed(value, *d)): an extreme claim, what a figure's caption says of its
+// curves. "n cells of these pairs of tables differ": a mismatch claim, each evidence a whole array.
+enum class Extreme { Least, Greatest };
+void claim_extreme(Ledger& l, Claim c, std::vector<Evidence> values, std::size_t a, Extreme which, std::optional<Digits> d = {});
+// "The fall from `first` to `second` of pairs[a] is the greatest of the pairs'": an extreme claim
+// over differences (a figure's furthest fall).
+void claim_greatest_fall(Ledger& l, Claim c, const std::vector<std::pair<Evidence, Evidence>>& pairs, std::size_t a);
+void claim_mismatch(Ledger& l, Claim c, const std::vector<std::pair<Evidence, Evidence>>& pairs, std::size_t count);
+// The least and the greatest of `values` as a sentence states them (values[least], values[most]):
+// two extreme claims, `id`.least and `id`.greatest.
+void claim_range(Ledger& l, const std::string& id, const std::string& section, const std::string& sentence, const std::vector<Evidence>& values,
+                 std::size_t least, std::size_t most, std::optional<Digits> d = {});
+// `field` of the first row of the array at `rows` in the cited document `file` whose fields equal
+// `where`'s, as evidence: std::logic_error where there is none.
+Evidence row_field(const Ledger& l, const std::string& file, const std::string& rows, const Json& where, const std::string& field);
+
 // Words as part of a claim's id: "explicit Runge-Kutta" -> "explicit_runge-kutta".
 std::string id_word(std::string_view words);
 
@@ -170,6 +188,15 @@ void claim_unbounded_at(Ledger& l, StabilitySource s, std::string id, std::strin
 // kWeakRate); none for no method.
 void claim_rate(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence, double dt,
                 double damping, const std::vector<std::size_t>& methods, const char* op, double limit);
+// "`disagree` of the stability map's cells disagree with the step map's prediction": a mismatch
+// claim over each method's two tables of map/stable and map/predicted.
+void claim_map_cells(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence, std::size_t disagree);
+// "`extreme` has the least (greatest) measured energy rate of the sweep's `rows`, printed with `d`".
+void claim_extreme_rate(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
+                        const std::vector<const SweepRow*>& rows, const SweepRow* extreme, Extreme which, Digits d);
+// "`least` has the least `field` (dt_measured, dt_theory) at `damping` of `methods`, printed with `d`".
+void claim_least_threshold(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
+                           const std::vector<std::size_t>& methods, std::size_t least, double damping, const char* field, Digits d);
 // The work-precision study as the report writes it, data/cost/work_precision.json.
 inline constexpr const char* kWorkDocument = "cost/work_precision.json";
 // A field of a work point (`p` of scene `w`) in the cited work-precision document, as evidence.

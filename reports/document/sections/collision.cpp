@@ -90,7 +90,7 @@ class Collision : public Section {
                       r.config.dts.front(), bounce_orders(d, page.ledger));
     md += triangle(page);
     if (page.has("bounce_energy") && !page.handout)
-      md += page.figure("bounce_energy", "The bounce: E/E0 after the last bounce against dt, a panel per family. " + bounce_spread(r));
+      md += page.figure("bounce_energy", "The bounce: E/E0 after the last bounce against dt, a panel per family. " + bounce_spread(r, page.ledger));
     return md;
   }
 
@@ -170,14 +170,28 @@ class Collision : public Section {
 
   // The bounce figure's sentence of what to see: at the largest step, the least and the most
   // energy left after the last bounce.
-  static std::string bounce_spread(const CollisionResult& r) {
+  static std::string bounce_spread(const CollisionResult& r, Ledger* l) {
     const double dt = *std::max_element(r.config.dts.begin(), r.config.dts.end());
-    const auto [low, high] = least_and_most(
-        r.bounce, [&](const CollisionRun& run) { return run.dt == dt && run.status == RunStatus::Ok && !run.bounces.empty(); },
-        [](const CollisionRun& run) { return run.bounces.back().energy_ratio; });
+    const auto bounced = [&](const CollisionRun& run) { return run.dt == dt && run.status == RunStatus::Ok && !run.bounces.empty(); };
+    const auto [low, high] = least_and_most(r.bounce, bounced, [](const CollisionRun& run) { return run.bounces.back().energy_ratio; });
     if (!low) return fmt::format("At dt {} no run bounces.", dt);
-    return fmt::format("At dt {}, E/E0 after the last bounce runs from {:.4f} (`{}`) to {:.4f} (`{}`).", dt,
-                       low->bounces.back().energy_ratio, name(low->method), high->bounces.back().energy_ratio, name(high->method));
+    constexpr Digits kRatio{false, 4};
+    const std::string text = fmt::format("At dt {}, E/E0 after the last bounce runs from {} (`{}`) to {} (`{}`).", dt,
+                                         printed(low->bounces.back().energy_ratio, kRatio), name(low->method),
+                                         printed(high->bounces.back().energy_ratio, kRatio), name(high->method));
+    if (l) {  // the two ends over the runs that bounced at that step
+      l->document(kCollisionDocument, [&] { return collision_json(r); });
+      std::vector<Evidence> ratios;
+      std::size_t least = 0, most = 0;
+      for (std::size_t i = 0; i < r.bounce.size(); ++i)
+        if (bounced(r.bounce[i])) {
+          if (&r.bounce[i] == low) least = ratios.size();
+          if (&r.bounce[i] == high) most = ratios.size();
+          ratios.push_back(l->at(kCollisionDocument, fmt::format("/bounce/{}/energy_ratio_last_bounce", i)));
+        }
+      claim_range(*l, "collision.bounce_energy", "collision", text, ratios, least, most, kRatio);
+    }
+    return text;
   }
 
   // The triangle's runs that ended well with the least and the most energy at the end (null if none).

@@ -113,13 +113,24 @@ class Convergence : public Section {
     const auto [flat, steep] = least_and_most(
         shown.fits, [](const ConvergenceFit& f) { return f.fit.fitted && !method_info(f.method).exact_flow; },
         [](const ConvergenceFit& f) { return f.fit.order; });
-    if (page.has("convergence"))
-      md += page.figure("convergence", fmt::format("Error against dt on {}, a panel per family: least-squares lines over the "
-                                                   "fitted window (solid), slopes 1, 2 and 4 for reference (grey, dashed). {}", on,
-                                                   flat ? fmt::format("The fitted orders run from {:.2f} (`{}`) to {:.2f} (`{}`).",
-                                                                      flat->fit.order, name(flat->method), steep->fit.order,
-                                                                      name(steep->method))
-                                                        : std::string("No method's errors reach their asymptotic range.")));
+    if (!page.has("convergence")) return md;
+    const std::string range = flat ? fmt::format("The fitted orders run from {:.2f} (`{}`) to {:.2f} (`{}`).", flat->fit.order,
+                                                 name(flat->method), steep->fit.order, name(steep->method))
+                                   : std::string("No method's errors reach their asymptotic range.");
+    md += page.figure("convergence", fmt::format("Error against dt on {}, a panel per family: least-squares lines over the "
+                                                 "fitted window (solid), slopes 1, 2 and 4 for reference (grey, dashed). {}", on, range));
+    if (page.ledger && flat) {  // the caption's two ends, over the fitted lines it draws
+      const std::string file = cite_convergence(*page.ledger, shown);
+      std::vector<Evidence> orders;
+      std::size_t least = 0, most = 0;
+      for (const ConvergenceFit& f : shown.fits)
+        if (f.fit.fitted && !method_info(f.method).exact_flow) {
+          if (&f == flat) least = orders.size();
+          if (&f == steep) most = orders.size();
+          orders.push_back(row_field(*page.ledger, file, "/fits", {{"method", name(f.method)}}, "order"));
+        }
+      claim_range(*page.ledger, "convergence.orders", "convergence", range, orders, least, most, Digits{false, 2});
+    }
     return md;
   }
 

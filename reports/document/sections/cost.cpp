@@ -108,14 +108,23 @@ class Cost : public Section {
     }
     md += cheapest_table(page, timed);
     for (const SceneWork& w : r.scenes) {
-      const WorkPoint* least =  // the smallest error any run reaches
-          least_and_most(w.points, [](const WorkPoint& p) { return p.status == RunStatus::Ok && p.error > 0; }, &WorkPoint::error).first;
-      if (page.has(work_precision_figure(w.scene)) && least)  // a figure only of scenes with such a point
-        md += page.figure(work_precision_figure(w.scene),
-                          fmt::format("Work against precision on the {}: the largest error along a run against its {}; the "
-                                      "explicit fixed-step methods, the symplectic splittings, the implicit methods and the "
-                                      "adaptive solvers in panels of at most six. The smallest error reached, {:.2g}, is `{}`'s.",
-                                      scene_word(w), timed ? "run time" : "force evaluations", least->error, least->method));
+      const auto reached = [](const WorkPoint& p) { return p.status == RunStatus::Ok && p.error > 0; };
+      const WorkPoint* least = least_and_most(w.points, reached, &WorkPoint::error).first;  // the smallest error any run reaches
+      if (!page.has(work_precision_figure(w.scene)) || !least) continue;  // a figure only of scenes with such a point
+      constexpr Digits kError{true, 2};
+      const std::string smallest = fmt::format("The smallest error reached, {}, is `{}`'s.", printed(least->error, kError), least->method);
+      md += page.figure(work_precision_figure(w.scene),
+                        fmt::format("Work against precision on the {}: the largest error along a run against its {}; the "
+                                    "explicit fixed-step methods, the symplectic splittings, the implicit methods and the "
+                                    "adaptive solvers in panels of at most six. {}",
+                                    scene_word(w), timed ? "run time" : "force evaluations", smallest));
+      if (!page.ledger) continue;
+      std::vector<Evidence> errors;  // every run that reached an error, the least among them
+      std::size_t a = 0;
+      for (const WorkPoint& p : w.points)
+        if (reached(p)) a = &p == least ? errors.size() : a, errors.push_back(work_point_at(*page.ledger, page.data, w, p, "error_max"));
+      claim_extreme(*page.ledger, claim_text(fmt::format("cost.smallest_error.{}", scene_name(w.scene)), "cost", smallest), errors, a,
+                    Extreme::Least, kError);
     }
     md += peer_table(page, timed) + dopri5_sentences(page, timed);
     if (r.stiff >= 0) md += limits_text(r, page.ledger) + stiffness_text(page, timed);

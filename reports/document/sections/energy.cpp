@@ -147,9 +147,11 @@ class Energy : public Section {
       md += "\n";
     }
     if (page.has("energy_sheet")) md += page.figure("energy_sheet", sheet_caption(d, e));
-    if (page.has("energy") && !page.handout)
+    if (page.has("energy") && !page.handout) {
+      const std::string band = band_sentence(e, page.ledger, d);
       md += page.figure("energy", fmt::format("E/E0 - 1 of the undamped spring at dt = {} over t = {:g}, a panel per family "
-                                              "(linear axis). {}", c.large_dt, c.energy_t_end, band_sentence(e)));
+                                              "(linear axis). {}", c.large_dt, c.energy_t_end, band));
+    }
     return md;
   }
 
@@ -164,14 +166,31 @@ class Energy : public Section {
     return out;
   }
 
-  // The family figure's sentence of what to see: the widest and the narrowest band of E/E0 among the
-  // bounded runs.
-  static std::string band_sentence(const std::vector<EnergyBehaviour>& e) {
-    const auto [narrow, wide] = least_and_most(
-        e, [](const EnergyBehaviour& b) { return b.kind == EnergyKind::Bounded; }, [](const EnergyBehaviour& b) { return b.hi - b.lo; });
-    if (!wide) return "No run keeps its energy bounded.";
-    return fmt::format("Of the bounded runs, `{}` swings widest (E/E0 from {:.3g} to {:.3g}) and `{}` least (from {:.6g} to {:.6g}).",
-                       name(wide->method), wide->lo, wide->hi, name(narrow->method), narrow->lo, narrow->hi);
+  // The family figure's sentence of what to see: how high and how low E/E0 reaches among the
+  // bounded runs, each an extreme claim over their rows of the energy document.
+  static std::string band_sentence(const std::vector<EnergyBehaviour>& e, Ledger* l, const ReportData& d) {
+    const auto bounded = [](const EnergyBehaviour& b) { return b.kind == EnergyKind::Bounded; };
+    const EnergyBehaviour* high = least_and_most(e, bounded, [](const EnergyBehaviour& b) { return b.hi; }).second;
+    const EnergyBehaviour* low = least_and_most(e, bounded, [](const EnergyBehaviour& b) { return b.lo; }).first;
+    if (!high) return "No run keeps its energy bounded.";
+    constexpr Digits kDigits{true, 3};
+    const std::string text = fmt::format("Of the bounded runs, the highest E/E0 is `{}`'s ({}), the lowest `{}`'s ({}).", name(high->method),
+                                         printed(high->hi, kDigits), name(low->method), printed(low->lo, kDigits));
+    if (l) {
+      l->document(kEnergyDocument, [&] { return energy_document(d); });
+      std::vector<Evidence> his, los;
+      std::size_t a = 0, b = 0;
+      for (const EnergyBehaviour& r : e)
+        if (bounded(r)) {
+          if (&r == high) a = his.size();
+          if (&r == low) b = los.size();
+          his.push_back(row_field(*l, kEnergyDocument, "/rows", {{"method", name(r.method)}}, "hi"));
+          los.push_back(row_field(*l, kEnergyDocument, "/rows", {{"method", name(r.method)}}, "lo"));
+        }
+      claim_extreme(*l, claim_text("energy.band.highest", "energy", text), his, a, Extreme::Greatest, kDigits);
+      claim_extreme(*l, claim_text("energy.band.lowest", "energy", text), los, b, Extreme::Least, kDigits);
+    }
+    return text;
   }
 
   // What the sheet's figure shows, from the kinds the section's list states (and claims) above.

@@ -85,18 +85,25 @@ class Families : public Section {
 
   // The regions figure's sentence of what to see: along the spring's ray at `gamma`, the region left
   // first (the least predicted dt*) and the methods whose region holds the whole ray.
-  std::string ray_sentence(const ReportData& d, double gamma) const {
+  // Each a claim over the thresholds' predicted dt* at `gamma`, where `l` is given.
+  std::string ray_sentence(const ReportData& d, double gamma, Ledger* l) const {
     const ThresholdRow* first = nullptr;
-    std::vector<std::size_t> whole;
+    std::vector<std::size_t> regions, whole;
     for (const ThresholdRow& r : d.thresholds) {
       if (!has_region(r.method) || r.damping != gamma) continue;
+      regions.push_back(r.method);
       if (std::isinf(r.dt_theory)) whole.push_back(r.method);
       else if (!first || r.dt_theory < first->dt_theory) first = &r;
     }
+    constexpr Digits kDt{true, 4};
     std::string out;
-    if (first) out = fmt::format("The ray leaves `{}`'s region first, at dt* = {:.4g}", name(first->method), first->dt_theory);
+    if (first) out = fmt::format("The ray leaves `{}`'s region first, at dt* = {}", name(first->method), printed(first->dt_theory, kDt));
     if (!whole.empty()) out += fmt::format("{} stays inside the regions of {}", out.empty() ? "The ray" : ", and", method_list(whole));
-    return out.empty() ? out : out + ".";
+    if (out.empty()) return out;
+    out += ".";
+    if (l && first) claim_least_threshold(*l, {d}, "families.ray_leaves_first", "families", out, regions, first->method, gamma, "dt_theory", kDt);
+    if (l && !whole.empty()) claim_unbounded_at(*l, {d}, "families.ray_inside", "families", out, gamma, whole);
+    return out;
   }
 
   std::string markdown(Page& page) const override {
@@ -125,7 +132,7 @@ class Families : public Section {
                                                "lightly filled and edged in its colour and dash; red line with crosses: the "
                                                "spring's eigenvalue ray at damping {}; "
                                                "points: where it leaves a region at the predicted dt* and where it enters it "
-                                               "again. {}", gamma, ray_sentence(d, gamma)));
+                                               "again. {}", gamma, ray_sentence(d, gamma, page.ledger)));
     }
     md += by_hand(d, page.findings, page.ledger);
     md += splitting(d, page.findings, page.ledger);

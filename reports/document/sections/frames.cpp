@@ -72,14 +72,23 @@ class Frames : public Section {
     md += large_steps();
     md += stability(page.ledger);
     md += fronts(page.ledger);
-    const FrameRun* best =  // the least error of a stable split
-        least_and_most(r_.runs, [](const FrameRun& run) { return run.stable && run.status == RunStatus::Ok; }, &FrameRun::error).first;
+    const auto stable = [](const FrameRun& run) { return run.stable && run.status == RunStatus::Ok; };
+    const FrameRun* best = least_and_most(r_.runs, stable, &FrameRun::error).first;  // the least error of a stable split
+    constexpr Digits kError{true, 3};
+    const std::string least = best ? fmt::format("The least error, {}, is `{}`'s at {} substeps a frame.", printed(best->error, kError),
+                                                 name(best->setup.method), best->setup.substeps)
+                                   : std::string("No split is stable.");
     md += page.figure("frames", fmt::format("Error against cost a frame ({}), {} at {} frames a second: each method's splits of "
                                             "the budget {}, the stable ones. {}",
-                                            c.timing ? "time" : "spring visits", scene_name(c.scene), c.fps, c.budget,
-                                            best ? fmt::format("The least error, {:.3g}, is `{}`'s at {} substeps a frame.", best->error,
-                                                               name(best->setup.method), best->setup.substeps)
-                                                 : std::string("No split is stable.")));
+                                            c.timing ? "time" : "spring visits", scene_name(c.scene), c.fps, c.budget, least));
+    if (page.ledger && best) {  // over the stable splits
+      std::vector<Evidence> errors;
+      std::size_t a = 0;
+      for (std::size_t i = 0; i < r_.runs.size(); ++i)
+        if (stable(r_.runs[i]))
+          a = &r_.runs[i] == best ? errors.size() : a, errors.push_back(page.ledger->at(kFramesDocument, fmt::format("/runs/{}/error_max", i)));
+      claim_extreme(*page.ledger, claim_text("frames.least_error", "frames", least), errors, a, Extreme::Least, kError);
+    }
     md += family_answer();
     return md;
   }

@@ -42,7 +42,7 @@ class HandInLongRun : public Section {
     md += structure_answer(r_, page.ledger, "long_run", "long_run") + symmetry_note(r_) + "\n\n";
     if (!drawn_methods().empty())
       md += page.figure("long_time", "The sheet's spring swinging in a plane: the largest relative energy error up to t (in periods). " +
-                                         extremes_sentence(r_));
+                                         extremes_sentence(r_, page.ledger, "long_run"));
     return md;
   }
 

@@ -20,18 +20,29 @@
 
 namespace steplab {
 
-std::string extremes_sentence(const LongTimeResult& r) {
+std::string extremes_sentence(const LongTimeResult& r, Ledger* l, const std::string& section) {
   const auto last = [](const LongTimeRow& w) { return w.error.front().back(); };
-  const auto [least, most] = least_and_most(
-      r.rows,
-      [&](const LongTimeRow& w) {
-        return w.steps_per_period == r.config.steps_per_period.front() && w.status == RunStatus::Ok && !w.error.empty() &&
-               !w.error.front().empty();
-      },
-      last);
+  const auto ended = [&](const LongTimeRow& w) {
+    return w.steps_per_period == r.config.steps_per_period.front() && w.status == RunStatus::Ok && !w.error.empty() && !w.error.front().empty();
+  };
+  const auto [least, most] = least_and_most(r.rows, ended, last);
   if (!most) return "No run ends well.";
-  return fmt::format("After {:g} periods the largest energy error is `{}`'s ({:.2g}), the least `{}`'s ({:.2g}).",
-                     most->times.back(), name(most->method), last(*most), name(least->method), last(*least));
+  constexpr Digits kError{true, 2};
+  const std::string text = fmt::format("After {:g} periods the largest energy error is `{}`'s ({}), the least `{}`'s ({}).", most->times.back(),
+                                       name(most->method), printed(last(*most), kError), name(least->method), printed(last(*least), kError));
+  if (l) {  // each run's last energy error, the two ends
+    const std::string file = cite_long_time(*l, r, section);
+    std::vector<Evidence> errors;
+    std::size_t a = 0, b = 0;
+    for (std::size_t i = 0; i < r.rows.size(); ++i)
+      if (ended(r.rows[i])) {
+        if (&r.rows[i] == least) a = errors.size();
+        if (&r.rows[i] == most) b = errors.size();
+        errors.push_back(l->at(file, fmt::format("/rows/{}/invariants/energy/relative_error/{}", i, r.rows[i].error.front().size() - 1)));
+      }
+    claim_range(*l, fmt::format("{}.energy_error.{}", section, scene_name(r.config.scene)), section, text, errors, a, b, kError);
+  }
+  return text;
 }
 
 // The data files of a long-time run: lt_<scene>_<method>.dat (t in periods, each invariant's
@@ -168,7 +179,8 @@ class LongTime : public Section {
     if (!panels(page.data.methods).empty())
       md += page.figure("long_time", fmt::format("{}, {} steps a period: the largest relative energy error up to t (in "
                                                "periods), a panel per family. {}",
-                                               scene_kernel(c.scene).title, c.steps_per_period.front(), extremes_sentence(orbit_)));
+                                               scene_kernel(c.scene).title, c.steps_per_period.front(),
+                                               extremes_sentence(orbit_, page.ledger, "long_time")));
     md += table();
     return md;
   }

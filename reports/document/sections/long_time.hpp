@@ -15,8 +15,9 @@ namespace steplab {
 // error up to t, the position error where the scene has an exact solution.
 void write_long_time_data(const LongTimeResult& r, const DataDir& dat);
 // The figure's sentence of what to see: at the first steps a period, the run that ends with the
-// largest energy error and the one with the least.
-std::string extremes_sentence(const LongTimeResult& r);
+// largest energy error and the one with the least, each an extreme claim of `section` (its data
+// folder too) where `l` is given.
+std::string extremes_sentence(const LongTimeResult& r, Ledger* l = nullptr, const std::string& section = "");
 // The energy error from which the report calls an orbit (or a swing) lost (energy_verdict).
 inline constexpr double kLostAt = 0.1;
 // The runs by their energy error (energy_verdict at kLostAt): bounded, drifting, unclear, lost; the highest order that drifts and the lowest that stays bounded;

@@ -30,21 +30,31 @@ std::string finding_text(const Exponent& e) { return finding(e) ? exponent_text(
 
 // The cost figure's sentence of what to see: how many of the solvers reach the target at the
 // largest size (a count, not a timing, which may flip under load).
-std::string reach_sentence(const ScalingResult& r) {
-  int largest = 0, masses = 0, reached = 0;
+// A study's data file in the section's folder, and the path the claims cite it by.
+std::string scaling_file(const ScalingResult& r) { return fmt::format("scaling_{}.json", r.config.scene); }
+std::string scaling_document(const ScalingResult& r) { return "scaling/" + scaling_file(r); }
+
+// How many solvers reach the target at the largest size: a membership claim over those rows (a
+// row's dt, or an adaptive solver's tolerance, is null where its solver did not reach it).
+std::string reach_sentence(const ScalingResult& r, Ledger* l) {
+  int largest = 0, masses = 0;
+  std::vector<std::string> reached;
   for (const ScalingRow& w : r.rows) largest = std::max(largest, w.n);
   for (const ScalingRow& w : r.rows)
-    if (w.n == largest) masses = w.masses, reached += w.reached();
-  return fmt::format("At N = {}, {} of the {} solvers reach the target.", masses, reached, r.solvers());
+    if (w.n == largest && (masses = w.masses, w.reached())) reached.push_back(w.solver);
+  const std::string text = fmt::format("At N = {}, {} of the {} solvers reach the target.", masses, reached.size(), r.solvers());
+  if (l) {
+    const std::string file = scaling_document(r);
+    l->document(file, [&] { return scaling_json(r); });
+    claim_members(*l, claim_text(fmt::format("scaling.{}.reached", r.config.scene), "scaling", text), file, "/rows", {{"masses", masses}},
+                  "solver", false, test_any({test_field("/dt", ">", 0), test_field("/tolerance", ">", 0)}), reached);
+  }
+  return text;
 }
 
 std::string params_but_size(std::size_t scene, const std::vector<double>& params) {
   return params_text(scene, params, scene_kernel(scene).size_param);
 }
-
-// A study's data file in the section's folder, and the path the claims cite it by.
-std::string scaling_file(const ScalingResult& r) { return fmt::format("scaling_{}.json", r.config.scene); }
-std::string scaling_document(const ScalingResult& r) { return "scaling/" + scaling_file(r); }
 
 // The exponents that are findings, a row per solver with one; the others in a sentence.
 std::string exponents_table(const ScalingResult& r, Ledger* l) {
@@ -343,7 +353,7 @@ class ScalingSection : public Section {
         md += page.figure("scaling", fmt::format("{}: the whole run's cost at the target error against N; the explicit "
                                                  "fixed-step methods, the symplectic splittings, the implicit methods and the "
                                                  "adaptive solvers in panels of at most six. {}",
-                                                 scene_kernel(scene_index(r.config.scene)).title, reach_sentence(r)));
+                                                 scene_kernel(scene_index(r.config.scene)).title, reach_sentence(r, page.ledger)));
     }
     if (d.scaling_map) md += map_markdown(*d.scaling_map, page);
     return md;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
+#include "reports/document/claims.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
 
@@ -64,18 +65,23 @@ class SceneFigures : public Section {
     std::string md = "## " + title() + "\n\n";
     if (c.covers(c.projectile.scene)) {
       const std::vector<Deviation> dev = deviation_of(d, c.projectile, d.cannon);
-      md += fmt::format("The cannon ball at dt = {}: each method's largest distance from the exact parabola over t <= {:g}: {}.\n\n",
-                        c.cannonball_dt, c.cannonball_t_end, deviations(dev));
-      md += page.figure("cannonball", fmt::format("Cannon ball paths at dt = {} beside the exact parabola (grey), a panel per family. {}",
-                                                  c.cannonball_dt, farthest(dev, "Over the flight")));
+      const std::string line = fmt::format("The cannon ball at dt = {}: each method's largest distance from the exact parabola over t <= {:g}: {}.",
+                                           c.cannonball_dt, c.cannonball_t_end, deviations(dev));
+      const std::string far = farthest(dev, "Over the flight");
+      md += line + "\n\n" + page.figure("cannonball", fmt::format("Cannon ball paths at dt = {} beside the exact parabola (grey), a panel per "
+                                                                  "family. {}", c.cannonball_dt, far));
+      cite(page.ledger, "cannonball", c.cannonball_dt, dev, line, far);
     }
     if (c.covers(c.oscillator.scene)) {
       std::string far;  // at the largest step
       for (std::size_t k = 0; k < c.spring_figure_dts.size(); ++k) {
         const std::vector<Deviation> dev = deviation_of(d, c.oscillator, d.spring[k]);
-        md += fmt::format("{}The spring at dt = {}: each method's largest distance from the exact height over t <= {:g}: {}.",
-                          k ? " " : "", c.spring_figure_dts[k], c.spring_figure_t_end, deviations(dev));
-        if (k + 1 == c.spring_figure_dts.size()) far = farthest(dev, fmt::format("At dt = {}", c.spring_figure_dts[k]));
+        const std::string line = fmt::format("The spring at dt = {}: each method's largest distance from the exact height over t <= {:g}: {}.",
+                                             c.spring_figure_dts[k], c.spring_figure_t_end, deviations(dev));
+        md += (k ? " " : "") + line;
+        const bool last = k + 1 == c.spring_figure_dts.size();
+        if (last) far = farthest(dev, fmt::format("At dt = {}", c.spring_figure_dts[k]));
+        cite(page.ledger, "spring", c.spring_figure_dts[k], dev, line, last ? far : "");
       }
       md += "\n\n" + page.figure("spring", fmt::format("The spring's height y(t) against the exact solution (grey), a panel "
                                                        "per family and dt ({}). {}", words(c.spring_figure_dts), far));
@@ -106,17 +112,45 @@ class SceneFigures : public Section {
     }
     return out;
   }
+  static constexpr Digits kDistance{true, 2};
+  static const Deviation* farthest_run(const std::vector<Deviation>& dev) {
+    return least_and_most(dev, [](const Deviation& v) { return v.ok; }, &Deviation::worst).second;
+  }
   // "`rk4` 3.2e-10 m, ...", and the figure's sentence of what to see: the farthest of the runs that ended well.
   static std::string deviations(const std::vector<Deviation>& dev) {
     std::vector<std::string> out;
     for (const Deviation& v : dev)
-      out.push_back(v.ok ? fmt::format("`{}` {:.2g} m", name(v.method), v.worst) : fmt::format("`{}` diverged", name(v.method)));
+      out.push_back(v.ok ? fmt::format("`{}` {} m", name(v.method), printed(v.worst, kDistance)) : fmt::format("`{}` diverged", name(v.method)));
     return and_list(out);
   }
   static std::string farthest(const std::vector<Deviation>& dev, const std::string& at) {
-    const Deviation* far = least_and_most(dev, [](const Deviation& v) { return v.ok; }, &Deviation::worst).second;
-    return far ? fmt::format("{} the farthest from the exact path is `{}`, {:.2g} m.", at, name(far->method), far->worst)
+    const Deviation* far = farthest_run(dev);
+    return far ? fmt::format("{} the farthest from the exact path is `{}`, {} m.", at, name(far->method), printed(far->worst, kDistance))
                : at + " every run diverged.";
+  }
+  // The runs of one scene and step as data/scenes/<scene>_<dt>.json (steplab.deviations/1, docs/json.md):
+  // each distance `line` states, a ratio claim as printed; the farthest (`far` states it, "" where
+  // no sentence does), an extreme claim over the runs that ended well.
+  static void cite(Ledger* l, const std::string& scene, double dt, const std::vector<Deviation>& dev, const std::string& line,
+                   const std::string& far) {
+    if (!l) return;
+    Json runs = Json::array();
+    for (const Deviation& v : dev)
+      runs.push_back({{"method", name(v.method)}, {"status", v.ok ? "ok" : "diverged"}, {"distance_max", v.ok ? Json(v.worst) : Json(nullptr)}});
+    const std::string file = fmt::format("scenes/{}_{}.json", scene, dt), id = fmt::format("scenes.{}.{}", scene, id_word(fmt::format("{}", dt)));
+    l->document(file, [&] { return Json{{"schema", "steplab.deviations/1"}, {"scene", scene}, {"dt", dt}, {"runs", std::move(runs)}}; });
+    std::vector<Evidence> ok;
+    std::size_t a = 0;
+    for (std::size_t k = 0; k < dev.size(); ++k) {
+      if (!dev[k].ok) continue;
+      const Evidence e = l->at(file, fmt::format("/runs/{}/distance_max", k));
+      claim_ratio(*l, claim_text(id + "." + name(dev[k].method), "scenes", line), {{e}, {}}, dev[k].worst,
+                  kDistance);
+      if (&dev[k] == farthest_run(dev)) a = ok.size();
+      ok.push_back(e);
+    }
+    if (!far.empty() && !ok.empty())
+      claim_extreme(*l, claim_text(id + ".farthest", "scenes", far), ok, a, Extreme::Greatest, kDistance);
   }
 };
 

@@ -108,22 +108,33 @@ class Stability : public Section {
         fmt::format("The measured dt* is within {:g} % of the prediction in {} of these {} cases.", 100 * kAgree, agree, cases.size());
     md += "\n" + agreement + "\n\n";
     if (page.ledger) claim_thresholds_agree(*page.ledger, {d}, "stability.thresholds_agree", "stability", agreement, cases, kAgree, agree);
+    const auto measured = [&](const SweepRow& r) { return r.dt == c.large_dt && std::isfinite(r.run.rate); };
     const SweepRow* fastest =  // the fastest measured loss of energy at the figure's dt
-        least_and_most(d.sweep, [&](const SweepRow& r) { return r.dt == c.large_dt && std::isfinite(r.run.rate); },
-                       [](const SweepRow& r) { return r.run.rate; }).first;
-    if (page.has("damping"))
+        least_and_most(d.sweep, measured, [](const SweepRow& r) { return r.run.rate; }).first;
+    if (page.has("damping")) {
+      constexpr Digits kRate{true, 3};
+      const std::string loss = fastest ? fmt::format("The fastest measured loss: `{}` at damping {:g}, {} per second.", name(fastest->method),
+                                                     fastest->damping, printed(fastest->run.rate, kRate))
+                                       : std::string("No rate could be fitted.");
       md += page.figure("damping", fmt::format("Energy growth rate d ln E / dt against damping at dt = {}: measured (points), "
                                                "predicted 2 ln(rho) / h from the step map (lines), a panel per family. {}",
-                                               c.large_dt,
-                                               fastest ? fmt::format("The fastest measured loss: `{}` at damping {:g}, {:.3g} per second.",
-                                                                     name(fastest->method), fastest->damping, fastest->run.rate)
-                                                       : std::string("No rate could be fitted.")));
+                                               c.large_dt, loss));
+      if (page.ledger && fastest) {
+        std::vector<const SweepRow*> rows;
+        for (const SweepRow& r : d.sweep)
+          if (measured(r)) rows.push_back(&r);
+        claim_extreme_rate(*page.ledger, {d}, "stability.fastest_loss", "stability", loss, rows, fastest, Extreme::Least, kRate);
+      }
+    }
     std::size_t disagree = 0;
     for (std::size_t i = 0; i < d.map.methods.size(); ++i) disagree += disagreeing_cells(d.map, i);
     const std::size_t cells = d.map.methods.size() * d.map.damping.size() * d.map.dt.size();
-    md += fmt::format("Over a grid of {} steps from {} to {} and {} dampings from 0 to {:.3g}, each cell a run: {} of its {} cells "
-                      "disagree with the step map's prediction at that cell.\n\n",
-                      d.map.dt.size(), c.stability.map_dt_min, c.stability.map_dt_max, d.map.damping.size(), d.map.damping.back(), disagree, cells);
+    const std::string cells_text = fmt::format("Over a grid of {} steps from {} to {} and {} dampings from 0 to {:.3g}, each cell a run: "
+                                               "{} of its {} cells disagree with the step map's prediction at that cell.",
+                                               d.map.dt.size(), c.stability.map_dt_min, c.stability.map_dt_max, d.map.damping.size(),
+                                               d.map.damping.back(), disagree, cells);
+    md += cells_text + "\n\n";
+    if (page.ledger) claim_map_cells(*page.ledger, {d}, "stability.map_cells", "stability", cells_text, disagree);
     if (page.has("maps"))
       md += page.figure("maps", "The edge of stability over (dt, damping): the measured dt* of each damping's row of runs "
                                 "(points: the largest step of the grid with every smaller one stable), the predicted one "

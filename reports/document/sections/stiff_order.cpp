@@ -76,20 +76,40 @@ class StiffOrder : public Section {
 
   // The figure's sentence of what to see: the method whose fitted order falls furthest from the
   // least stiffness to the greatest (each fitted and stable at both).
-  static std::string drop_sentence(const OrderReduction& r) {
+  static std::string drop_sentence(const OrderReduction& r, Ledger* l, const ReportData& d) {
     const std::vector<ConvergenceResult>& st = r.sweep.studies;
     const std::size_t last = st.size() - 1;
+    std::vector<std::size_t> fitted;  // the methods fitted at both ends, below their stability limit
     std::size_t most = r.methods.size();
     double drop = 0;
     for (std::size_t m = 0; m < r.methods.size(); ++m) {
       const OrderFit &a = st.front().fits[m].fit, &b = st[last].fits[m].fit;
       if (!a.fitted || !b.fitted || r.methods[m].past_stable[0] || r.methods[m].past_stable[last]) continue;
+      fitted.push_back(m);
       if (a.order - b.order > drop) drop = a.order - b.order, most = m;
     }
     if (most == r.methods.size()) return "No fitted order falls from the least stiffness to the greatest.";
-    return fmt::format("From k = {:g} to {:g}, `{}` falls furthest: from order {:.2f} to {:.2f}.", r.sweep.values.front(),
-                       r.sweep.values.back(), name(r.methods[most].method), st.front().fits[most].fit.order,
-                       st[last].fits[most].fit.order);
+    const std::string text = fmt::format("From k = {:g} to {:g}, `{}` falls furthest: from order {:.2f} to {:.2f}.", r.sweep.values.front(),
+                                         r.sweep.values.back(), name(r.methods[most].method), st.front().fits[most].fit.order,
+                                         st[last].fits[most].fit.order);
+    if (l) {  // the fall from the first stiffness's fit to the last's, the greatest of the fitted methods'
+      const std::string file = "stiff_order/stiff_order.json";
+      l->document(file, [&] { return order_reduction_json(d.stiff_order); });
+      std::vector<std::pair<Evidence, Evidence>> falls;
+      std::size_t a = 0;
+      for (std::size_t m : fitted) {
+        if (m == most) a = falls.size();
+        const std::string method = name(r.methods[m].method);
+        falls.push_back({row_field(*l, file, "/fits", {{"method", method}, {"value", r.sweep.values.front()}}, "order"),
+                         row_field(*l, file, "/fits", {{"method", method}, {"value", r.sweep.values.back()}}, "order")});
+      }
+      claim_greatest_fall(*l, claim_text("stiff_order.furthest_fall", "stiff_order", text), falls, a);
+      for (int end = 0; end < 2; ++end)
+        claim_ratio(*l, claim_text(fmt::format("stiff_order.furthest_fall.{}", end ? "stiff" : "non_stiff"), "stiff_order", text),
+                    {{end ? falls[a].second : falls[a].first}, {}}, end ? st[last].fits[most].fit.order : st.front().fits[most].fit.order,
+                    Digits{false, 2});
+    }
+    return text;
   }
 
   std::string markdown(Page& page) const override {
@@ -118,7 +138,8 @@ class StiffOrder : public Section {
     md += table(r);
     if (page.has("stiff_order"))
       md += page.figure("stiff_order", fmt::format("The fitted order against the stiffness on `{}`, a panel per family, each fit's "
-                                                   "bound as an error bar; dashed: the theory's two limits. {}", scene, drop_sentence(r)));
+                                                   "bound as an error bar; dashed: the theory's two limits. {}", scene,
+                                                   drop_sentence(r, page.ledger, page.data)));
     return md;
   }
 
