@@ -98,6 +98,20 @@ class Mismatch(Folder):
         self.assertEqual(p[-1], "2 cells differ, the claim says 1")
         self.cli_names_only([mismatch("M1", 1), extreme("E1", "least", 0, [1])], "M1", stability=moved)
 
+    def test_a_large_map_names_its_cell(self):
+        # a 64 x 64 map: the message names the cell that moved, not the whole array
+        big = [[(r + c) % 3 == 0 for c in range(64)] for r in range(64)]
+        maps = dict(STABILITY, map={"stable": {"rk4": big}, "predicted": {"rk4": copy.deepcopy(big)}})
+        claim = {"id": "M5", "section": "stability", "sentence": "0 of the 4096 cells disagree", "kind": "mismatch",
+                 "rule": {"pairs": [[0, 1]], "count": 0},
+                 "evidence": [ev("/map/stable/rk4", big), ev("/map/predicted/rk4", big)]}
+        moved = copy.deepcopy(maps)
+        moved["map"]["stable"]["rk4"][10][20] = not big[10][20]
+        self.assertEqual(self.problems(claim, stability=maps)["M5"], [])
+        self.assertEqual(self.problems(claim, stability=moved)["M5"],
+                         ["evidence 0 (stability/stability.json /map/stable/rk4): recorded true at /10/20, the file holds false",
+                          "1 cells differ, the claim says 0"])
+
 
 if __name__ == "__main__":
     assert SF == "stability/stability.json"

@@ -57,6 +57,25 @@ class Report:
                 raise Fail("file %s is not readable JSON (%s)" % (name, e))
         return self.cache[name]
 
+def differing(recorded, found):
+    """The recorded value and the file's as a message shows them: whole where short; else, down
+    arrays or objects of one shape (a map of verdicts), their first differing entry and its place."""
+    a, b = show(recorded), show(found)
+    if len(a) + len(b) <= 160:
+        return a, b
+    place = ""
+    while True:
+        if isinstance(recorded, list) and isinstance(found, list) and len(recorded) == len(found):
+            keys = range(len(recorded))
+        elif isinstance(recorded, dict) and isinstance(found, dict) and recorded.keys() == found.keys():
+            keys = list(recorded)
+        else:
+            break
+        k = next(k for k in keys if not same_json(recorded[k], found[k]))
+        place, recorded, found = "%s/%s" % (place, k), recorded[k], found[k]
+    cut = lambda v: show(v) if len(show(v)) <= 70 else show(v)[:70] + " ..."
+    return cut(recorded) + (" at %s" % place if place else ""), cut(found)
+
 # --- a claim and the file -----------------------------------------------------------------
 def check_claim(report, doc, claim):
     if any(f not in claim for f in CLAIM_FIELDS):
@@ -76,7 +95,7 @@ def check_claim(report, doc, claim):
             values.append(found)
             if not same_json(found, e["value"]):
                 problems.append("evidence %d (%s %s): recorded %s, the file holds %s"
-                                % (k, e["file"], e["pointer"], show(e["value"]), show(found)))
+                                % ((k, e["file"], e["pointer"]) + differing(e["value"], found)))
         except Fail as why:
             problems.append("evidence %d: %s" % (k, why))
     try:

@@ -166,14 +166,14 @@ void claim_measured_as_predicted(Ledger& l, StabilitySource s, std::string id, s
   claim_equal(l, claim_text(std::move(id), std::move(section), std::move(sentence)), pairs, relative, 0);
 }
 
-void claim_rate(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence, double dt,
-                double damping, const std::vector<std::size_t>& methods, const char* op, double limit) {
+void claim_sweep(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence, double dt,
+                 double damping, const std::vector<std::size_t>& methods, const char* field, const char* op, double limit) {
   if (methods.empty()) return;
   Claim c{std::move(id), std::move(section), std::move(sentence), "threshold", {{"op", op}, {"limit", limit}}, {}};
   for (std::size_t m : methods) {
-    const std::optional<Evidence> rate = field_of(l, s, "sweep", {{"method", name(m)}, {"dt", dt}, {"damping", damping}}, "rate_measured");
-    if (!rate) throw std::logic_error("claim_rate: " + name(m) + " without its sweep row");
-    c.evidence.push_back(*rate);
+    const std::optional<Evidence> v = field_of(l, s, "sweep", {{"method", name(m)}, {"dt", dt}, {"damping", damping}}, field);
+    if (!v) throw std::logic_error("claim_sweep: " + name(m) + " without its sweep row");
+    c.evidence.push_back(*v);
   }
   l.add(std::move(c));
 }
@@ -423,10 +423,10 @@ void claim_mismatch(Ledger& l, Claim c, const std::vector<std::pair<Evidence, Ev
   l.add(std::move(c));
 }
 
-void claim_range(Ledger& l, const std::string& id, const std::string& section, const std::string& sentence, const std::vector<Evidence>& values,
-                 std::size_t least, std::size_t most, std::optional<Digits> d) {
-  claim_extreme(l, claim_text(id + ".least", section, sentence), values, least, Extreme::Least, d);
-  claim_extreme(l, claim_text(id + ".greatest", section, sentence), values, most, Extreme::Greatest, d);
+void claim_range(Ledger& l, const std::string& id, const std::string& section, const std::string& sentence, const Kept& k,
+                 std::optional<Digits> d) {
+  claim_extreme(l, claim_text(id + ".least", section, sentence), k.values, k.least, Extreme::Least, d);
+  claim_extreme(l, claim_text(id + ".greatest", section, sentence), k.values, k.most, Extreme::Greatest, d);
 }
 
 Evidence row_field(const Ledger& l, const std::string& file, const std::string& rows, const Json& where, const std::string& field) {

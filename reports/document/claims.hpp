@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -134,10 +135,37 @@ void claim_extreme(Ledger& l, Claim c, std::vector<Evidence> values, std::size_t
 // over differences (a figure's furthest fall).
 void claim_greatest_fall(Ledger& l, Claim c, const std::vector<std::pair<Evidence, Evidence>>& pairs, std::size_t a);
 void claim_mismatch(Ledger& l, Claim c, const std::vector<std::pair<Evidence, Evidence>>& pairs, std::size_t count);
-// The least and the greatest of `values` as a sentence states them (values[least], values[most]):
-// two extreme claims, `id`.least and `id`.greatest.
-void claim_range(Ledger& l, const std::string& id, const std::string& section, const std::string& sentence, const std::vector<Evidence>& values,
-                 std::size_t least, std::size_t most, std::optional<Digits> d = {});
+// The evidence of each row of `rows` that `keep` holds (`at(row, its index in rows)`), and where
+// the rows `least` and `most` sit among them: what claim_extreme and claim_range take.
+struct Kept {
+  std::vector<Evidence> values;
+  std::size_t least = 0, most = 0;
+};
+template <class Row, class Keep, class At>
+Kept kept_evidence(const std::vector<Row>& rows, Keep&& keep, const std::type_identity_t<Row>* least, const std::type_identity_t<Row>* most, At&& at) {
+  Kept out;
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    if (keep(rows[i])) {
+      if (&rows[i] == least) out.least = out.values.size();
+      if (&rows[i] == most) out.most = out.values.size();
+      out.values.push_back(at(rows[i], i));
+    }
+  return out;
+}
+// The rows `keep` holds whose `key` prints with `d` as `x`'s does, x first: the rows a sentence
+// names with the extreme x, since to its digits they tie with it (none where x is null).
+template <class Row, class Keep, class Key>
+std::vector<const Row*> printed_ties(const std::vector<Row>& rows, Keep&& keep, Key&& key, const std::type_identity_t<Row>* x, Digits d) {
+  if (!x) return {};
+  std::vector<const Row*> out{x};
+  for (const Row& r : rows)
+    if (&r != x && keep(r) && printed(key(r), d) == printed(key(*x), d)) out.push_back(&r);
+  return out;
+}
+// The least and the greatest of the kept values as a sentence states them: two extreme claims,
+// `id`.least and `id`.greatest.
+void claim_range(Ledger& l, const std::string& id, const std::string& section, const std::string& sentence, const Kept& k,
+                 std::optional<Digits> d = {});
 // `field` of the first row of the array at `rows` in the cited document `file` whose fields equal
 // `where`'s, as evidence: std::logic_error where there is none.
 Evidence row_field(const Ledger& l, const std::string& file, const std::string& rows, const Json& where, const std::string& field);
@@ -186,8 +214,13 @@ void claim_unbounded_at(Ledger& l, StabilitySource s, std::string id, std::strin
 // "The runs of `methods` at (dt, damping) grow their energy at a rate `op` `limit`" (op "<", "<=",
 // ">" or ">="): a threshold claim on each one's measured rate (the weakly unstable ones: below
 // kWeakRate); none for no method.
-void claim_rate(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence, double dt,
-                double damping, const std::vector<std::size_t>& methods, const char* op, double limit);
+// claim_sweep: the same of another `field` of their sweep rows (energy_ratio_max).
+void claim_sweep(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence, double dt,
+                 double damping, const std::vector<std::size_t>& methods, const char* field, const char* op, double limit);
+inline void claim_rate(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence, double dt,
+                       double damping, const std::vector<std::size_t>& methods, const char* op, double limit) {
+  claim_sweep(l, s, std::move(id), std::move(section), std::move(sentence), dt, damping, methods, "rate_measured", op, limit);
+}
 // "`disagree` of the stability map's cells disagree with the step map's prediction": a mismatch
 // claim over each method's two tables of map/stable and map/predicted.
 void claim_map_cells(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence, std::size_t disagree);

@@ -51,9 +51,10 @@ Json energy_test(EnergyKind k, double round_off) {
     case EnergyKind::Blows: return blows;
     case EnergyKind::Damped: return test_all({test_not(blows), damped});
     case EnergyKind::Bounded: return test_all({test_not(blows), test_not(damped), bounded});
-    case EnergyKind::Drifts: break;
+    case EnergyKind::Grows: return test_all({test_not(blows), test_not(damped), test_not(bounded), test_field("/final_ratio", ">", 1)});
+    case EnergyKind::Decays: break;
   }
-  return test_all({test_not(blows), test_not(damped), test_not(bounded)});
+  return test_all({test_not(blows), test_not(damped), test_not(bounded), test_not(test_field("/final_ratio", ">", 1))});
 }
 
 }  // namespace

@@ -82,7 +82,8 @@ std::string chance_words(double rho, std::size_t n) {
 std::string_view to_text(EnergyKind k) {
   switch (k) {
     case EnergyKind::Bounded: return "bounded";
-    case EnergyKind::Drifts: return "drifts";
+    case EnergyKind::Grows: return "grows";
+    case EnergyKind::Decays: return "decays";
     case EnergyKind::Damped: return "damped out";
     case EnergyKind::Blows: return "blows up";
   }
@@ -108,7 +109,8 @@ std::vector<EnergyBehaviour> energy_behaviour(const ReportData& d) {
     e.kind = run.status != RunStatus::Ok || e.hi > kBlownRatio                                   ? EnergyKind::Blows
              : e.lo < 1 / kBlownRatio                                                             ? EnergyKind::Damped
              : e.second_half <= kBoundedGrowth * e.first_half || e.second_half <= e.round_off ? EnergyKind::Bounded
-                                                                                                  : EnergyKind::Drifts;
+             : e.final_ratio > 1                                                                  ? EnergyKind::Grows
+                                                                                                  : EnergyKind::Decays;
     out.push_back(e);
   }
   return out;
@@ -207,14 +209,21 @@ LevelWinner level_winner(const SceneWork& w, double level, bool timed) {
 
 std::vector<MethodRate> rates_of(const Findings& f, const std::vector<std::size_t>& rows, bool undamped) {
   std::vector<MethodRate> out;
-  for (std::size_t i : rows) out.push_back({f.rows[i].method, undamped ? f.rows[i].energy_rate_undamped : f.rows[i].energy_rate_large_dt});
+  for (std::size_t i : rows) {
+    const MethodFinding& r = f.rows[i];
+    out.push_back({r.method, undamped ? r.energy_rate_undamped : r.energy_rate_large_dt, undamped ? r.energy_max_undamped : r.energy_max_large_dt});
+  }
   return out;
 }
+
+namespace {
+bool is_weak(const MethodRate& r) { return r.rate < kWeakRate && !(r.energy_max > kWeakEnergy); }
+}  // namespace
 
 std::vector<std::size_t> weakly(const std::vector<MethodRate>& runs) {
   std::vector<std::size_t> out;
   for (const MethodRate& r : runs)
-    if (r.rate < kWeakRate) out.push_back(r.method);
+    if (is_weak(r)) out.push_back(r.method);
   return out;
 }
 
@@ -225,16 +234,24 @@ std::vector<std::size_t> strongly(const std::vector<MethodRate>& runs) {
   return out;
 }
 
+std::vector<std::size_t> far_from_e0(const std::vector<MethodRate>& runs) {
+  std::vector<std::size_t> out;
+  for (const MethodRate& r : runs)
+    if (std::isfinite(r.rate) && r.rate < kWeakRate && r.energy_max > kWeakEnergy) out.push_back(r.method);
+  return out;
+}
+
 std::string unstable_words(const std::vector<MethodRate>& runs) {
   const std::vector<std::size_t> weak = weakly(runs);
-  std::vector<std::size_t> strong;  // the others, a blown-up run (no finite rate) among them
+  std::vector<std::string> strong;  // the others, a blown-up run (no finite rate) among them; one far from E0 with its E/E0
   std::vector<std::string> rates;
   for (const MethodRate& r : runs)
-    if (r.rate < kWeakRate) rates.push_back(fmt::format("{:.2g}", r.rate));
-    else strong.push_back(r.method);
-  if (weak.empty()) return method_list(strong);
+    if (is_weak(r)) rates.push_back(fmt::format("{:.3g}", r.rate));
+    else if (std::isfinite(r.rate) && r.rate < kWeakRate) strong.push_back(fmt::format("`{}` (E/E0 up to {:.3g})", name(r.method), r.energy_max));
+    else strong.push_back(fmt::format("`{}`", name(r.method)));
+  if (weak.empty()) return and_list(strong);
   const std::string w = fmt::format("weakly (energy growing {} per unit time) {}", and_list(rates), method_list(weak));
-  return strong.empty() ? w : fmt::format("{}, and {}", method_list(strong), w);
+  return strong.empty() ? w : fmt::format("{}, and {}", and_list(strong), w);
 }
 
 std::string winner_words(const LevelWinner& w) {

@@ -58,29 +58,36 @@ std::string correlation_words(double rho);
 double spearman_chance(std::size_t n);
 std::string chance_words(double rho, std::size_t n);
 
-// An unstable run whose energy grows slower than this per unit time is weakly unstable: E doubles
-// in more than ln 2 / kWeakRate = 690 time units, 69 times the sheet's 10 s, where a run shows no
-// growth; the rate is stated beside it. (Stable is at most kStableRate, 1e-6.)
-inline constexpr double kWeakRate = 1e-3;
-// A method with its measured energy growth rate (d ln E / dt) at one of the sheet's tests.
+// An unstable run whose energy grows slower than this per unit time, and whose E/E0 stays below
+// kWeakEnergy, is weakly unstable: E doubles in more than ln 2 / kWeakRate = 690 time units, 69
+// times the sheet's 10 s, where a run shows no growth; the rate is stated beside it. (Stable is at
+// most kStableRate, 1e-6.) A run whose energy jumped far from E0 and then grows slowly (PBD at a
+// large step) is not weakly unstable: the rate says nothing of it.
+inline constexpr double kWeakRate = 1e-3, kWeakEnergy = 10;
+// A method with its measured energy growth rate (d ln E / dt) and its largest E/E0 at one of the sheet's tests.
 struct MethodRate {
   std::size_t method;
-  double rate;
+  double rate, energy_max;
 };
 // The methods of `rows` with their rate at the sheet's large step (undamped: at its small step without damping).
 std::vector<MethodRate> rates_of(const Findings& f, const std::vector<std::size_t>& rows, bool undamped);
 // "`a`, and weakly (energy growing 6e-06 and 1.2e-05 per unit time) `b` and `c`": the methods,
 // those below kWeakRate last with their rates.
 std::string unstable_words(const std::vector<MethodRate>& runs);
-std::vector<std::size_t> weakly(const std::vector<MethodRate>& runs);    // below kWeakRate
-std::vector<std::size_t> strongly(const std::vector<MethodRate>& runs);  // the others with a finite rate (a blown-up run has none)
+std::vector<std::size_t> weakly(const std::vector<MethodRate>& runs);  // below kWeakRate, E/E0 at most kWeakEnergy
+// The others with a finite rate (a blown-up run has none): by their rate (at least kWeakRate), or
+// by their energy (below kWeakRate, E/E0 beyond kWeakEnergy).
+std::vector<std::size_t> strongly(const std::vector<MethodRate>& runs);
+std::vector<std::size_t> far_from_e0(const std::vector<MethodRate>& runs);
 
 // The undamped spring over the long run (the energy figure): E/E0's range, the largest
 // |E/E0 - 1| over the run's first and second halves, and what that says.
 enum class EnergyKind {
   Bounded,  // its second half strays no further than its first (within kBoundedGrowth), or no further
             // than round-off alone reaches (kRoundOff u sqrt(steps): analysis/studies/long_time.hpp)
-  Drifts,   // strays further and further: grows or decays steadily
+  Grows,    // strays further and further, above E0 at the end: a slow geometric growth (on the
+            // linear spring, |R| > 1: unstable at this step, though not blown up in the run)
+  Decays,   // strays further and further, below E0 at the end: the method's own damping
   Damped,   // E/E0 below 1 / kBlownRatio: the method's own damping has taken the motion out
   Blows     // diverged, or E/E0 beyond kBlownRatio
 };
@@ -97,7 +104,7 @@ struct EnergyBehaviour {
 // The numerical methods' runs of ReportData::energy (the stability study's figure runs).
 std::vector<EnergyBehaviour> energy_behaviour(const ReportData& d);
 std::string_view to_text(EnergyKind k);
-inline constexpr EnergyKind kEnergyKinds[] = {EnergyKind::Bounded, EnergyKind::Drifts, EnergyKind::Damped, EnergyKind::Blows};
+inline constexpr EnergyKind kEnergyKinds[] = {EnergyKind::Bounded, EnergyKind::Grows, EnergyKind::Decays, EnergyKind::Damped, EnergyKind::Blows};
 std::vector<std::size_t> methods_of_kind(const std::vector<EnergyBehaviour>& e, EnergyKind k);
 
 // Does the order hold when stiff: each method's verdict on the stiffened scene.

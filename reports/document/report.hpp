@@ -86,6 +86,7 @@ struct MethodFinding {
   // step the threshold search tried), and whether any step of the stability map is stable there.
   double again_undamped_theory, again_undamped_measured;
   bool map_stable_undamped;
+  double energy_max_large_dt = NAN, energy_max_undamped = NAN;  // the largest E/E0 of those two runs
 };
 
 // What the shared studies say, every statistic and every list over the numerical methods only:

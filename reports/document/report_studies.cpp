@@ -259,6 +259,8 @@ Findings compute_findings(const ReportData& d) {
     row.energy_rate_large_dt = large ? large->run.rate : NAN;
     row.stable_undamped = undamped && undamped->run.stable();
     row.energy_rate_undamped = undamped ? undamped->run.rate : NAN;
+    row.energy_max_large_dt = large ? large->run.energy_ratio_max : NAN;
+    row.energy_max_undamped = undamped ? undamped->run.energy_ratio_max : NAN;
     row.dt_theory = th ? th->dt_theory : NAN;
     row.dt_measured = th ? th->dt_measured : NAN;
     row.again_measured = th ? th->again_measured : NAN;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -61,7 +62,8 @@ std::string stable_answer(const Page& page) {
                                                 unstable_undamped.size() == 1 ? "is" : "are", unstable_undamped.size() == 1 ? "its" : "their");
   if (!always.empty()) md += fmt::format(" Stable at every step tried: {}.", method_list(always));
   md += " Each method's largest stable step dt* is in the summary table";
-  md += page.has("regions") ? fmt::format(", its stability region in figure {}.", page.number("regions")) : std::string(".");
+  md += page.has("regions") ? fmt::format(", the stability regions of the methods that have one in figure {}.", page.number("regions"))
+                            : std::string(".");
   if (Ledger* l = page.ledger)
     for (const ShownStudy& x : src) {
       const StabilitySource s = x.study;
@@ -70,8 +72,13 @@ std::string stable_answer(const Page& page) {
       claim_unstable_at(*l, s, fmt::format("answers.unstable_undamped{}", x.id), "answers", md, c.small_dt, 0.0,
                         methods_of(x.f, x.f.unstable_undamped));
       const std::vector<MethodRate> large = rates_of(x.f, x.f.unstable_large, false), undamped = rates_of(x.f, x.f.unstable_undamped, true);
-      claim_rate(*l, s, fmt::format("answers.weakly_unstable_at_large_dt{}", x.id), "answers", md, c.large_dt, c.damping(), weakly(large), "<", kWeakRate);
-      claim_rate(*l, s, fmt::format("answers.weakly_unstable_undamped{}", x.id), "answers", md, c.small_dt, 0.0, weakly(undamped), "<", kWeakRate);
+      for (const auto& [runs, dt, damping, id] : {std::tuple{&large, c.large_dt, c.damping(), "at_large_dt"}, {&undamped, c.small_dt, 0.0, "undamped"}}) {
+        claim_rate(*l, s, fmt::format("answers.weakly_unstable_{}{}", id, x.id), "answers", md, dt, damping, weakly(*runs), "<", kWeakRate);
+        claim_sweep(*l, s, fmt::format("answers.weakly_unstable_{}{}.near_e0", id, x.id), "answers", md, dt, damping, weakly(*runs),
+                    "energy_ratio_max", "<=", kWeakEnergy);
+        claim_sweep(*l, s, fmt::format("answers.far_from_e0_{}{}", id, x.id), "answers", md, dt, damping, far_from_e0(*runs),
+                    "energy_ratio_max", ">", kWeakEnergy);
+      }
       claim_unbounded_at(*l, s, fmt::format("answers.stable_at_every_step{}", x.id), "answers", md, c.damping(),
                          methods_of(x.f, x.f.always_stable));
     }
@@ -101,8 +108,10 @@ std::string order_answer(const Page& page) {
                       correlation_words(f.spearman), chance_words(f.spearman, f.spearman_n));
     if (with_springs)
       md += fmt::format("; with the {} methods on springs that claim an order, over {}, it is {:.2f}, {}", pooled.size() - f.spearman_n,
-                        pooled.size(), rho_all, correlation_words(rho_all));
-    md += ".";
+                        pooled.size(), rho_all, chance_words(rho_all, pooled.size()));
+    const bool chance = std::abs(f.spearman) <= 1.96 / std::sqrt(f.spearman_n - 1.0) &&
+                        (!with_springs || std::abs(rho_all) <= 1.96 / std::sqrt(pooled.size() - 1.0));
+    md += chance ? ": no correlation is detectable." : ".";
   }
   std::vector<std::string> ways;
   const std::vector<FamilyTrend> trends = family_trends(page.data, c.damping());
@@ -113,9 +122,10 @@ std::string order_answer(const Page& page) {
     if (!fams.empty()) ways.push_back(fmt::format("{} in {}", to_text(t), and_list(fams)));
   }
   if (!ways.empty())
-    md += fmt::format(" Within a family, whose methods share a construction, dt* {}{}: how a method is built sets its "
-                      "stability more than its order does.",
-                      and_list(ways), see(page, "regions"));
+    md += fmt::format(" Within a family, whose methods share a construction, dt* {}: how a method is built sets its "
+                      "stability more than its order does{}.",
+                      and_list(ways),
+                      page.has("regions") ? fmt::format(" (figure {} draws the regions of the methods that have one)", page.number("regions")) : "");
   if (Ledger* l = page.ledger) {
     if (f.spearman_n >= 3) claim_spearman(*l, spearman_points({page.data}, f), f.spearman, "answers.order_correlation", "answers", md, 2);
     if (f.spearman_n >= 3 && with_springs) claim_spearman(*l, pooled, rho_all, "answers.order_correlation.with_springs", "answers", md, 2);
@@ -129,12 +139,14 @@ std::string energy_answer(const Page& page) {
   const std::vector<EnergyBehaviour> e = energy_behaviour(page.data);
   if (e.empty()) return {};
   const ReportConfig& c = page.data.config;
-  const std::vector<std::size_t> bounded = methods_of_kind(e, EnergyKind::Bounded), drifting = methods_of_kind(e, EnergyKind::Drifts),
-                                 damped = methods_of_kind(e, EnergyKind::Damped), blown = methods_of_kind(e, EnergyKind::Blows);
+  const std::vector<std::size_t> bounded = methods_of_kind(e, EnergyKind::Bounded), grows = methods_of_kind(e, EnergyKind::Grows),
+                                 decays = methods_of_kind(e, EnergyKind::Decays), damped = methods_of_kind(e, EnergyKind::Damped),
+                                 blown = methods_of_kind(e, EnergyKind::Blows);
   std::string md = fmt::format("- **Is the energy kept?** Undamped over t = {:g} at dt = {}: ", c.energy_t_end, c.large_dt);
   std::vector<std::string> parts;
   if (!bounded.empty()) parts.push_back(fmt::format("E/E0 stays bounded for {}", method_list(bounded)));
-  if (!drifting.empty()) parts.push_back(fmt::format("it drifts for {}", method_list(drifting)));
+  if (!grows.empty()) parts.push_back(fmt::format("it grows slowly (unstable at this step) for {}", method_list(grows)));
+  if (!decays.empty()) parts.push_back(fmt::format("it decays slowly (the method's own damping) for {}", method_list(decays)));
   if (!damped.empty()) parts.push_back(fmt::format("the method damps it out for {}", method_list(damped)));
   if (!blown.empty()) parts.push_back(fmt::format("it blows up for {}", method_list(blown)));
   md += and_list(parts);
@@ -187,7 +199,7 @@ std::string stiff_answer(const Page& page) {
   std::vector<std::string> parts;
   if (!keep.empty()) parts.push_back(fmt::format("{} keep their order at every stiffness", method_list(keep)));
   if (!falls.empty()) parts.push_back(fmt::format("it falls, as the theory says, for {}", and_list(falls)));
-  if (!rises.empty()) parts.push_back(fmt::format("it rises, to the order of the one-step start, for {}", and_list(rises)));
+  if (!rises.empty()) parts.push_back(fmt::format("it rises, to the order of its one-step starter's local error, for {}", and_list(rises)));
   if (!strays.empty()) parts.push_back(and_list(strays));
   if (!unstable.empty()) parts.push_back(fmt::format("{} lose stability before the stiff limit", method_list(unstable)));
   if (parts.empty()) return {};

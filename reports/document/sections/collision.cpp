@@ -122,8 +122,9 @@ class Collision : public Section {
   }
 
   // The orders against the exact bounce, each against its declared order: kept where the bound
-  // holds it or the fit is within kKeptOrder of it, lost where the bound lies below it. An order
-  // whose bound is wider than +-0.5 is not a finding.
+  // holds it or the fit is within kKeptOrder of it; lost where neither, with a bound at most +-0.5
+  // wide or one however wide that lies wholly below it (a finding either way). A wider bound that
+  // holds the order, or lies above it, is not a finding.
   static constexpr double kKeptOrder = 0.15;
   static std::string bounce_orders(const ReportData& d, Ledger* l) {
     const ConvergenceResult& conv = d.convergence_on(d.config.rebound.scene);
@@ -131,10 +132,12 @@ class Collision : public Section {
     for (const ConvergenceFit& f : conv.fits) {
       if (method_info(f.method).exact_flow || !f.fit.fitted) continue;
       const int p = method_info(f.method).order;
-      if (f.fit.bound_hi - f.fit.bound_lo > 1) {
+      const bool holds = std::abs(f.fit.order - p) <= kKeptOrder || (f.fit.bound_lo <= p && p <= f.fit.bound_hi);
+      const bool wide = f.fit.bound_hi - f.fit.bound_lo > 1;
+      if (wide && (holds || f.fit.bound_hi >= p)) {
         loose.push_back(fmt::format("`{}` {:.2f} (order {})", name(f.method), f.fit.order, p));
         loose_names.push_back(name(f.method));
-      } else if (std::abs(f.fit.order - p) <= kKeptOrder || (f.fit.bound_lo <= p && p <= f.fit.bound_hi)) {
+      } else if (holds) {
         kept.push_back(fmt::format("`{}` {:.2f} (order {})", name(f.method), f.fit.order, p));
         kept_names.push_back(name(f.method));
       } else {
@@ -148,7 +151,8 @@ class Collision : public Section {
     if (!lost.empty()) md += fmt::format("the contact costs order to {}", and_list(lost));
     if (!kept.empty()) md += fmt::format("{}{} keep their order", lost.empty() ? "" : "; ", and_list(kept));
     if (!loose.empty())
-      md += fmt::format("; the fits of {} have bounds wider than +-0.5: not findings either way", and_list(loose));
+      md += fmt::format("; the fits of {} have bounds wider than +-0.5 that hold their order or lie above it: not findings either way",
+                        and_list(loose));
     md += ".";
     if (l) {  // the same three classes over the bounce's convergence document
       const std::string file = cite_convergence(*l, conv);
@@ -162,8 +166,9 @@ class Collision : public Section {
                       "method", true, test_all({fitted, std::move(test)}), set);
       };
       members("kept", test_all({test_not(wide), holds}), kept_names);
-      members("lost", test_all({test_not(wide), test_not(holds)}), lost_names);
-      members("not_a_finding", wide, loose_names);
+      const Json below = test_scaled("/order_bound/1", "<", 1, "/declared_order");
+      members("lost", test_all({test_not(holds), test_any({test_not(wide), below})}), lost_names);
+      members("not_a_finding", test_all({wide, test_any({holds, test_not(below)})}), loose_names);
     }
     return md;
   }
@@ -181,15 +186,10 @@ class Collision : public Section {
                                          printed(high->bounces.back().energy_ratio, kRatio), name(high->method));
     if (l) {  // the two ends over the runs that bounced at that step
       l->document(kCollisionDocument, [&] { return collision_json(r); });
-      std::vector<Evidence> ratios;
-      std::size_t least = 0, most = 0;
-      for (std::size_t i = 0; i < r.bounce.size(); ++i)
-        if (bounced(r.bounce[i])) {
-          if (&r.bounce[i] == low) least = ratios.size();
-          if (&r.bounce[i] == high) most = ratios.size();
-          ratios.push_back(l->at(kCollisionDocument, fmt::format("/bounce/{}/energy_ratio_last_bounce", i)));
-        }
-      claim_range(*l, "collision.bounce_energy", "collision", text, ratios, least, most, kRatio);
+      const Kept ratios = kept_evidence(r.bounce, bounced, low, high, [&](const CollisionRun&, std::size_t i) {
+        return l->at(kCollisionDocument, fmt::format("/bounce/{}/energy_ratio_last_bounce", i));
+      });
+      claim_range(*l, "collision.bounce_energy", "collision", text, ratios, kRatio);
     }
     return text;
   }

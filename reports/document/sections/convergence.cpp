@@ -110,26 +110,35 @@ class Convergence : public Section {
     }
     const std::string on = shown.config.scene == c.oscillator.scene ? "the spring" : std::string(scene_kernel(shown.config.scene).title);
     // the shallowest and the steepest fitted line
-    const auto [flat, steep] = least_and_most(
-        shown.fits, [](const ConvergenceFit& f) { return f.fit.fitted && !method_info(f.method).exact_flow; },
-        [](const ConvergenceFit& f) { return f.fit.order; });
+    const auto drawn_fit = [](const ConvergenceFit& f) { return f.fit.fitted && !method_info(f.method).exact_flow; };
+    const auto [flat, steep] = least_and_most(shown.fits, drawn_fit, [](const ConvergenceFit& f) { return f.fit.order; });
     if (!page.has("convergence")) return md;
-    const std::string range = flat ? fmt::format("The fitted orders run from {:.2f} (`{}`) to {:.2f} (`{}`).", flat->fit.order,
-                                                 name(flat->method), steep->fit.order, name(steep->method))
+    constexpr Digits kOrder{false, 2};
+    const auto order_of = [](const ConvergenceFit& f) { return f.fit.order; };
+    const auto names = [&](const std::vector<const ConvergenceFit*>& tied) {  // the fits that print alike: a tie, named as one
+      std::vector<std::string> out;
+      for (const ConvergenceFit* f : tied) out.push_back(fmt::format("`{}`", name(f->method)));
+      return and_list(out);
+    };
+    const std::vector<const ConvergenceFit*> flats = printed_ties(shown.fits, drawn_fit, order_of, flat, kOrder),
+                                             steeps = printed_ties(shown.fits, drawn_fit, order_of, steep, kOrder);
+    const std::string range = flat ? fmt::format("The fitted orders run from {} ({}) to {} ({}).", printed(flat->fit.order, kOrder),
+                                                 names(flats), printed(steep->fit.order, kOrder), names(steeps))
                                    : std::string("No method's errors reach their asymptotic range.");
     md += page.figure("convergence", fmt::format("Error against dt on {}, a panel per family: least-squares lines over the "
                                                  "fitted window (solid), slopes 1, 2 and 4 for reference (grey, dashed). {}", on, range));
     if (page.ledger && flat) {  // the caption's two ends, over the fitted lines it draws
       const std::string file = cite_convergence(*page.ledger, shown);
-      std::vector<Evidence> orders;
-      std::size_t least = 0, most = 0;
-      for (const ConvergenceFit& f : shown.fits)
-        if (f.fit.fitted && !method_info(f.method).exact_flow) {
-          if (&f == flat) least = orders.size();
-          if (&f == steep) most = orders.size();
-          orders.push_back(row_field(*page.ledger, file, "/fits", {{"method", name(f.method)}}, "order"));
-        }
-      claim_range(*page.ledger, "convergence.orders", "convergence", range, orders, least, most, Digits{false, 2});
+      claim_range(*page.ledger, "convergence.orders", "convergence", range,
+                  kept_evidence(shown.fits, drawn_fit, flat, steep, [&](const ConvergenceFit& f, std::size_t) {
+                    return row_field(*page.ledger, file, "/fits", {{"method", name(f.method)}}, "order");
+                  }),
+                  kOrder);
+      for (const std::vector<const ConvergenceFit*>* tied : {&flats, &steeps})  // each named beside an end prints as it does
+        for (std::size_t k = 1; k < tied->size(); ++k)
+          claim_ratio(*page.ledger, claim_text(fmt::format("convergence.orders.tie.{}", name((*tied)[k]->method)), "convergence", range),
+                      {{row_field(*page.ledger, file, "/fits", {{"method", name((*tied)[k]->method)}}, "order")}, {}}, (*tied)[k]->fit.order,
+                      kOrder);
     }
     return md;
   }

@@ -119,12 +119,11 @@ class Cost : public Section {
                                     "adaptive solvers in panels of at most six. {}",
                                     scene_word(w), timed ? "run time" : "force evaluations", smallest));
       if (!page.ledger) continue;
-      std::vector<Evidence> errors;  // every run that reached an error, the least among them
-      std::size_t a = 0;
-      for (const WorkPoint& p : w.points)
-        if (reached(p)) a = &p == least ? errors.size() : a, errors.push_back(work_point_at(*page.ledger, page.data, w, p, "error_max"));
-      claim_extreme(*page.ledger, claim_text(fmt::format("cost.smallest_error.{}", scene_name(w.scene)), "cost", smallest), errors, a,
-                    Extreme::Least, kError);
+      const Kept errors = kept_evidence(w.points, reached, least, nullptr, [&](const WorkPoint& p, std::size_t) {
+        return work_point_at(*page.ledger, page.data, w, p, "error_max");
+      });
+      claim_extreme(*page.ledger, claim_text(fmt::format("cost.smallest_error.{}", scene_name(w.scene)), "cost", smallest), errors.values,
+                    errors.least, Extreme::Least, kError);
     }
     md += peer_table(page, timed) + dopri5_sentences(page, timed);
     if (r.stiff >= 0) md += limits_text(r, page.ledger) + stiffness_text(page, timed);

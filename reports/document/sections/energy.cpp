@@ -68,10 +68,10 @@ class Energy : public Section {
     const std::vector<EnergyBehaviour> e = energy_behaviour(d);
     double reach = 0;
     for (const EnergyBehaviour& b : e)
-      if (b.kind == EnergyKind::Bounded || b.kind == EnergyKind::Drifts) reach = std::max({reach, b.hi - 1, 1 - b.lo});
+      if (b.kind == EnergyKind::Bounded || b.kind == EnergyKind::Grows || b.kind == EnergyKind::Decays) reach = std::max({reach, b.hi - 1, 1 - b.lo});
     const auto drawn = [&](std::size_t m) {
       for (const EnergyBehaviour& b : e)
-        if (b.method == m) return b.kind == EnergyKind::Bounded || b.kind == EnergyKind::Drifts;
+        if (b.method == m) return b.kind == EnergyKind::Bounded || b.kind == EnergyKind::Grows || b.kind == EnergyKind::Decays;
       return false;
     };
     std::vector<FigureSpec> out;
@@ -95,7 +95,7 @@ class Energy : public Section {
                       "(dt = {}, t = {:g}) is what a long simulation would show. E/E0 on a log axis shows growth and decay by powers of "
                       "ten; E/E0 - 1 on a linear axis (the family panels{}) shows a bounded band and a slow drift. A run "
                       "counts as bounded when the largest |E/E0 - 1| over its second half is at most {:g} times that over its "
-                      "first, or within round-off ({:g} u sqrt(steps)), as drifting when it keeps growing, as damped out when "
+                      "first, or within round-off ({:g} u sqrt(steps)); as growing or decaying when that keeps growing, E/E0 above or below 1 at the end; as damped out when "
                       "E/E0 falls below 1/{:g} (the method's own damping), as blown up when it passes {:g} or the state "
                       "diverges.\n\n",
                       c.large_dt, c.energy_t_end, page.handout ? ", in the atlas" : "", kBoundedGrowth, kRoundOff, kBlownRatio, kBlownRatio);
@@ -105,13 +105,15 @@ class Energy : public Section {
       switch (b.kind) {
         case EnergyKind::Bounded:
           return b.hi - b.lo <= 2 * b.round_off ? fmt::format("{} within round-off", n) : fmt::format("{} within [{:.4g}, {:.4g}]", n, b.lo, b.hi);
-        case EnergyKind::Drifts: return fmt::format("{} to {:+.3g} %", n, 100 * (b.final_ratio - 1));
+        case EnergyKind::Grows:
+        case EnergyKind::Decays: return fmt::format("{} to {:+.3g} %", n, 100 * (b.final_ratio - 1));
         case EnergyKind::Damped: return fmt::format("{} (E/E0 {:.3g} at the end)", n, b.final_ratio);
         case EnergyKind::Blows: break;
       }
       return b.ended >= 0 ? fmt::format("{} (diverged at t = {:g})", n, b.ended) : fmt::format("{} (E/E0 {:.3g} at the end)", n, b.final_ratio);
     };
-    const char* heads[] = {"- **Bounded**: ", "- **Drifts**, E/E0 - 1 at the end: ", "- **Damped out** by the method: ",
+    const char* heads[] = {"- **Bounded**: ", "- **Grows** slowly (geometrically: unstable at this step), E/E0 - 1 at the end: ",
+                           "- **Decays** slowly (the method's own damping), E/E0 - 1 at the end: ", "- **Damped out** by the method: ",
                            "- **Blows up**: "};  // kEnergyKinds' order
     for (std::size_t k = 0; k < std::size(kEnergyKinds); ++k) {
       std::vector<std::string> items;
@@ -132,10 +134,17 @@ class Energy : public Section {
         if (b.kind != EnergyKind::Bounded) symplectic_unbounded.push_back(b.method);
       }
     if (symplectic_unbounded.empty() && !symplectic.empty()) {
-      const std::string finding = "Every symplectic method here keeps its energy bounded, whatever its order";
+      std::vector<std::string> orders;  // "whatever its order" only where the symplectic methods have several
+      for (std::size_t m : symplectic)
+        if (const std::string o = std::to_string(method_info(m).order); std::find(orders.begin(), orders.end(), o) == orders.end()) orders.push_back(o);
+      const std::string finding =
+          orders.size() > 1 ? fmt::format("Every symplectic method here keeps its energy bounded, whatever its order ({})", and_list(orders))
+                            : fmt::format("The symplectic {} here ({}, order {}) {} its energy bounded", symplectic.size() == 1 ? "method" : "methods",
+                                          method_list(symplectic), orders.front(), symplectic.size() == 1 ? "keeps" : "keep");
       const std::string theory =
-          "a symplectic step keeps a modified energy within O(dt^p^) of the true one, exactly on this linear spring, on a nonlinear "
-          "system up to exponentially small terms over exponentially long times (Hairer, Lubich and Wanner, IX.8)";
+          "a symplectic step exactly conserves a modified energy H + O(dt^p^), so the true energy stays within O(dt^p^) of its "
+          "start: for all time on this linear spring, on a nonlinear system over exponentially long times (Hairer, Lubich and "
+          "Wanner, IX.8)";
       md += fmt::format("\n{}. Theory: {}.\n\n", finding, theory);
       if (page.ledger) {
         claim_energy(*page.ledger, d, "energy.symplectic_bounded", "energy", finding, EnergyKind::Bounded, symplectic, true);
@@ -176,19 +185,14 @@ class Energy : public Section {
     constexpr Digits kDigits{true, 3};
     const std::string text = fmt::format("Of the bounded runs, the highest E/E0 is `{}`'s ({}), the lowest `{}`'s ({}).", name(high->method),
                                          printed(high->hi, kDigits), name(low->method), printed(low->lo, kDigits));
-    if (l) {
+    if (l) {  // over the bounded runs' rows of the energy document
       l->document(kEnergyDocument, [&] { return energy_document(d); });
-      std::vector<Evidence> his, los;
-      std::size_t a = 0, b = 0;
-      for (const EnergyBehaviour& r : e)
-        if (bounded(r)) {
-          if (&r == high) a = his.size();
-          if (&r == low) b = los.size();
-          his.push_back(row_field(*l, kEnergyDocument, "/rows", {{"method", name(r.method)}}, "hi"));
-          los.push_back(row_field(*l, kEnergyDocument, "/rows", {{"method", name(r.method)}}, "lo"));
-        }
-      claim_extreme(*l, claim_text("energy.band.highest", "energy", text), his, a, Extreme::Greatest, kDigits);
-      claim_extreme(*l, claim_text("energy.band.lowest", "energy", text), los, b, Extreme::Least, kDigits);
+      const auto field = [&](const char* f) {
+        return [&, f](const EnergyBehaviour& r, std::size_t) { return row_field(*l, kEnergyDocument, "/rows", {{"method", name(r.method)}}, f); };
+      };
+      const Kept his = kept_evidence(e, bounded, nullptr, high, field("hi")), los = kept_evidence(e, bounded, low, nullptr, field("lo"));
+      claim_extreme(*l, claim_text("energy.band.highest", "energy", text), his.values, his.most, Extreme::Greatest, kDigits);
+      claim_extreme(*l, claim_text("energy.band.lowest", "energy", text), los.values, los.least, Extreme::Least, kDigits);
     }
     return text;
   }

@@ -82,12 +82,10 @@ class Frames : public Section {
                                             "the budget {}, the stable ones. {}",
                                             c.timing ? "time" : "spring visits", scene_name(c.scene), c.fps, c.budget, least));
     if (page.ledger && best) {  // over the stable splits
-      std::vector<Evidence> errors;
-      std::size_t a = 0;
-      for (std::size_t i = 0; i < r_.runs.size(); ++i)
-        if (stable(r_.runs[i]))
-          a = &r_.runs[i] == best ? errors.size() : a, errors.push_back(page.ledger->at(kFramesDocument, fmt::format("/runs/{}/error_max", i)));
-      claim_extreme(*page.ledger, claim_text("frames.least_error", "frames", least), errors, a, Extreme::Least, kError);
+      const Kept errors = kept_evidence(r_.runs, stable, best, nullptr, [&](const FrameRun&, std::size_t i) {
+        return page.ledger->at(kFramesDocument, fmt::format("/runs/{}/error_max", i));
+      });
+      claim_extreme(*page.ledger, claim_text("frames.least_error", "frames", least), errors.values, errors.least, Extreme::Least, kError);
     }
     md += family_answer();
     return md;

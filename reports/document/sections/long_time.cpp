@@ -28,19 +28,24 @@ std::string extremes_sentence(const LongTimeResult& r, Ledger* l, const std::str
   const auto [least, most] = least_and_most(r.rows, ended, last);
   if (!most) return "No run ends well.";
   constexpr Digits kError{true, 2};
-  const std::string text = fmt::format("After {:g} periods the largest energy error is `{}`'s ({}), the least `{}`'s ({}).", most->times.back(),
-                                       name(most->method), printed(last(*most), kError), name(least->method), printed(last(*least), kError));
+  std::vector<std::size_t> ended_early;  // the runs that diverged: no energy error to rank
+  for (const LongTimeRow& w : r.rows)
+    if (w.steps_per_period == r.config.steps_per_period.front() && w.status != RunStatus::Ok) ended_early.push_back(w.method);
+  const std::string text =
+      fmt::format("After {:g} periods the largest energy error {}is `{}`'s ({}), the least `{}`'s ({}){}.", most->times.back(),
+                  ended_early.empty() ? "" : "of the runs that did not diverge ", name(most->method), printed(last(*most), kError),
+                  name(least->method), printed(last(*least), kError),
+                  ended_early.empty() ? "" : fmt::format("; {} diverged", method_list(ended_early)));
   if (l) {  // each run's last energy error, the two ends
     const std::string file = cite_long_time(*l, r, section);
-    std::vector<Evidence> errors;
-    std::size_t a = 0, b = 0;
-    for (std::size_t i = 0; i < r.rows.size(); ++i)
-      if (ended(r.rows[i])) {
-        if (&r.rows[i] == least) a = errors.size();
-        if (&r.rows[i] == most) b = errors.size();
-        errors.push_back(l->at(file, fmt::format("/rows/{}/invariants/energy/relative_error/{}", i, r.rows[i].error.front().size() - 1)));
-      }
-    claim_range(*l, fmt::format("{}.energy_error.{}", section, scene_name(r.config.scene)), section, text, errors, a, b, kError);
+    const Kept errors = kept_evidence(r.rows, ended, least, most, [&](const LongTimeRow& w, std::size_t i) {
+      return l->at(file, fmt::format("/rows/{}/invariants/energy/relative_error/{}", i, w.error.front().size() - 1));
+    });
+    claim_range(*l, fmt::format("{}.energy_error.{}", section, scene_name(r.config.scene)), section, text, errors, kError);
+    if (!ended_early.empty())
+      claim_members(*l, claim_text(fmt::format("{}.diverged.{}", section, scene_name(r.config.scene)), section, text), file, "/rows",
+                    {{"steps_per_period", r.config.steps_per_period.front()}}, "method", true, test_field("/status", "!=", "ok"),
+                    method_names(ended_early));
   }
   return text;
 }

@@ -70,7 +70,7 @@ class Order : public Section {
             "construction.";
     else
       md += "No two of these methods share an order, so only a family's methods set side by side can answer it.";
-    if (!trends.empty()) md += fmt::format(" Within one family, whose methods share a construction: {}.", and_list(trends));
+    if (!trends.empty()) md += fmt::format(" Within one family, whose methods share a construction, at damping {}: {}.", gamma, and_list(trends));
     if (page.findings.spearman_n >= 3)
       md += fmt::format(" Over these {} methods, Spearman's rank correlation between order and dt* is {:.2f} ({}): {}.",
                         page.findings.spearman_n, page.findings.spearman, correlation_words(page.findings.spearman),

@@ -241,7 +241,7 @@ std::string map_findings(const ScalingResult& r, Ledger* l) {
                                                 counts.implicit.size(), fmt::join(counts.implicit, ", "));
     const ScalingCell& far = stiffest->cells.back();  // the stiffest, largest cell
     const auto times = [](double over) { return std::isnan(over) ? std::string("-") : fmt::format("{:.3g}", over); };
-    if (!far.best_implicit.empty())
+    if (!far.best_implicit.empty() && far.motion >= stiffest->error)  // a cell at rest is a win for no one: no margin stated
       md += fmt::format(" At stiffness {:g} and N = {} the best explicit solver (`{}`) costs {} times the cheapest implicit "
                         "method (`{}`), the best adaptive implicit peer (`{}`) {} times.",
                         stiffest->stiffness, far.masses, far.best_explicit.empty() ? "none reached" : far.best_explicit,

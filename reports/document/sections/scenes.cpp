@@ -125,8 +125,12 @@ class SceneFigures : public Section {
   }
   static std::string farthest(const std::vector<Deviation>& dev, const std::string& at) {
     const Deviation* far = farthest_run(dev);
-    return far ? fmt::format("{} the farthest from the exact path is `{}`, {} m.", at, name(far->method), printed(far->worst, kDistance))
-               : at + " every run diverged.";
+    if (!far) return at + " every run diverged.";
+    std::vector<std::string> names;  // the runs as far to the printed digits: a tie, named as one
+    for (const Deviation* v : printed_ties(dev, [](const Deviation& v) { return v.ok; }, [](const Deviation& v) { return v.worst; }, far, kDistance))
+      names.push_back(fmt::format("`{}`", name(v->method)));
+    return fmt::format("{} the farthest from the exact path {} {}, {} m.", at, names.size() == 1 ? "is" : "are, tied,", and_list(names),
+                       printed(far->worst, kDistance));
   }
   // The runs of one scene and step as data/scenes/<scene>_<dt>.json (steplab.deviations/1, docs/json.md):
   // each distance `line` states, a ratio claim as printed; the farthest (`far` states it, "" where
