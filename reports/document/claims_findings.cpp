@@ -150,6 +150,11 @@ void claim_cheapest(Ledger& l, const ReportData& d, std::string id, std::string 
   std::vector<Evidence> costs, noise;
   for (const WorkPoint* p : others) costs.push_back(at(p, cost));
   if (timed && !others.empty()) noise = {at(win.point, "seconds_spread"), at(others.front(), "seconds_spread")};
+  for (const WorkPoint* p : win.also)  // each further solver the tie names: within the margin of its own two runs
+    claim_group(l, claim_text(fmt::format("{}.tie.{}", id, p->method), section, sentence),
+                comparison_group(at(win.point, cost), {at(p, cost)},
+                                 timed ? std::vector<Evidence>{at(win.point, "seconds_spread"), at(p, "seconds_spread")} : std::vector<Evidence>{},
+                                 "tie", timed ? kTieMargin : 1.0));
   claim_group(l, claim_text(std::move(id), std::move(section), std::move(sentence)),
               comparison_group(at(win.point, cost), std::move(costs), std::move(noise), win.tie ? "tie" : "less", timed ? kTieMargin : 1.0));
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -192,6 +193,15 @@ LevelWinner level_winner(const SceneWork& w, double level, bool timed) {
     out.required = noise_margin(out.point->spread, second->spread);
   }
   out.tie = second && tied(out.margin, timed, out.required);
+  if (out.tie)
+    for (const std::string& s : solvers)
+      if (const WorkPoint* p = cheapest_point(w, s, level, timed); p && p != out.point && p->method != out.next &&
+                                                                     tied(point_cost(*p, timed) / point_cost(*out.point, timed), timed,
+                                                                          noise_margin(out.point->spread, p->spread)))
+        out.also.push_back(p);
+  std::sort(out.also.begin(), out.also.end(), [&](const WorkPoint* a, const WorkPoint* b) {  // by cost, then by name
+    return std::pair(point_cost(*a, timed), a->method) < std::pair(point_cost(*b, timed), b->method);
+  });
   if (!timed && !out.tie && solves(out.point->method)) {
     const WorkPoint* against = nullptr;  // the cheapest explicit solver's run at the level
     for (const std::string& s : solvers)
@@ -255,7 +265,11 @@ std::string unstable_words(const std::vector<MethodRate>& runs) {
 }
 
 std::string winner_words(const LevelWinner& w) {
-  if (w.tie) return fmt::format("a tie of `{}` and `{}`", w.point->method, w.next);
+  if (w.tie) {
+    std::vector<std::string> names{fmt::format("`{}`", w.point->method), fmt::format("`{}`", w.next)};
+    for (const WorkPoint* p : w.also) names.push_back(fmt::format("`{}`", p->method));
+    return "a tie of " + and_list(names);
+  }
   if (!w.undecided.empty())
     return fmt::format("`{}` or `{}` (undecided: force evaluations leave out the implicit one's solves)", w.point->method, w.undecided);
   return "`" + w.point->method + "`";

@@ -154,6 +154,9 @@ struct LevelWinner {
   double required = kTieMargin;      // timed: the margin a win needs (noise_margin of the two runs' spreads)
   bool tie = false, at_edge = false;
   std::string undecided;             // the explicit solver it is not told from ("" if decided)
+  // In a tie, the solvers beyond the runner-up whose cheapest run is as close to the winner's
+  // (within the margin of their own two runs): a tie names them all.
+  std::vector<const WorkPoint*> also;
   bool decided() const { return !tie && undecided.empty(); }
 };
 LevelWinner level_winner(const SceneWork& w, double level, bool timed);

@@ -13,6 +13,7 @@
 #include "claims.hpp"
 #include "reports/data/studies.hpp"
 #include "reports/document/findings.hpp"
+#include "reports/document/report_text.hpp"
 
 namespace steplab::claims {
 
@@ -50,8 +51,12 @@ void cost_claims(const ReportData& d, const std::string& md) {
         double edge = 0;
         for (const WorkPoint& p : w.points)
           if (p.method == win.method) edge = std::max(edge, p.setting);
+        std::vector<std::string> tied;  // the runner-up, then each further run within the margin of its own two runs
+        for (std::size_t k = 1; tie && k < sorted.size(); ++k)
+          if (k == 1 || (timed ? cost(*sorted[k]) / cost(win) < std::max(1.5, win.spread * sorted[k]->spread) : cost(*sorted[k]) == cost(win)))
+            tied.push_back("`" + sorted[k]->method + "`");
         const std::string cell = fmt::format("`{}` {}{}{}", win.method, timed ? cost_text(true, win.seconds, 0) : std::to_string(win.force_evaluations),
-                                             tie       ? fmt::format(" (tie: `{}`)", sorted[1]->method)
+                                             tie       ? fmt::format(" (tie: {})", and_list(tied))
                                              : against ? fmt::format(" (undecided: `{}`)", against->method)
                                                        : "",
                                              win.setting == edge ? " $\\dagger$" : "");

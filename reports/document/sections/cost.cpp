@@ -23,13 +23,20 @@ namespace {
 
 std::string scene_word(const SceneWork& w) { return std::string(scene_name(w.scene)); }
 
+// The solvers a winner ties with: "`x`", "`x` and `y`".
+std::string tie_names(const LevelWinner& win) {
+  std::vector<std::string> names{fmt::format("`{}`", win.next)};
+  for (const WorkPoint* p : win.also) names.push_back(fmt::format("`{}`", p->method));
+  return and_list(names);
+}
+
 // "`rk4` 4.49 µs", with "(tie: `x`)" where the runner-up is within the noise and a dagger where
 // the winning run is at the edge of its sweep.
 std::string winner_cell(const LevelWinner& win, bool timed) {
   if (!win.point) return "none";
   return fmt::format("`{}` {}{}{}", win.point->method,
                      timed ? cost_text(true, win.point->seconds, 0) : std::to_string(win.point->force_evaluations),
-                     win.tie                  ? fmt::format(" (tie: `{}`)", win.next)
+                     win.tie                  ? fmt::format(" (tie: {})", tie_names(win))
                      : !win.undecided.empty() ? fmt::format(" (undecided: `{}`)", win.undecided)
                                               : "",
                      win.at_edge ? " $\\dagger$" : "");
@@ -339,8 +346,10 @@ class Cost : public Section {
     else if (r.crossover_ratio > 0) {
       const std::string line = fmt::format("- The crossover: from stiffness ratio k2 / k1 = {:g} on, an implicit method is cheaper "
                                            "than every explicit one at error {:.0e}, by more than {:g} times its run time (the tie "
-                                           "margin).\n\n",
-                                           r.crossover_ratio, r.config.crossover_error, kTieMargin);
+                                           "margin), on these runs to t = {:g}, each at the first step of its falling sweep that "
+                                           "reaches the error: a coarser search than the table of cheapest runs above, whose verdict "
+                                           "at one stiffness may differ.\n\n",
+                                           r.crossover_ratio, r.config.crossover_error, kTieMargin, r.config.sweep_t_end);
       md += line;
       if (page.ledger) claim_crossover(*page.ledger, page.data, "cost.crossover", "cost", line);
     }
