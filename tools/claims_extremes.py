@@ -6,7 +6,7 @@ evidence values; claims_rules.CHECKS holds them.  Standard library only.
 """
 import math
 
-from claims_rules import Fail, half_unit, is_index, printed_number, same_json, show, to_number, SLACK
+from claims_rules import Fail, as_printed, checked_digits, is_index, printed_number, same_json, show, to_number
 from fractions import Fraction
 
 WHICH = {"least": lambda a, x: a <= x, "greatest": lambda a, x: a >= x}
@@ -47,20 +47,15 @@ def check_extreme(rule, values):
                 for k in others if not WHICH[which](a, item_value(k, x))]
     if rule.get("printed") is not None:
         digits = rule.get("digits")
-        how, n = next(iter(digits.items())) if isinstance(digits, dict) and len(digits) == 1 else (None, None)
-        if how not in ("decimals", "significant") or not isinstance(n, int) or isinstance(n, bool) \
-                or n < (0 if how == "decimals" else 1):
-            raise Fail("digits is %s, not {\"decimals\": d >= 0} or {\"significant\": s >= 1}" % show(digits))
+        how, n = checked_digits(digits)
         p = printed_number(rule["printed"], "printed")
         if not math.isfinite(a):
             problems.append("a %s is %s, not a finite number to print" % (show(i), show(a)))
         elif isinstance(i, list):
             raise Fail("a difference is not printed")
-        else:
-            fa, half = Fraction(a), half_unit(p, digits)
-            if not (fa == p if half is None else abs(fa - p) <= half + SLACK * abs(fa)):
-                problems.append("a %s %.12g is not %s to %d %s" % (
-                    show(i), a, show(rule["printed"]), n, "decimals" if how == "decimals" else "significant digits"))
+        elif not as_printed(Fraction(a), p, digits):
+            problems.append("a %s %.12g is not %s to %d %s" % (
+                show(i), a, show(rule["printed"]), n, "decimals" if how == "decimals" else "significant digits"))
     return problems
 
 

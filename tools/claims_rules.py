@@ -172,6 +172,21 @@ def half_unit(printed, digits):
         return Fraction(1, 2) / Fraction(10) ** n
     return None if printed == 0 else Fraction(1, 2) * Fraction(10) ** (decade(abs(printed)) - n + 1)
 
+def checked_digits(digits):
+    """(how, n) of a rule's `digits`: {"decimals": d >= 0} or {"significant": s >= 1}."""
+    how, n = next(iter(digits.items())) if isinstance(digits, dict) and len(digits) == 1 \
+        else (None, None)
+    if how not in ("decimals", "significant") or not isinstance(n, int) or isinstance(n, bool) \
+            or n < (0 if how == "decimals" else 1):
+        raise Fail("digits is %s, not {\"decimals\": d >= 0} or {\"significant\": s >= 1}"
+                   % show(digits))
+    return how, n
+
+def as_printed(r, x, digits):
+    """Whether the exact value r is x (the exact value of a printed number) to `digits`."""
+    half = half_unit(x, digits)
+    return r == x if half is None else abs(r - x) <= half + SLACK * abs(r)
+
 def check_ratio(rule, values):
     """Each ratio prod(over) / prod(under) of evidence values (an empty product is 1); the least
     ratio as printed to `digits` is `least`, the greatest `greatest`.  Holds when `ratios` is not
@@ -184,12 +199,7 @@ def check_ratio(rule, values):
                 is_index(k, values) for k in q[f]) for f in ("over", "under")) for q in ratios):
         raise Fail("ratios %s is not a list of {\"over\", \"under\"} lists of indices into the %d "
                    "evidence values" % (show(ratios), len(values)))
-    how, n = next(iter(digits.items())) if isinstance(digits, dict) and len(digits) == 1 \
-        else (None, None)
-    if how not in ("decimals", "significant") or not isinstance(n, int) or isinstance(n, bool) \
-            or n < (0 if how == "decimals" else 1):
-        raise Fail("digits is %s, not {\"decimals\": d >= 0} or {\"significant\": s >= 1}"
-                   % show(digits))
+    how, n = checked_digits(digits)
     printed = {w: printed_number(rule[w], w) for w in ("least", "greatest")}
     if not ratios:
         return ["ratios is empty"]
@@ -208,7 +218,7 @@ def check_ratio(rule, values):
     rs = [exact(q["over"]) / u for q, u in zip(ratios, under)]
     for word, r in (("least", min(rs)), ("greatest", max(rs))):
         x, half = printed[word], half_unit(printed[word], digits)
-        if not (r == x if half is None else abs(r - x) <= half + SLACK * abs(r)):
+        if not as_printed(r, x, digits):
             problems.append("the %s ratio %.12g (ratio %d) is not %s to %d %s: %s" % (
                 word, r, rs.index(r), show(rule[word]), n,
                 "decimals" if how == "decimals" else "significant digits",

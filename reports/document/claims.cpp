@@ -8,9 +8,7 @@
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
-#include "reports/data/studies.hpp"
 #include "reports/document/report_text.hpp"
-#include "reports/document/section.hpp"
 
 namespace steplab {
 
@@ -73,33 +71,13 @@ std::string id_word(std::string_view words) {
   return out;
 }
 
-Json stability_document(const ReportData& d) { return stability_json(d.config.oscillator.params, d.thresholds, d.sweep, &d.map); }
-
 namespace {
 
-// The stability document of a source, made once per ledger.
-const Json& stability_doc(Ledger& l, StabilitySource s) {
-  return l.document(s.file, [&] { return stability_document(s.data); });
-}
-
-// Whether every field of `where` has its value in `row`.
+// Whether every field of `where` has its value in `row` (a field the row lacks: no).
 bool matches(const Json& row, const Json& where) {
   for (const auto& [k, v] : where.items())
-    if (row.at(k) != v) return false;
+    if (!row.contains(k) || row[k] != v) return false;
   return true;
-}
-
-// `field` of the first row of the stability document's `table` that matches `where`, or none.
-std::optional<Evidence> field_of(Ledger& l, StabilitySource s, const char* table, const Json& where, const char* field) {
-  const Json& rows = stability_doc(l, s).at(table);
-  for (std::size_t i = 0; i < rows.size(); ++i)
-    if (matches(rows[i], where)) return l.at(s.file, fmt::format("/{}/{}/{}", table, i, field));
-  return std::nullopt;
-}
-
-// The measured dt* of `method` at `damping` (its thresholds row), or none where the study has no such row.
-std::optional<Evidence> measured_dt(Ledger& l, StabilitySource s, std::size_t method, double damping) {
-  return field_of(l, s, "thresholds", {{"method", name(method)}, {"damping", damping}}, "dt_measured");
 }
 
 bool numerical(const std::string& method) {
@@ -107,146 +85,7 @@ bool numerical(const std::string& method) {
   return m && !method_info(*m).exact_flow;
 }
 
-// Membership over the stability document's `table`: the rows whose fields equal `where`, of the
-// numerical methods, whose `field` equals `equals`, are `set`.
-void membership(Ledger& l, StabilitySource s, Claim c, const char* table, Json where, const char* field, Json equals,
-                const std::vector<std::size_t>& set) {
-  stability_doc(l, s);
-  claim_members(l, std::move(c), s.file, fmt::format("/{}", table), std::move(where), "method", true,
-                test_field(fmt::format("/{}", field), "==", std::move(equals)), method_names(set));
-}
-
 }  // namespace
-
-std::vector<ShownStudy> shown_studies(const Page& page) {
-  std::vector<ShownStudy> out{{{page.data, kStabilityDocument}, page.findings, ""}};
-  if (page.springs) out.push_back({{*page.springs, kSpringsStabilityDocument}, *page.springs_findings, ".springs"});
-  return out;
-}
-
-void claim_unstable_at(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence, double dt,
-                       double damping, const std::vector<std::size_t>& set) {
-  membership(l, s, claim_text(std::move(id), std::move(section), std::move(sentence)), "sweep", {{"dt", dt}, {"damping", damping}},
-             "stable", false, set);
-}
-
-void claim_unbounded_at(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
-                        double damping, const std::vector<std::size_t>& set) {
-  membership(l, s, claim_text(std::move(id), std::move(section), std::move(sentence)), "thresholds", {{"damping", damping}},
-             "dt_theory", "unbounded", set);
-}
-
-namespace {
-
-// A method's measured and predicted dt* at `damping`, from its thresholds row.
-std::pair<Evidence, Evidence> measured_and_predicted(Ledger& l, StabilitySource s, std::size_t m, double damping) {
-  const Json where = {{"method", name(m)}, {"damping", damping}};
-  const std::optional<Evidence> measured = field_of(l, s, "thresholds", where, "dt_measured"),
-                                theory = field_of(l, s, "thresholds", where, "dt_theory");
-  if (!measured || !theory) throw std::logic_error(name(m) + " has no thresholds row at that damping");
-  return {*measured, *theory};
-}
-
-}  // namespace
-
-void claim_thresholds_agree(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
-                            const std::vector<std::pair<std::size_t, double>>& cases, double relative, std::size_t agree) {
-  std::vector<ClaimGroup> groups;
-  for (const auto& [m, damping] : cases) {
-    auto [measured, theory] = measured_and_predicted(l, s, m, damping);
-    groups.push_back({"equality", {{"pairs", {{0, 1}}}, {"relative", relative}, {"absolute", 0}}, {std::move(measured), std::move(theory)}});
-  }
-  claim_count(l, claim_text(std::move(id), std::move(section), std::move(sentence)), std::move(groups), static_cast<int>(agree));
-}
-
-void claim_measured_as_predicted(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
-                                 const std::vector<std::size_t>& methods, double damping, double relative) {
-  std::vector<std::pair<Evidence, Evidence>> pairs;
-  for (std::size_t m : methods) pairs.push_back(measured_and_predicted(l, s, m, damping));
-  claim_equal(l, claim_text(std::move(id), std::move(section), std::move(sentence)), pairs, relative, 0);
-}
-
-void claim_sweep(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence, double dt,
-                 double damping, const std::vector<std::size_t>& methods, const char* field, const char* op, double limit) {
-  if (methods.empty()) return;
-  Claim c{std::move(id), std::move(section), std::move(sentence), "threshold", {{"op", op}, {"limit", limit}}, {}};
-  for (std::size_t m : methods) {
-    const std::optional<Evidence> v = field_of(l, s, "sweep", {{"method", name(m)}, {"dt", dt}, {"damping", damping}}, field);
-    if (!v) throw std::logic_error("claim_sweep: " + name(m) + " without its sweep row");
-    c.evidence.push_back(*v);
-  }
-  l.add(std::move(c));
-}
-
-void claim_map_cells(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence, std::size_t disagree) {
-  stability_doc(l, s);
-  std::vector<std::pair<Evidence, Evidence>> pairs;
-  for (std::size_t m : s.data.map.methods)
-    pairs.push_back({l.at(s.file, "/map/stable/" + name(m)), l.at(s.file, "/map/predicted/" + name(m))});
-  claim_mismatch(l, claim_text(std::move(id), std::move(section), std::move(sentence)), pairs, disagree);
-}
-
-void claim_extreme_rate(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
-                        const std::vector<const SweepRow*>& rows, const SweepRow* extreme, Extreme which, Digits d) {
-  std::vector<Evidence> values;
-  std::size_t a = rows.size();
-  for (const SweepRow* r : rows) {
-    if (r == extreme) a = values.size();
-    const auto rate = field_of(l, s, "sweep", {{"method", name(r->method)}, {"dt", r->dt}, {"damping", r->damping}}, "rate_measured");
-    if (!rate) throw std::logic_error("claim_extreme_rate: " + name(r->method) + " without its sweep row");
-    values.push_back(*rate);
-  }
-  claim_extreme(l, claim_text(std::move(id), std::move(section), std::move(sentence)), std::move(values), a, which, d);
-}
-
-void claim_least_threshold(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
-                           const std::vector<std::size_t>& methods, std::size_t least, double damping, const char* field, Digits d) {
-  std::vector<Evidence> values;
-  std::size_t a = methods.size();
-  for (std::size_t m : methods) {
-    const auto v = field_of(l, s, "thresholds", {{"method", name(m)}, {"damping", damping}}, field);
-    if (!v) throw std::logic_error("claim_least_threshold: " + name(m) + " without its thresholds row");
-    if (m == least) a = values.size();
-    values.push_back(*v);
-  }
-  claim_extreme(l, claim_text(std::move(id), std::move(section), std::move(sentence)), std::move(values), a, Extreme::Least, d);
-}
-
-void claim_family_trend(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
-                        const FamilyTrend& t, double damping) {
-  Claim c{std::move(id), std::move(section), std::move(sentence), "trend", {}, {}};
-  for (std::size_t m : t.members) {
-    const std::optional<Evidence> dt = measured_dt(l, s, m, damping);
-    if (!dt) return;  // not measured: no claim
-    c.evidence.push_back(*dt);
-  }
-  c.rule = {{"along", method_names(t.members)}, {"relative", kSameThreshold}, {"trend", to_text(t.trend)}};
-  l.add(std::move(c));
-}
-
-std::vector<StabilityPoint> spearman_points(StabilitySource s, const Findings& f) {
-  std::vector<StabilityPoint> out;
-  for (std::size_t m : methods_of(f, f.numerical)) out.push_back({s, m});
-  return out;
-}
-
-void claim_spearman(Ledger& l, const std::vector<StabilityPoint>& points, double value, std::string id, std::string section,
-                    std::string sentence, int decimals) {
-  Claim c{std::move(id), std::move(section), std::move(sentence), "statistic", {}, {}};
-  Json x = Json::array(), y = Json::array();
-  for (const StabilityPoint& p : points) {
-    const std::optional<Evidence> dt = measured_dt(l, p.source, p.method, p.source.data.config.damping());
-    if (!dt) return;  // a point not measured: no claim
-    x.push_back(c.evidence.size());
-    c.evidence.push_back(l.order_of(p.method));
-    y.push_back(c.evidence.size());
-    c.evidence.push_back(*dt);
-  }
-  c.rule = {{"statistic", "spearman"}, {"x", std::move(x)},          {"y", std::move(y)},
-            {"value", std::stod(fmt::format("{:.{}f}", value, decimals))},  // as printed
-            {"decimals", decimals},    {"words", correlation_words(value)}};
-  l.add(std::move(c));
-}
 
 Json test_field(std::string pointer, const char* op, Json value) {
   return {{"field", std::move(pointer)}, {"op", op}, {"value", std::move(value)}};
@@ -429,13 +268,16 @@ void claim_range(Ledger& l, const std::string& id, const std::string& section, c
   claim_extreme(l, claim_text(id + ".greatest", section, sentence), k.values, k.most, Extreme::Greatest, d);
 }
 
-Evidence row_field(const Ledger& l, const std::string& file, const std::string& rows, const Json& where, const std::string& field) {
+std::optional<Evidence> find_row_field(const Ledger& l, const std::string& file, const std::string& rows, const Json& where,
+                                       const std::string& field) {
   const Json& table = l.documents().at(file).at(Json::json_pointer(rows));
-  for (std::size_t i = 0; i < table.size(); ++i) {
-    bool all = true;
-    for (const auto& [k, v] : where.items()) all = all && table[i].contains(k) && table[i][k] == v;
-    if (all) return l.at(file, fmt::format("{}/{}/{}", rows, i, field));
-  }
+  for (std::size_t i = 0; i < table.size(); ++i)
+    if (matches(table[i], where)) return l.at(file, fmt::format("{}/{}/{}", rows, i, field));
+  return std::nullopt;
+}
+
+Evidence row_field(const Ledger& l, const std::string& file, const std::string& rows, const Json& where, const std::string& field) {
+  if (std::optional<Evidence> e = find_row_field(l, file, rows, where, field)) return *e;
   throw std::logic_error("row_field: no row of " + file + rows + " matches " + where.dump());
 }
 

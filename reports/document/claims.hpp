@@ -167,7 +167,9 @@ std::vector<const Row*> printed_ties(const std::vector<Row>& rows, Keep&& keep, 
 void claim_range(Ledger& l, const std::string& id, const std::string& section, const std::string& sentence, const Kept& k,
                  std::optional<Digits> d = {});
 // `field` of the first row of the array at `rows` in the cited document `file` whose fields equal
-// `where`'s, as evidence: std::logic_error where there is none.
+// `where`'s, as evidence: none where there is none (row_field: std::logic_error).
+std::optional<Evidence> find_row_field(const Ledger& l, const std::string& file, const std::string& rows, const Json& where,
+                                       const std::string& field);
 Evidence row_field(const Ledger& l, const std::string& file, const std::string& rows, const Json& where, const std::string& field);
 
 // Words as part of a claim's id: "explicit Runge-Kutta" -> "explicit_runge-kutta".
@@ -224,12 +226,16 @@ inline void claim_rate(Ledger& l, StabilitySource s, std::string id, std::string
 // "`disagree` of the stability map's cells disagree with the step map's prediction": a mismatch
 // claim over each method's two tables of map/stable and map/predicted.
 void claim_map_cells(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence, std::size_t disagree);
-// "`extreme` has the least (greatest) measured energy rate of the sweep's `rows`, printed with `d`".
-void claim_extreme_rate(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
-                        const std::vector<const SweepRow*>& rows, const SweepRow* extreme, Extreme which, Digits d);
-// "`least` has the least `field` (dt_measured, dt_theory) at `damping` of `methods`, printed with `d`".
-void claim_least_threshold(Ledger& l, StabilitySource s, std::string id, std::string section, std::string sentence,
-                           const std::vector<std::size_t>& methods, std::size_t least, double damping, const char* field, Digits d);
+// "Row `a` of these rows of the stability document's `table` (thresholds, sweep; each named by its
+// fields) has the least (greatest) `field`, printed with `d`": an extreme claim.
+void claim_stability_extreme(Ledger& l, StabilitySource s, Claim c, const char* table, const std::vector<Json>& rows, std::size_t a,
+                             const char* field, Extreme which, Digits d);
+// The unstable runs at (dt, damping) by how they grow (findings.hpp): the weak ones' rates below
+// kWeakRate and their E/E0 at most kBlownRatio (`section`.weakly_unstable_`at`, and its .near_e0),
+// the ones far from E0 (`section`.far_from_e0_`at`) and, where `strong`, the others' rates
+// (`section`.strongly_unstable_`at`).
+void claim_unstable_runs(Ledger& l, StabilitySource s, const std::string& section, const std::string& at, const std::string& sentence,
+                         double dt, double damping, const std::vector<MethodRate>& runs, bool strong);
 // The work-precision study as the report writes it, data/cost/work_precision.json.
 inline constexpr const char* kWorkDocument = "cost/work_precision.json";
 // A field of a work point (`p` of scene `w`) in the cited work-precision document, as evidence.

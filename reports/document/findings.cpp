@@ -227,7 +227,7 @@ std::vector<MethodRate> rates_of(const Findings& f, const std::vector<std::size_
 }
 
 namespace {
-bool is_weak(const MethodRate& r) { return r.rate < kWeakRate && !(r.energy_max > kWeakEnergy); }
+bool is_weak(const MethodRate& r) { return r.rate < kWeakRate && !(r.energy_max > kBlownRatio); }
 }  // namespace
 
 std::vector<std::size_t> weakly(const std::vector<MethodRate>& runs) {
@@ -247,7 +247,7 @@ std::vector<std::size_t> strongly(const std::vector<MethodRate>& runs) {
 std::vector<std::size_t> far_from_e0(const std::vector<MethodRate>& runs) {
   std::vector<std::size_t> out;
   for (const MethodRate& r : runs)
-    if (std::isfinite(r.rate) && r.rate < kWeakRate && r.energy_max > kWeakEnergy) out.push_back(r.method);
+    if (std::isfinite(r.rate) && r.rate < kWeakRate && r.energy_max > kBlownRatio) out.push_back(r.method);
   return out;
 }
 
@@ -264,11 +264,17 @@ std::string unstable_words(const std::vector<MethodRate>& runs) {
   return strong.empty() ? w : fmt::format("{}, and {}", and_list(strong), w);
 }
 
+std::vector<std::string> LevelWinner::tied_with() const {
+  std::vector<std::string> out{next};
+  for (const WorkPoint* p : also) out.push_back(p->method);
+  return out;
+}
+
 std::string winner_words(const LevelWinner& w) {
   if (w.tie) {
-    std::vector<std::string> names{fmt::format("`{}`", w.point->method), fmt::format("`{}`", w.next)};
-    for (const WorkPoint* p : w.also) names.push_back(fmt::format("`{}`", p->method));
-    return "a tie of " + and_list(names);
+    std::vector<std::string> names = w.tied_with();
+    names.insert(names.begin(), w.point->method);
+    return "a tie of " + quoted_list(names);
   }
   if (!w.undecided.empty())
     return fmt::format("`{}` or `{}` (undecided: force evaluations leave out the implicit one's solves)", w.point->method, w.undecided);

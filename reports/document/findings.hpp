@@ -58,12 +58,12 @@ std::string correlation_words(double rho);
 double spearman_chance(std::size_t n);
 std::string chance_words(double rho, std::size_t n);
 
-// An unstable run whose energy grows slower than this per unit time, and whose E/E0 stays below
-// kWeakEnergy, is weakly unstable: E doubles in more than ln 2 / kWeakRate = 690 time units, 69
-// times the sheet's 10 s, where a run shows no growth; the rate is stated beside it. (Stable is at
-// most kStableRate, 1e-6.) A run whose energy jumped far from E0 and then grows slowly (PBD at a
-// large step) is not weakly unstable: the rate says nothing of it.
-inline constexpr double kWeakRate = 1e-3, kWeakEnergy = 10;
+// An unstable run whose energy grows slower than this per unit time, and whose E/E0 stays at most
+// kBlownRatio (below), is weakly unstable: E doubles in more than ln 2 / kWeakRate = 690 time
+// units, 69 times the sheet's 10 s, where a run shows no growth; the rate is stated beside it.
+// (Stable is at most kStableRate, 1e-6.) A run whose energy jumped far from E0 and then grows
+// slowly (PBD at a large step) is not weakly unstable: the rate says nothing of it.
+inline constexpr double kWeakRate = 1e-3;
 // A method with its measured energy growth rate (d ln E / dt) and its largest E/E0 at one of the sheet's tests.
 struct MethodRate {
   std::size_t method;
@@ -74,9 +74,9 @@ std::vector<MethodRate> rates_of(const Findings& f, const std::vector<std::size_
 // "`a`, and weakly (energy growing 6e-06 and 1.2e-05 per unit time) `b` and `c`": the methods,
 // those below kWeakRate last with their rates.
 std::string unstable_words(const std::vector<MethodRate>& runs);
-std::vector<std::size_t> weakly(const std::vector<MethodRate>& runs);  // below kWeakRate, E/E0 at most kWeakEnergy
+std::vector<std::size_t> weakly(const std::vector<MethodRate>& runs);  // below kWeakRate, E/E0 at most kBlownRatio
 // The others with a finite rate (a blown-up run has none): by their rate (at least kWeakRate), or
-// by their energy (below kWeakRate, E/E0 beyond kWeakEnergy).
+// by their energy (below kWeakRate, E/E0 beyond kBlownRatio).
 std::vector<std::size_t> strongly(const std::vector<MethodRate>& runs);
 std::vector<std::size_t> far_from_e0(const std::vector<MethodRate>& runs);
 
@@ -158,6 +158,7 @@ struct LevelWinner {
   // (within the margin of their own two runs): a tie names them all.
   std::vector<const WorkPoint*> also;
   bool decided() const { return !tie && undecided.empty(); }
+  std::vector<std::string> tied_with() const;  // in a tie, the runner-up and `also`, by name
 };
 LevelWinner level_winner(const SceneWork& w, double level, bool timed);
 // "`rk4`", "a tie of `a` and `b`", or "`radau_iia5` or `adams_bashforth3` (undecided: force

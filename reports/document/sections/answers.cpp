@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <tuple>
 
 #include <fmt/format.h>
 
@@ -72,13 +71,8 @@ std::string stable_answer(const Page& page) {
       claim_unstable_at(*l, s, fmt::format("answers.unstable_undamped{}", x.id), "answers", md, c.small_dt, 0.0,
                         methods_of(x.f, x.f.unstable_undamped));
       const std::vector<MethodRate> large = rates_of(x.f, x.f.unstable_large, false), undamped = rates_of(x.f, x.f.unstable_undamped, true);
-      for (const auto& [runs, dt, damping, id] : {std::tuple{&large, c.large_dt, c.damping(), "at_large_dt"}, {&undamped, c.small_dt, 0.0, "undamped"}}) {
-        claim_rate(*l, s, fmt::format("answers.weakly_unstable_{}{}", id, x.id), "answers", md, dt, damping, weakly(*runs), "<", kWeakRate);
-        claim_sweep(*l, s, fmt::format("answers.weakly_unstable_{}{}.near_e0", id, x.id), "answers", md, dt, damping, weakly(*runs),
-                    "energy_ratio_max", "<=", kWeakEnergy);
-        claim_sweep(*l, s, fmt::format("answers.far_from_e0_{}{}", id, x.id), "answers", md, dt, damping, far_from_e0(*runs),
-                    "energy_ratio_max", ">", kWeakEnergy);
-      }
+      claim_unstable_runs(*l, s, "answers", fmt::format("at_large_dt{}", x.id), md, c.large_dt, c.damping(), large, false);
+      claim_unstable_runs(*l, s, "answers", fmt::format("undamped{}", x.id), md, c.small_dt, 0.0, undamped, false);
       claim_unbounded_at(*l, s, fmt::format("answers.stable_at_every_step{}", x.id), "answers", md, c.damping(),
                          methods_of(x.f, x.f.always_stable));
     }

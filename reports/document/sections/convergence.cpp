@@ -116,9 +116,9 @@ class Convergence : public Section {
     constexpr Digits kOrder{false, 2};
     const auto order_of = [](const ConvergenceFit& f) { return f.fit.order; };
     const auto names = [&](const std::vector<const ConvergenceFit*>& tied) {  // the fits that print alike: a tie, named as one
-      std::vector<std::string> out;
-      for (const ConvergenceFit* f : tied) out.push_back(fmt::format("`{}`", name(f->method)));
-      return and_list(out);
+      std::vector<std::size_t> methods;
+      for (const ConvergenceFit* f : tied) methods.push_back(f->method);
+      return method_list(methods);
     };
     const std::vector<const ConvergenceFit*> flats = printed_ties(shown.fits, drawn_fit, order_of, flat, kOrder),
                                              steeps = printed_ties(shown.fits, drawn_fit, order_of, steep, kOrder);

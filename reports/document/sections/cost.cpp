@@ -23,20 +23,13 @@ namespace {
 
 std::string scene_word(const SceneWork& w) { return std::string(scene_name(w.scene)); }
 
-// The solvers a winner ties with: "`x`", "`x` and `y`".
-std::string tie_names(const LevelWinner& win) {
-  std::vector<std::string> names{fmt::format("`{}`", win.next)};
-  for (const WorkPoint* p : win.also) names.push_back(fmt::format("`{}`", p->method));
-  return and_list(names);
-}
-
 // "`rk4` 4.49 µs", with "(tie: `x`)" where the runner-up is within the noise and a dagger where
 // the winning run is at the edge of its sweep.
 std::string winner_cell(const LevelWinner& win, bool timed) {
   if (!win.point) return "none";
   return fmt::format("`{}` {}{}{}", win.point->method,
                      timed ? cost_text(true, win.point->seconds, 0) : std::to_string(win.point->force_evaluations),
-                     win.tie                  ? fmt::format(" (tie: {})", tie_names(win))
+                     win.tie                  ? fmt::format(" (tie: {})", quoted_list(win.tied_with()))
                      : !win.undecided.empty() ? fmt::format(" (undecided: `{}`)", win.undecided)
                                               : "",
                      win.at_edge ? " $\\dagger$" : "");

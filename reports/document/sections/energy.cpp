@@ -66,12 +66,14 @@ class Energy : public Section {
   // axis spans the largest of their excursions.
   std::vector<FigureSpec> figures(const ReportData& d) const override {
     const std::vector<EnergyBehaviour> e = energy_behaviour(d);
+    // the runs the family panels draw: neither damped out nor blown up
+    const auto banded = [](const EnergyBehaviour& b) { return b.kind != EnergyKind::Damped && b.kind != EnergyKind::Blows; };
     double reach = 0;
     for (const EnergyBehaviour& b : e)
-      if (b.kind == EnergyKind::Bounded || b.kind == EnergyKind::Grows || b.kind == EnergyKind::Decays) reach = std::max({reach, b.hi - 1, 1 - b.lo});
+      if (banded(b)) reach = std::max({reach, b.hi - 1, 1 - b.lo});
     const auto drawn = [&](std::size_t m) {
       for (const EnergyBehaviour& b : e)
-        if (b.method == m) return b.kind == EnergyKind::Bounded || b.kind == EnergyKind::Grows || b.kind == EnergyKind::Decays;
+        if (b.method == m) return banded(b);
       return false;
     };
     std::vector<FigureSpec> out;

@@ -88,12 +88,14 @@ class Families : public Section {
   // Each a claim over the thresholds' predicted dt* at `gamma`, where `l` is given.
   std::string ray_sentence(const ReportData& d, double gamma, Ledger* l) const {
     const ThresholdRow* first = nullptr;
-    std::vector<std::size_t> regions, whole;
+    std::vector<std::size_t> whole;
+    std::vector<Json> regions;  // the thresholds rows of the methods with a region, by their fields
+    std::size_t a = 0;
     for (const ThresholdRow& r : d.thresholds) {
       if (!has_region(r.method) || r.damping != gamma) continue;
-      regions.push_back(r.method);
       if (std::isinf(r.dt_theory)) whole.push_back(r.method);
-      else if (!first || r.dt_theory < first->dt_theory) first = &r;
+      else if (!first || r.dt_theory < first->dt_theory) first = &r, a = regions.size();
+      regions.push_back({{"method", name(r.method)}, {"damping", gamma}});
     }
     constexpr Digits kDt{true, 4};
     std::string out;
@@ -101,7 +103,9 @@ class Families : public Section {
     if (!whole.empty()) out += fmt::format("{} stays inside the regions of {}", out.empty() ? "The ray" : ", and", method_list(whole));
     if (out.empty()) return out;
     out += ".";
-    if (l && first) claim_least_threshold(*l, {d}, "families.ray_leaves_first", "families", out, regions, first->method, gamma, "dt_theory", kDt);
+    if (l && first)
+      claim_stability_extreme(*l, {d}, claim_text("families.ray_leaves_first", "families", out), "thresholds", regions, a, "dt_theory",
+                              Extreme::Least, kDt);
     if (l && !whole.empty()) claim_unbounded_at(*l, {d}, "families.ray_inside", "families", out, gamma, whole);
     return out;
   }

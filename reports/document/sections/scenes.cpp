@@ -126,10 +126,10 @@ class SceneFigures : public Section {
   static std::string farthest(const std::vector<Deviation>& dev, const std::string& at) {
     const Deviation* far = farthest_run(dev);
     if (!far) return at + " every run diverged.";
-    std::vector<std::string> names;  // the runs as far to the printed digits: a tie, named as one
+    std::vector<std::size_t> tied;  // the runs as far to the printed digits: a tie, named as one
     for (const Deviation* v : printed_ties(dev, [](const Deviation& v) { return v.ok; }, [](const Deviation& v) { return v.worst; }, far, kDistance))
-      names.push_back(fmt::format("`{}`", name(v->method)));
-    return fmt::format("{} the farthest from the exact path {} {}, {} m.", at, names.size() == 1 ? "is" : "are, tied,", and_list(names),
+      tied.push_back(v->method);
+    return fmt::format("{} the farthest from the exact path {} {}, {} m.", at, tied.size() == 1 ? "is" : "are, tied,", method_list(tied),
                        printed(far->worst, kDistance));
   }
   // The runs of one scene and step as data/scenes/<scene>_<dt>.json (steplab.deviations/1, docs/json.md):
@@ -143,18 +143,13 @@ class SceneFigures : public Section {
       runs.push_back({{"method", name(v.method)}, {"status", v.ok ? "ok" : "diverged"}, {"distance_max", v.ok ? Json(v.worst) : Json(nullptr)}});
     const std::string file = fmt::format("scenes/{}_{}.json", scene, dt), id = fmt::format("scenes.{}.{}", scene, id_word(fmt::format("{}", dt)));
     l->document(file, [&] { return Json{{"schema", "steplab.deviations/1"}, {"scene", scene}, {"dt", dt}, {"runs", std::move(runs)}}; });
-    std::vector<Evidence> ok;
-    std::size_t a = 0;
-    for (std::size_t k = 0; k < dev.size(); ++k) {
-      if (!dev[k].ok) continue;
-      const Evidence e = l->at(file, fmt::format("/runs/{}/distance_max", k));
-      claim_ratio(*l, claim_text(id + "." + name(dev[k].method), "scenes", line), {{e}, {}}, dev[k].worst,
-                  kDistance);
-      if (&dev[k] == farthest_run(dev)) a = ok.size();
-      ok.push_back(e);
-    }
-    if (!far.empty() && !ok.empty())
-      claim_extreme(*l, claim_text(id + ".farthest", "scenes", far), ok, a, Extreme::Greatest, kDistance);
+    const Kept ok = kept_evidence(dev, [](const Deviation& v) { return v.ok; }, nullptr, farthest_run(dev), [&](const Deviation&, std::size_t k) {
+      return l->at(file, fmt::format("/runs/{}/distance_max", k));
+    });
+    for (std::size_t k = 0, i = 0; k < dev.size(); ++k)  // each distance stated, as printed
+      if (dev[k].ok) claim_ratio(*l, claim_text(id + "." + name(dev[k].method), "scenes", line), {{ok.values[i++]}, {}}, dev[k].worst, kDistance);
+    if (!far.empty() && !ok.values.empty())
+      claim_extreme(*l, claim_text(id + ".farthest", "scenes", far), ok.values, ok.most, Extreme::Greatest, kDistance);
   }
 };
 

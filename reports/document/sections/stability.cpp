@@ -120,10 +120,12 @@ class Stability : public Section {
                                                "predicted 2 ln(rho) / h from the step map (lines), a panel per family. {}",
                                                c.large_dt, loss));
       if (page.ledger && fastest) {
-        std::vector<const SweepRow*> rows;
+        std::vector<Json> rows;  // the sweep's rows at the figure's dt with a rate, by their fields
+        std::size_t a = 0;
         for (const SweepRow& r : d.sweep)
-          if (measured(r)) rows.push_back(&r);
-        claim_extreme_rate(*page.ledger, {d}, "stability.fastest_loss", "stability", loss, rows, fastest, Extreme::Least, kRate);
+          if (measured(r)) a = &r == fastest ? rows.size() : a, rows.push_back({{"method", name(r.method)}, {"dt", r.dt}, {"damping", r.damping}});
+        claim_stability_extreme(*page.ledger, {d}, claim_text("stability.fastest_loss", "stability", loss), "sweep", rows, a, "rate_measured",
+                                Extreme::Least, kRate);
       }
     }
     std::size_t disagree = 0;

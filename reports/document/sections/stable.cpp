@@ -29,19 +29,9 @@ class Stable : public Section {
     md += large + "\n" + undamped + "\n";
     if (Ledger* l = page.ledger) {
       claim_unstable_at(*l, {page.data}, "stable.unstable_at_large_dt", "stable", large, c.large_dt, c.damping(), methods_of(f, f.unstable_large));
-      claim_rate(*l, {page.data}, "stable.weakly_unstable_at_large_dt", "stable", large, c.large_dt, c.damping(), weakly(large_rates), "<", kWeakRate);
-      claim_sweep(*l, {page.data}, "stable.weakly_unstable_at_large_dt.near_e0", "stable", large, c.large_dt, c.damping(), weakly(large_rates),
-                  "energy_ratio_max", "<=", kWeakEnergy);
-      claim_sweep(*l, {page.data}, "stable.far_from_e0_at_large_dt", "stable", large, c.large_dt, c.damping(), far_from_e0(large_rates),
-                  "energy_ratio_max", ">", kWeakEnergy);
-      claim_rate(*l, {page.data}, "stable.strongly_unstable_at_large_dt", "stable", large, c.large_dt, c.damping(), strongly(large_rates), ">=", kWeakRate);
+      claim_unstable_runs(*l, {page.data}, "stable", "at_large_dt", large, c.large_dt, c.damping(), large_rates, true);
       claim_unstable_at(*l, {page.data}, "stable.unstable_undamped", "stable", undamped, c.small_dt, 0.0, methods_of(f, f.unstable_undamped));
-      claim_rate(*l, {page.data}, "stable.weakly_unstable_undamped", "stable", undamped, c.small_dt, 0.0, weakly(undamped_rates), "<", kWeakRate);
-      claim_sweep(*l, {page.data}, "stable.weakly_unstable_undamped.near_e0", "stable", undamped, c.small_dt, 0.0, weakly(undamped_rates),
-                  "energy_ratio_max", "<=", kWeakEnergy);
-      claim_sweep(*l, {page.data}, "stable.far_from_e0_undamped", "stable", undamped, c.small_dt, 0.0, far_from_e0(undamped_rates),
-                  "energy_ratio_max", ">", kWeakEnergy);
-      claim_rate(*l, {page.data}, "stable.strongly_unstable_undamped", "stable", undamped, c.small_dt, 0.0, strongly(undamped_rates), ">=", kWeakRate);
+      claim_unstable_runs(*l, {page.data}, "stable", "undamped", undamped, c.small_dt, 0.0, undamped_rates, true);
     }
     // Unstable at every small step undamped (predicted dt* = 0): at every step tried, or stable again further out.
     std::vector<std::string> again;
