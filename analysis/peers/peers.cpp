@@ -193,4 +193,10 @@ State<Eigen::Dynamic> run_fixed_peer(const PeerInfo& peer, std::string_view scen
   return peer.lib->run_fixed(peer, scene, params, tol, t_end, n, error_max);
 }
 
+std::string solver_group(std::string_view solver) {
+  if (const auto m = find_method(solver)) return std::string(to_string(method_info(*m).family));
+  const PeerInfo* p = find_peer(solver);
+  return p && p->implicit ? std::string(p->lib->group) : "adaptive explicit";
+}
+
 }  // namespace steplab

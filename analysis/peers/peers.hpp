@@ -128,6 +128,10 @@ struct PeerInfo {
 // Every peer, steplab's dopri5 first; the ones of a scene (PeerScenes::Any ones included).
 std::span<const PeerInfo> peers();
 const PeerInfo* find_peer(std::string_view name);
+// The group the crossover map counts and colours a solver by: a table method's family
+// ("explicit Runge-Kutta"), an implicit peer's library ("CVODE", "ARKODE", "RADAU5"), or
+// "adaptive explicit" (dopri5 and the explicit peers).
+std::string solver_group(std::string_view solver);
 bool peer_runs_on(const PeerInfo& p, PeerScenes scenes);
 std::vector<const PeerInfo*> peers_on(PeerScenes scenes);
 // The names of peers_on(scenes): a study's default adaptive solvers.

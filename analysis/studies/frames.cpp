@@ -150,6 +150,7 @@ FramesResult frames_study(const FramesConfig& config) {
   out.config = config;
   const Reference ref = reference(config);
   out.springs = ref.measures.springs;
+  for (const AnyState& f : ref.frames) out.motion = std::max(out.motion, (f.x - ref.frames.front().x).cwiseAbs().maxCoeff());
   const std::vector<FrameSetup> setups = frame_setups(config.methods, config.budget);
   // Through study_map, one task a set-up and one an order's run: a shard (analysis/kernel/shard.hpp)
   // runs its part of each (an untimed study only: a shard refuses timing).

@@ -74,9 +74,13 @@ struct FamilyFront {
   std::vector<std::size_t> runs;  // indices into FramesResult::runs, cheapest first
 };
 
+// `motion`: how far the body moves, the largest |x_i(t_k) - x_i(0)| of the reference over the
+// coordinates and frames. An error not below it is met by a run that stays at rest: no set-up is
+// the cheapest to reach it (as a map cell at rest, analysis/studies/scaling.hpp).
 struct FramesResult {
   FramesConfig config;
   int springs = 0;
+  double motion = 0;
   std::vector<FrameRun> runs;
   std::vector<FamilyFront> fronts;
   std::vector<FrameOrder> orders;

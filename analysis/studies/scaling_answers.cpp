@@ -54,9 +54,27 @@ void answer_cell(const ScalingResult& r, std::size_t b, std::size_t k, ScalingCe
   if (first) cell.cheapest = first->solver;
   if (second) cell.next = second->solver;
   cell.margin = ratio(next, cheapest);
-  if (c.timing && first) cell.required = noise_margin(first->spread, second ? second->spread : 1);
   cell.explicit_over_implicit = ratio(explicit_, implicit);
   cell.implicit_peer_over_implicit = ratio(peer, implicit);
+  if (!first) return;
+  // The rival: the cheapest run of another group; and, where the cheapest is an implicit
+  // fixed-step method, the cheapest run of any other kind (explicit, or an implicit peer).
+  const std::string group = solver_group(first->solver);
+  const bool fixed_implicit = !first->adaptive && first->implicit;
+  const ScalingRow *rival = nullptr, *other = nullptr;
+  for (std::size_t s = 0; s < r.solvers(); ++s) {
+    const ScalingRow& w = r.rows_of(b * r.solvers() + s)[k];
+    if (!w.reached()) continue;
+    const double cost = scaling_cost(c, w);
+    if (solver_group(w.solver) != group && (!rival || cost < scaling_cost(c, *rival))) rival = &w;
+    if (fixed_implicit && (w.adaptive || !w.implicit) && (!other || cost < scaling_cost(c, *other))) other = &w;
+  }
+  if (rival) cell.rival = rival->solver;
+  cell.rival_margin = rival ? scaling_cost(c, *rival) / cheapest : kNaN;
+  if (c.timing) {
+    cell.required = noise_margin(first->spread, rival ? rival->spread : 1);
+    cell.implicit_required = noise_margin(first->spread, other ? other->spread : 1);
+  }
 }
 
 // The first size where the cheapest implicit fixed-step method's run is cheaper than every

@@ -1,4 +1,4 @@
-// The frame-budget study's writers (analysis/studies/frames.hpp): its JSON (steplab.frames/1)
+// The frame-budget study's writers (analysis/studies/frames.hpp): its JSON (steplab.frames/2)
 // and its table.
 #include <cmath>
 #include <string>
@@ -49,7 +49,7 @@ Json frames_json(const FramesResult& r) {
   j["scene"] = scene_name(c.scene);
   j["params"] = scene_params_json(c.scene, c.params);
   j["fps"] = c.fps, j["t_end"] = c.t_end, j["budget"] = c.budget, j["timing"] = c.timing;
-  j["springs"] = r.springs;
+  j["springs"] = r.springs, j["motion"] = r.motion;
   j["reference"] = scene_kernel(c.scene).exact ? Json("exact") : Json(fmt::format("rk4 at {} substeps a frame", c.reference_substeps));
   Json runs = Json::array();
   for (const FrameRun& run : r.runs) {

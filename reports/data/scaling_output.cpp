@@ -78,7 +78,10 @@ Json scaling_json(const ScalingResult& r) {
     Json map = Json::array();
     for (const ScalingCell& m : b.cells)
       map.push_back({{size_key, m.n}, {"masses", m.masses}, {"cheapest", name(m.cheapest)}, {"next", name(m.next)},
-                     {"margin", num(m.margin)}, {"required_margin", c.timing ? Json(m.required) : Json(nullptr)}, {"best_implicit", name(m.best_implicit)}, {"best_explicit", name(m.best_explicit)},
+                     {"margin", num(m.margin)}, {"rival", name(m.rival)}, {"rival_margin", num(m.rival_margin)},
+                     {"required_margin", c.timing ? Json(m.required) : Json(nullptr)},
+                     {"implicit_required_margin", c.timing && !m.best_implicit.empty() && m.cheapest == m.best_implicit ? Json(m.implicit_required) : Json(nullptr)},
+                     {"best_implicit", name(m.best_implicit)}, {"best_explicit", name(m.best_explicit)},
                      {"best_implicit_peer", name(m.best_implicit_peer)}, {"explicit_over_implicit", num(m.explicit_over_implicit)},
                      {"implicit_peer_over_implicit", num(m.implicit_peer_over_implicit)}, {"motion", m.motion}});
     blocks.push_back({{"target", b.target}, {"error", b.error}, {"stiffness", num(b.stiffness)},
@@ -164,7 +167,7 @@ std::string scaling_map_table(const ScalingResult& r) {
   std::string out;
   const std::size_t nk = r.blocks.size() / c.targets.size();
   for (std::size_t t = 0; t < c.targets.size(); ++t) {
-    out += fmt::format("\nThe map at error {}: per cell the cheapest solver x its margin over the next; the cheapest implicit "
+    out += fmt::format("\nThe map at error {}: per cell the cheapest solver x its margin over the cheapest of another group; the cheapest implicit "
                        "fixed-step method's cost against the best explicit solver's and the best adaptive implicit peer's (> 1: implicit cheaper); "
                        "the body's motion (largest displacement from rest; ! below the target: a run at rest meets it)\n"
                        "{:>10} {:>7}  {:<32} {:<26} {:>8} {:>8} {:>10}\n",
@@ -174,7 +177,7 @@ std::string scaling_map_table(const ScalingResult& r) {
       const ScalingBlock& b = r.blocks[t * nk + k];
       for (const ScalingCell& m : b.cells)
         out += fmt::format("{:>10} {:>7}  {:<32} {:<26} {:>8} {:>8} {:>10}\n", std::isnan(b.stiffness) ? "-" : fmt::format("{:g}", b.stiffness),
-                           m.masses, m.cheapest.empty() ? "none reached" : fmt::format("{} x {}", m.cheapest, ratio_text(m.margin)),
+                           m.masses, m.cheapest.empty() ? "none reached" : fmt::format("{} x {}", m.cheapest, ratio_text(m.rival_margin)),
                            m.best_implicit.empty() ? "-" : m.best_implicit, ratio_text(m.explicit_over_implicit), ratio_text(m.implicit_peer_over_implicit),
                            fmt::format("{:.2e}{}", m.motion, m.motion < b.error ? "!" : ""));
     }

@@ -106,7 +106,7 @@ std::string mode_thresholds_table(std::string_view scene, const std::vector<Mode
 namespace steplab {
 namespace schema {
 // study scaling: "unbounded" for a stable step of every size (version 3 wrote "inf")
-inline constexpr std::string_view scaling = "steplab.scaling/5";
+inline constexpr std::string_view scaling = "steplab.scaling/6";
 }  // namespace schema
 // `study scaling` (reports/data/scaling_output.cpp). Its parameters
 // that do not depend on the scene (t-end, frames, max-steps; the first is the report's scaling.t_end).
@@ -158,7 +158,7 @@ std::string counts_text(const Counts& n);
 
 namespace steplab {
 namespace schema {
-inline constexpr std::string_view frames = "steplab.frames/1";  // study frames
+inline constexpr std::string_view frames = "steplab.frames/2";  // study frames
 }  // namespace schema
 Json frames_json(const FramesResult& r);  // reports/data/frames_output.cpp
 std::string frames_table(const FramesResult& r);

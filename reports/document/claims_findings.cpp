@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
+#include "analysis/peers/peers.hpp"
 #include "analysis/studies/order_reduction.hpp"
 #include "reports/data/studies.hpp"
 #include "reports/document/claims.hpp"
@@ -231,23 +232,24 @@ namespace steplab {
 
 namespace {
 
-// A comparison group over one map cell's rows: the run of solver `a` against every other reached
-// run, `first` (the runner-up) at their head; the noise their two timing spreads.
+// A comparison group over one map cell's rows: the run of solver `a` against each reached run the
+// cell sets against it (`against`: another group's, or another kind's), its cheapest at their head;
+// the noise their two timing spreads.
+template <class Against>
 ClaimGroup cell_group(Ledger& l, const std::string& file, const std::vector<std::size_t>& rows, const ScalingResult& r,
-                      const std::string& a, const std::string& first, const char* relation) {
+                      const std::string& a, Against against, const char* relation) {
   const auto at = [&](std::size_t i, const char* field) { return l.at(file, fmt::format("/rows/{}/{}", i, field)); };
-  constexpr std::size_t none = std::numeric_limits<std::size_t>::max();  // rows holds indices into every row
-  std::size_t ia = none, ifirst = none;
-  for (std::size_t i : rows) {
-    if (r.rows[i].solver == a) ia = i;
-    if (r.rows[i].solver == first) ifirst = i;
-  }
-  if (ia == none) throw std::logic_error("a map cell without its cheapest run: " + a);
-  std::vector<Evidence> others, noise{at(ia, "seconds_spread")};
-  if (ifirst != none) others.push_back(at(ifirst, "seconds")), noise.push_back(at(ifirst, "seconds_spread"));
+  const auto ia = std::find_if(rows.begin(), rows.end(), [&](std::size_t i) { return r.rows[i].solver == a; });
+  if (ia == rows.end()) throw std::logic_error("a map cell without its cheapest run: " + a);
+  std::vector<std::size_t> others;
   for (std::size_t i : rows)
-    if (i != ia && i != ifirst) others.push_back(at(i, "seconds"));
-  return comparison_group(at(ia, "seconds"), std::move(others), std::move(noise), relation, kTieMargin);
+    if (i != *ia && against(r.rows[i])) others.push_back(i);
+  const auto cost = [&](std::size_t i) { return scaling_cost(r.config, r.rows[i]); };
+  std::stable_sort(others.begin(), others.end(), [&](std::size_t x, std::size_t y) { return cost(x) < cost(y); });
+  std::vector<Evidence> seconds, noise{at(*ia, "seconds_spread")};
+  if (!others.empty()) noise.push_back(at(others.front(), "seconds_spread"));
+  for (std::size_t i : others) seconds.push_back(at(i, "seconds"));
+  return comparison_group(at(*ia, "seconds"), std::move(seconds), std::move(noise), relation, kTieMargin);
 }
 
 }  // namespace
@@ -275,11 +277,13 @@ void claim_map(Ledger& l, const ScalingResult& r, std::size_t target, const std:
         const ScalingRow& w = r.rows_of(b * r.solvers() + s)[n];
         if (w.reached()) rows.push_back(static_cast<std::size_t>(&w - r.rows.data()));
       }
-      ties.push_back(cell_group(l, file, rows, r, m.cheapest, m.next, "tie"));
-      wins.push_back(cell_group(l, file, rows, r, m.cheapest, m.next, "less"));
-      by_group[solver_group(m.cheapest)].push_back(wins.back());
-      if (!m.best_implicit.empty())
-        implicit.push_back(cell_group(l, file, rows, r, m.best_implicit, m.best_implicit == m.cheapest ? m.next : m.cheapest, "less"));
+      const std::string group = solver_group(m.cheapest);
+      const auto other_group = [&](const ScalingRow& w) { return solver_group(w.solver) != group; };
+      ties.push_back(cell_group(l, file, rows, r, m.cheapest, other_group, "tie"));
+      wins.push_back(cell_group(l, file, rows, r, m.cheapest, other_group, "less"));
+      by_group[group].push_back(wins.back());
+      if (!m.best_implicit.empty())  // an implicit fixed-step method against every other kind of solver
+        implicit.push_back(cell_group(l, file, rows, r, m.best_implicit, [](const ScalingRow& w) { return w.adaptive || !w.implicit; }, "less"));
     }
   }
   int won = 0;
@@ -300,13 +304,13 @@ void claim_scaling_crossover(Ledger& l, const ScalingResult& r, const std::strin
   const ScalingBlock& block = r.blocks.front();
   std::vector<ClaimGroup> groups;
   for (std::size_t k = 0; k < r.config.sizes.size(); ++k) {
-    const auto [imp, exp] = crossover_sides(r, 0, k);
+    const ScalingRow* imp = crossover_sides(r, 0, k).implicit;
     std::vector<std::size_t> rows;  // the cheapest implicit run, then every explicit one (JSON rows are ScalingResult::rows)
     for (std::size_t s = 0; s < r.config.methods.size(); ++s)
       if (const ScalingRow& w = r.rows_of(s)[k]; w.reached() && !w.implicit) rows.push_back(static_cast<std::size_t>(&w - r.rows.data()));
     if (imp) {
       rows.insert(rows.begin(), static_cast<std::size_t>(imp - r.rows.data()));
-      groups.push_back(cell_group(l, file, rows, r, imp->solver, exp ? exp->solver : std::string(), "less"));
+      groups.push_back(cell_group(l, file, rows, r, imp->solver, [](const ScalingRow&) { return true; }, "less"));
     }
     if (r.config.sizes[k] == block.crossover) break;
   }

@@ -49,12 +49,6 @@ std::string solver_hue(std::string_view solver) {
   return p && p->implicit ? std::string(p->lib->hue) : "#999999";
 }
 
-std::string solver_group(std::string_view solver) {
-  if (const auto m = find_method(solver)) return std::string(to_string(method_info(*m).family));
-  const PeerInfo* p = find_peer(solver);
-  return p && p->implicit ? std::string(p->lib->group) : "adaptive explicit";
-}
-
 // Point by the order: filled circle, square, triangle, diamond, triangle down (gnuplot's filled
 // points; open is the filled point - 1); the exact flow (order 0) a star. Dash: the (order + family)-th of six patterns, so the
 // members of a family differ in dash as in point, and two methods of one order from different

@@ -23,10 +23,8 @@ MethodStyle method_style(std::size_t method);
 
 // A solver's colour on the crossover map: a method's family hue; CVODE sky blue, ARKODE's DIRK
 // tables teal, RADAU5 rose; the explicit adaptive solvers (dopri5, Boost.Odeint's, ARKODE's
-// explicit table) grey. And the group in words: the family's name, "CVODE", "ARKODE", "RADAU5",
-// "adaptive explicit".
+// explicit table) grey: its group's (solver_group, analysis/peers/peers.hpp).
 std::string solver_hue(std::string_view solver);
-std::string solver_group(std::string_view solver);
 
 // figures/styles.gp: `set linetype` per method (method k of the table is linetype k + 1),
 //   mlt(name)            the linetype of a method by name

@@ -291,7 +291,13 @@ CellVerdict cell_verdict(const ScalingCell& m, double error, bool timed) {
   if (m.cheapest.empty()) return CellVerdict::None;
   if (m.motion < error) return CellVerdict::Still;
   if (!timed && solves(m.cheapest) && !m.best_explicit.empty()) return CellVerdict::Undecided;
-  return tied(m.margin, timed, m.required) ? CellVerdict::Tie : CellVerdict::Win;
+  return tied(m.rival_margin, timed, m.required) ? CellVerdict::Tie : CellVerdict::Win;
+}
+
+bool implicit_wins(const ScalingCell& m, bool timed) {
+  if (m.cheapest.empty() || m.cheapest != m.best_implicit) return false;
+  const double over = std::fmin(m.explicit_over_implicit, m.implicit_peer_over_implicit);  // NaN: neither side reached the target
+  return std::isnan(over) || (timed && !tied(over, true, m.implicit_required));  // untimed: undecided (its solves uncounted)
 }
 
 MapTally map_tally(const ScalingResult& r, std::size_t target) {
@@ -302,15 +308,15 @@ MapTally map_tally(const ScalingResult& r, std::size_t target) {
     const ScalingBlock& b = r.blocks[target * nk + k];
     for (const ScalingCell& m : b.cells) {
       ++out.cells;
-      switch (cell_verdict(m, b.error, timed)) {
-        case CellVerdict::Win:
-          ++out.wins[solver_group(m.cheapest)];
-          if (m.cheapest == m.best_implicit) out.implicit.push_back(fmt::format("{:g}/{}", b.stiffness, m.masses));
-          break;
+      const CellVerdict v = cell_verdict(m, b.error, timed);
+      switch (v) {
+        case CellVerdict::Win: ++out.wins[solver_group(m.cheapest)]; break;
         case CellVerdict::Tie: case CellVerdict::Undecided: ++out.ties; break;
         case CellVerdict::Still: ++out.still; break;
         case CellVerdict::None: break;
       }
+      if ((v == CellVerdict::Win || v == CellVerdict::Tie) && implicit_wins(m, timed))
+        out.implicit.push_back(fmt::format("{:g}/{}", b.stiffness, m.masses));
     }
   }
   return out;

@@ -173,10 +173,17 @@ bool solves(const std::string& solver);
 // there (a run at rest meets it: a win for no one); untimed, an implicit cheapest is undecided
 // against an explicit solver (solves uncounted); a tie (tied()); or a clear win.
 enum class CellVerdict { None, Still, Undecided, Tie, Win };
+// The verdict is its group's: the margin over the cheapest run of another group (rival_margin),
+// so two members of one family within the noise are that family's win.
 CellVerdict cell_verdict(const ScalingCell& m, double error, bool timed);
+// Whether the cell's cheapest is an implicit fixed-step method cheaper than every other kind of
+// solver (explicit, adaptive, implicit peers) by its margin, timed (untimed, only where no other
+// kind reached the target): "implicit pays" there, even where another implicit family ties it.
+bool implicit_wins(const ScalingCell& m, bool timed);
 // The map's cells at one target, by verdict: the clear wins by solver group (solver_group), the
-// cells an implicit fixed-step method wins clearly ("stiffness/N"), the ties and undecided ones,
-// the ones at rest.
+// ties between groups and undecided ones, the ones at rest; and the moving cells an implicit
+// fixed-step method wins clearly ("stiffness/N", implicit_wins), a tie between two implicit
+// families among them.
 struct MapTally {
   int cells = 0, ties = 0, still = 0;
   std::map<std::string, int> wins;

@@ -42,6 +42,21 @@ TEST(Peers, TableSaysWhatEachIs) {
   for (const PeerInfo* p : peers_on(PeerScenes::FixedSize)) EXPECT_TRUE(p->linear_solver == LinearSolver::None || p->linear_solver == LinearSolver::Dense) << p->name;
 }
 
+// The map's groups: a table method's family, an implicit peer's library, the explicit adaptive
+// solvers together (steplab's dopri5 with the explicit peers).
+TEST(Peers, GroupsAreFamiliesLibrariesAndTheExplicitAdaptiveOnes) {
+  EXPECT_EQ(solver_group("rk4"), "explicit Runge-Kutta");
+  EXPECT_EQ(solver_group("rk3"), solver_group("rk4"));
+  EXPECT_EQ(solver_group("radau_iia5"), solver_group("gauss_legendre4"));
+  EXPECT_NE(solver_group("bdf2"), solver_group("radau_iia5"));
+  EXPECT_EQ(solver_group("cvode_bdf_band"), "CVODE");
+  EXPECT_EQ(solver_group("cvode_adams_band"), "CVODE");  // Adams with Newton's iteration: implicit
+  EXPECT_EQ(solver_group("dopri5"), "adaptive explicit");
+  EXPECT_EQ(solver_group("odeint_dopri5"), "adaptive explicit");
+  EXPECT_EQ(solver_group("arkode_verner65"), "adaptive explicit");
+  EXPECT_NE(solver_group("dopri5"), solver_group("rk4"));
+}
+
 // steplab's CVODE peer on the rope against bench/cvode_rope.c, which calls CVODE from C with no
 // steplab code: the same settings must give the same run, step for step (the counts equal), and
 // the same end state up to the round-off of the right side's order of operations (1e-12 of the

@@ -187,6 +187,16 @@ TEST(Scaling, StiffnessAxisAndMap) {
       EXPECT_EQ(cell.cheapest, costs[0].second);
       EXPECT_EQ(cell.next, costs[1].second);
       EXPECT_DOUBLE_EQ(cell.margin, costs[1].first / costs[0].first);
+      // The rival, which decides the cell: the cheapest run of another group (a family, a peer
+      // library, the explicit adaptive solvers), not the runner-up of the cheapest's own family.
+      const auto rival = std::find_if(costs.begin(), costs.end(),
+                                      [&](const auto& x) { return solver_group(x.second) != solver_group(costs[0].second); });
+      if (rival == costs.end()) {
+        EXPECT_TRUE(cell.rival.empty());
+      } else {
+        EXPECT_EQ(cell.rival, rival->second);
+        EXPECT_DOUBLE_EQ(cell.rival_margin, rival->first / costs[0].first);
+      }
       if (block.stiffness == 5000) {
         const double n = c.sizes[k], sag = 1.0 * 9.81 * (n + 1) / (2 * 5000 * n);
         EXPECT_GT(cell.motion, sag) << n;

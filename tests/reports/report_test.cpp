@@ -119,12 +119,12 @@ std::string expect_scaling_follows_data(const ReportConfig& c) {
     for (std::size_t k = 0; k < nk; ++k)
       for (const ScalingCell& cell : map.blocks[t * nk + k].cells) {
         if (cell.cheapest.empty() || cell.motion < map.blocks[t * nk + k].error) continue;  // none, or a body at rest: no one's
-        if (cell.margin == 1 || (solves(cell.cheapest) && !cell.best_explicit.empty())) {
-          ++ties;  // untimed: counts tie only when equal, and an implicit cheapest is undecided against an explicit one
-        } else {
-          ++wins[solver_group(cell.cheapest)];
-          implicit += cell.cheapest == cell.best_implicit;
-        }
+        // untimed: the cheapest ties the cheapest of another group only when their counts are equal,
+        // and an implicit cheapest is undecided against an explicit one; "implicit pays" only where
+        // no other kind of solver reached the target
+        if (cell.rival_margin == 1 || (solves(cell.cheapest) && !cell.best_explicit.empty())) ++ties;
+        else ++wins[solver_group(cell.cheapest)];
+        implicit += cell.cheapest == cell.best_implicit && cell.best_explicit.empty() && cell.best_implicit_peer.empty();
       }
     const std::string line = line_starting(md, fmt::format("- At error {}, of", target_text(map.config, map.blocks[t * nk])));
     EXPECT_FALSE(line.empty()) << t << md;

@@ -267,7 +267,7 @@ std::string implicit_answer(const Page& page) {
   for (std::size_t t = 0; t < c.targets.size(); ++t) {
     const MapTally& m = tallies.emplace_back(map_tally(r, t));
     std::vector<std::string> aside;
-    if (m.ties) aside.push_back(fmt::format("{} more are ties{}", m.ties, c.timing ? "" : " or undecided"));
+    if (m.ties) aside.push_back(fmt::format("in {} two groups tie{}", m.ties, c.timing ? "" : " or it is undecided"));
     if (m.still) aside.push_back(fmt::format("in {} the body moves less than the target, a win for no one", m.still));
     parts.push_back(fmt::format("at error {}, in {} of {} cells{}", target_text(c, r.blocks[t * nk]), m.implicit.size(), m.cells,
                                 aside.empty() ? "" : fmt::format(" ({})", fmt::join(aside, "; "))));

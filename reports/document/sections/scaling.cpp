@@ -167,7 +167,7 @@ std::string scene_paragraph(const ScalingResult& r, bool first) {
 
 // map.dat: a gnuplot index per target, a line per cell: its column (size) and row (stiffness)
 // index, the colour of its cheapest solver's group (a tie white), and its two labels: the
-// solver and its margin, or "tie" and the two solvers.
+// solver and its margin over the cheapest of another group, or "tie" and the two solvers.
 std::string map_data(const ScalingResult& r) {
   const ScalingConfig& c = r.config;
   const std::size_t nk = r.blocks.size() / c.targets.size();
@@ -187,8 +187,9 @@ std::string map_data(const ScalingResult& r) {
                                                                 : m.cheapest;
         const std::string second = v == CellVerdict::None || v == CellVerdict::Still ? ""
                                    : v == CellVerdict::Undecided ? m.cheapest + " " + m.best_explicit
-                                   : v == CellVerdict::Tie       ? m.cheapest + " " + m.next
-                                                                 : fmt::format("x{:.2f}", m.margin);
+                                   : v == CellVerdict::Tie       ? m.cheapest + " " + m.rival
+                                   : m.rival.empty()             ? std::string("alone")
+                                                                 : fmt::format("x{:.2f}", m.rival_margin);
         t += fmt::format("{} {} {} \"{}\" \"{}\"\n", n, k, std::stoi(hue.substr(1), nullptr, 16), first, second);
       }
   }
@@ -278,7 +279,8 @@ std::string map_markdown(const ScalingResult& r, Page& page) {
       "study with every method and the peers but CVODE's BDF of orders up to 5 (its orders 1-2 stand for it; a search tries "
       "no step that needs more than {} steps), at the error above and at a visual one ({}). Each cell is coloured by the "
       "group of its cheapest solver (a family; CVODE; ARKODE; RADAU5; the explicit adaptive solvers) and labelled with it and its margin "
-      "over the next; a margin below {:g}, or below the two runs' measured timing noise where larger (each run timed in two "
+      "over the cheapest solver of another group (two members of one family within the noise are still that family's win); a "
+      "margin below {:g}, or below the two runs' measured timing noise where larger (each run timed in two "
       "passes apart in time), is a tie (white, both named), counted for neither; so is a cell where the body moves less "
       "than the target (\"at rest\"){}. `steplab study scaling --scene "
       "{} --sizes {} --stiffness {} --error {:g},{:g}% --max-steps {}` gives the map with every peer and count.\n\n",
