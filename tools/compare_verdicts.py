@@ -7,6 +7,10 @@ A verdict is what a claim decides, not the numbers it rests on (times move with 
 load): a membership claim's set, a trend's word, a statistic's words, a threshold's rows, a
 comparison's winner, or that it is a tie, an equality's pairs, a count's number of its groups, an
 extreme's holder and a mismatch's number of differing cells.
+A comparison names solvers, not runs: its winner, or the set of solvers a tie names (with the
+claims `<id>.tie.<solver>` that name each further one folded into it), each by the `method` or
+`solver` field of the row its evidence points into; which of the tied solvers is the fastest, and
+which of a solver's runs was its cheapest, is noise.
 A ratio claim is a measured value, not a verdict: its verdict is how many ratios it spans (which
 runs it is measured from is chosen by time too), so two reports whose ratios differ in value, or
 were measured on other runs, agree on it. Prints
@@ -18,7 +22,32 @@ import json
 import sys
 
 
-def verdict(claim):
+def row_name(report, evidence, cache):
+    """The `method` or `solver` of the row an evidence pointer points into, else the pointer."""
+    path, pointer = evidence.get("file", ""), evidence.get("pointer", "")
+    if path not in cache:
+        try:
+            with open(f"{report}/data/{path}") as f:
+                cache[path] = json.load(f)
+        except (OSError, ValueError):
+            cache[path] = None
+    node = cache[path]
+    for part in pointer.split("/")[1:-1]:
+        part = part.replace("~1", "/").replace("~0", "~")
+        if isinstance(node, list) and part.isdigit() and int(part) < len(node):
+            node = node[int(part)]
+        elif isinstance(node, dict) and part in node:
+            node = node[part]
+        else:
+            return path + "#" + pointer
+    if isinstance(node, dict):
+        for field in ("method", "solver"):
+            if isinstance(node.get(field), str):
+                return node[field]
+    return path + "#" + pointer
+
+
+def verdict(claim, names):
     rule, kind = claim.get("rule", {}), claim.get("kind")
     pointers = [e.get("file", "") + "#" + e.get("pointer", "") for e in claim.get("evidence", [])]
     if kind == "membership":
@@ -29,11 +58,14 @@ def verdict(claim):
         return ("statistic", rule.get("words"))
     if kind == "threshold":
         return ("threshold", rule.get("op"), rule.get("limit"), sorted(pointers))
-    if kind == "comparison":  # a winner, or a tie (which of the tied runs is named first is noise)
+    if kind == "comparison":  # a winner, or the solvers a tie names
+        a, others = rule.get("a"), rule.get("others") or []
+        if not isinstance(a, int) or a >= len(names):
+            return ("comparison", rule.get("relation"), None)
         if rule.get("relation") == "tie":
-            return ("comparison", "tie")
-        a = rule.get("a")
-        return ("comparison", rule.get("relation"), pointers[a] if a is not None and a < len(pointers) else None)
+            tied = {names[a]} | ({names[others[0]]} if isinstance(others[0], int) and others[0] < len(names) else set())
+            return ("comparison", "tie", sorted(tied))
+        return ("comparison", rule.get("relation"), names[a])
     if kind == "count":  # how many of its groups hold
         return ("count", rule.get("count"), len(rule.get("groups", [])))
     if kind == "equality":  # the pairs it says are equal
@@ -49,8 +81,18 @@ def verdict(claim):
 
 
 def load(report):
+    """Each claim's verdict by id, a tie's further members (`<id>.tie.<solver>`) folded into it."""
     with open(f"{report}/data/claims.json") as f:
-        return {c["id"]: c for c in json.load(f)["claims"]}
+        claims = {c["id"]: c for c in json.load(f)["claims"]}
+    cache, out = {}, {}
+    for cid, c in claims.items():
+        out[cid] = verdict(c, [row_name(report, e, cache) for e in c.get("evidence", [])])
+    for cid in sorted(out):
+        base, _, member = cid.rpartition(".tie.")
+        if base and base in out and out[base][:2] == ("comparison", "tie") and out[cid][:2] == ("comparison", "tie"):
+            out[base] = ("comparison", "tie", sorted(set(out[base][2]) | set(out[cid][2])))
+            del out[cid]
+    return out
 
 
 def main(argv):
@@ -63,10 +105,10 @@ def main(argv):
         if cid not in a or cid not in b:
             print(f"{cid}: only in {argv[1] if cid in a else argv[2]}")
             differ += 1
-        elif verdict(a[cid]) != verdict(b[cid]):
-            print(f"{cid}: {verdict(a[cid])} against {verdict(b[cid])}")
+        elif a[cid] != b[cid]:
+            print(f"{cid}: {a[cid]} against {b[cid]}")
             differ += 1
-    print(f"claims: {len(a)} and {len(b)}, verdicts that differ: {differ}")
+    print(f"verdicts (a tie's members folded into it): {len(a)} and {len(b)}, verdicts that differ: {differ}")
     return 1 if differ else 0
 
 

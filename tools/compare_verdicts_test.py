@@ -10,10 +10,16 @@ import unittest
 TOOL = os.path.join(os.path.dirname(os.path.abspath(__file__)), "compare_verdicts.py")
 
 
+# The data file the comparisons point into: runs 3, 4 and 5 are rk4's, 1 rk3's, 2 and 9 dopri5's.
+POINTS = [{"method": m} for m in ("rk3", "rk3", "dopri5", "rk4", "rk4", "rk4", "x", "x", "x", "dopri5")]
+
+
 def report(root, name, claims):
-    os.makedirs(os.path.join(root, name, "data"))
+    os.makedirs(os.path.join(root, name, "data", "cost"))
     with open(os.path.join(root, name, "data", "claims.json"), "w") as f:
         json.dump({"schema": "steplab.claims/1", "methods": [], "claims": claims}, f)
+    with open(os.path.join(root, name, "data", "cost", "w.json"), "w") as f:
+        json.dump({"points": POINTS}, f)
     return os.path.join(root, name)
 
 
@@ -56,6 +62,22 @@ class CompareVerdicts(unittest.TestCase):
             code, out = run(a, b)
             self.assertEqual(code, 0, out)
             self.assertIn("verdicts that differ: 0", out)
+
+    def test_a_tie_is_its_solvers_with_its_further_members_folded_in(self):
+        def tie(cid, a, b):  # a tie of the runs at points a and b
+            ev = [{"file": "cost/w.json", "pointer": f"/points/{i}/seconds", "value": 1.0} for i in (a, b)]
+            return {"id": cid, "section": "cost", "sentence": "s", "kind": "comparison",
+                    "rule": {"a": 0, "others": [1], "relation": "tie", "margin": 1.5, "noise": []}, "evidence": ev}
+        with tempfile.TemporaryDirectory() as d:
+            # t1: rk4, dopri5 and rk3 in both, named in other roles and by other runs of rk4
+            # t2: rk3 is a further member in a only
+            a = report(d, "a", [tie("t1", 3, 9), tie("t1.tie.rk3", 3, 1), tie("t2", 3, 9), tie("t2.tie.rk3", 3, 1)])
+            b = report(d, "b", [tie("t1", 1, 4), tie("t1.tie.dopri5", 1, 2), tie("t2", 5, 9)])
+            code, out = run(a, b)
+            self.assertEqual(code, 1, out)
+            self.assertNotIn("t1", out)
+            self.assertIn("t2: ('comparison', 'tie', ['dopri5', 'rk3', 'rk4']) against ('comparison', 'tie', ['dopri5', 'rk4'])", out)
+            self.assertIn("verdicts that differ: 1", out)
 
     def test_a_flip_is_named(self):
         with tempfile.TemporaryDirectory() as d:

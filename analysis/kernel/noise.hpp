@@ -16,17 +16,16 @@ namespace steplab {
 // study) tie only when equal.
 inline constexpr double kTieMargin = 1.5;
 
-// The timing noise of one measurement, measured in the same run: a study times each of its rows
-// twice, in two passes apart in time (every row, then every row again in reverse order), keeps
-// the smaller of the two minima and records their ratio, larger over smaller, as the row's
-// spread: how far the machine's load moved its time between the passes. Two rows are told apart
-// only where one's time is below the other's by more than kTieMargin and by more than the product
-// of their spreads (the worst case: one timed at its high, the other at its low): noise_margin.
+// The load a measurement saw, recorded beside it: a study times each of its rows twice, in two
+// passes apart in time (every row, then every row again in reverse order), keeps the smaller of
+// the two minima and records their ratio, larger over smaller, as the row's spread. The spread
+// decides nothing. Load only slows a run, so the smaller minimum is the one less disturbed: a
+// spread says how much worse the worse pass was, not how far the kept time moves from one report
+// to the next. Taking the product of two rows' spreads as the margin a win needs turned ten of
+// twelve map cells into ties in a report whose passes were disturbed (spreads 1.2-1.5) while the
+// kept ratios moved by at most 0.2 (docs/design.md, "Timing noise"); kTieMargin alone covers
+// the kept ratios' measured movement.
 inline double spread_of(double a, double b) { return a > b ? a / b : b / a; }
-inline double noise_margin(double spread_a, double spread_b) {
-  const double noise = spread_a * spread_b;
-  return noise > kTieMargin ? noise : kTieMargin;
-}
 
 // The two passes over a study's rows (each with `seconds` and `spread`): `time(row)` is one
 // timing of the row's run (the minimum of its repeats).

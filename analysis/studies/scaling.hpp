@@ -139,14 +139,10 @@ struct ScalingFit {
 // has none. `motion`: how far the body moves, the largest |x_i(t_k) - x_i(0)| of the exact (or
 // reference) solution over the coordinates and frames; where the target error exceeds it, a run
 // that stays at rest meets the target, and only stability separates the solvers.
-// Where the cheapest is an implicit fixed-step method, `implicit_required` is the margin its win
-// over every other kind of solver needs (noise_margin of its spread and the cheaper other side's).
 struct ScalingCell {
   int n = 0, masses = 0;
   std::string cheapest, next, rival, best_implicit, best_explicit, best_implicit_peer;
   double margin = 0, rival_margin = 0, explicit_over_implicit = 0, implicit_peer_over_implicit = 0;
-  double required = kTieMargin;  // timed: the margin a win over the rival needs, noise_margin of the two runs' spreads
-  double implicit_required = kTieMargin;
   double motion = 0;
 };
 

@@ -57,36 +57,29 @@ void answer_cell(const ScalingResult& r, std::size_t b, std::size_t k, ScalingCe
   cell.explicit_over_implicit = ratio(explicit_, implicit);
   cell.implicit_peer_over_implicit = ratio(peer, implicit);
   if (!first) return;
-  // The rival: the cheapest run of another group; and, where the cheapest is an implicit
-  // fixed-step method, the cheapest run of any other kind (explicit, or an implicit peer).
+  // The rival: the cheapest run of another group.
   const std::string group = solver_group(first->solver);
-  const bool fixed_implicit = !first->adaptive && first->implicit;
-  const ScalingRow *rival = nullptr, *other = nullptr;
+  const ScalingRow* rival = nullptr;
   for (std::size_t s = 0; s < r.solvers(); ++s) {
     const ScalingRow& w = r.rows_of(b * r.solvers() + s)[k];
     if (!w.reached()) continue;
     const double cost = scaling_cost(c, w);
     if (solver_group(w.solver) != group && (!rival || cost < scaling_cost(c, *rival))) rival = &w;
-    if (fixed_implicit && (w.adaptive || !w.implicit) && (!other || cost < scaling_cost(c, *other))) other = &w;
   }
   if (rival) cell.rival = rival->solver;
   cell.rival_margin = rival ? scaling_cost(c, *rival) / cheapest : kNaN;
-  if (c.timing) {
-    cell.required = noise_margin(first->spread, rival ? rival->spread : 1);
-    cell.implicit_required = noise_margin(first->spread, other ? other->spread : 1);
-  }
 }
 
 // The first size where the cheapest implicit fixed-step method's run is cheaper than every
 // explicit one's (steplab's methods, dopri5 among the explicit) by more than the timing's noise
-// (noise_margin of the two runs' spreads, analysis/kernel/noise.hpp). Untimed it is not read: the
+// (kTieMargin, analysis/kernel/noise.hpp). Untimed it is not read: the
 // force evaluations leave out the implicit methods' factorisations and solves.
 void answer_crossover(const ScalingResult& r, std::size_t b, ScalingBlock& block) {
   const ScalingConfig& c = r.config;
   if (!c.timing) return;
   for (std::size_t k = 0; k < c.sizes.size() && block.crossover == 0; ++k) {
     const auto [imp, exp] = crossover_sides(r, b, k);
-    if (imp && (!exp || noise_margin(imp->spread, exp->spread) * imp->seconds < exp->seconds))
+    if (imp && (!exp || kTieMargin * imp->seconds < exp->seconds))
       block.crossover = c.sizes[k], block.crossover_method = imp->solver;
   }
 }

@@ -79,8 +79,6 @@ Json scaling_json(const ScalingResult& r) {
     for (const ScalingCell& m : b.cells)
       map.push_back({{size_key, m.n}, {"masses", m.masses}, {"cheapest", name(m.cheapest)}, {"next", name(m.next)},
                      {"margin", num(m.margin)}, {"rival", name(m.rival)}, {"rival_margin", num(m.rival_margin)},
-                     {"required_margin", c.timing ? Json(m.required) : Json(nullptr)},
-                     {"implicit_required_margin", c.timing && !m.best_implicit.empty() && m.cheapest == m.best_implicit ? Json(m.implicit_required) : Json(nullptr)},
                      {"best_implicit", name(m.best_implicit)}, {"best_explicit", name(m.best_explicit)},
                      {"best_implicit_peer", name(m.best_implicit_peer)}, {"explicit_over_implicit", num(m.explicit_over_implicit)},
                      {"implicit_peer_over_implicit", num(m.implicit_peer_over_implicit)}, {"motion", m.motion}});

@@ -186,12 +186,11 @@ Json shifted(Json rule, const std::string& kind, std::size_t base) {
 
 }  // namespace
 
-ClaimGroup comparison_group(Evidence a, std::vector<Evidence> others, std::vector<Evidence> noise, const char* relation, double margin) {
+ClaimGroup comparison_group(Evidence a, std::vector<Evidence> others, const char* relation, double margin) {
   ClaimGroup g{"comparison", {}, {std::move(a)}};
-  Json ids = Json::array(), noise_ids = Json::array();
+  Json ids = Json::array();
   for (Evidence& e : others) ids.push_back(g.evidence.size()), g.evidence.push_back(std::move(e));
-  for (Evidence& e : noise) noise_ids.push_back(g.evidence.size()), g.evidence.push_back(std::move(e));
-  g.rule = {{"a", 0}, {"others", std::move(ids)}, {"relation", relation}, {"margin", margin}, {"noise", std::move(noise_ids)}};
+  g.rule = {{"a", 0}, {"others", std::move(ids)}, {"relation", relation}, {"margin", margin}, {"noise", Json::array()}};
   return g;
 }
 

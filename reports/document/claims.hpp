@@ -105,9 +105,10 @@ struct ClaimGroup {
 };
 // "`count` of these hold": the groups' evidence appended, their indices shifted to the claim's.
 void claim_count(Ledger& l, Claim c, std::vector<ClaimGroup> groups, int count);
-// A comparison of `a` against `others` (the one it ties with or beats by its margin first), with
-// `noise` (the two runs' timing spreads, or none) raising the margin; as a group, or a claim of its own.
-ClaimGroup comparison_group(Evidence a, std::vector<Evidence> others, std::vector<Evidence> noise, const char* relation, double margin);
+// A comparison of `a` against `others` (the one it ties with or beats by its margin first); as a
+// group, or a claim of its own. Its rule's `noise` list (docs/json.md) is empty: the timings'
+// spreads are recorded but decide nothing (analysis/kernel/noise.hpp).
+ClaimGroup comparison_group(Evidence a, std::vector<Evidence> others, const char* relation, double margin);
 void claim_group(Ledger& l, Claim c, ClaimGroup g);
 
 // The digits a ratio is printed with: `n` after the point (fmt's {:.nf}), or `n` significant ones
@@ -241,8 +242,8 @@ inline constexpr const char* kWorkDocument = "cost/work_precision.json";
 // A field of a work point (`p` of scene `w`) in the cited work-precision document, as evidence.
 Evidence work_point_at(Ledger& l, const ReportData& d, const SceneWork& w, const WorkPoint& p, const char* field);
 // "The cheapest run to error `level` on scene `w` is `win`'s, by its margin or tied with the
-// runner-up": a comparison claim over each solver's cheapest run at the level (by run time, with
-// the two runs' timing spreads as the noise, or untimed by force evaluations); none where no run
+// runner-up": a comparison claim over each solver's cheapest run at the level (by run time, or
+// untimed by force evaluations); none where no run
 // reached the level or the winner is undecided.
 void claim_cheapest(Ledger& l, const ReportData& d, std::string id, std::string section, std::string sentence, const SceneWork& w,
                     double level, bool timed, const LevelWinner& win);
@@ -307,8 +308,8 @@ void claim_map(Ledger& l, const ScalingResult& r, std::size_t target, const std:
 
 // The scaling study's crossover (answer_crossover, timed only) at its first block, in the cited
 // document `file`: at each size up to the crossover's (every size where there is none), the cheapest
-// implicit fixed-step run against every explicit one's (steplab's methods), a comparison with the
-// two runs' spreads as the noise; a count claim that 1 of them holds (the crossover's) or none.
+// implicit fixed-step run against every explicit one's (steplab's methods), a comparison by
+// kTieMargin; a count claim that 1 of them holds (the crossover's) or none.
 void claim_scaling_crossover(Ledger& l, const ScalingResult& r, const std::string& file, const std::string& id,
                              const std::string& section, const std::string& sentence);
 

@@ -148,16 +148,13 @@ void claim_cheapest(Ledger& l, const ReportData& d, std::string id, std::string 
       if (const WorkPoint* q = cheapest_point(w, p.method, level, timed))
         others.insert(p.method == win.next ? others.begin() : others.end(), q);
     }
-  std::vector<Evidence> costs, noise;
+  std::vector<Evidence> costs;
   for (const WorkPoint* p : others) costs.push_back(at(p, cost));
-  if (timed && !others.empty()) noise = {at(win.point, "seconds_spread"), at(others.front(), "seconds_spread")};
-  for (const WorkPoint* p : win.also)  // each further solver the tie names: within the margin of its own two runs
+  for (const WorkPoint* p : win.also)  // each further solver the tie names: within the margin
     claim_group(l, claim_text(fmt::format("{}.tie.{}", id, p->method), section, sentence),
-                comparison_group(at(win.point, cost), {at(p, cost)},
-                                 timed ? std::vector<Evidence>{at(win.point, "seconds_spread"), at(p, "seconds_spread")} : std::vector<Evidence>{},
-                                 "tie", timed ? kTieMargin : 1.0));
+                comparison_group(at(win.point, cost), {at(p, cost)}, "tie", timed ? kTieMargin : 1.0));
   claim_group(l, claim_text(std::move(id), std::move(section), std::move(sentence)),
-              comparison_group(at(win.point, cost), std::move(costs), std::move(noise), win.tie ? "tie" : "less", timed ? kTieMargin : 1.0));
+              comparison_group(at(win.point, cost), std::move(costs), win.tie ? "tie" : "less", timed ? kTieMargin : 1.0));
 }
 
 void claim_crossover(Ledger& l, const ReportData& d, std::string id, std::string section, std::string sentence) {
@@ -172,8 +169,8 @@ void claim_crossover(Ledger& l, const ReportData& d, std::string id, std::string
     std::vector<Evidence> explicit_run;  // none where no explicit method reached the error
     if (!row.best_explicit.empty()) explicit_run.push_back(l.at(kWorkDocument, fmt::format("/stiffness_sweep/{}/explicit_seconds", i)));
     (on ? from : below)
-        .push_back(comparison_group(l.at(kWorkDocument, fmt::format("/stiffness_sweep/{}/implicit_seconds", i)), std::move(explicit_run),
-                                    {}, "less", kTieMargin));
+        .push_back(comparison_group(l.at(kWorkDocument, fmt::format("/stiffness_sweep/{}/implicit_seconds", i)), std::move(explicit_run), "less",
+                                    kTieMargin));
   }
   const int n = static_cast<int>(from.size());
   claim_count(l, claim_text(id + ".from", section, sentence), std::move(from), n);
@@ -233,8 +230,7 @@ namespace steplab {
 namespace {
 
 // A comparison group over one map cell's rows: the run of solver `a` against each reached run the
-// cell sets against it (`against`: another group's, or another kind's), its cheapest at their head;
-// the noise their two timing spreads.
+// cell sets against it (`against`: another group's, or another kind's), its cheapest at their head.
 template <class Against>
 ClaimGroup cell_group(Ledger& l, const std::string& file, const std::vector<std::size_t>& rows, const ScalingResult& r,
                       const std::string& a, Against against, const char* relation) {
@@ -246,10 +242,9 @@ ClaimGroup cell_group(Ledger& l, const std::string& file, const std::vector<std:
     if (i != *ia && against(r.rows[i])) others.push_back(i);
   const auto cost = [&](std::size_t i) { return scaling_cost(r.config, r.rows[i]); };
   std::stable_sort(others.begin(), others.end(), [&](std::size_t x, std::size_t y) { return cost(x) < cost(y); });
-  std::vector<Evidence> seconds, noise{at(*ia, "seconds_spread")};
-  if (!others.empty()) noise.push_back(at(others.front(), "seconds_spread"));
+  std::vector<Evidence> seconds;
   for (std::size_t i : others) seconds.push_back(at(i, "seconds"));
-  return comparison_group(at(*ia, "seconds"), std::move(seconds), std::move(noise), relation, kTieMargin);
+  return comparison_group(at(*ia, "seconds"), std::move(seconds), relation, kTieMargin);
 }
 
 }  // namespace

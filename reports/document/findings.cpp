@@ -20,7 +20,7 @@ std::vector<std::size_t> methods_of(const Findings& f, const std::vector<std::si
   return out;
 }
 
-bool tied(double margin, bool timed, double required) { return timed ? margin < required : margin == 1; }
+bool tied(double margin, bool timed) { return timed ? margin < kTieMargin : margin == 1; }
 
 std::string_view to_text(Trend t) {
   switch (t) {
@@ -190,14 +190,12 @@ LevelWinner level_winner(const SceneWork& w, double level, bool timed) {
   if (!out.point) return out;
   if (second) {
     out.next = second->method, out.margin = point_cost(*second, timed) / point_cost(*out.point, timed);
-    out.required = noise_margin(out.point->spread, second->spread);
   }
-  out.tie = second && tied(out.margin, timed, out.required);
+  out.tie = second && tied(out.margin, timed);
   if (out.tie)
     for (const std::string& s : solvers)
-      if (const WorkPoint* p = cheapest_point(w, s, level, timed); p && p != out.point && p->method != out.next &&
-                                                                     tied(point_cost(*p, timed) / point_cost(*out.point, timed), timed,
-                                                                          noise_margin(out.point->spread, p->spread)))
+      if (const WorkPoint* p = cheapest_point(w, s, level, timed);
+          p && p != out.point && p->method != out.next && tied(point_cost(*p, timed) / point_cost(*out.point, timed), timed))
         out.also.push_back(p);
   std::sort(out.also.begin(), out.also.end(), [&](const WorkPoint* a, const WorkPoint* b) {  // by cost, then by name
     return std::pair(point_cost(*a, timed), a->method) < std::pair(point_cost(*b, timed), b->method);
@@ -291,13 +289,13 @@ CellVerdict cell_verdict(const ScalingCell& m, double error, bool timed) {
   if (m.cheapest.empty()) return CellVerdict::None;
   if (m.motion < error) return CellVerdict::Still;
   if (!timed && solves(m.cheapest) && !m.best_explicit.empty()) return CellVerdict::Undecided;
-  return tied(m.rival_margin, timed, m.required) ? CellVerdict::Tie : CellVerdict::Win;
+  return tied(m.rival_margin, timed) ? CellVerdict::Tie : CellVerdict::Win;
 }
 
 bool implicit_wins(const ScalingCell& m, bool timed) {
   if (m.cheapest.empty() || m.cheapest != m.best_implicit) return false;
   const double over = std::fmin(m.explicit_over_implicit, m.implicit_peer_over_implicit);  // NaN: neither side reached the target
-  return std::isnan(over) || (timed && !tied(over, true, m.implicit_required));  // untimed: undecided (its solves uncounted)
+  return std::isnan(over) || (timed && !tied(over, true));  // untimed: undecided (its solves uncounted)
 }
 
 MapTally map_tally(const ScalingResult& r, std::size_t target) {

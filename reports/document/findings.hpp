@@ -20,10 +20,9 @@ namespace steplab {
 // The methods of Findings rows (indices into f.rows: f.numerical, f.stable_large, ...).
 std::vector<std::size_t> methods_of(const Findings& f, const std::vector<std::size_t>& rows);
 
-// Whether a margin of one cost over another is a tie: below `required` where the costs are times
-// (kTieMargin, or the two timings' measured noise: noise_margin in analysis/kernel/noise.hpp),
-// only at 1 where they are counts.
-bool tied(double margin, bool timed, double required = kTieMargin);
+// Whether a margin of one cost over another is a tie: below kTieMargin where the costs are times
+// (analysis/kernel/noise.hpp), only at 1 where they are counts.
+bool tied(double margin, bool timed);
 
 // Whether two measured values are the same within `relative` of the larger: equal, or both finite
 // and |a - b| <= relative max(|a|, |b|). Infinity is the same as infinity only, never as a number
@@ -151,11 +150,10 @@ struct LevelWinner {
   const WorkPoint* point = nullptr;  // null: no run reached the level
   std::string next;                  // the runner-up solver ("" if none)
   double margin = INFINITY;          // the runner-up's cost over the winner's
-  double required = kTieMargin;      // timed: the margin a win needs (noise_margin of the two runs' spreads)
   bool tie = false, at_edge = false;
   std::string undecided;             // the explicit solver it is not told from ("" if decided)
   // In a tie, the solvers beyond the runner-up whose cheapest run is as close to the winner's
-  // (within the margin of their own two runs): a tie names them all.
+  // (within the margin): a tie names them all.
   std::vector<const WorkPoint*> also;
   bool decided() const { return !tie && undecided.empty(); }
   std::vector<std::string> tied_with() const;  // in a tie, the runner-up and `also`, by name

@@ -180,9 +180,8 @@ class Cost : public Section {
       }
       md += "\n";
     }
-    return md + fmt::format("\nTie: the runner-up within {:g} times the winner's run time, or within the two runs' measured noise "
-                            "where that is larger (each run is timed in two passes apart in time; the noise is the product of "
-                            "the two runs' ratios between their passes). "
+    return md + fmt::format("\nTie: the runner-up within {:g} times the winner's run time (each run timed in two passes apart "
+                            "in time, the faster kept). "
                             "Undecided: an implicit method fewest in force evaluations against the cheapest explicit one, "
                             "whose force evaluations are all its work while the implicit one's Jacobians and solves go uncounted. "
                             "$\\dagger$: the winning run is its sweep's largest step or loosest tolerance; a larger one, not "

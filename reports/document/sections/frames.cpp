@@ -211,7 +211,7 @@ class Frames : public Section {
     for (std::size_t k : among) others.push_back(at(k));
     const bool tie = !among.empty() && value(among.front()) == value(i);
     claim_group(*l, claim_text(std::move(claim_id), "frames", std::move(sentence)),
-                comparison_group(at(i), std::move(others), {}, tie ? "tie" : "less", 1.0));
+                comparison_group(at(i), std::move(others), tie ? "tie" : "less", 1.0));
   }
 
   std::string cost(const FrameRun& x) const {
@@ -238,7 +238,7 @@ class Frames : public Section {
         l->document(kFramesDocument, [&] { return frames_json(r_); });
         const auto at = [&](const std::string& pointer) { return l->at(kFramesDocument, pointer); };
         claim_group(*l, claim_text("frames.as_accurate.at_rest", "frames", sentence),
-                    comparison_group(at("/motion"), {at(fmt::format("/runs/{}/error_max", at_target))}, {},
+                    comparison_group(at("/motion"), {at(fmt::format("/runs/{}/error_max", at_target))},
                                      target == r_.motion ? "tie" : "less", 1.0));
       }
       return sentence + "\n\n";
@@ -258,7 +258,7 @@ class Frames : public Section {
       l->document(kFramesDocument, [&] { return frames_json(r_); });
       const auto at = [&](const std::string& pointer) { return l->at(kFramesDocument, pointer); };
       claim_group(*l, claim_text("frames.as_accurate.moves", "frames", sentence),  // the error it reaches is below the motion
-                  comparison_group(at(fmt::format("/runs/{}/error_max", at_target)), {at("/motion")}, {}, "less", 1.0));
+                  comparison_group(at(fmt::format("/runs/{}/error_max", at_target)), {at("/motion")}, "less", 1.0));
     }
     least(l, "frames.as_accurate", sentence, *best, reach, "spring_visits_per_frame");
     return sentence + "\n\n";

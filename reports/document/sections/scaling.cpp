@@ -112,9 +112,9 @@ std::string findings(const ScalingResult& r, Ledger* l) {
                                      "factorisations and solves (in the data), so fewer evaluations is no win over an explicit method.")
                    : r.blocks.front().crossover == 0
                        ? fmt::format("At none of these sizes is an implicit method's whole run cheaper than every explicit one's "
-                                     "by more than the timing's noise ({}x, or the two runs' spreads).", kTieMargin)
+                                     "by more than the timing's noise ({}x).", kTieMargin)
                        : fmt::format("At N = {}, the first of these sizes where one is, `{}`'s whole run is cheaper than every "
-                                     "explicit method's by more than the timing's noise ({}x, or the two runs' spreads).",
+                                     "explicit method's by more than the timing's noise ({}x).",
                                      scaling_masses(c, r.blocks.front().crossover), r.blocks.front().crossover_method, kTieMargin);
   if (l && explicit_ones && implicit_ones)
     claim_scaling_crossover(*l, r, scaling_document(r), fmt::format("scaling.{}.crossover", r.config.scene), "scaling", md);
@@ -280,8 +280,8 @@ std::string map_markdown(const ScalingResult& r, Page& page) {
       "no step that needs more than {} steps), at the error above and at a visual one ({}). Each cell is coloured by the "
       "group of its cheapest solver (a family; CVODE; ARKODE; RADAU5; the explicit adaptive solvers) and labelled with it and its margin "
       "over the cheapest solver of another group (two members of one family within the noise are still that family's win); a "
-      "margin below {:g}, or below the two runs' measured timing noise where larger (each run timed in two "
-      "passes apart in time), is a tie (white, both named), counted for neither; so is a cell where the body moves less "
+      "margin below {:g} (the timing's noise: each run timed in two passes apart in time, the faster kept) is a tie "
+      "(white, both named), counted for neither; so is a cell where the body moves less "
       "than the target (\"at rest\"){}. `steplab study scaling --scene "
       "{} --sizes {} --stiffness {} --error {:g},{:g}% --max-steps {}` gives the map with every peer and count.\n\n",
       s.name, join(masses), stiffness_name, fmt::join(stiff, ", "), c.max_steps, target_text(c, r.blocks.back()), kTieMargin,
