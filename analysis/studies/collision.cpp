@@ -51,14 +51,19 @@ CollisionRun body_run(std::size_t method, std::size_t scene, const std::vector<d
 CollisionResult collision_study(const CollisionConfig& c) {
   CollisionResult out;
   out.config = c;
-  const std::size_t nm = c.methods.size(), nd = c.dts.size();
-  std::vector<CollisionRun> runs = study_map<CollisionRun>(nm * nd + nm, c.workers, [&](std::size_t task) {
+  const std::size_t nm = c.methods.size(), nd = c.dts.size(), nr = c.reference_dts.size();
+  const std::size_t rk4 = *find_method("rk4");
+  std::vector<CollisionRun> runs = study_map<CollisionRun>(nm * nd + nm + nr, c.workers, [&](std::size_t task) {
     if (task < nm * nd) return bounce_run(c.methods[task / nd], c.rebound_scene, c.rebound_params, c.dts[task % nd], c.t_end);
+    if (task >= nm * nd + nm) return body_run(rk4, c.body_scene, c.body_params, c.reference_dts[task - nm * nd - nm], c.t_end, 2);
     const std::size_t m = c.methods[task - nm * nd];
     if (!applies(m, c.body_scene)) return CollisionRun{};
     return body_run(m, c.body_scene, c.body_params, c.triangle_dt, c.t_end, c.path_samples);
   });
-  out.triangle.assign(std::make_move_iterator(runs.begin() + static_cast<std::ptrdiff_t>(nm * nd)), std::make_move_iterator(runs.end()));
+  const auto at = [&](std::size_t i) { return std::make_move_iterator(runs.begin() + static_cast<std::ptrdiff_t>(i)); };
+  out.triangle_reference.assign(at(nm * nd + nm), at(runs.size()));
+  for (CollisionRun& r : out.triangle_reference) r.path.clear();
+  out.triangle.assign(at(nm * nd), at(nm * nd + nm));
   runs.resize(nm * nd);
   out.bounce = std::move(runs);
   return out;

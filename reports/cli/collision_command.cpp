@@ -1,6 +1,6 @@
 // `steplab study collision`: the bounce and the falling triangle on the penalty ground, each
 // method's energy at each bounce and its depth (analysis/studies/collision.hpp). Table on stdout,
-// JSON (steplab.collision/1) with --json.
+// JSON (steplab.collision/2) with --json.
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"

@@ -127,7 +127,7 @@ std::string exponent_rule_text();
 
 namespace steplab {
 namespace schema {
-inline constexpr std::string_view collision = "steplab.collision/1";  // study collision
+inline constexpr std::string_view collision = "steplab.collision/2";  // study collision
 }  // namespace schema
 Json collision_json(const CollisionResult& r);
 std::string collision_table(const CollisionResult& r);

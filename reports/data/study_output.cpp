@@ -213,6 +213,13 @@ Json collision_json(const CollisionResult& r) {
   for (const CollisionRun& run : r.triangle) t.push_back(collision_run_json(run, false));
   j["bounce"] = std::move(b);
   j["triangle"] = std::move(t);
+  Json ref = Json::array();
+  for (const CollisionRun& run : r.triangle_reference) {
+    Json e = collision_run_json(run, false);
+    e.erase("path");
+    ref.push_back(std::move(e));
+  }
+  j["triangle_reference"] = std::move(ref);
   return j;
 }
 
@@ -238,6 +245,10 @@ std::string collision_table(const CollisionResult& r) {
     out += fmt::format("{:<18} {:>16} {:>11.5f} {:>11.5f} {:>10.5f}\n", method_info(run.method).name,
                        run.status == RunStatus::Ok ? "ok" : fmt::format("{} @{}", to_string(run.status), run.failed_step),
                        run.energy_ratio_final, run.energy_ratio_max, run.max_penetration);
+  for (const CollisionRun& run : r.triangle_reference)  // the reference: RK4 at small steps
+    out += fmt::format("{:<18} {:>16} {:>11.5f} {:>11.5f} {:>10.5f}\n", fmt::format("rk4 at {:g}", run.dt),
+                       run.status == RunStatus::Ok ? "reference" : to_string(run.status), run.energy_ratio_final,
+                       run.energy_ratio_max, run.max_penetration);
   return out;
 }
 
@@ -256,6 +267,7 @@ std::span<const StudyParam<CollisionConfig>> collision_params() { return kCollis
 void check_collision(const CollisionConfig& c) {
   for (double dt : c.dts) step_count(c.t_end, dt);
   step_count(c.t_end, c.triangle_dt);
+  for (double dt : c.reference_dts) step_count(c.t_end, dt);
 }
 
 }  // namespace steplab

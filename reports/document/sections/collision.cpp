@@ -223,7 +223,21 @@ class Collision : public Section {
         shallow->max_penetration, name(shallow->method), deep->max_penetration, name(deep->method), low->energy_ratio_final,
         name(low->method), high->energy_ratio_final, name(high->method));
     if (!diverged.empty()) md += fmt::format("; {} diverge", method_list(diverged));
-    md += ".\n\n";
+    md += ".";
+    // The converged motion: the reference runs coarse to fine, the finest checked against the first.
+    const auto& ref = r.triangle_reference;
+    const bool converged = ref.size() >= 2 && std::all_of(ref.begin(), ref.end(), [](const CollisionRun& x) { return x.status == RunStatus::Ok; });
+    const std::size_t coarse = 0, fine = ref.size() - 1;
+    double within = 0;  // their E/E0 at the end apart, rounded up to one digit so that it bounds the difference
+    if (converged) {
+      const double diff = std::abs(ref[fine].energy_ratio_final - ref[coarse].energy_ratio_final);
+      const double unit = diff > 0 ? std::pow(10.0, std::floor(std::log10(diff))) : 1e-16;
+      within = std::ceil(diff / unit) * unit;
+      md += fmt::format(" Converged (RK4 at dt {:g}; at dt {:g} its E/E0 at the end is within {:.1g} of it), the deepest point "
+                        "goes {:.3g} m in and E/E0 ends at {:.3g}.",
+                        ref[fine].dt, ref[coarse].dt, within, ref[fine].max_penetration, ref[fine].energy_ratio_final);
+    }
+    md += "\n\n";
     if (l) {  // the shallowest and the deepest of the runs that ended well
       l->document(kCollisionDocument, [&] { return collision_json(r); });
       const auto extreme = [&](const char* what, const char* field, const char* op, double limit) {
@@ -237,6 +251,17 @@ class Collision : public Section {
       extreme("deepest", "max_penetration", "<=", deep->max_penetration);
       extreme("least_energy", "energy_ratio_final", ">=", low->energy_ratio_final);
       extreme("most_energy", "energy_ratio_final", "<=", high->energy_ratio_final);
+      if (converged) {
+        const auto at = [&](std::size_t i, const char* field) {
+          return l->at(kCollisionDocument, fmt::format("/triangle_reference/{}/{}", i, field));
+        };
+        claim_equal(*l, claim_text("collision.triangle.reference_check", "collision", md),
+                    {{at(fine, "energy_ratio_final"), at(coarse, "energy_ratio_final")}}, 0, within);
+        claim_ratio(*l, claim_text("collision.triangle.reference_depth", "collision", md), {{at(fine, "max_penetration")}, {}},
+                    ref[fine].max_penetration, {true, 3});
+        claim_ratio(*l, claim_text("collision.triangle.reference_energy", "collision", md), {{at(fine, "energy_ratio_final")}, {}},
+                    ref[fine].energy_ratio_final, {true, 3});
+      }
     }
     return md;
   }

@@ -165,6 +165,12 @@ class Families : public Section {
       }
       md += "\n";
     }
+    std::vector<std::string> first;  // a method another family counts as its first member (AB1 is explicit Euler)
+    for (Family f : kReportFamilies)
+      for (std::size_t m : family_members(d.methods, f))
+        if (method_info(m).family != f) first.push_back(fmt::format("{} from `{}`", to_string(f), name(m)));
+    if (!first.empty())
+      md += fmt::format("\nA family's orders start at its order-1 member, another family's method: {}.\n", and_list(first));
     std::vector<std::string> lone;  // a family of several methods of which the report has one
     for (Family f : kReportFamilies) {
       const std::vector<std::size_t> fam = family_members(d.methods, f);

@@ -93,9 +93,12 @@ class Frames : public Section {
   }
 
   std::string brief(Page& page) const override {
-    return brief_markdown(title(), fmt::format("At {} frames a second on the {} of {} springs, with a budget of {} sweeps a frame: {}",
-                                               r_.config.fps, scene_name(r_.config.scene), r_.springs, r_.config.budget,
-                                               as_accurate(page.ledger)));
+    std::string answer = as_accurate(page.ledger);
+    while (!answer.empty() && answer.back() == '\n') answer.pop_back();
+    return brief_markdown(title(), fmt::format("At {} frames a second on the {} of {} springs, with a budget of {} sweeps a frame (a "
+                                               "sweep projects every spring once; XPBD and PBD split the budget between substeps and "
+                                               "sweeps a substep, the ODE methods spend it on substeps). {}\n",
+                                               r_.config.fps, scene_name(r_.config.scene), r_.springs, r_.config.budget, answer));
   }
 
  private:
@@ -231,8 +234,8 @@ class Frames : public Section {
         target = x.error, at_target = i;
     if (std::isfinite(target) && target >= r_.motion) {
       const std::string sentence = fmt::format(
-          "The best position-based set-up's error, {}, is not below how far the {} moves, {} (its largest displacement from "
-          "the start): a {} at rest meets it, so no set-up is the cheapest to reach it.",
+          "The best position-based set-up's error, {}, is not below how far the {} moves from its start, {}, so a {} at "
+          "rest meets it: no set-up is the cheapest to reach it.",
           g3(target), scene_name(r_.config.scene), g3(r_.motion), scene_name(r_.config.scene));
       if (l) {
         l->document(kFramesDocument, [&] { return frames_json(r_); });
