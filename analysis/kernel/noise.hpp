@@ -21,10 +21,8 @@ inline constexpr double kTieMargin = 1.5;
 // the two minima and records their ratio, larger over smaller, as the row's spread. The spread
 // decides nothing. Load only slows a run, so the smaller minimum is the one less disturbed: a
 // spread says how much worse the worse pass was, not how far the kept time moves from one report
-// to the next. Taking the product of two rows' spreads as the margin a win needs turned ten of
-// twelve map cells into ties in a report whose passes were disturbed (spreads 1.2-1.5) while the
-// kept ratios moved by at most 0.2 (docs/design.md, "Timing noise"); kTieMargin alone covers
-// the kept ratios' measured movement.
+// to the next, and a margin raised by it made ties where the kept ratios had not moved
+// (docs/design.md, "Timing noise"). kTieMargin alone is the margin a win needs.
 inline double spread_of(double a, double b) { return a > b ? a / b : b / a; }
 
 // The two passes over a study's rows (each with `seconds` and `spread`): `time(row)` is one

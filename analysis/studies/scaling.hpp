@@ -132,9 +132,9 @@ struct ScalingFit {
 
 // A cell of the map (one target, stiffness and size): the cheapest solver that reached the target
 // and the next cheapest, with the margin next / cheapest; its rival, the cheapest solver of another
-// group (solver_group, analysis/peers/peers.hpp), with the margin rival / cheapest that decides the
-// cell (two members of one family within the noise are still that family's win); the cheapest implicit fixed-step method
-// against the cheapest explicit one (fixed-step or adaptive) and against the cheapest adaptive
+// group (solver_group, analysis/peers/peers.hpp), with the margin rival / cheapest that decides
+// the cell (two members of one family within the noise are still that family's win); the
+// cheapest implicit fixed-step method against the cheapest explicit one (fixed-step or adaptive) and against the cheapest adaptive
 // implicit peer (CVODE, ARKODE's DIRK tables, RADAU5): their costs over its (> 1: the implicit method is cheaper). NaN where a side
 // has none. `motion`: how far the body moves, the largest |x_i(t_k) - x_i(0)| of the exact (or
 // reference) solution over the coordinates and frames; where the target error exceeds it, a run
