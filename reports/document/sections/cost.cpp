@@ -43,10 +43,26 @@ std::string counts_cell(const WorkPoint& p) {
   return out;
 }
 
+// The other libraries' solvers a hand-out sentence names, each with its library: the hand-out's
+// reader meets `odeint_dopri5` there first, without the atlas's table of peers.
+std::string peers_named(const std::string& text) {
+  std::vector<std::string> named;
+  for (const PeerInfo& p : peers())
+    if (!p.is_steplab() && text.find(fmt::format("`{}`", p.name)) != std::string::npos)
+      named.push_back(fmt::format("`{}` of {}", p.name, p.library()));
+  return named.empty() ? std::string()
+                       : fmt::format(" The solvers named from other libraries: {}, each set up as the atlas's table of peers says.",
+                                     and_list(named));
+}
+
 class Cost : public Section {
  public:
   std::string title() const override { return "What accuracy costs"; }
-  std::string brief(Page& page) const override { return brief_markdown(title(), answer_paragraph(cost_answer(page))); }
+  std::string brief(Page& page) const override {
+    std::string answer = answer_paragraph(cost_answer(page));
+    while (!answer.empty() && answer.back() == '\n') answer.pop_back();
+    return brief_markdown(title(), answer.empty() ? answer : answer + peers_named(answer) + "\n");
+  }
   unsigned needs() const override { return kWorkPrecisionStudy; }
   void write_data(const ReportData& d, const DataDir& dat) const override {
     dat.write("work_precision.json", work_precision_json(d.work).dump(1) + "\n");
