@@ -68,8 +68,9 @@ std::string Page::atlas_link(const std::string& title) {
 }
 
 std::string Section::brief_markdown(const std::string& title, const std::string& answer) {
-  return fmt::format("## {}\n\n{}The study, its tables and figures: [the atlas, {}]({}).\n\n", title, answer.empty() ? "" : answer + "\n",
-                     title, Page::atlas_link(title));
+  const std::size_t end = answer.find_last_not_of('\n');  // the answer is a paragraph of its own, however it ends
+  return fmt::format("## {}\n\n{}The study, its tables and figures: [the atlas, {}]({}).\n\n", title,
+                     end == std::string::npos ? "" : answer.substr(0, end + 1) + "\n\n", title, Page::atlas_link(title));
 }
 
 std::vector<Panel> family_panels(const std::vector<std::size_t>& methods, const std::function<bool(std::size_t)>& drawn) {

@@ -59,9 +59,8 @@ class Cost : public Section {
  public:
   std::string title() const override { return "What accuracy costs"; }
   std::string brief(Page& page) const override {
-    std::string answer = answer_paragraph(cost_answer(page));
-    while (!answer.empty() && answer.back() == '\n') answer.pop_back();
-    return brief_markdown(title(), answer.empty() ? answer : answer + peers_named(answer) + "\n");
+    const std::string answer = answer_paragraph(cost_answer(page));
+    return brief_markdown(title(), answer.substr(0, answer.find_last_not_of('\n') + 1) + peers_named(answer));
   }
   unsigned needs() const override { return kWorkPrecisionStudy; }
   void write_data(const ReportData& d, const DataDir& dat) const override {

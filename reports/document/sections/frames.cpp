@@ -93,11 +93,10 @@ class Frames : public Section {
   }
 
   std::string brief(Page& page) const override {
-    std::string answer = as_accurate(page.ledger);
-    while (!answer.empty() && answer.back() == '\n') answer.pop_back();
+    const std::string answer = as_accurate(page.ledger);
     return brief_markdown(title(), fmt::format("At {} frames a second on the {} of {} springs, with a budget of {} sweeps a frame (a "
                                                "sweep projects every spring once; XPBD and PBD split the budget between substeps and "
-                                               "sweeps a substep, the ODE methods spend it on substeps). {}\n",
+                                               "sweeps a substep, the ODE methods spend it on substeps). {}",
                                                r_.config.fps, scene_name(r_.config.scene), r_.springs, r_.config.budget, answer));
   }
 
@@ -232,18 +231,19 @@ class Frames : public Section {
     for (std::size_t i = 0; i < r_.runs.size(); ++i)
       if (const FrameRun& x = r_.runs[i]; x.stable && method_info(x.setup.method).family == Family::PositionBased && x.error < target)
         target = x.error, at_target = i;
+    const auto at = [&](const std::string& pointer) {
+      l->document(kFramesDocument, [&] { return frames_json(r_); });
+      return l->at(kFramesDocument, pointer);
+    };
     if (std::isfinite(target) && target >= r_.motion) {
       const std::string sentence = fmt::format(
           "The best position-based set-up's error, {}, is not below how far the {} moves from its start, {}, so a {} at "
           "rest meets it: no set-up is the cheapest to reach it.",
           g3(target), scene_name(r_.config.scene), g3(r_.motion), scene_name(r_.config.scene));
-      if (l) {
-        l->document(kFramesDocument, [&] { return frames_json(r_); });
-        const auto at = [&](const std::string& pointer) { return l->at(kFramesDocument, pointer); };
+      if (l)
         claim_group(*l, claim_text("frames.as_accurate.at_rest", "frames", sentence),
                     comparison_group(at("/motion"), {at(fmt::format("/runs/{}/error_max", at_target))},
                                      target == r_.motion ? "tie" : "less", 1.0));
-      }
       return sentence + "\n\n";
     }
     std::vector<std::size_t> reach;  // the stable set-ups as accurate as that
@@ -257,12 +257,9 @@ class Frames : public Section {
     const FrameRun& b = r_.runs[*best];
     const std::string sentence = fmt::format("The cheapest set-up as accurate as the best position-based one (error {}): `{}` {}, {}.",
                                              g3(target), name(b.setup.method), frame_setup_text(b.setup), cost(b));
-    if (l) {
-      l->document(kFramesDocument, [&] { return frames_json(r_); });
-      const auto at = [&](const std::string& pointer) { return l->at(kFramesDocument, pointer); };
-      claim_group(*l, claim_text("frames.as_accurate.moves", "frames", sentence),  // the error it reaches is below the motion
+    if (l)  // the error it reaches is below the motion
+      claim_group(*l, claim_text("frames.as_accurate.moves", "frames", sentence),
                   comparison_group(at(fmt::format("/runs/{}/error_max", at_target)), {at("/motion")}, "less", 1.0));
-    }
     least(l, "frames.as_accurate", sentence, *best, reach, "spring_visits_per_frame");
     return sentence + "\n\n";
   }
