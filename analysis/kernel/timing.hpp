@@ -9,12 +9,23 @@
 // wall time counts the other's slices and the CPU time does not: a run longer than the
 // scheduler's slice, which beside other load is never timed without a preemption, is still timed
 // as its own work (docs/design.md, "Timing noise").
+//
+// A run's set-up allocates inside the timed region (an implicit method's matrices and
+// factorisations, a peer's memory) and its clean-up frees it. glibc serves a block above its mmap
+// threshold with fresh pages, each faulted in on first touch, and raises that threshold as such
+// blocks are freed; so whether a repeat paid for its pages depended on what the process had
+// allocated before (radau_iia5 on the rope at N = 128: 0.43 to 0.57 ms a run in a process that
+// ran steplab's methods alone, 0.20 ms in one that had run the peers first). keep_heap_pages()
+// fixes both thresholds (which also stops glibc moving them): a block up to 32 MiB comes from the
+// heap, and freed pages stay there, so every repeat but the first runs on pages already touched,
+// in every process alike.
 #pragma once
 
 #include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <ctime>
+#include <malloc.h>
 #include <vector>
 
 namespace steplab {
@@ -25,7 +36,13 @@ inline double thread_cpu_seconds() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
+inline void keep_heap_pages() {
+  static const bool kept = mallopt(M_MMAP_THRESHOLD, 32 << 20) == 1 && mallopt(M_TRIM_THRESHOLD, 1 << 30) == 1;
+  (void)kept;
+}
+
 template <class F> std::vector<double> repeated_timings(F&& run, std::size_t repeats, double seconds) {
+  keep_heap_pages();
   std::vector<double> times;
   double total = 0;
   while (times.size() < repeats || total < seconds) {

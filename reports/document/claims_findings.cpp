@@ -256,7 +256,12 @@ void claim_map(Ledger& l, const ScalingResult& r, std::size_t target, const std:
   l.document(file, [&] { return scaling_json(r); });
   const std::size_t nk = r.blocks.size() / r.config.targets.size();
   std::vector<ClaimGroup> ties, wins, implicit, still;
-  std::map<std::string, std::vector<ClaimGroup>> by_group;  // the cells whose cheapest is of each group (solver_group)
+  // Each group the sentence names (a clear win somewhere): in every cell where it reached the
+  // target, its cheapest run against every other group's, so that the cells a group's count is over
+  // do not depend on which group's run came first in a tie.
+  std::map<std::string, std::vector<ClaimGroup>> by_group;
+  for (const auto& [group, n] : tally.wins)
+    if (n > 0) by_group[group];
   for (std::size_t k = 0; k < nk; ++k) {
     const std::size_t b = target * nk + k;
     const ScalingBlock& block = r.blocks[b];
@@ -276,7 +281,14 @@ void claim_map(Ledger& l, const ScalingResult& r, std::size_t target, const std:
       const auto other_group = [&](const ScalingRow& w) { return solver_group(w.solver) != group; };
       ties.push_back(cell_group(l, file, rows, r, m.cheapest, other_group, "tie"));
       wins.push_back(cell_group(l, file, rows, r, m.cheapest, other_group, "less"));
-      by_group[group].push_back(wins.back());
+      for (auto& [named, cells] : by_group) {
+        const ScalingRow* best = nullptr;  // the named group's cheapest run in this cell
+        for (std::size_t i : rows)
+          if (solver_group(r.rows[i].solver) == named && (!best || scaling_cost(r.config, r.rows[i]) < scaling_cost(r.config, *best)))
+            best = &r.rows[i];
+        if (best)
+          cells.push_back(cell_group(l, file, rows, r, best->solver, [&](const ScalingRow& w) { return solver_group(w.solver) != named; }, "less"));
+      }
       if (!m.best_implicit.empty())  // an implicit fixed-step method against every other kind of solver
         implicit.push_back(cell_group(l, file, rows, r, m.best_implicit, [](const ScalingRow& w) { return w.adaptive || !w.implicit; }, "less"));
     }
@@ -285,9 +297,8 @@ void claim_map(Ledger& l, const ScalingResult& r, std::size_t target, const std:
   for (const auto& [group, n] : tally.wins) won += n;
   claim_count(l, claim_text(id + ".ties", section, sentence), std::move(ties), tally.ties);
   claim_count(l, claim_text(id + ".wins", section, sentence), std::move(wins), won);
-  for (auto& [group, cells] : by_group)  // the groups the sentence names: those with a clear win
-    if (const auto n = tally.wins.find(group); n != tally.wins.end() && n->second > 0)
-      claim_count(l, claim_text(id + ".wins." + id_word(group), section, sentence), std::move(cells), n->second);
+  for (auto& [group, cells] : by_group)
+    claim_count(l, claim_text(id + ".wins." + id_word(group), section, sentence), std::move(cells), tally.wins.at(group));
   claim_count(l, claim_text(id + ".implicit_wins", section, sentence), std::move(implicit), static_cast<int>(tally.implicit.size()));
   claim_count(l, claim_text(id + ".at_rest", section, sentence), std::move(still), tally.still);
 }
