@@ -197,6 +197,16 @@ std::string target_text(const ScalingConfig& c, const ScalingBlock& b);
 // What a row's run cost: its seconds, or without timing its force evaluations times N (each
 // touches every mass; the Jacobians, factorisations and solves counted beside, not added in).
 double scaling_cost(const ScalingConfig& c, const ScalingRow& r);
+// The cheapest (scaling_cost) reached run at size k of block b that `keep` accepts, the first of
+// equals in solver order; null if none.
+template <class Keep> const ScalingRow* cheapest_run(const ScalingResult& r, std::size_t b, std::size_t k, Keep keep) {
+  const ScalingRow* best = nullptr;
+  for (std::size_t s = 0; s < r.solvers(); ++s) {
+    const ScalingRow& w = r.rows_of(b * r.solvers() + s)[k];
+    if (w.reached() && keep(w) && (!best || scaling_cost(r.config, w) < scaling_cost(r.config, *best))) best = &w;
+  }
+  return best;
+}
 // At size k of block b, the cheapest (by run time) implicit and explicit runs of steplab's
 // fixed-step and adaptive methods that reached the target (null: none): what the crossover
 // compares (ScalingBlock::crossover).

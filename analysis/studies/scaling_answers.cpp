@@ -59,13 +59,7 @@ void answer_cell(const ScalingResult& r, std::size_t b, std::size_t k, ScalingCe
   if (!first) return;
   // The rival: the cheapest run of another group.
   const std::string group = solver_group(first->solver);
-  const ScalingRow* rival = nullptr;
-  for (std::size_t s = 0; s < r.solvers(); ++s) {
-    const ScalingRow& w = r.rows_of(b * r.solvers() + s)[k];
-    if (!w.reached()) continue;
-    const double cost = scaling_cost(c, w);
-    if (solver_group(w.solver) != group && (!rival || cost < scaling_cost(c, *rival))) rival = &w;
-  }
+  const ScalingRow* rival = cheapest_run(r, b, k, [&](const ScalingRow& w) { return solver_group(w.solver) != group; });
   if (rival) cell.rival = rival->solver;
   cell.rival_margin = rival ? scaling_cost(c, *rival) / cheapest : kNaN;
 }

@@ -262,6 +262,7 @@ void claim_map(Ledger& l, const ScalingResult& r, std::size_t target, const std:
   std::map<std::string, std::vector<ClaimGroup>> by_group;
   for (const auto& [group, n] : tally.wins)
     if (n > 0) by_group[group];
+  const auto outside = [](const std::string& group) { return [group](const ScalingRow& w) { return solver_group(w.solver) != group; }; };
   for (std::size_t k = 0; k < nk; ++k) {
     const std::size_t b = target * nk + k;
     const ScalingBlock& block = r.blocks[b];
@@ -278,17 +279,11 @@ void claim_map(Ledger& l, const ScalingResult& r, std::size_t target, const std:
         if (w.reached()) rows.push_back(static_cast<std::size_t>(&w - r.rows.data()));
       }
       const std::string group = solver_group(m.cheapest);
-      const auto other_group = [&](const ScalingRow& w) { return solver_group(w.solver) != group; };
-      ties.push_back(cell_group(l, file, rows, r, m.cheapest, other_group, "tie"));
-      wins.push_back(cell_group(l, file, rows, r, m.cheapest, other_group, "less"));
-      for (auto& [named, cells] : by_group) {
-        const ScalingRow* best = nullptr;  // the named group's cheapest run in this cell
-        for (std::size_t i : rows)
-          if (solver_group(r.rows[i].solver) == named && (!best || scaling_cost(r.config, r.rows[i]) < scaling_cost(r.config, *best)))
-            best = &r.rows[i];
-        if (best)
-          cells.push_back(cell_group(l, file, rows, r, best->solver, [&](const ScalingRow& w) { return solver_group(w.solver) != named; }, "less"));
-      }
+      ties.push_back(cell_group(l, file, rows, r, m.cheapest, outside(group), "tie"));
+      wins.push_back(cell_group(l, file, rows, r, m.cheapest, outside(group), "less"));
+      for (auto& [named, cells] : by_group)  // the named group's cheapest run in this cell, if it reached the target
+        if (const ScalingRow* best = cheapest_run(r, b, n, [&](const ScalingRow& w) { return solver_group(w.solver) == named; }))
+          cells.push_back(cell_group(l, file, rows, r, best->solver, outside(named), "less"));
       if (!m.best_implicit.empty())  // an implicit fixed-step method against every other kind of solver
         implicit.push_back(cell_group(l, file, rows, r, m.best_implicit, [](const ScalingRow& w) { return w.adaptive || !w.implicit; }, "less"));
     }

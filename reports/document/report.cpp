@@ -68,9 +68,9 @@ std::string Page::atlas_link(const std::string& title) {
 }
 
 std::string Section::brief_markdown(const std::string& title, const std::string& answer) {
-  const std::size_t end = answer.find_last_not_of('\n');  // the answer is a paragraph of its own, however it ends
+  const std::string paragraph = without_final_newlines(answer);  // a paragraph of its own, however the answer ends
   return fmt::format("## {}\n\n{}The study, its tables and figures: [the atlas, {}]({}).\n\n", title,
-                     end == std::string::npos ? "" : answer.substr(0, end + 1) + "\n\n", title, Page::atlas_link(title));
+                     paragraph.empty() ? "" : paragraph + "\n\n", title, Page::atlas_link(title));
 }
 
 std::vector<Panel> family_panels(const std::vector<std::size_t>& methods, const std::function<bool(std::size_t)>& drawn) {

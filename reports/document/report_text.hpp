@@ -23,6 +23,7 @@ std::string num(double x);                                // full precision for 
 std::string order_text(std::size_t method);               // declared order, or "exact"
 std::string fitted_text(const ConvergenceFit& fit);       // headline order and its bound
 std::string and_list(const std::vector<std::string>& items);       // a, b and c
+inline std::string without_final_newlines(const std::string& s) { return s.substr(0, s.find_last_not_of('\n') + 1); }
 std::string method_list(const std::vector<std::size_t>& methods);  // `a`, `b` and `c`; "none"
 std::vector<std::size_t> sheet_methods();                           // the sheet's four, in its order (not the exact flow)
 std::string quoted_list(const std::vector<std::string>& names);    // `a`, `b` and `c` (a method's or a peer's)

@@ -60,7 +60,7 @@ class Cost : public Section {
   std::string title() const override { return "What accuracy costs"; }
   std::string brief(Page& page) const override {
     const std::string answer = answer_paragraph(cost_answer(page));
-    return brief_markdown(title(), answer.substr(0, answer.find_last_not_of('\n') + 1) + peers_named(answer));
+    return brief_markdown(title(), without_final_newlines(answer) + peers_named(answer));
   }
   unsigned needs() const override { return kWorkPrecisionStudy; }
   void write_data(const ReportData& d, const DataDir& dat) const override {
