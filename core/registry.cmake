@@ -14,4 +14,4 @@ set(STEPLAB_METHODS
     radau_iia5                                                        # stiff systems
     xpbd pbd baraff_witkin                                            # the course's next: on springs
     analytic)
-set(STEPLAB_SCENES cannonball spring falling bounce chain rope softbody target kepler swing pendulum)
+set(STEPLAB_SCENES cannonball spring falling bounce chain rope softbody cloth target kepler swing pendulum)

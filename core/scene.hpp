@@ -76,8 +76,9 @@ struct ParamSpec {
   double default_value;
   Bound bound;
   std::string_view help;
-  bool is_count = false;  // a whole number from 1 to `max_count` (the rope's --masses)
+  bool is_count = false;  // a whole number from `min_count` to `max_count` (the rope's --masses)
   double max_count = 0;
+  double min_count = 1;
 };
 
 // The force of an autonomous scene, F(x, v), or of a driven one, F(t, x, v): returned by value,

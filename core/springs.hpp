@@ -4,15 +4,16 @@
 // written as parts; tests/core/springs_test.cpp holds the parts' sum to force() on every scene
 // that offers them.
 //
-// A spring q joins masses i and j (j or i = -1: a point fixed at the origin), with rest length L,
-// stiffness k and a dashpot c along itself. With p_i the position of mass i (p_-1 = 0), its
-// constraint C and the force on mass i (on j the opposite) are
+// A spring q joins masses i and j (j or i = -1: a fixed point, at the link's `fixed`, the origin
+// unless the scene says otherwise), with rest length L, stiffness k and a dashpot c along itself.
+// With p_i the position of mass i (p_-1 = fixed), its constraint C and the force on mass i (on j
+// the opposite) are
 //   one coordinate a mass:   C = (p_i - p_j) - L,   grad_i C = 1,        the line spring, signed
-//   two coordinates a mass:  C = |p_i - p_j| - L,   grad_i C = n = (p_i - p_j) / |p_i - p_j|
+//   two or three a mass:     C = |p_i - p_j| - L,   grad_i C = n = (p_i - p_j) / |p_i - p_j|
 //   F_i = -(k C + c dC/dt) grad_i C,   dC/dt = grad_i C . (v_i - v_j)
 // (in one coordinate the signed form: the spring scene's -k (|y| - L) sign(y) is -k (-y - L) (-1)
 // below its anchor, where it hangs; the chain's springs have L = 0 in its displacements). A spring
-// with coincident ends in two coordinates has no direction: no force.
+// with coincident ends in two or three coordinates has no direction: no force.
 //
 // The rest, per coordinate and affine in that coordinate's velocity: external(a, v_a) (gravity,
 // absolute damping); and a ground (core/scenes/ground.hpp) under the vertical coordinate of each
@@ -30,10 +31,11 @@
 namespace steplab {
 
 struct Link {
-  int i, j;     // the masses it joins; -1: a point fixed at the origin
+  int i, j;     // the masses it joins; -1: the fixed point below
   double rest;  // L
   double k;     // stiffness
   double c;     // dashpot along the spring
+  double fixed[3] = {0, 0, 0};  // where an end -1 is (a fixed point moves nothing: its velocity is 0)
 };
 
 // A scene of masses joined by springs: links() of them, link(q) for q = 0 .. links() - 1, and
@@ -54,21 +56,28 @@ concept HasGround = MassSpring<S> && requires(const S& s) {
 // A spring's geometry at positions x, shared by whatever works on the springs: C and grad_i C
 // (grad_j C = -grad_i C), as above, with d coordinates a mass.
 struct LinkAt {
-  double c = 0;             // C
-  double g[2] = {1, 0};     // grad_i C
-  bool has_direction = true;  // false: two coordinates and coincident ends (no force)
+  double c = 0;               // C
+  double g[3] = {1, 0, 0};    // grad_i C
+  bool has_direction = true;  // false: two or three coordinates and coincident ends (no force)
 };
-// z at coordinate `axis` of mass i, for a vector z of the state's layout; 0 at a fixed point.
+// z at coordinate `axis` of mass i, for a vector z of the state's layout (a velocity, a
+// difference of positions, an inverse mass); 0 at a fixed point.
 template <int d, class Z> double at_end(const Z& z, int i, int axis) { return i < 0 ? 0.0 : double(z[d * i + axis]); }
+// The position of end i (l.i or l.j) of l: the mass's, or the fixed point's.
+template <int d, class X> double position_at_end(const Link& l, const X& x, int i, int axis) {
+  return i < 0 ? l.fixed[axis] : double(x[d * i + axis]);
+}
 template <int d, class X> LinkAt link_at(const Link& l, const X& x) {
+  static_assert(d >= 1 && d <= 3);
   LinkAt out;
+  const auto delta = [&](int axis) { return position_at_end<d>(l, x, l.i, axis) - position_at_end<d>(l, x, l.j, axis); };
   if constexpr (d == 1) {
-    out.c = (at_end<d>(x, l.i, 0) - at_end<d>(x, l.j, 0)) - l.rest;
+    out.c = delta(0) - l.rest;
   } else {
-    const double dx = at_end<d>(x, l.i, 0) - at_end<d>(x, l.j, 0), dy = at_end<d>(x, l.i, 1) - at_end<d>(x, l.j, 1);
-    const double len = std::hypot(dx, dy);
-    if (len == 0) return {0, {0, 0}, false};
-    out.c = len - l.rest, out.g[0] = dx / len, out.g[1] = dy / len;
+    const double dx = delta(0), dy = delta(1), dz = d == 3 ? delta(2) : 0.0;
+    const double len = d == 2 ? std::hypot(dx, dy) : std::sqrt(dx * dx + dy * dy + dz * dz);
+    if (len == 0) return {0, {0, 0, 0}, false};
+    out.c = len - l.rest, out.g[0] = dx / len, out.g[1] = dy / len, out.g[2] = dz / len;
   }
   return out;
 }

@@ -5,7 +5,8 @@
 // settings (XPBD's and PBD's sweeps a substep, Baraff-Witkin's CG iterations); the ODE methods at
 // their substeps alone. Per set-up, what a simulation engineer looks at:
 //   error     the largest position error over the frames and the coordinates, against the exact
-//             motion (or, on a scene without one, RK4 at reference_substeps a frame)
+//             motion (or, on a scene without one, RK4 at reference_substeps a frame, checked
+//             against RK4 at half as many: their largest difference is the reference's agreement)
 //   stretch   over the frames, the largest relative elongation C / L of a spring less the
 //             reference's at that frame (how much more the material gives than it should)
 //   energy    lost per second against the reference: (E_ref(T) - E(T)) / T (numerical damping)
@@ -62,7 +63,7 @@ struct FramesConfig {
   double fps = 60, t_end = 2;
   int budget = 30;                  // substeps x sweeps of the equal-cost grid
   std::vector<std::size_t> methods; // set-ups of these (default_frame_methods)
-  int reference_substeps = 1000;    // RK4's, where the scene has no exact motion
+  int reference_substeps = 1000;    // RK4's, where the scene has no exact motion (at least 2)
   bool timing = true;
   double min_seconds = 0.05;        // of timed runs a set-up
   bool orders = true;               // the order rows
@@ -77,10 +78,14 @@ struct FamilyFront {
 // `motion`: how far the body moves, the largest |x_i(t_k) - x_i(0)| of the reference over the
 // coordinates and frames. An error not below it is met by a run that stays at rest: no set-up is
 // the cheapest to reach it (as a map cell at rest, analysis/studies/scaling.hpp).
+// `reference_agreement`: on a scene without exact motion, the largest difference over the frames
+// and coordinates between the reference and RK4 at half its substeps (m; NaN with the exact motion,
+// or where the coarser run blew up): how far the errors below it can be trusted.
 struct FramesResult {
   FramesConfig config;
   int springs = 0;
   double motion = 0;
+  double reference_agreement = 0;
   std::vector<FrameRun> runs;
   std::vector<FamilyFront> fronts;
   std::vector<FrameOrder> orders;

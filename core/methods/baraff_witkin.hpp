@@ -13,7 +13,7 @@ namespace steplab {
 // solved by conjugate gradients preconditioned by the matrix's diagonal, matrix-free: the product
 // with A = M - h df/dv - h^2 df/dx is summed spring by spring, never assembled. Per spring, with
 // n = grad_i C (core/springs.hpp), u_r = u_i - u_j, tension t = k C + c dC/dt and length l:
-//   df_i/dx u = -k n (n . u_r) - (t / l) (u_r - n (n . u_r))     (the second term in two coordinates)
+//   df_i/dx u = -k n (n . u_r) - (t / l) (u_r - n (n . u_r))     (the second term in two or three coordinates)
 //   df_i/dv u = -c n (n . u_r),   df_j = -df_i
 // The dashpot's dependence on x (the turning of n in c dC/dt) is left out, as Baraff and Witkin do,
 // which keeps A symmetric; the external forces and the ground add their diagonal derivatives.
@@ -35,13 +35,16 @@ struct BaraffWitkin {
     decltype(auto) w = s.inverse_mass();
     const Eigen::Index n = y.x.size();
     const int links = s.links();
-    // Each spring's direction n and t / l at (x_n, v_n); the diagonal derivatives of the rest.
-    auto geo = spring_numbers<S::dim, 3>(3 * links);
+    // Each spring's direction n and t / l at (x_n, v_n), `per` numbers a spring (n's first two
+    // entries and t / l where d < 3); the diagonal derivatives of the rest.
+    constexpr int per = d == 3 ? 4 : 3, tl_at = per - 1;
+    auto geo = spring_numbers<S::dim, per>(per * links);
     for (int q = 0; q < links; ++q) {
       const Link l = s.link(q);
       const LinkAt at = link_at<d>(l, y.x);
-      geo[3 * q] = at.g[0], geo[3 * q + 1] = at.g[1], geo[3 * q + 2] = 0;
-      if (d == 2 && at.has_direction) geo[3 * q + 2] = (l.k * at.c + l.c * along<d>(l, at, y.v, Zeros{})) / (at.c + l.rest);
+      for (int axis = 0; axis < tl_at; ++axis) geo[per * q + axis] = at.g[axis];
+      geo[per * q + tl_at] = 0;
+      if (d >= 2 && at.has_direction) geo[per * q + tl_at] = (l.k * at.c + l.c * along<d>(l, at, y.v, Zeros{})) / (at.c + l.rest);
     }
     Temp<S::dim> dfdx = temp_like<S::dim, double>(y.x), dfdv = temp_like<S::dim, double>(y.x), mass = temp_like<S::dim, double>(y.x);
     for (Eigen::Index a = 0; a < n; ++a) {
@@ -56,8 +59,9 @@ struct BaraffWitkin {
       for (Eigen::Index a = 0; a < n; ++a) out[a] = (ax * dfdx[a] + av * dfdv[a]) * u[a];
       for (int q = 0; q < links; ++q) {
         const Link l = s.link(q);
-        const double g[2] = {geo[3 * q], geo[3 * q + 1]}, tl = geo[3 * q + 2];
-        double ur[2], gu = 0;
+        double g[3], ur[3], gu = 0;  // n copied: read through a pointer, it is reloaded after each write to out
+        for (int axis = 0; axis < d; ++axis) g[axis] = geo[per * q + axis];
+        const double tl = geo[per * q + tl_at];
         for (int axis = 0; axis < d; ++axis) ur[axis] = at_end<d>(u, l.i, axis) - at_end<d>(u, l.j, axis), gu += g[axis] * ur[axis];
         for (int axis = 0; axis < d; ++axis) {
           const double fi = -(ax * l.k + av * l.c) * g[axis] * gu - ax * tl * (ur[axis] - g[axis] * gu);
@@ -80,7 +84,7 @@ struct BaraffWitkin {
     for (int q = 0; q < links; ++q) {
       const Link l = s.link(q);
       for (int axis = 0; axis < d; ++axis) {
-        const double g = geo[3 * q + axis], add = (h * h * l.k + h * l.c) * g * g + h * h * geo[3 * q + 2] * (1 - g * g) * (d == 2);
+        const double g = geo[per * q + axis], add = (h * h * l.k + h * l.c) * g * g + h * h * geo[per * q + tl_at] * (1 - g * g) * (d >= 2);
         if (l.i >= 0) diag[d * l.i + axis] += add;
         if (l.j >= 0) diag[d * l.j + axis] += add;
       }

@@ -1,5 +1,5 @@
-// A damped spring between two 2-D masses i and j, its force along the spring (the falling
-// triangle's springs, the soft body's). With d = x_i - x_j, w = v_i - v_j, l = |d|, n = d / l,
+// A damped spring between two masses i and j of n coordinates each (2 by default), its force
+// along the spring (the falling triangle's springs, the soft body's; the cloth's in 3-D). With d = x_i - x_j, w = v_i - v_j, l = |d|, n = d / l,
 // P = I - n n^T and rest length L:
 //   F_i = -(k (l - L) + gamma n.w) n,   F_j = -F_i
 //   dF_i/dd = -k (n n^T + (l - L)/l P) - gamma / l (n w^T P + (n.w) P)
@@ -16,9 +16,9 @@
 namespace steplab {
 
 // T = double: one spring; a Pack: one per lane, "zero where l = 0" a select (core/pack.hpp).
-template <class T> struct PairSpringT {
-  using V2 = Eigen::Matrix<T, 2, 1>;
-  using M2 = Eigen::Matrix<T, 2, 2>;
+template <class T, int n_coords = 2> struct PairSpringT {
+  using V2 = Eigen::Matrix<T, n_coords, 1>;  // a vector and a block of n_coords (2: the name's)
+  using M2 = Eigen::Matrix<T, n_coords, n_coords>;
   T k, gamma;
 
   // F_i; zero where l = 0.
@@ -52,5 +52,6 @@ template <class T> struct PairSpringT {
 };
 
 using PairSpring = PairSpringT<double>;
+using PairSpring3 = PairSpringT<double, 3>;
 
 }  // namespace steplab

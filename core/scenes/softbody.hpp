@@ -31,6 +31,7 @@
 
 #include "core/scene.hpp"
 #include "core/springs.hpp"
+#include "core/scenes/block_pattern.hpp"
 #include "core/scenes/ground.hpp"
 #include "core/scenes/pair_spring.hpp"
 
@@ -74,10 +75,10 @@ struct SoftBody {
   double m = M / masses, inv_m = 1 / m;
   std::vector<Spring> springs;
   Eigen::VectorXd m_all = Eigen::VectorXd::Constant(2 * masses, m), inv_m_all = Eigen::VectorXd::Constant(2 * masses, inv_m);
-  // The Jacobians' pattern (dF/dx and dF/dv share it: each mass's 2 x 2 block, each spring's four),
-  // made once; where each mass's y diagonal and each spring's 16 entries sit in its values.
-  SparseMat pattern;
-  std::vector<int> y_slots, spring_slots;
+  // The Jacobians' pattern (core/scenes/block_pattern.hpp: each mass's 2 x 2 block, each spring's
+  // four), made once; where each mass's y diagonal sits in its values.
+  BlockPattern<2> pattern;
+  std::vector<int> y_slots;
 
   explicit SoftBody(std::span<const double> p)
       : n(static_cast<int>(p[0])), M(p[1]), k(p[2]), gamma(p[3]), side(p[4]), g(p[5]), ground{p[6] / n, p[7] / n} {
@@ -90,7 +91,10 @@ struct SoftBody {
         if (r + 1 < n && c + 1 < n) springs.push_back({at(r, c), at(r + 1, c + 1), std::sqrt(2.0) * h});
         if (r + 1 < n && c > 0) springs.push_back({at(r, c), at(r + 1, c - 1), std::sqrt(2.0) * h});
       }
-    make_pattern();
+    std::vector<std::pair<int, int>> ends;
+    for (const Spring& s : springs) ends.push_back({s.i, s.j});
+    pattern = BlockPattern<2>(2 * masses, ends);
+    for (int i = 0; i < masses; ++i) y_slots.push_back(pattern.slot(2 * i + 1, 2 * i + 1));
   }
 
   std::array<double, 8> values() const { return {double(n), M, k, gamma, side, g, ground.k * n, ground.c * n}; }
@@ -119,23 +123,20 @@ struct SoftBody {
     return jac;
   }
   void jacobians(Eigen::Ref<const Eigen::VectorXd> x, Eigen::Ref<const Eigen::VectorXd> v, Jacobians<Eigen::Dynamic>& jac) const {
-    if (jac.dx.nonZeros() != pattern.nonZeros() || jac.dx.rows() != pattern.rows()) jac = {pattern, pattern};
+    const SparseMat& shape = pattern.matrix;
+    if (jac.dx.nonZeros() != shape.nonZeros() || jac.dx.rows() != shape.rows()) jac = {shape, shape};
     double *fx = jac.dx.valuePtr(), *fv = jac.dv.valuePtr();
-    std::fill(fx, fx + pattern.nonZeros(), 0.0);
-    std::fill(fv, fv + pattern.nonZeros(), 0.0);
+    std::fill(fx, fx + shape.nonZeros(), 0.0);
+    std::fill(fv, fv + shape.nonZeros(), 0.0);
     for (int i = 0; i < masses; ++i) {
       const double y = x[2 * i + 1];
       fx[y_slots[i]] = ground.dforce_dy(y), fv[y_slots[i]] = ground.dforce_dv(y);
     }
-    const auto add = [](double* f, const int* slot, const Eigen::Matrix2d& b) {
-      for (int a = 0; a < 2; ++a)
-        for (int c = 0; c < 2; ++c, slot += 4) f[slot[0]] += b(a, c), f[slot[1]] += b(a, c), f[slot[2]] -= b(a, c), f[slot[3]] -= b(a, c);
-    };
     for (std::size_t q = 0; q < springs.size(); ++q) {
       const Spring& s = springs[q];
       const auto [dd, dv] = spring.blocks(x.segment<2>(2 * s.i) - x.segment<2>(2 * s.j), v.segment<2>(2 * s.i) - v.segment<2>(2 * s.j), s.rest);
-      add(fx, &spring_slots[16 * q], dd);
-      add(fv, &spring_slots[16 * q], dv);
+      pattern.add(fx, q, dd);
+      pattern.add(fv, q, dv);
     }
   }
 
@@ -184,29 +185,6 @@ struct SoftBody {
     for (int r = 0; r < n; ++r)
       for (int c = 0; c < n; ++c) x[2 * (r * n + c)] = (c - 0.5 * (n - 1)) * h, x[2 * (r * n + c) + 1] = -0.5 + r * h;
     return {x, Eigen::VectorXd::Zero(2 * masses)};
-  }
-
- private:
-  // Per spring (i, j) and entry (a, c) of its blocks, in that order: the slots of (2i+a, 2i+c),
-  // (2j+a, 2j+c), (2i+a, 2j+c), (2j+a, 2i+c).
-  void make_pattern() {
-    std::vector<std::pair<int, int>> entries;  // the springs' entries in slot order
-    for (const Spring& s : springs)
-      for (int a = 0; a < 2; ++a)
-        for (int c = 0; c < 2; ++c)
-          entries.insert(entries.end(), {{2 * s.i + a, 2 * s.i + c}, {2 * s.j + a, 2 * s.j + c}, {2 * s.i + a, 2 * s.j + c},
-                                         {2 * s.j + a, 2 * s.i + c}});
-    std::vector<Eigen::Triplet<double>> t;
-    for (int i = 0; i < 2 * masses; ++i) t.emplace_back(i, i, 0.0);
-    for (const auto& [r, c] : entries) t.emplace_back(r, c, 0.0);
-    pattern = SparseMat(2 * masses, 2 * masses);
-    pattern.setFromTriplets(t.begin(), t.end());
-    const auto slot = [&](int r, int c) {
-      const int *inner = pattern.innerIndexPtr(), *outer = pattern.outerIndexPtr();
-      return static_cast<int>(std::lower_bound(inner + outer[c], inner + outer[c + 1], r) - inner);
-    };
-    for (int i = 0; i < masses; ++i) y_slots.push_back(slot(2 * i + 1, 2 * i + 1));
-    for (const auto& [r, c] : entries) spring_slots.push_back(slot(r, c));
   }
 };
 

@@ -115,7 +115,7 @@ int run_scaling(ScalingArgs& a, Context& ctx) {
   if (!a.sizes.empty()) {
     c.sizes.clear();
     const ParamSpec& size = scene.params[scene.size_param];  // --masses, --grid: its range
-    for (const std::string& s : split_list(a.sizes)) c.sizes.push_back(static_cast<int>(parse_count("--sizes", s, 1, static_cast<long long>(size.max_count))));
+    for (const std::string& s : split_list(a.sizes)) c.sizes.push_back(static_cast<int>(parse_count("--sizes", s, static_cast<long long>(size.min_count), static_cast<long long>(size.max_count))));
     check_distinct("--sizes", std::vector<double>(c.sizes.begin(), c.sizes.end()));
   }
   c.targets = error_targets(a.error);

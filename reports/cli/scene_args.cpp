@@ -81,7 +81,7 @@ std::vector<double> SceneArgs::values(std::size_t index) const {
   std::vector<double> v;
   for (const ParamSpec& p : s.params) {
     const std::string option = "--" + std::string(p.name);
-    if (given(p.name) && p.is_count) v.push_back(static_cast<double>(parse_count(option, text.at(std::string(p.name)), 1, static_cast<long long>(p.max_count))));
+    if (given(p.name) && p.is_count) v.push_back(static_cast<double>(parse_count(option, text.at(std::string(p.name)), static_cast<long long>(p.min_count), static_cast<long long>(p.max_count))));
     else if (given(p.name)) v.push_back(parse_number(option, text.at(std::string(p.name)), p.bound));
     else if (auto f = old_defaults.find(p.name); f != old_defaults.end()) v.push_back(f->second);
     else v.push_back(p.default_value);

@@ -1,4 +1,4 @@
-// The frame-budget study's writers (analysis/studies/frames.hpp): its JSON (steplab.frames/2)
+// The frame-budget study's writers (analysis/studies/frames.hpp): its JSON (steplab.frames/3)
 // and its table.
 #include <cmath>
 #include <string>
@@ -30,6 +30,8 @@ constexpr StudyParam<FramesConfig> kFramesStudyParams[] = {
     {"t-end", "simulated time (a whole number of frames)", kPositive, &FramesConfig::t_end},
     {"budget", "substeps x sweeps (or CG iterations) a frame: every divisor of it as the substeps", {1, 10'000},
      &FramesConfig::budget},
+    {"reference-substeps", "RK4's substeps a frame for the reference where the scene has no exact motion (checked against "
+                           "half as many)", {2, 1'000'000}, &FramesConfig::reference_substeps},
 };
 
 }  // namespace
@@ -51,6 +53,7 @@ Json frames_json(const FramesResult& r) {
   j["fps"] = c.fps, j["t_end"] = c.t_end, j["budget"] = c.budget, j["timing"] = c.timing;
   j["springs"] = r.springs, j["motion"] = r.motion;
   j["reference"] = scene_kernel(c.scene).exact ? Json("exact") : Json(fmt::format("rk4 at {} substeps a frame", c.reference_substeps));
+  j["reference_agreement"] = scene_kernel(c.scene).exact ? Json(nullptr) : finite_or_null(r.reference_agreement);
   Json runs = Json::array();
   for (const FrameRun& run : r.runs) {
     Json e = {{"method", method_info(run.setup.method).name},
@@ -88,7 +91,9 @@ std::string frames_table(const FramesResult& r) {
   std::string out = fmt::format("{} ({} springs) at {} frames a second for {} s; error against the {}; budget {} (substeps x "
                                 "sweeps or CG iterations)\n",
                                 scene_name(c.scene), r.springs, c.fps, c.t_end,
-                                scene_kernel(c.scene).exact ? "exact motion" : fmt::format("rk4 at {} substeps a frame", c.reference_substeps),
+                                scene_kernel(c.scene).exact ? "exact motion"
+                                                            : fmt::format("rk4 at {} substeps a frame (within {:.2g} m of it at half as many)",
+                                                                          c.reference_substeps, r.reference_agreement),
                                 c.budget);
   out += fmt::format("{:<18} {:<16} {:>10} {:>10} {:>12} {:>12} {:>12} {:>7}\n", "method", "per frame", "error", "stretch",
                      "E lost /s", "visits/frame", "us/frame", "front");

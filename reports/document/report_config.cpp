@@ -268,7 +268,7 @@ ReportConfig report_config_from_json(const Json& user, const ReportConfig& base)
     const ParamSpec& size = k.params[static_cast<std::size_t>(k.size_param)];
     const std::string key(k.name);
     s.sizes.clear();
-    for (const Json& n : sc[key]) s.sizes.push_back(count(n, "scaling." + key, 1, static_cast<int>(size.max_count)));
+    for (const Json& n : sc[key]) s.sizes.push_back(count(n, "scaling." + key, static_cast<int>(size.min_count), static_cast<int>(size.max_count)));
   }
   c.scaling_error = num(sc["error"], "scaling.error", Bound::Positive);
   ScalingConfig measure;  // scaling.t_end by the study's rule, as its command has it
@@ -277,9 +277,9 @@ ReportConfig report_config_from_json(const Json& user, const ReportConfig& base)
   c.scaling_t_end = measure.t_end;
   c.scaling_map_sizes.clear();
   if (!c.scaling.empty()) {  // within the first scene's size range
-    const SceneKernel& k = scene_kernel(c.scaling.front().scene);
+    const ParamSpec& size = scene_kernel(c.scaling.front().scene).params[static_cast<std::size_t>(scene_kernel(c.scaling.front().scene).size_param)];
     for (const Json& n : sc["map_sizes"])
-      c.scaling_map_sizes.push_back(count(n, "scaling.map_sizes", 1, static_cast<int>(k.params[static_cast<std::size_t>(k.size_param)].max_count)));
+      c.scaling_map_sizes.push_back(count(n, "scaling.map_sizes", static_cast<int>(size.min_count), static_cast<int>(size.max_count)));
   }
   c.scaling_stiffening = nums(sc["stiffening"], "scaling.stiffening", Bound::Positive);
   if (c.scaling_stiffening.empty()) throw UsageError("config: scaling.stiffening is empty; accepted: 1 or more positive factors");

@@ -9,6 +9,7 @@
 
 #include "analysis/kernel/kernel.hpp"
 #include "core/scenes/softbody.hpp"
+#include "tests/core/differences.hpp"
 
 namespace steplab {
 namespace {
@@ -66,41 +67,20 @@ TEST(SoftBody, FallsFreelyUntilItTouches) {
   }
 }
 
-// Undamped, the force is minus the gradient of the potential (energy at v = 0): central
-// differences of step 1e-6 agree to 1e-7 of the largest force (their error ~ 1e-12 k / h^2 ...).
+// Undamped, the force is minus the gradient of the potential (energy at v = 0; tests/core/
+// differences.hpp).
 TEST(SoftBody, ForceIsMinusTheGradientOfItsEnergy) {
   const SoftBody s = body(4, 0.0, 0.0);
-  const State<Eigen::Dynamic> y = stirred(s);
-  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(y.x.size());
-  const Eigen::VectorXd f = force_value(s, 0.0, y.x, zero);
-  const double h = 1e-6;
-  for (int i = 0; i < y.x.size(); ++i) {
-    Eigen::VectorXd up = y.x, down = y.x;
-    up[i] += h, down[i] -= h;
-    EXPECT_NEAR(f[i], -(s.energy(up, zero) - s.energy(down, zero)) / (2 * h), 1e-7 * f.cwiseAbs().maxCoeff()) << i;
-  }
+  expect_force_is_minus_energy_gradient(s, stirred(s));
 }
 
-// dF/dx and dF/dv against central differences of F (step 1e-6; F is smooth away from the
-// ground's kink, quadratic in v): agreement to 1e-7 of the largest entry, damped springs and a
-// damped ground included, at a state where springs are stretched, turned and moving.
+// dF/dx and dF/dv against central differences of F (F is smooth away from the ground's kink,
+// quadratic in v; tests/core/differences.hpp), damped springs and a damped ground included, at a
+// state where springs are stretched, turned and moving.
 TEST(SoftBody, JacobiansMatchFiniteDifferences) {
   const SoftBody s = body(3, 0.4, 2.0);
-  const State<Eigen::Dynamic> y = stirred(s);
-  const Jacobians<Eigen::Dynamic> j = s.jacobians(y.x, y.v);
-  const Eigen::MatrixXd dx(j.dx), dv(j.dv);
-  const double h = 1e-6, scale = std::max(dx.cwiseAbs().maxCoeff(), dv.cwiseAbs().maxCoeff());
-  for (int c = 0; c < y.x.size(); ++c) {
-    Eigen::VectorXd xu = y.x, xd = y.x, vu = y.v, vd = y.v;
-    xu[c] += h, xd[c] -= h, vu[c] += h, vd[c] -= h;
-    const Eigen::VectorXd fdx = (force_value(s, 0.0, xu, y.v) - force_value(s, 0.0, xd, y.v)) / (2 * h);
-    const Eigen::VectorXd fdv = (force_value(s, 0.0, y.x, vu) - force_value(s, 0.0, y.x, vd)) / (2 * h);
-    for (int r = 0; r < y.x.size(); ++r) {
-      EXPECT_NEAR(dx(r, c), fdx[r], 1e-7 * scale) << r << ", " << c;
-      EXPECT_NEAR(dv(r, c), fdv[r], 1e-7 * scale) << r << ", " << c;
-    }
-  }
-  EXPECT_GT((dx - dx.transpose()).cwiseAbs().maxCoeff(), 1e-3 * scale);  // not symmetric: LU, not LDL^T
+  const Eigen::MatrixXd dx = expect_jacobians_match_differences(s, stirred(s));
+  EXPECT_GT((dx - dx.transpose()).cwiseAbs().maxCoeff(), 1e-3 * dx.cwiseAbs().maxCoeff());  // not symmetric: LU, not LDL^T
 }
 
 // Implicit Euler on the damped body through the ground contact (Newton on the nonsymmetric

@@ -83,7 +83,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"run --method xpbd --cg-iterations 3", "--cg-iterations applies to baraff_witkin"},
         BadInput{"study convergence --methods rk4,bdf2 --sweeps 2", "--sweeps applies to xpbd, pbd; --methods take none"},
         BadInput{"study convergence --scene rope --methods xpbd --sweeps 0", "--sweeps"},
-        BadInput{"run --scene cannonball --method xpbd", "cannonball is not made of springs; accepted: spring, falling, chain, rope, softbody"},
+        BadInput{"run --scene cannonball --method xpbd", "cannonball is not made of springs; accepted: spring, falling, chain, rope, softbody, cloth"},
         BadInput{"study frames --scene cannonball", "--scene cannonball"}, BadInput{"study frames --budget 0", "--budget"},
         BadInput{"study frames --budget x", "--budget"}, BadInput{"study frames --fps 0", "--fps"},
         BadInput{"study frames --t-end 0.01", "a whole number of frames"},
@@ -158,6 +158,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"study scaling --error 1e-4,1e-4", "--error names 0.0001 twice"},
         BadInput{"study scaling --error 1%,1%", "--error names 1% twice"}, BadInput{"study scaling --sizes 8,8", "--sizes names 8 twice"},
         BadInput{"run --scene softbody --grid 0", "--grid"}, BadInput{"run --scene softbody --masses 4", "--masses"},
+        // the cloth needs two pins and a mass: 2 a side at least (ParamSpec::min_count)
+        BadInput{"run --scene cloth --grid 1", "--grid"}, BadInput{"study frames --scene cloth --reference-substeps 1", "--reference-substeps"},
         // check
         BadInput{"check", "--method"}, BadInput{"check --method heun", "heun"},
         BadInput{"check --method rk4 --threads -1", "--threads"},
