@@ -126,7 +126,8 @@ struct Cloth {
                    : Eigen::Vector3d(x.template segment<3>(3 * s.i) - x.template segment<3>(3 * s.j));
   }
   template <class V> Eigen::Vector3d closing(const Spring& s, const V& v) const {
-    return s.j < 0 ? Eigen::Vector3d(v.template segment<3>(3 * s.i)) : Eigen::Vector3d(v.template segment<3>(3 * s.i) - v.template segment<3>(3 * s.j));
+    return s.j < 0 ? Eigen::Vector3d(v.template segment<3>(3 * s.i))
+                   : Eigen::Vector3d(v.template segment<3>(3 * s.i) - v.template segment<3>(3 * s.j));
   }
 
   // F into the run's f.

@@ -101,7 +101,8 @@ double dissipation(const Cloth& s, const Eigen::VectorXd& x, const Eigen::Vector
 // trapezoid rule over RK4's steps, apart from the integrator. On a 6 x 6 cloth with gamma 0.05
 // over 0.5 s at h = 5e-5 (omega_max h ~ 0.08): the trapezoid's error ~ h^2 P'' T / 12 and RK4's
 // energy error ~ (omega h)^4 are far below 1e-6 of the energy turned over (M g times the drop,
-// ~ 2.7 J); measured 1.7e-10 of it (3e-11 at h = 2e-5, as h^2). The dashpots took a stated share, not nothing: above 1e-3 of it.
+// ~ 2.7 J); measured 1.7e-10 of it (3e-11 at h = 2e-5, as h^2). The dashpots took a stated
+// share, not nothing: above 1e-3 of it.
 TEST(Cloth, EnergyLostIsWhatTheDashpotsTook) {
   const Cloth s = cloth(6, 0.05);
   RunSpec spec;
