@@ -40,6 +40,19 @@ RunSpec frame_spec(const FramesConfig& c, const FrameSetup& s, bool samples) {
   return spec;
 }
 
+// The largest difference of positions between two runs' frames, over the frames and the
+// coordinates; NaN where they have not as many frames (one ended early) or a difference is not finite.
+double largest_difference(const std::vector<AnyState>& a, const std::vector<AnyState>& b) {
+  if (a.size() != b.size()) return kNaN;
+  double out = 0;
+  for (std::size_t f = 0; f < a.size(); ++f) {
+    const double e = (a[f].x - b[f].x).cwiseAbs().maxCoeff();
+    if (!std::isfinite(e)) return kNaN;
+    out = std::max(out, e);
+  }
+  return out;
+}
+
 std::vector<AnyState> frames_of(const AnyResult& r) {
   std::vector<AnyState> out;
   for (const auto& s : r.samples) out.push_back({s.x, s.v});
@@ -59,10 +72,7 @@ Reference reference(const FramesConfig& c) {
       return frames_of(pair_kernel(rk4, c.scene).run(c.params, frame_spec(c, {rk4, substeps, {}}, true)));
     };
     ref.frames = run(c.reference_substeps);
-    const std::vector<AnyState> half = run(c.reference_substeps / 2);
-    ref.agreement = half.size() == ref.frames.size() ? 0.0 : kNaN;
-    for (std::size_t f = 0; f < half.size() && f < ref.frames.size(); ++f)
-      ref.agreement = std::max(ref.agreement, (half[f].x - ref.frames[f].x).cwiseAbs().maxCoeff());
+    ref.agreement = largest_difference(run(c.reference_substeps / 2), ref.frames);
   }
   ref.measures = sk.spring_measures(c.params, ref.frames);
   return ref;
@@ -77,13 +87,8 @@ FrameRun measure(const FramesConfig& c, const Reference& ref, const FrameSetup& 
   if (!k.run_counted) out.counts.steps = r.steps;
   out.status = r.status;
   const std::vector<AnyState> frames = frames_of(r);
-  bool finite = r.status == RunStatus::Ok && frames.size() == ref.frames.size();
-  for (std::size_t f = 0; finite && f < frames.size(); ++f) {
-    const double e = (frames[f].x - ref.frames[f].x).cwiseAbs().maxCoeff();
-    finite = std::isfinite(e);
-    out.error = std::max(out.error, e);
-  }
-  out.stable = finite;
+  out.error = r.status == RunStatus::Ok ? largest_difference(frames, ref.frames) : kNaN;
+  out.stable = std::isfinite(out.error);
   const int springs = ref.measures.springs;
   const MethodInfo& info = method_info(s.method);
   if (takes_sweeps(info)) out.projections = out.counts.steps * s.settings.sweeps * springs;

@@ -28,8 +28,8 @@ namespace steplab {
 // rope). Where they turn, each correction moved the masses along its spring's gradient at the
 // iterate it was made at, not at x_(n+1) (the residual the paper's section 3.3 drops), so the
 // converged step differs from implicit Euler's by O(h^3), O(h^2) over a run (the cloth: 4.2
-// times less a halving of h, tests/core/cloth_test.cpp). At a fixed number of sweeps it is not: the sweeps stop short of
-// the implicit solve by a factor that depends on h, k and the spring count, which is what the
+// times less a halving of h, tests/core/cloth_test.cpp). At a fixed number of sweeps it is not
+// implicit Euler at all: the sweeps stop short of the implicit solve by a factor that depends on h, k and the spring count, which is what the
 // substeps-against-sweeps comparison measures. On one spring (the linear test equation, the
 // sheet's spring) one sweep solves its one linear constraint exactly: implicit Euler, A-stable.
 struct Xpbd {

@@ -23,11 +23,11 @@ template <int d> struct BlockPattern {
   std::vector<int> slots;
 
   BlockPattern() = default;
-  // For `coords` coordinates and the springs' ends (i, j), j = -1 for a fixed point.
-  BlockPattern(int coords, const std::vector<std::pair<int, int>>& ends) {
+  // For `coords` coordinates and springs with ends .i and .j, j = -1 for a fixed point.
+  template <class Springs> BlockPattern(int coords, const Springs& springs) {
     std::vector<std::pair<int, int>> entries;  // (-1, -1): no entry
-    for (const auto& [i, j] : ends)
-      for (int a = 0; a < d; ++a)
+    for (const auto& s : springs)
+      for (int a = 0, i = s.i, j = s.j; a < d; ++a)
         for (int c = 0; c < d; ++c) {
           entries.push_back({d * i + a, d * i + c});
           if (j >= 0) entries.insert(entries.end(), {{d * j + a, d * j + c}, {d * i + a, d * j + c}, {d * j + a, d * i + c}});
@@ -46,6 +46,13 @@ template <int d> struct BlockPattern {
   int slot(int r, int c) const {
     const int *inner = matrix.innerIndexPtr(), *outer = matrix.outerIndexPtr();
     return static_cast<int>(std::lower_bound(inner + outer[c], inner + outer[c + 1], r) - inner);
+  }
+
+  // jac on this pattern (given it on a run's first call), its values zeroed.
+  void zero(Jacobians<Eigen::Dynamic>& jac) const {
+    if (jac.dx.nonZeros() != matrix.nonZeros() || jac.dx.rows() != matrix.rows()) jac = {matrix, matrix};
+    std::fill(jac.dx.valuePtr(), jac.dx.valuePtr() + matrix.nonZeros(), 0.0);
+    std::fill(jac.dv.valuePtr(), jac.dv.valuePtr() + matrix.nonZeros(), 0.0);
   }
 
   // Spring q's blocks B, B, -B, -B added into the values f.

@@ -23,14 +23,10 @@
 // sparse LU (core/sparse.hpp). No exact motion: the studies compare with a converged run.
 #pragma once
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <span>
-#include <utility>
 #include <vector>
-
-#include <Eigen/SparseCore>
 
 #include "core/scene.hpp"
 #include "core/springs.hpp"
@@ -68,45 +64,34 @@ struct Cloth {
       {"gravity", 9.81, Bound::NonNegative, "gravitational acceleration g (pointing down, -z)"},
   }};
 
-  struct Spring {
-    int i, j;     // state masses; j = -1: a pin
-    double rest;  // L
-    int kind;     // 0 stretch, 1 shear, 2 bending
-    std::array<double, 3> pin{};  // where the pin is, for j = -1
-  };
-
   int n;
   double M, gamma, side, g;
-  std::array<PairSpring3, 3> kinds;
   int masses = n * n - 2;
   double m = M / (n * n), inv_m = 1 / m;
-  std::vector<Spring> springs;
+  std::vector<Link> springs;  // state masses i, j; j = -1: a pin, at `fixed`
   Eigen::VectorXd m_all = Eigen::VectorXd::Constant(3 * masses, m), inv_m_all = Eigen::VectorXd::Constant(3 * masses, inv_m);
   // The Jacobians' pattern (core/scenes/block_pattern.hpp: each mass's 3 x 3 block, each spring's
   // four, or one where it ends at a pin), made once.
   BlockPattern<3> pattern;
 
   explicit Cloth(std::span<const double> p)
-      : n(static_cast<int>(p[0])), M(p[1]), gamma(p[5]), side(p[6]), g(p[7]),
-        kinds{{{p[2], p[5]}, {p[3], p[5]}, {p[4], p[5]}}} {
-    const double h = spacing();
-    const auto join = [&](int r0, int c0, int r1, int c1, double rest, int kind) {
+      : n(static_cast<int>(p[0])), M(p[1]), gamma(p[5]), side(p[6]), g(p[7]) {
+    const double h = spacing(), stretch = p[2], shear = p[3], bending = p[4];
+    const auto join = [&](int r0, int c0, int r1, int c1, double rest, double k) {
       if (r1 >= n || c1 < 0 || c1 >= n) return;
       const int a = index(r0, c0), b = index(r1, c1);
       if (a < 0 && b < 0) return;  // both pinned: a constant force on nothing
-      if (a < 0) springs.push_back({b, -1, rest, kind, rest_position(r0, c0)});
-      else if (b < 0) springs.push_back({a, -1, rest, kind, rest_position(r1, c1)});
-      else springs.push_back({a, b, rest, kind});
+      if (a >= 0 && b >= 0) return springs.push_back({a, b, rest, k, gamma});
+      const std::array<double, 3> pin = a < 0 ? rest_position(r0, c0) : rest_position(r1, c1);
+      springs.push_back({a < 0 ? b : a, -1, rest, k, gamma, {pin[0], pin[1], pin[2]}});
     };
     for (int r = 0; r < n; ++r)
       for (int c = 0; c < n; ++c) {
-        join(r, c, r, c + 1, h, 0), join(r, c, r + 1, c, h, 0);
-        join(r, c, r + 1, c + 1, std::sqrt(2.0) * h, 1), join(r, c, r + 1, c - 1, std::sqrt(2.0) * h, 1);
-        join(r, c, r, c + 2, 2 * h, 2), join(r, c, r + 2, c, 2 * h, 2);
+        join(r, c, r, c + 1, h, stretch), join(r, c, r + 1, c, h, stretch);
+        join(r, c, r + 1, c + 1, std::sqrt(2.0) * h, shear), join(r, c, r + 1, c - 1, std::sqrt(2.0) * h, shear);
+        join(r, c, r, c + 2, 2 * h, bending), join(r, c, r + 2, c, 2 * h, bending);
       }
-    std::vector<std::pair<int, int>> ends;
-    for (const Spring& s : springs) ends.push_back({s.i, s.j});
-    pattern = BlockPattern<3>(3 * masses, ends);
+    pattern = BlockPattern<3>(3 * masses, springs);
   }
 
   double spacing() const { return side / (n - 1); }
@@ -120,21 +105,22 @@ struct Cloth {
   const Eigen::VectorXd& mass() const { return m_all; }
   const Eigen::VectorXd& inverse_mass() const { return inv_m_all; }
 
-  // p_i - p_j and v_i - v_j of a spring (p_j the pin, v_j = 0, where j = -1).
-  template <class X> Eigen::Vector3d apart(const Spring& s, const X& x) const {
-    return s.j < 0 ? Eigen::Vector3d(x.template segment<3>(3 * s.i) - Eigen::Vector3d(s.pin.data()))
+  // p_i - p_j and v_i - v_j of a spring (p_j the pin, v_j = 0, where j = -1); the spring itself.
+  template <class X> static Eigen::Vector3d apart(const Link& s, const X& x) {
+    return s.j < 0 ? Eigen::Vector3d(x.template segment<3>(3 * s.i) - Eigen::Vector3d(s.fixed))
                    : Eigen::Vector3d(x.template segment<3>(3 * s.i) - x.template segment<3>(3 * s.j));
   }
-  template <class V> Eigen::Vector3d closing(const Spring& s, const V& v) const {
+  template <class V> static Eigen::Vector3d closing(const Link& s, const V& v) {
     return s.j < 0 ? Eigen::Vector3d(v.template segment<3>(3 * s.i))
                    : Eigen::Vector3d(v.template segment<3>(3 * s.i) - v.template segment<3>(3 * s.j));
   }
+  static PairSpring3 pull(const Link& s) { return {s.k, s.c}; }
 
   // F into the run's f.
   void force(Eigen::Ref<const Eigen::VectorXd> x, Eigen::Ref<const Eigen::VectorXd> v, Eigen::Ref<Eigen::VectorXd> f) const {
     for (int i = 0; i < masses; ++i) f[3 * i] = 0, f[3 * i + 1] = 0, f[3 * i + 2] = -m * g;
-    for (const Spring& s : springs) {
-      const Eigen::Vector3d fi = kinds[s.kind].force(apart(s, x), closing(s, v), s.rest);
+    for (const Link& s : springs) {
+      const Eigen::Vector3d fi = pull(s).force(apart(s, x), closing(s, v), s.rest);
       f.segment<3>(3 * s.i) += fi;
       if (s.j >= 0) f.segment<3>(3 * s.j) -= fi;
     }
@@ -148,14 +134,11 @@ struct Cloth {
     return jac;
   }
   void jacobians(Eigen::Ref<const Eigen::VectorXd> x, Eigen::Ref<const Eigen::VectorXd> v, Jacobians<Eigen::Dynamic>& jac) const {
-    const SparseMat& shape = pattern.matrix;
-    if (jac.dx.nonZeros() != shape.nonZeros() || jac.dx.rows() != shape.rows()) jac = {shape, shape};
+    pattern.zero(jac);
     double *fx = jac.dx.valuePtr(), *fv = jac.dv.valuePtr();
-    std::fill(fx, fx + shape.nonZeros(), 0.0);
-    std::fill(fv, fv + shape.nonZeros(), 0.0);
     for (std::size_t q = 0; q < springs.size(); ++q) {
-      const Spring& s = springs[q];
-      const auto [dd, dv] = kinds[s.kind].blocks(apart(s, x), closing(s, v), s.rest);
+      const Link& s = springs[q];
+      const auto [dd, dv] = pull(s).blocks(apart(s, x), closing(s, v), s.rest);
       pattern.add(fx, q, dd);
       pattern.add(fv, q, dv);
     }
@@ -165,10 +148,7 @@ struct Cloth {
   // As springs (core/springs.hpp): every spring, damped along itself, a pin its fixed end;
   // gravity on each z.
   int links() const { return static_cast<int>(springs.size()); }
-  Link link(int q) const {
-    const Spring& s = springs[q];
-    return {s.i, s.j, s.rest, kinds[s.kind].k, gamma, {s.pin[0], s.pin[1], s.pin[2]}};
-  }
+  Link link(int q) const { return springs[q]; }
   double external(int a, double) const { return a % 3 == 2 ? -m * g : 0.0; }
 
   // Total mechanical energy: kinetic + gravity + springs, heights from z = -S, where the far edge
@@ -177,7 +157,7 @@ struct Cloth {
   double energy(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const {
     double e = 0.5 * m * v.squaredNorm();
     for (int i = 0; i < masses; ++i) e += m * g * (x[3 * i + 2] + side);
-    for (const Spring& s : springs) e += kinds[s.kind].energy(apart(s, x), s.rest);
+    for (const Link& s : springs) e += pull(s).energy(apart(s, x), s.rest);
     return e;
   }
 

@@ -1,6 +1,6 @@
-// A damped spring between two masses i and j of n coordinates each (2 by default), its force
-// along the spring (the falling triangle's springs, the soft body's; the cloth's in 3-D). With d = x_i - x_j, w = v_i - v_j, l = |d|, n = d / l,
-// P = I - n n^T and rest length L:
+// A damped spring between two masses i and j of 2 coordinates each (the falling triangle's
+// springs, the soft body's) or 3 (the cloth's), its force along the spring. With d = x_i - x_j,
+// w = v_i - v_j, l = |d|, n = d / l, P = I - n n^T and rest length L:
 //   F_i = -(k (l - L) + gamma n.w) n,   F_j = -F_i
 //   dF_i/dd = -k (n n^T + (l - L)/l P) - gamma / l (n w^T P + (n.w) P)
 //   dF_i/dv_i = -gamma n n^T
@@ -17,34 +17,34 @@ namespace steplab {
 
 // T = double: one spring; a Pack: one per lane, "zero where l = 0" a select (core/pack.hpp).
 template <class T, int n_coords = 2> struct PairSpringT {
-  using V2 = Eigen::Matrix<T, n_coords, 1>;  // a vector and a block of n_coords (2: the name's)
-  using M2 = Eigen::Matrix<T, n_coords, n_coords>;
+  using V = Eigen::Matrix<T, n_coords, 1>;
+  using M = Eigen::Matrix<T, n_coords, n_coords>;
   T k, gamma;
 
   // F_i; zero where l = 0.
-  V2 force(const V2& d, const V2& w, const T& rest) const {
+  V force(const V& d, const V& w, const T& rest) const {
     // d.norm() written out: with Eigen's norm() the falling triangle's one-at-a-time runs took
     // 3 % more instructions (callgrind, study convergence with RK4)
     using std::sqrt;
     const T l = sqrt(d.squaredNorm());
-    const V2 n = d / l;
-    return select(l == 0.0, V2(V2::Zero()), V2(-(k * (l - rest) + gamma * n.dot(w)) * n));
+    const V n = d / l;
+    return select(l == 0.0, V(V::Zero()), V(-(k * (l - rest) + gamma * n.dot(w)) * n));
   }
 
   struct Blocks {
-    M2 dd, dv;  // dF_i/dd, dF_i/dv_i
+    M dd, dv;  // dF_i/dd, dF_i/dv_i
   };
-  Blocks blocks(const V2& d, const V2& w, const T& rest) const {
+  Blocks blocks(const V& d, const V& w, const T& rest) const {
     using std::sqrt;
     const T l = sqrt(d.squaredNorm());
-    const V2 n = d / l;
-    const M2 nn = n * n.transpose(), P = M2::Identity() - nn;
-    const M2 dd = -k * (nn + (l - rest) / l * P) - gamma / l * (n * w.transpose() * P + n.dot(w) * P), dv = -gamma * nn;
+    const V n = d / l;
+    const M nn = n * n.transpose(), P = M::Identity() - nn;
+    const M dd = -k * (nn + (l - rest) / l * P) - gamma / l * (n * w.transpose() * P + n.dot(w) * P), dv = -gamma * nn;
     const auto zero = l == 0.0;
-    return {select(zero, M2(M2::Zero()), dd), select(zero, M2(M2::Zero()), dv)};
+    return {select(zero, M(M::Zero()), dd), select(zero, M(M::Zero()), dv)};
   }
 
-  T energy(const V2& d, const T& rest) const {
+  T energy(const V& d, const T& rest) const {
     using std::sqrt;
     const T stretch = sqrt(d.squaredNorm()) - rest;
     return 0.5 * k * stretch * stretch;

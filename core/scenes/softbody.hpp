@@ -91,9 +91,7 @@ struct SoftBody {
         if (r + 1 < n && c + 1 < n) springs.push_back({at(r, c), at(r + 1, c + 1), std::sqrt(2.0) * h});
         if (r + 1 < n && c > 0) springs.push_back({at(r, c), at(r + 1, c - 1), std::sqrt(2.0) * h});
       }
-    std::vector<std::pair<int, int>> ends;
-    for (const Spring& s : springs) ends.push_back({s.i, s.j});
-    pattern = BlockPattern<2>(2 * masses, ends);
+    pattern = BlockPattern<2>(2 * masses, springs);
     for (int i = 0; i < masses; ++i) y_slots.push_back(pattern.slot(2 * i + 1, 2 * i + 1));
   }
 
@@ -123,11 +121,8 @@ struct SoftBody {
     return jac;
   }
   void jacobians(Eigen::Ref<const Eigen::VectorXd> x, Eigen::Ref<const Eigen::VectorXd> v, Jacobians<Eigen::Dynamic>& jac) const {
-    const SparseMat& shape = pattern.matrix;
-    if (jac.dx.nonZeros() != shape.nonZeros() || jac.dx.rows() != shape.rows()) jac = {shape, shape};
+    pattern.zero(jac);
     double *fx = jac.dx.valuePtr(), *fv = jac.dv.valuePtr();
-    std::fill(fx, fx + shape.nonZeros(), 0.0);
-    std::fill(fv, fv + shape.nonZeros(), 0.0);
     for (int i = 0; i < masses; ++i) {
       const double y = x[2 * i + 1];
       fx[y_slots[i]] = ground.dforce_dy(y), fv[y_slots[i]] = ground.dforce_dv(y);

@@ -277,7 +277,8 @@ ReportConfig report_config_from_json(const Json& user, const ReportConfig& base)
   c.scaling_t_end = measure.t_end;
   c.scaling_map_sizes.clear();
   if (!c.scaling.empty()) {  // within the first scene's size range
-    const ParamSpec& size = scene_kernel(c.scaling.front().scene).params[static_cast<std::size_t>(scene_kernel(c.scaling.front().scene).size_param)];
+    const SceneKernel& k = scene_kernel(c.scaling.front().scene);
+    const ParamSpec& size = k.params[static_cast<std::size_t>(k.size_param)];
     for (const Json& n : sc["map_sizes"])
       c.scaling_map_sizes.push_back(count(n, "scaling.map_sizes", static_cast<int>(size.min_count), static_cast<int>(size.max_count)));
   }
