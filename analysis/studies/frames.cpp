@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 
 #include "analysis/fits/fit.hpp"
 #include "analysis/kernel/shard.hpp"
@@ -22,10 +23,22 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr int kOrderSubsteps[] = {128, 256, 512, 1024};
 constexpr int kConvergedSweeps = 50;
 
+// A run has flown apart, and is unstable though its state is finite, where its error passes
+// kFlownApart times the span of the reference's motion (the widest, over the axes, of the box its
+// positions fill over every frame). A state with every mass inside that box has an error of at most
+// the span, so such a run has some mass ten spans outside the region the true motion fills: on a
+// pinned body, the springs along its path from the pin stretched many times their length. Its energy
+// would not say so: PBD on the default rope, bounded and within 0.65 m of the reference on a rope
+// 5 m long, ends with up to 5.5e4 times its start's energy (its stiff springs held a little
+// stretched), while Baraff-Witkin at one substep a frame sends a mass of the cloth of 32 a side
+// 275 m from where the reference has it, off a sheet 1 m wide.
+constexpr double kFlownApart = 10;
+
 struct Reference {
   std::vector<AnyState> frames;
   SpringMeasures measures;
   double agreement = kNaN;  // the RK4 reference against half its substeps (NaN: the exact motion)
+  double span = 0;          // the widest over the axes of the box its positions fill over the frames
 };
 
 long long frame_count(const FramesConfig& c) { return std::llround(c.t_end * c.fps); }
@@ -53,28 +66,45 @@ double largest_difference(const std::vector<AnyState>& a, const std::vector<AnyS
   return out;
 }
 
+// The widest, over the axes, of the box the positions of `frames` fill (d coordinates a mass).
+double spread(std::span<const AnyState> frames, int d) {
+  double out = 0;
+  for (int axis = 0; axis < d; ++axis) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (const AnyState& f : frames)
+      for (Eigen::Index i = axis; i < f.x.size(); i += d) lo = std::min(lo, f.x[i]), hi = std::max(hi, f.x[i]);
+    out = std::max(out, hi - lo);
+  }
+  return out;
+}
+
 std::vector<AnyState> frames_of(const AnyResult& r) {
   std::vector<AnyState> out;
   for (const auto& s : r.samples) out.push_back({s.x, s.v});
   return out;
 }
 
+// The reference's frames: the exact motion, or RK4 at `substeps` a frame.
+std::vector<AnyState> reference_frames(const FramesConfig& c, int substeps) {
+  const SceneKernel& sk = scene_kernel(c.scene);
+  std::vector<AnyState> out;
+  if (sk.exact) {
+    for (long long k = 0; k <= frame_count(c); ++k) out.push_back(sk.exact(c.params, static_cast<double>(k) / c.fps));
+    return out;
+  }
+  const std::size_t rk4 = *find_method("rk4");
+  return frames_of(pair_kernel(rk4, c.scene).run(c.params, frame_spec(c, {rk4, substeps, {}}, true)));
+}
+
 Reference reference(const FramesConfig& c) {
   const SceneKernel& sk = scene_kernel(c.scene);
   Reference ref;
-  if (sk.exact) {
-    for (long long k = 0; k <= frame_count(c); ++k) ref.frames.push_back(sk.exact(c.params, static_cast<double>(k) / c.fps));
-  } else {
-    // RK4 at reference_substeps a frame, and at half as many: where both are in RK4's asymptotic
-    // range the finer's error is about 1/15 of their difference, which bounds it from above.
-    const std::size_t rk4 = *find_method("rk4");
-    const auto run = [&](int substeps) {
-      return frames_of(pair_kernel(rk4, c.scene).run(c.params, frame_spec(c, {rk4, substeps, {}}, true)));
-    };
-    ref.frames = run(c.reference_substeps);
-    ref.agreement = largest_difference(run(c.reference_substeps / 2), ref.frames);
-  }
+  ref.frames = reference_frames(c, c.reference_substeps);
+  // RK4 at reference_substeps a frame, and at half as many: where both are in RK4's asymptotic
+  // range the finer's error is about 1/15 of their difference, which bounds it from above.
+  if (!sk.exact) ref.agreement = largest_difference(reference_frames(c, c.reference_substeps / 2), ref.frames);
   ref.measures = sk.spring_measures(c.params, ref.frames);
+  ref.span = spread(ref.frames, sk.coords_per_mass);
   return ref;
 }
 
@@ -88,7 +118,7 @@ FrameRun measure(const FramesConfig& c, const Reference& ref, const FrameSetup& 
   out.status = r.status;
   const std::vector<AnyState> frames = frames_of(r);
   out.error = r.status == RunStatus::Ok ? largest_difference(frames, ref.frames) : kNaN;
-  out.stable = std::isfinite(out.error);
+  out.stable = std::isfinite(out.error) && out.error <= kFlownApart * ref.span;
   const int springs = ref.measures.springs;
   const MethodInfo& info = method_info(s.method);
   if (takes_sweeps(info)) out.projections = out.counts.steps * s.settings.sweeps * springs;
@@ -160,12 +190,29 @@ std::vector<FrameSetup> frame_setups(const std::vector<std::size_t>& methods, in
 
 double frame_cost(const FrameRun& r) { return r.spring_visits; }
 
+std::vector<AnyState> frame_states(const FramesConfig& c, const FrameSetup* s) {
+  if (!s) return reference_frames(c, c.reference_substeps);
+  return frames_of(pair_kernel(s->method, c.scene).run(c.params, frame_spec(c, *s, true)));
+}
+
+FramesConfig cloth_frames_config() {
+  FramesConfig c = default_frames_config();
+  c.scene = scene_index(kClothFramesScene);
+  c.params = default_param_values(c.scene);
+  c.t_end = kClothFramesSeconds;
+  c.reference_substeps = kClothReferenceSubsteps;
+  c.orders = false;
+  return c;
+}
+
 FramesResult frames_study(const FramesConfig& config) {
   FramesResult out;
   out.config = config;
   const Reference ref = reference(config);
   out.springs = ref.measures.springs;
   out.reference_agreement = ref.agreement;
+  out.span = ref.span;
+  out.extent = spread(std::span(ref.frames).first(1), scene_kernel(config.scene).coords_per_mass);
   for (const AnyState& f : ref.frames) out.motion = std::max(out.motion, (f.x - ref.frames.front().x).cwiseAbs().maxCoeff());
   const std::vector<FrameSetup> setups = frame_setups(config.methods, config.budget);
   // Through study_map, one task a set-up and one an order's run: a shard (analysis/kernel/shard.hpp)

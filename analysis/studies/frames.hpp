@@ -10,7 +10,8 @@
 //   stretch   over the frames, the largest relative elongation C / L of a spring less the
 //             reference's at that frame (how much more the material gives than it should)
 //   energy    lost per second against the reference: (E_ref(T) - E(T)) / T (numerical damping)
-//   stable    the run ended with a finite state (RunStatus Ok)
+//   stable    the run ended with a finite state (RunStatus Ok) and has not flown apart: its error
+//             is at most 10 times the span of the reference's motion (frames.cpp, kFlownApart)
 //   cost      seconds a frame (the median of repeated runs, as every study times) and the work
 //             counted: steps, force evaluations, constraint projections (steps x sweeps x springs),
 //             CG iterations; and `spring visits` a frame, the work in one machine-independent unit:
@@ -81,10 +82,14 @@ struct FamilyFront {
 // `reference_agreement`: on a scene without exact motion, the largest difference over the frames
 // and coordinates between the reference and RK4 at half its substeps (m; NaN with the exact motion,
 // or where the coarser run blew up): how far the errors below it can be trusted.
+// `span`: the widest, over the axes, of the box the reference's positions fill over the frames (m);
+// a run whose error passes 10 times it has flown apart (unstable, FrameRun::stable).
 struct FramesResult {
   FramesConfig config;
   int springs = 0;
   double motion = 0;
+  double span = 0;
+  double extent = 0;  // the body's size at rest: the widest over the axes of its start's box (m)
   double reference_agreement = 0;
   std::vector<FrameRun> runs;
   std::vector<FamilyFront> fronts;
@@ -98,6 +103,13 @@ FramesConfig default_frames_config();
 // (XPBD, PBD), or of at most budget / s CG iterations (Baraff-Witkin); an ODE method at s substeps.
 std::vector<FrameSetup> frame_setups(const std::vector<std::size_t>& methods, int budget);
 FramesResult frames_study(const FramesConfig& config);
+// The report's cloth at a frame budget: the cloth of its defaults (16 a side) for
+// kClothFramesSeconds (analysis/studies/defaults.hpp), the default methods, no order rows (at
+// 128 to 1024 substeps a frame with 50 sweeps, they would cost 10^4 times the budget's runs).
+FramesConfig cloth_frames_config();
+// The positions and velocities at each frame of set-up s's run, or of the reference (s null): for
+// a picture of the motion.
+std::vector<AnyState> frame_states(const FramesConfig& c, const FrameSetup* s);
 
 // The cost the fronts and the cheapest set-ups are drawn against: the spring visits a frame, a
 // stated operation count of every kind of work (a projection visits one spring; a force

@@ -1,6 +1,6 @@
 // `steplab study frames`: a mass-spring scene at a frame rate, each method at substeps x sweeps
 // (or CG iterations) = a budget, its error, stretch, energy lost and cost a frame, and each
-// family's front (analysis/studies/frames.hpp). Table on stdout, JSON (steplab.frames/3) with
+// family's front (analysis/studies/frames.hpp). Table on stdout, JSON (steplab.frames/4) with
 // --json. And the method settings (--sweeps, --cg-iterations, --cg-tolerance) `run` takes.
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-// The frame-budget study's writers (analysis/studies/frames.hpp): its JSON (steplab.frames/3)
+// The frame-budget study's writers (analysis/studies/frames.hpp): its JSON (steplab.frames/4)
 // and its table.
 #include <cmath>
 #include <string>
@@ -51,7 +51,7 @@ Json frames_json(const FramesResult& r) {
   j["scene"] = scene_name(c.scene);
   j["params"] = scene_params_json(c.scene, c.params);
   j["fps"] = c.fps, j["t_end"] = c.t_end, j["budget"] = c.budget, j["timing"] = c.timing;
-  j["springs"] = r.springs, j["motion"] = r.motion;
+  j["springs"] = r.springs, j["motion"] = r.motion, j["span"] = r.span, j["extent"] = r.extent;
   j["reference"] = scene_kernel(c.scene).exact ? Json("exact") : Json(fmt::format("rk4 at {} substeps a frame", c.reference_substeps));
   j["reference_agreement"] = finite_or_null(r.reference_agreement);  // NaN with the exact motion
   Json runs = Json::array();

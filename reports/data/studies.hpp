@@ -158,7 +158,7 @@ std::string counts_text(const Counts& n);
 
 namespace steplab {
 namespace schema {
-inline constexpr std::string_view frames = "steplab.frames/3";  // study frames
+inline constexpr std::string_view frames = "steplab.frames/4";  // study frames
 }  // namespace schema
 Json frames_json(const FramesResult& r);  // reports/data/frames_output.cpp
 std::string frames_table(const FramesResult& r);

@@ -150,7 +150,7 @@ std::vector<std::size_t> ReportConfig::own_scenes() const {
   for (const ReportScene* s : scenes()) out.push_back(s->scene);
   out.push_back(stiffened.scene);
   for (const ReportSizes& s : scaling) out.push_back(s.scene);
-  for (std::string_view n : {kLongTimeScene, kLongTimeSheetScene})  // the long-time study's (its section's own runs)
+  for (std::string_view n : {kLongTimeScene, kLongTimeSheetScene, kClothFramesScene})  // the long-time and cloth sections' own runs
     if (const auto s = find_scene(n)) out.push_back(*s);
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());

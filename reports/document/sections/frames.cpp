@@ -1,8 +1,9 @@
 // At a frame budget: "substeps or sweeps, XPBD or large steps, at what cost a frame?" The
-// frame-budget study (analysis/studies/frames.hpp) on its rope, every method on springs at each
-// split of the budget and the ODE methods at the same substeps; the position-based family's
-// answer to the sheet's "is stability correlated with the order?". Every sentence is computed
-// from the study's runs.
+// frame-budget study (analysis/studies/frames.hpp) on its rope (section `frames`) and on the cloth
+// (section `cloth`, analysis/studies/defaults.hpp), every method on springs at each split of the
+// budget and the ODE methods at the same substeps; the position-based family's answer to the
+// sheet's "is stability correlated with the order?". On the cloth also the cheapest set-up within
+// 1 % of its size and a picture of it at three frames. Every sentence is computed from the runs.
 #include <algorithm>
 #include <cmath>
 
@@ -15,22 +16,28 @@
 #include "reports/document/claims.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"
+#include "reports/document/sections/cloth.hpp"
 
 namespace steplab {
 namespace {
 
 std::string g3(double x) { return std::isfinite(x) ? fmt::format("{:.3g}", x) : "-"; }
-constexpr const char* kFramesDocument = "frames/frames.json";
 
 class Frames : public Section {
  public:
-  std::string title() const override { return "At a frame budget: substeps or sweeps, XPBD or large steps"; }
-  std::string missing(const ReportConfig& c) const override { return uncovered(c, {scene_index(kFramesScene)}); }
+  explicit Frames(bool cloth) : cloth_(cloth) {}
+  std::string title() const override {
+    return cloth_ ? "At a frame budget on cloth: where the springs turn" : "At a frame budget: substeps or sweeps, XPBD or large steps";
+  }
+  std::string missing(const ReportConfig& c) const override { return uncovered(c, {config().scene}); }
   void study(const ReportData& d) override {
-    FramesConfig c = default_frames_config();
-    c.timing = d.config.timing;
+    FramesConfig c = config();
+    // The cloth's set-ups untimed: no verdict rests on time (the fronts and the cheapest set-ups
+    // are drawn against spring visits), and timing its 48 would add 27 s to the report.
+    c.timing = d.config.timing && !cloth_;
     c.workers = d.workers;
     r_ = frames_study(c);
+    if (cloth_) picture_ = cloth_picture(r_);
   }
 
   void write_data(const ReportData&, const DataDir& dat) const override {
@@ -43,6 +50,7 @@ class Frames : public Section {
                            num(run.error), num(run.stretch), num(run.energy_lost));
       dat.write(fmt::format("frames_{}.dat", name(m)), s);
     }
+    write_picture(picture_, dat);
   }
 
   std::vector<FigureSpec> figures(const ReportData&) const override {
@@ -52,8 +60,10 @@ class Frames : public Section {
         drawn.push_back(name(m));
     if (drawn.empty()) return {};
     const bool timed = r_.config.timing;
-    return {{"frames", fmt::format("xcol={}; xname='{}'", timed ? 3 : 4, timed ? "time a frame (s)" : "spring visits a frame"),
-             {{"error against cost a frame", drawn}}}};
+    std::vector<FigureSpec> out{{"frames", fmt::format("xcol={}; xname='{}'", timed ? 3 : 4, timed ? "time a frame (s)" : "spring visits a frame"),
+                                 {{"error against cost a frame", drawn}}, figure_name()}};
+    if (!picture_.drawn.empty()) out.push_back(picture_figure(picture_, r_));
+    return out;
   }
 
   std::string markdown(Page& page) const override {
@@ -68,7 +78,7 @@ class Frames : public Section {
         "at the same frame.\n\n",
         scene_name(c.scene), r_.springs, params_text(c.scene, c.params), c.fps, c.t_end, c.budget, c.budget, c.budget,
         scene_kernel(c.scene).exact ? "exact motion" : "reference", g3(r_.motion));
-    if (page.ledger) page.ledger->document(kFramesDocument, [&] { return frames_json(r_); });
+    if (page.ledger) page.ledger->document(doc(), [&] { return frames_json(r_); });
     md += splits("xpbd", page.ledger) + splits("pbd", page.ledger);
     md += large_steps();
     md += stability(page.ledger);
@@ -79,21 +89,27 @@ class Frames : public Section {
     const std::string least = best ? fmt::format("The least error, {}, is `{}`'s at {} substeps a frame.", printed(best->error, kError),
                                                  name(best->setup.method), best->setup.substeps)
                                    : std::string("No split is stable.");
-    md += page.figure("frames", fmt::format("Error against cost a frame ({}), {} at {} frames a second: each method's splits of "
+    md += page.figure(figure_key(), fmt::format("Error against cost a frame ({}), {} at {} frames a second: each method's splits of "
                                             "the budget {}, the stable ones. {}",
                                             c.timing ? "time" : "spring visits", scene_name(c.scene), c.fps, c.budget, least));
     if (page.ledger && best) {  // over the stable splits
       const Kept errors = kept_evidence(r_.runs, stable, best, nullptr, [&](const FrameRun&, std::size_t i) {
-        return page.ledger->at(kFramesDocument, fmt::format("/runs/{}/error_max", i));
+        return page.ledger->at(doc(), fmt::format("/runs/{}/error_max", i));
       });
-      claim_extreme(*page.ledger, claim_text("frames.least_error", "frames", least), errors.values, errors.least, Extreme::Least, kError);
+      claim_extreme(*page.ledger, claim_text(id + ".least_error", id, least), errors.values, errors.least, Extreme::Least, kError);
     }
+    if (!picture_.drawn.empty()) md += picture_markdown(page, picture_, r_, id, doc());
     md += family_answer();
     return md;
   }
 
   std::string brief(Page& page) const override {
-    const std::string answer = as_accurate(page.ledger);
+    const std::string answer = as_accurate(page.ledger) + (cloth_ ? visual_target(page.ledger, {r_, id, doc()}) : std::string());
+    if (cloth_)
+      return brief_markdown(title(), fmt::format("On the {} of {} springs, falling from flat and swinging for {} s, at {} frames a second "
+                                                 "and the same budget of {} sweeps a frame. {}{}",
+                                                 scene_name(r_.config.scene), r_.springs, r_.config.t_end, r_.config.fps,
+                                                 r_.config.budget, answer, implicit_euler_one_substep()));
     return brief_markdown(title(), fmt::format("At {} frames a second on the {} of {} springs, with a budget of {} sweeps a frame (a "
                                                "sweep projects every spring once; XPBD and PBD split the budget between substeps and "
                                                "sweeps a substep, the ODE methods spend it on substeps). {}",
@@ -101,7 +117,14 @@ class Frames : public Section {
   }
 
  private:
+  bool cloth_;
   FramesResult r_;
+  ClothPicture picture_;
+
+  FramesConfig config() const { return cloth_ ? cloth_frames_config() : default_frames_config(); }
+  std::string doc() const { return id + "/frames.json"; }
+  std::string figure_name() const { return cloth_ ? id + "_frames" : std::string(); }
+  std::string figure_key() const { return cloth_ ? id + "_frames" : std::string("frames"); }
 
   // The fitted order with the slopes between neighbouring substeps, log2(e_k / e_k+1): "0.35, 1.25,
   // 1.31" fits 1.00 but has not reached it (slopes that differ by more than kSettled: the next
@@ -149,13 +172,13 @@ class Frames : public Section {
         g3(many.stretch), many.setup.substeps, ratio > 1 ? "more accurate" : "less accurate", ratio > 1 ? ratio : 1 / ratio,
         falls ? ", and the error falls at every split in between" : "; the error does not fall at every split");
     if (l && falls) {  // the error along the splits, by substeps: each one below the last (no two the same)
-      Claim c = claim_text(fmt::format("frames.splits.{}", n), "frames", md);
+      Claim c = claim_text(fmt::format("{}.splits.{}", id, n), id, md);
       c.kind = "trend";
       Json along = Json::array();
       for (std::size_t i = 0; i < r_.runs.size(); ++i)  // runs_of's runs, in its order, by their index in frames.json
         if (r_.runs[i].setup.method == runs.front().setup.method) {
           along.push_back(frame_setup_text(r_.runs[i].setup));
-          c.evidence.push_back(l->at(kFramesDocument, fmt::format("/runs/{}/error_max", i)));
+          c.evidence.push_back(l->at(doc(), fmt::format("/runs/{}/error_max", i)));
         }
       c.rule = {{"along", std::move(along)}, {"relative", 0}, {"trend", "falls"}};
       l->add(std::move(c));
@@ -163,9 +186,23 @@ class Frames : public Section {
     return md;
   }
 
+  // Where implicit Euler at one substep a frame is not stable: what it does there, and from how
+  // many substeps it is stable ("" where it is stable at one).
+  std::string implicit_euler_one_substep() const {
+    const std::vector<FrameRun> ie = runs_of("implicit_euler");
+    if (ie.empty() || ie.front().stable) return {};
+    const auto from = std::find_if(ie.begin(), ie.end(), [](const FrameRun& x) { return x.stable; });
+    return fmt::format("Implicit Euler at one substep a frame {}{}.",
+                       ie.front().status == RunStatus::NoConvergence ? "does not converge (its Newton iteration gives up)" : "is unstable",
+                       from == ie.end() ? std::string(", nor at any split") : fmt::format(", and is stable from {}", frame_setup_text(from->setup)));
+  }
+
   std::string large_steps() const {
     const std::vector<FrameRun> bw = runs_of("baraff_witkin"), ie = runs_of("implicit_euler");
-    if (bw.empty() || ie.empty() || !bw.front().stable || !ie.front().stable) return {};
+    if (bw.empty() || ie.empty() || !bw.front().stable) return {};
+    if (!ie.front().stable)
+      return fmt::format("- `baraff_witkin` (one Newton step of implicit Euler, solved by CG): {} has error {}. {}\n\n",
+                         frame_setup_text(bw.front().setup), g3(bw.front().error), implicit_euler_one_substep());
     return fmt::format("- `baraff_witkin` (one Newton step of implicit Euler, solved by CG): {} has error {}, implicit Euler's "
                        "step at one substep (factorised) {}; with fewer CG iterations on more substeps ({}) the error is {}.\n\n",
                        frame_setup_text(bw.front().setup), g3(bw.front().error), g3(ie.front().error),
@@ -194,9 +231,9 @@ class Frames : public Section {
     if (l) {  // which methods have a stable run and which an unstable one: every, some and none between them
       std::vector<std::string> with_stable = method_names(every), with_unstable = method_names(none);
       for (std::size_t m : some) with_stable.push_back(name(m)), with_unstable.push_back(name(m));
-      claim_members(*l, claim_text("frames.stable_runs", "frames", md), kFramesDocument, "/runs", Json::object(), "method", true,
+      claim_members(*l, claim_text(id + ".stable_runs", id, md), doc(), "/runs", Json::object(), "method", true,
                     test_field("/stable", "==", true), with_stable);
-      claim_members(*l, claim_text("frames.unstable_runs", "frames", md), kFramesDocument, "/runs", Json::object(), "method", true,
+      claim_members(*l, claim_text(id + ".unstable_runs", id, md), doc(), "/runs", Json::object(), "method", true,
                     test_field("/stable", "==", false), with_unstable);
     }
     return md + "\n\n";
@@ -204,22 +241,9 @@ class Frames : public Section {
 
   // "runs[i] is the least of `among` by `field`" (others ascending; tied where the next is equal).
   void least(Ledger* l, std::string claim_id, std::string sentence, std::size_t i, std::vector<std::size_t> among, const char* field) const {
-    if (!l) return;
-    const auto value = [&](std::size_t k) { return field == std::string("error_max") ? r_.runs[k].error : frame_cost(r_.runs[k]); };
-    std::erase(among, i);
-    std::stable_sort(among.begin(), among.end(), [&](std::size_t a, std::size_t b) { return value(a) < value(b); });
-    const auto at = [&](std::size_t k) { return l->at(kFramesDocument, fmt::format("/runs/{}/{}", k, field)); };
-    std::vector<Evidence> others;
-    for (std::size_t k : among) others.push_back(at(k));
-    const bool tie = !among.empty() && value(among.front()) == value(i);
-    claim_group(*l, claim_text(std::move(claim_id), "frames", std::move(sentence)),
-                comparison_group(at(i), std::move(others), tie ? "tie" : "less", 1.0));
+    if (l) claim_least_run(*l, {r_, id, doc()}, std::move(claim_id), std::move(sentence), i, std::move(among), field);
   }
-
-  std::string cost(const FrameRun& x) const {
-    return r_.config.timing ? fmt::format("{:.4g} spring visits a frame ({:.3g} µs)", x.spring_visits, 1e6 * x.seconds)
-                            : fmt::format("{:.4g} spring visits a frame", x.spring_visits);
-  }
+  std::string cost(const FrameRun& x) const { return frame_cost_text(r_, x); }
 
   // The cheapest set-up of all that reaches the error of the most accurate position-based one,
   // claimed; "" where none does.
@@ -232,8 +256,8 @@ class Frames : public Section {
       if (const FrameRun& x = r_.runs[i]; x.stable && method_info(x.setup.method).family == Family::PositionBased && x.error < target)
         target = x.error, at_target = i;
     const auto at = [&](const std::string& pointer) {
-      l->document(kFramesDocument, [&] { return frames_json(r_); });
-      return l->at(kFramesDocument, pointer);
+      l->document(doc(), [&] { return frames_json(r_); });
+      return l->at(doc(), pointer);
     };
     if (std::isfinite(target) && target >= r_.motion) {
       const std::string sentence = fmt::format(
@@ -241,7 +265,7 @@ class Frames : public Section {
           "rest meets it: no set-up is the cheapest to reach it.",
           g3(target), scene_name(r_.config.scene), g3(r_.motion), scene_name(r_.config.scene));
       if (l)
-        claim_group(*l, claim_text("frames.as_accurate.at_rest", "frames", sentence),
+        claim_group(*l, claim_text(id + ".as_accurate.at_rest", id, sentence),
                     comparison_group(at("/motion"), {at(fmt::format("/runs/{}/error_max", at_target))},
                                      target == r_.motion ? "tie" : "less", 1.0));
       return sentence + "\n\n";
@@ -258,9 +282,9 @@ class Frames : public Section {
     const std::string sentence = fmt::format("The cheapest set-up as accurate as the best position-based one (error {}): `{}` {}, {}.",
                                              g3(target), name(b.setup.method), frame_setup_text(b.setup), cost(b));
     if (l)  // the error it reaches is below the motion
-      claim_group(*l, claim_text("frames.as_accurate.moves", "frames", sentence),
+      claim_group(*l, claim_text(id + ".as_accurate.moves", id, sentence),
                   comparison_group(at(fmt::format("/runs/{}/error_max", at_target)), {at("/motion")}, "less", 1.0));
-    least(l, "frames.as_accurate", sentence, *best, reach, "spring_visits_per_frame");
+    least(l, id + ".as_accurate", sentence, *best, reach, "spring_visits_per_frame");
     return sentence + "\n\n";
   }
 
@@ -280,15 +304,14 @@ class Frames : public Section {
       const std::string row = fmt::format("| {} | `{}` {}, {} | {} | `{}` {}, {} | {} |\n", to_string(f.family), name(lo.setup.method),
                                           frame_setup_text(lo.setup), cost(lo), g3(lo.error), name(hi.setup.method),
                                           frame_setup_text(hi.setup), cost(hi), g3(hi.error));
-      least(l, fmt::format("frames.cheapest.{}", id_word(to_string(f.family))), row, f.runs.front(), stable_of(f.family),
+      least(l, fmt::format("{}.cheapest.{}", id, id_word(to_string(f.family))), row, f.runs.front(), stable_of(f.family),
             "spring_visits_per_frame");
-      least(l, fmt::format("frames.most_accurate.{}", id_word(to_string(f.family))), row, f.runs.back(), stable_of(f.family), "error_max");
+      least(l, fmt::format("{}.most_accurate.{}", id, id_word(to_string(f.family))), row, f.runs.back(), stable_of(f.family), "error_max");
       md += row;
     }
-    md += "\n" + as_accurate(l);
+    md += "\n" + as_accurate(l) + (cloth_ ? visual_target(l, {r_, id, doc()}) : std::string());
     md += "The cost is the spring visits a frame, the same on every machine: a projection visits one spring; a force evaluation, "
-          "a Jacobian, a factorisation, a linear solve or a CG product all of them (each a pass over the rope's tridiagonal "
-          "system). A set-up is on its family's front where none of the family with as many visits or fewer has a smaller error; "
+          "a Jacobian, a factorisation, a linear solve or a CG product all of them (each a pass over the springs). A set-up is on its family's front where none of the family with as many visits or fewer has a smaller error; "
           "of set-ups with the same visits (every split of the budget of XPBD or PBD) the most accurate stands for them."
           + std::string(r_.config.timing ? " The time a frame stands beside it: a verdict on it would change with the machine's load.\n\n"
                                          : "\n\n");
@@ -298,12 +321,14 @@ class Frames : public Section {
   // The position-based family (and the large steps) in the families' terms: order in h, stable at
   // every step tried, energy; and the sheet's question for them.
   std::string family_answer() const {
-    std::string md = "\nThe methods on springs in the families' terms, on this rope with their settings fixed (order: the slope "
+    const std::string scene(scene_name(r_.config.scene));
+    std::string md = r_.orders.empty() ? std::string() : fmt::format(
+                     "\nThe methods on springs in the families' terms, on this {} with their settings fixed (order: the slope "
                      "of the error against h with the substeps doubled from 128 to 1024 a frame, and the slopes between "
                      "neighbours; pre-asymptotic where those differ by more than 0.2, the order not yet reached; stable: at "
                      "every split tried; energy: lost per second against the reference by the budget's split with the same "
                      "settings, negative where it gained):\n\n"
-                     "| method | settings | order in h (slopes) | stable at every split | energy lost per second |\n|---|---|---|---|---|\n";
+                     "| method | settings | order in h (slopes) | stable at every split | energy lost per second |\n|---|---|---|---|---|\n", scene);
     for (const FrameOrder& o : r_.orders) {
       const std::vector<FrameRun> runs = runs_of(o.setup.method);
       const bool every = std::all_of(runs.begin(), runs.end(), [](const FrameRun& x) { return x.stable; });
@@ -329,10 +354,10 @@ class Frames : public Section {
     if (!stable.empty() && !unstable.empty() && stable_solve && unstable_explicit)
       md += fmt::format(" Every stable one solves for its springs at the step's end (a constraint projection or a linear system) "
                         "and every unstable one evaluates them at known states; {}.",
-                        unstable_top > stable_top ? fmt::format("the unstable side has the higher orders. On this rope the "
+                        unstable_top > stable_top ? fmt::format("the unstable side has the higher orders. On this {} the "
                                                                 "solve separates them and the order does not; with {} explicit "
-                                                                "method{} on the unstable side, that is this rope's answer, "
-                                                                "not a rule", unstable.size(), unstable.size() == 1 ? "" : "s")
+                                                                "method{} on the unstable side, that is this {}'s answer, "
+                                                                "not a rule", scene, unstable.size(), unstable.size() == 1 ? "" : "s", scene)
                                                   : std::string("the order does not separate them either way"));
     return md + "\n\n";
   }
@@ -340,6 +365,7 @@ class Frames : public Section {
 
 }  // namespace
 
-std::unique_ptr<Section> make_frames_section() { return std::make_unique<Frames>(); }
+std::unique_ptr<Section> make_frames_section() { return std::make_unique<Frames>(false); }
+std::unique_ptr<Section> make_cloth_section() { return std::make_unique<Frames>(true); }
 
 }  // namespace steplab

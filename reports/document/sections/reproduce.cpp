@@ -10,6 +10,7 @@
 #include "analysis/kernel/kernel.hpp"
 #include "reports/document/report_text.hpp"
 #include "analysis/studies/defaults.hpp"
+#include "analysis/studies/frames.hpp"
 #include "analysis/studies/dense_output.hpp"
 #include "analysis/studies/long_time.hpp"
 #include "reports/document/section.hpp"
@@ -125,6 +126,11 @@ class Reproduce : public Section {
                                 on_scene(dense_output_methods(spring, d.numerical_methods()))));
     if (c.has_section("frames") && c.covers(scene_index(kFramesScene)))
       md += wrapped(fmt::format("build/steplab study frames{}", c.timing ? "" : " --no-timing"));  // its defaults: analysis/studies/defaults.hpp
+    if (c.has_section("cloth") && c.covers(scene_index(kClothFramesScene))) {
+      const FramesConfig f = cloth_frames_config();
+      md += wrapped(fmt::format("build/steplab study frames --scene {} --t-end {:g} --reference-substeps {} --no-orders --no-timing",
+                                kClothFramesScene, f.t_end, f.reference_substeps));  // the report's cloth: untimed (frames.cpp)
+    }
     md += "```\n\n";
     md += "(The scene parameters above as `--mass`, `--stiffness`, ... where not the defaults; every study's data: `data/`.)\n\n";
     return md;

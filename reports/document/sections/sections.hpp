@@ -25,6 +25,7 @@
   X(collision, true, Whole)              \
   X(scaling, true, Brief)                \
   X(frames, true, Brief)                 \
+  X(cloth, true, Brief)                  \
   X(long_time, true, Brief)              \
   X(advice, true, Atlas)                 \
   X(physics, true, Atlas)                \
