@@ -105,7 +105,7 @@ std::vector<FrameSetup> frame_setups(const std::vector<std::size_t>& methods, in
 FramesResult frames_study(const FramesConfig& config);
 // The report's cloth at a frame budget: the cloth of its defaults (16 a side) for
 // kClothFramesSeconds (analysis/studies/defaults.hpp), the default methods, no order rows (at
-// 128 to 1024 substeps a frame with 50 sweeps, they would cost 10^4 times the budget's runs).
+// 128 to 1024 substeps a frame with 50 sweeps, they would cost thousands of times the budget's runs).
 FramesConfig cloth_frames_config();
 // The positions and velocities at each frame of set-up s's run, or of the reference (s null): for
 // a picture of the motion.

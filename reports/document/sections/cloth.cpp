@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -66,6 +68,49 @@ std::string visual_target(Ledger* l, const FramesCited& c) {
     claim_least_run(*l, c, id + ".visual", above.sentence, *best, reach, "spring_visits_per_frame");
   }
   return above.sentence + "\n\n";
+}
+
+FramesResult rope_xpbd_study(const FramesConfig& cloth, const Workers& w) {
+  FramesConfig c = default_frames_config();
+  c.fps = cloth.fps, c.budget = cloth.budget;
+  c.methods = {*find_method("xpbd")};
+  c.timing = c.orders = false;
+  c.workers = w;
+  return frames_study(c);
+}
+
+std::string xpbd_contrast(Ledger* l, const FramesCited& cloth, const FramesResult& rope, const std::string& rope_document) {
+  // XPBD's two ends in a study: its runs at one substep and at `budget`, by index
+  const auto ends = [](const FramesResult& r) -> std::optional<std::pair<std::size_t, std::size_t>> {
+    std::optional<std::size_t> one, many;
+    for (std::size_t i = 0; i < r.runs.size(); ++i)
+      if (method_info(r.runs[i].setup.method).name == "xpbd" && r.runs[i].stable) {
+        if (r.runs[i].setup.substeps == 1) one = i;
+        if (r.runs[i].setup.substeps == r.config.budget) many = i;
+      }
+    if (!one || !many) return std::nullopt;
+    return std::pair{*one, *many};
+  };
+  const auto here = ends(cloth.r), there = ends(rope);
+  if (!here || !there) return {};
+  const double a = cloth.r.runs[here->first].error / cloth.r.runs[here->second].error;
+  const double b = rope.runs[there->first].error / rope.runs[there->second].error;
+  const std::string sentence = fmt::format(
+      "XPBD gains {} from substeps here than on the {}: {} x 1 sweep is {:.3g} times as accurate as 1 x {} sweeps on the {}, "
+      "{:.3g} times on the {} of {} springs at the same budget (the section before).",
+      a < b ? "less" : "more", scene_name(rope.config.scene), cloth.r.config.budget, a, cloth.r.config.budget,
+      scene_name(cloth.r.config.scene), b, scene_name(rope.config.scene), rope.springs);
+  if (l) {
+    l->document(rope_document, [&] { return frames_json(rope); });
+    const auto ratio = [&](const std::string& doc, std::pair<std::size_t, std::size_t> e) {
+      return Ratio{{l->at(doc, fmt::format("/runs/{}/error_max", e.first))}, {l->at(doc, fmt::format("/runs/{}/error_max", e.second))}};
+    };
+    claim_ratio(*l, claim_text(cloth.section + ".xpbd_contrast.here", cloth.section, sentence), ratio(cloth.document, *here), a,
+                Digits{true, 3});
+    claim_ratio(*l, claim_text(cloth.section + ".xpbd_contrast.rope", cloth.section, sentence), ratio(rope_document, *there), b,
+                Digits{true, 3});
+  }
+  return sentence;
 }
 
 ClothPicture cloth_picture(const FramesResult& r) {

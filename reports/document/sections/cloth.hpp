@@ -36,6 +36,14 @@ std::string frame_cost_text(const FramesResult& r, const FrameRun& x);
 inline constexpr double kVisualTarget = 0.01;
 std::string visual_target(Ledger* l, const FramesCited& c);
 
+// The rope's XPBD at every split of the same budget (the frame study's default rope, XPBD
+// alone, untimed, no order rows): what the cloth's "substeps or sweeps" is set against.
+FramesResult rope_xpbd_study(const FramesConfig& cloth, const Workers& w);
+// "XPBD at budget x 1 is X times as accurate as at 1 x budget here, Y times on the rope": each
+// ratio claimed from its document (the cloth's, and `rope_document`, the rope's written beside it);
+// "" where either end is unstable.
+std::string xpbd_contrast(Ledger* l, const FramesCited& cloth, const FramesResult& rope, const std::string& rope_document);
+
 struct ClothPicture {
   std::vector<long long> frames;   // the frames drawn: a third, two thirds and all of the run
   std::vector<std::size_t> runs;   // indices into FramesResult::runs, drawn beside the reference

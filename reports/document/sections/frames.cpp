@@ -37,7 +37,7 @@ class Frames : public Section {
     c.timing = d.config.timing && !cloth_;
     c.workers = d.workers;
     r_ = frames_study(c);
-    if (cloth_) picture_ = cloth_picture(r_);
+    if (cloth_) picture_ = cloth_picture(r_), rope_ = rope_xpbd_study(c, d.workers);
   }
 
   void write_data(const ReportData&, const DataDir& dat) const override {
@@ -51,6 +51,7 @@ class Frames : public Section {
       dat.write(fmt::format("frames_{}.dat", name(m)), s);
     }
     write_picture(picture_, dat);
+    if (cloth_) dat.write("rope_xpbd.json", frames_json(rope_).dump(1) + "\n");
   }
 
   std::vector<FigureSpec> figures(const ReportData&) const override {
@@ -79,7 +80,10 @@ class Frames : public Section {
         scene_name(c.scene), r_.springs, params_text(c.scene, c.params), c.fps, c.t_end, c.budget, c.budget, c.budget,
         scene_kernel(c.scene).exact ? "exact motion" : "reference", g3(r_.motion));
     if (page.ledger) page.ledger->document(doc(), [&] { return frames_json(r_); });
-    md += splits("xpbd", page.ledger) + splits("pbd", page.ledger);
+    md += splits("xpbd", page.ledger);
+    if (const std::string contrast = cloth_ ? xpbd_contrast(page.ledger, {r_, id, doc()}, rope_, rope_doc()) : ""; !contrast.empty())
+      md += "  " + contrast + "\n";  // the xpbd item's second sentence
+    md += splits("pbd", page.ledger);
     md += large_steps();
     md += stability(page.ledger);
     md += fronts(page.ledger);
@@ -109,7 +113,9 @@ class Frames : public Section {
       return brief_markdown(title(), fmt::format("On the {} of {} springs, falling from flat and swinging for {} s, at {} frames a second "
                                                  "and the same budget of {} sweeps a frame. {}{}",
                                                  scene_name(r_.config.scene), r_.springs, r_.config.t_end, r_.config.fps,
-                                                 r_.config.budget, answer, implicit_euler_one_substep()));
+                                                 r_.config.budget, answer,
+                                                 xpbd_contrast(page.ledger, {r_, id, doc()}, rope_, rope_doc()) + " " +
+                                                     implicit_euler_one_substep()));
     return brief_markdown(title(), fmt::format("At {} frames a second on the {} of {} springs, with a budget of {} sweeps a frame (a "
                                                "sweep projects every spring once; XPBD and PBD split the budget between substeps and "
                                                "sweeps a substep, the ODE methods spend it on substeps). {}",
@@ -120,9 +126,11 @@ class Frames : public Section {
   bool cloth_;
   FramesResult r_;
   ClothPicture picture_;
+  FramesResult rope_;  // the cloth's: XPBD on the rope at the same budget (rope_xpbd_study)
 
   FramesConfig config() const { return cloth_ ? cloth_frames_config() : default_frames_config(); }
   std::string doc() const { return id + "/frames.json"; }
+  std::string rope_doc() const { return id + "/rope_xpbd.json"; }
   std::string figure_name() const { return cloth_ ? id + "_frames" : std::string(); }
   std::string figure_key() const { return cloth_ ? id + "_frames" : std::string("frames"); }
 
