@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <span>
+#include <utility>
 
 #include "analysis/fits/fit.hpp"
 #include "analysis/kernel/shard.hpp"
@@ -190,9 +191,8 @@ std::vector<FrameSetup> frame_setups(const std::vector<std::size_t>& methods, in
 
 double frame_cost(const FrameRun& r) { return r.spring_visits; }
 
-std::vector<AnyState> frame_states(const FramesConfig& c, const FrameSetup* s) {
-  if (!s) return reference_frames(c, c.reference_substeps);
-  return frames_of(pair_kernel(s->method, c.scene).run(c.params, frame_spec(c, *s, true)));
+std::vector<AnyState> frame_states(const FramesConfig& c, const FrameSetup& s) {
+  return frames_of(pair_kernel(s.method, c.scene).run(c.params, frame_spec(c, s, true)));
 }
 
 FramesConfig cloth_frames_config() {
@@ -208,7 +208,7 @@ FramesConfig cloth_frames_config() {
 FramesResult frames_study(const FramesConfig& config) {
   FramesResult out;
   out.config = config;
-  const Reference ref = reference(config);
+  Reference ref = reference(config);
   out.springs = ref.measures.springs;
   out.reference_agreement = ref.agreement;
   out.span = ref.span;
@@ -260,6 +260,7 @@ FramesResult frames_study(const FramesConfig& config) {
       if (lh.size() >= 2) o.order = fit_line(lh, le).slope;
     }
   }
+  out.reference = std::move(ref.frames);
   return out;
 }
 

@@ -91,6 +91,7 @@ struct FramesResult {
   double span = 0;
   double extent = 0;  // the body's size at rest: the widest over the axes of its start's box (m)
   double reference_agreement = 0;
+  std::vector<AnyState> reference;  // its frames (the exact motion's, or RK4's)
   std::vector<FrameRun> runs;
   std::vector<FamilyFront> fronts;
   std::vector<FrameOrder> orders;
@@ -107,9 +108,9 @@ FramesResult frames_study(const FramesConfig& config);
 // kClothFramesSeconds (analysis/studies/defaults.hpp), the default methods, no order rows (at
 // 128 to 1024 substeps a frame with 50 sweeps, they would cost thousands of times the budget's runs).
 FramesConfig cloth_frames_config();
-// The positions and velocities at each frame of set-up s's run, or of the reference (s null): for
-// a picture of the motion.
-std::vector<AnyState> frame_states(const FramesConfig& c, const FrameSetup* s);
+// The positions and velocities at each frame of set-up s's run (FramesResult::reference has the
+// reference's): for a picture of the motion.
+std::vector<AnyState> frame_states(const FramesConfig& c, const FrameSetup& s);
 
 // The cost the fronts and the cheapest set-ups are drawn against: the spring visits a frame, a
 // stated operation count of every kind of work (a projection visits one spring; a force

@@ -10,6 +10,7 @@
 #include "analysis/kernel/kernel.hpp"
 #include "reports/data/studies.hpp"
 #include "reports/document/claims.hpp"
+#include "reports/document/report_text.hpp"
 
 namespace steplab {
 
@@ -124,8 +125,7 @@ ClothPicture cloth_picture(const FramesResult& r) {
   }
   // The middle column: the masses whose rest x is nearest the middle of the sheet's x (the left
   // one of two equally near), by their rest y.
-  const std::vector<AnyState> reference = frame_states(r.config, nullptr);
-  const Eigen::VectorXd& rest = reference.front().x;
+  const Eigen::VectorXd& rest = r.reference.front().x;
   const Eigen::Index masses = rest.size() / 3;
   double lo = INFINITY, hi = -INFINITY;
   for (Eigen::Index i = 0; i < masses; ++i) lo = std::min(lo, rest[3 * i]), hi = std::max(hi, rest[3 * i]);
@@ -146,8 +146,8 @@ ClothPicture cloth_picture(const FramesResult& r) {
     }
     return out;
   };
-  p.profiles.push_back(profile(reference));
-  for (std::size_t i : p.runs) p.profiles.push_back(profile(frame_states(r.config, &r.runs[i].setup)));
+  p.profiles.push_back(profile(r.reference));
+  for (std::size_t i : p.runs) p.profiles.push_back(profile(frame_states(r.config, r.runs[i].setup)));
   return p;
 }
 
@@ -170,31 +170,23 @@ FigureSpec picture_figure(const ClothPicture& p, const FramesResult& r) {
 
 std::string picture_markdown(Page& page, const ClothPicture& p, const FramesResult& r, const std::string& section,
                              const std::string& document) {
+  constexpr Digits kError{true, 3};
+  const auto named = [](const FrameRun& x) { return fmt::format("`{}` {}", method_info(x.setup.method).name, frame_setup_text(x.setup)); };
+  std::vector<FrameRun> drawn;
   std::vector<std::string> setups;
-  const FrameRun *least = nullptr, *most = nullptr;  // of the drawn set-ups, by error
-  for (std::size_t i : p.runs) {
-    const FrameRun& x = r.runs[i];
-    setups.push_back(fmt::format("`{}` {}", method_info(x.setup.method).name, frame_setup_text(x.setup)));
-    if (!least || x.error < least->error) least = &x;
-    if (!most || x.error > most->error) most = &x;
-  }
-  const auto named = [](const FrameRun* x) { return fmt::format("`{}` {}", method_info(x->setup.method).name, frame_setup_text(x->setup)); };
-  const std::string sentence =
-      fmt::format("Their largest errors over the frames lie from {} m ({}) to {} m ({}).", fmt::format("{:.3g}", least->error),
-                  named(least), fmt::format("{:.3g}", most->error), named(most));
+  for (std::size_t i : p.runs) drawn.push_back(r.runs[i]), setups.push_back(named(r.runs[i]));
+  const auto all = [](const FrameRun&) { return true; };
+  const auto [least, most] = least_and_most(drawn, all, &FrameRun::error);
+  const std::string sentence = fmt::format("Their largest errors over the frames lie from {} m ({}) to {} m ({}).", printed(least->error, kError),
+                                           named(*least), printed(most->error, kError), named(*most));
   std::string md = page.figure("cloth", fmt::format("The {} seen from the side: the middle column of masses from the pinned edge (y = 0) "
                                                     "to the free one, at three frames, for the reference (black) and each family's "
                                                     "cheapest stable set-up ({}). {}",
                                                     scene_name(r.config.scene), fmt::join(setups, ", "), sentence));
-  if (page.ledger) {  // the drawn set-ups' errors, from the least to the greatest
-    Kept k;
-    for (std::size_t j = 0; j < p.runs.size(); ++j) {
-      if (&r.runs[p.runs[j]] == least) k.least = j;
-      if (&r.runs[p.runs[j]] == most) k.most = j;
-      k.values.push_back(page.ledger->at(document, fmt::format("/runs/{}/error_max", p.runs[j])));
-    }
-    claim_range(*page.ledger, section + ".picture", section, sentence, k, Digits{true, 3});
-  }
+  if (page.ledger)  // the drawn set-ups' errors, from the least to the greatest
+    claim_range(*page.ledger, section + ".picture", section, sentence, kept_evidence(drawn, all, least, most, [&](const FrameRun&, std::size_t j) {
+      return page.ledger->at(document, fmt::format("/runs/{}/error_max", p.runs[j]));
+    }), kError);
   return md;
 }
 

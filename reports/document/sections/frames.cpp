@@ -37,7 +37,10 @@ class Frames : public Section {
     c.timing = d.config.timing && !cloth_;
     c.workers = d.workers;
     r_ = frames_study(c);
-    if (cloth_) picture_ = cloth_picture(r_), rope_ = rope_xpbd_study(c, d.workers);
+    if (cloth_) {
+      picture_ = cloth_picture(r_);
+      rope_ = rope_xpbd_study(c, d.workers);
+    }
   }
 
   void write_data(const ReportData&, const DataDir& dat) const override {
@@ -132,7 +135,7 @@ class Frames : public Section {
   std::string doc() const { return id + "/frames.json"; }
   std::string rope_doc() const { return id + "/rope_xpbd.json"; }
   std::string figure_name() const { return cloth_ ? id + "_frames" : std::string(); }
-  std::string figure_key() const { return cloth_ ? id + "_frames" : std::string("frames"); }
+  std::string figure_key() const { return figure_name().empty() ? std::string("frames") : figure_name(); }  // FigureSpec::key()
 
   // The fitted order with the slopes between neighbouring substeps, log2(e_k / e_k+1): "0.35, 1.25,
   // 1.31" fits 1.00 but has not reached it (slopes that differ by more than kSettled: the next
@@ -208,12 +211,11 @@ class Frames : public Section {
   std::string large_steps() const {
     const std::vector<FrameRun> bw = runs_of("baraff_witkin"), ie = runs_of("implicit_euler");
     if (bw.empty() || ie.empty() || !bw.front().stable) return {};
-    if (!ie.front().stable)
-      return fmt::format("- `baraff_witkin` (one Newton step of implicit Euler, solved by CG): {} has error {}. {}\n\n",
-                         frame_setup_text(bw.front().setup), g3(bw.front().error), implicit_euler_one_substep());
-    return fmt::format("- `baraff_witkin` (one Newton step of implicit Euler, solved by CG): {} has error {}, implicit Euler's "
-                       "step at one substep (factorised) {}; with fewer CG iterations on more substeps ({}) the error is {}.\n\n",
-                       frame_setup_text(bw.front().setup), g3(bw.front().error), g3(ie.front().error),
+    const std::string bw_one = fmt::format("- `baraff_witkin` (one Newton step of implicit Euler, solved by CG): {} has error {}",
+                                           frame_setup_text(bw.front().setup), g3(bw.front().error));
+    if (!ie.front().stable) return fmt::format("{}. {}\n\n", bw_one, implicit_euler_one_substep());
+    return fmt::format("{}, implicit Euler's step at one substep (factorised) {}; with fewer CG iterations on more substeps ({}) "
+                       "the error is {}.\n\n", bw_one, g3(ie.front().error),
                        frame_setup_text(bw.back().setup), g3(bw.back().error));
   }
 
