@@ -206,11 +206,12 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force, 
     }
 
     // Figures: each script three times, PNG for the Markdown, SVG for the atlas and PDF (vector) for
-    // the PDF, the drawings spread over the config's threads (each gnuplot is one process).
+    // the PDF, by one gnuplot process (a fresh session for each: `reset session` alone in its -e,
+    // as gnuplot reads nothing after it on the line); the figures spread over the config's threads.
     const std::string all = method_words(d.methods), numeric = method_words(d.collision.config.methods);
     DataDir(staging / "figures").write("styles.gp", styles_gp());  // loaded by every script
     struct Drawing {
-      std::string script, format, cmd;
+      std::string script, cmd;
     };
     std::vector<Drawing> drawings;
     int number = 0;
@@ -220,24 +221,25 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force, 
         const auto gp = std::find_if(gnuplot_scripts.begin(), gnuplot_scripts.end(), [&](const GnuplotScript& g) { return g.name == fig.script; });
         if (gp == gnuplot_scripts.end()) throw std::logic_error("no gnuplot script " + fig.script);
         DataDir(staging / "figures").write(fig.script + ".gp", std::string(gp->text));
+        std::string cmd = "gnuplot";
         for (const char* fmt_name : {"png", "svg", "pdf"})
-          drawings.push_back({fig.script, fmt_name, fmt::format(
-              "gnuplot -e \"datadir='../data/{}'; outfile='{}.{}'; format='{}'; methods='{}'; numeric='{}'; "
-              "springdts='{}'; largedt='{}'; {}{}\" '{}.gp'",
-              s->id, file, fmt_name, fmt_name, all, numeric, words(c.spring_figure_dts), c.large_dt,
-              panel_vars(fig.panels), fig.vars, fig.script)});
+          cmd += fmt::format("{} -e \"datadir='../data/{}'; outfile='{}.{}'; format='{}'; methods='{}'; numeric='{}'; "
+                             "springdts='{}'; largedt='{}'; {}{}\" '{}.gp'",
+                             fmt_name == std::string_view("png") ? "" : " -e 'reset session'", s->id, file, fmt_name, fmt_name, all, numeric,
+                             words(c.spring_figure_dts), c.large_dt, panel_vars(fig.panels), fig.vars, fig.script);
+        drawings.push_back({fig.script, cmd});
       }
-    // figures/redraw.sh: each drawing's command, to redraw a figure after editing its script
+    // figures/redraw.sh: each figure's command, to redraw it after editing its script
     std::string redraw = "#!/bin/sh\n# Redraws every figure from data/ (run it in figures/ after editing a script).\nset -e\n";
     for (const Drawing& g : drawings) redraw += g.cmd + "\n";
     DataDir(staging / "figures").write("redraw.sh", redraw);
     parallel_for(drawings.size(), Workers{d.workers.threads}, [&](std::size_t i) {
       const Drawing& g = drawings[i];
-      const fs::path log = staging / "figures" / fmt::format("{}.{}.{}.log", g.script, g.format, i);
+      const fs::path log = staging / "figures" / fmt::format("{}.{}.log", g.script, i);
       if (run_tool(fmt::format("cd '{}' && {}", (staging / "figures").string(), g.cmd), log) != 0)
-        throw ToolFailed(fmt::format("gnuplot failed on {}.gp ({}):{}\nthe script, its data and gnuplot's log are kept in "
+        throw ToolFailed(fmt::format("gnuplot failed on {}.gp:{}\nthe script, its data and gnuplot's log are kept in "
                                      "{} (the next report into {} removes them)",
-                                     g.script, g.format, tool_errors(log), (staging / "figures").string(), out.string()));
+                                     g.script, tool_errors(log), (staging / "figures").string(), out.string()));
       fs::remove(log);
     });
     const std::string footer = machine_footer() + fmt::format(" · studies {:.1f} s", study_seconds);
