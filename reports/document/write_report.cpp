@@ -221,12 +221,15 @@ int write_report(const ReportConfig& c, const std::string& out_dir, bool force, 
         const auto gp = std::find_if(gnuplot_scripts.begin(), gnuplot_scripts.end(), [&](const GnuplotScript& g) { return g.name == fig.script; });
         if (gp == gnuplot_scripts.end()) throw std::logic_error("no gnuplot script " + fig.script);
         DataDir(staging / "figures").write(fig.script + ".gp", std::string(gp->text));
-        std::string cmd = "gnuplot";
-        for (const char* fmt_name : {"png", "svg", "pdf"})
-          cmd += fmt::format("{} -e \"datadir='../data/{}'; outfile='{}.{}'; format='{}'; methods='{}'; numeric='{}'; "
-                             "springdts='{}'; largedt='{}'; {}{}\" '{}.gp'",
-                             fmt_name == std::string_view("png") ? "" : " -e 'reset session'", s->id, file, fmt_name, fmt_name, all, numeric,
-                             words(c.spring_figure_dts), c.large_dt, panel_vars(fig.panels), fig.vars, fig.script);
+        // What every format shares, after its own outfile and format.
+        const std::string vars = fmt::format("methods='{}'; numeric='{}'; springdts='{}'; largedt='{}'; {}{}", all, numeric,
+                                             words(c.spring_figure_dts), c.large_dt, panel_vars(fig.panels), fig.vars);
+        std::string cmd = "gnuplot", fresh;
+        for (const char* fmt_name : {"png", "svg", "pdf"}) {
+          cmd += fmt::format("{} -e \"datadir='../data/{}'; outfile='{}.{}'; format='{}'; {}\" '{}.gp'", fresh, s->id, file, fmt_name,
+                             fmt_name, vars, fig.script);
+          fresh = " -e 'reset session'";
+        }
         drawings.push_back({fig.script, cmd});
       }
     // figures/redraw.sh: each figure's command, to redraw it after editing its script

@@ -135,7 +135,7 @@ class Frames : public Section {
   std::string doc() const { return id + "/frames.json"; }
   std::string rope_doc() const { return id + "/rope_xpbd.json"; }
   std::string figure_name() const { return cloth_ ? id + "_frames" : std::string(); }
-  std::string figure_key() const { return figure_name().empty() ? std::string("frames") : figure_name(); }  // FigureSpec::key()
+  std::string figure_key() const { return FigureSpec{"frames", {}, {}, figure_name()}.key(); }
 
   // The fitted order with the slopes between neighbouring substeps, log2(e_k / e_k+1): "0.35, 1.25,
   // 1.31" fits 1.00 but has not reached it (slopes that differ by more than kSettled: the next
