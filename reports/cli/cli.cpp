@@ -20,7 +20,7 @@
 #include "reports/data/inputs.hpp"
 #include "reports/cli/shards.hpp"
 #include "reports/data/schemas.hpp"
-#include "reports/data/studies.hpp"
+#include "reports/studies/studies.hpp"
 #include "analysis/kernel/parallel.hpp"
 #include "analysis/studies/local_error.hpp"
 #include "analysis/studies/defaults.hpp"
@@ -43,7 +43,7 @@ std::string legacy_testcases() {
   return out;
 }
 
-// The studies, in `steplab study --help`'s order (STEPLAB_STUDIES, reports/data/studies.hpp).
+// The studies, in `steplab study --help`'s order (STEPLAB_STUDIES, reports/studies/studies.hpp).
 #define STEPLAB_STUDY_MAKER(name) name##_command,
 constexpr StudyCommand (*kStudies[])(CLI::App*) = {STEPLAB_STUDIES(STEPLAB_STUDY_MAKER)};
 #undef STEPLAB_STUDY_MAKER
@@ -66,6 +66,16 @@ void add_legacy_options(CLI::App& app, LegacyArgs& l) {
   app.add_option("--mass", l.mass, "mass (default 0.1)")->group(group);
   app.add_option("--stiff", l.stiff, "stiffness (default 10)")->group(group);
   app.add_option("--length", l.length, "rest length (default 1)")->group(group);
+}
+
+// The old framework's amplitude table (`-testcase amplitude`), the spring's.
+int amplitude_command(const std::vector<double>& spring_params, double step, const Context& ctx) {
+  if (ctx.dry_run) return 0;
+  std::vector<std::size_t> methods = resolve_methods("", true);
+  std::rotate(methods.begin(), methods.end() - 1, methods.end());  // the analytic column first
+  const AmplitudeTable t = amplitude_table(spring_params, methods, step, 10);
+  std::fputs(amplitude_table_text(t).c_str(), stdout);
+  return 0;
 }
 
 int legacy_command(const LegacyArgs& l, Context& ctx) {

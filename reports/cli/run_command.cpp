@@ -30,23 +30,6 @@ std::string csv(const AnyResult& r) {
   return out;
 }
 
-}  // namespace
-
-std::size_t resolve_method(std::string_view name) {
-  const auto m = find_method(name);
-  if (!m)
-    throw UsageError(fmt::format("--method '{}' is unknown{}; accepted: {}", name, did_you_mean(name, method_name_list()),
-                                 method_names()));
-  return *m;
-}
-
-bool Context::stop_after_validation(const std::string& output_path) const {
-  if (dry_run) return true;
-  if (!output_path.empty()) check_writable(output_path);
-  return false;
-}
-
-namespace {
 
 // --samples: as given, or 10001 rows where they hold at most 10^6 numbers (t, x, v and the energy
 // each), fewer on a large scene, down to the first and the last state (a rope of 1000 masses: 499

@@ -21,31 +21,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 constexpr std::string_view kSchema = schema::part;
-constexpr long long kMaxShards = 1'000'000;
-
-// The options that change how a study runs, not what it computes: left out of a part's command.
-bool how_not_what(std::string_view option) {
-  return option == "--shard" || option == "--json" || option == "--threads" || option == "--lanes";
-}
-
-std::vector<std::string> part_command(const Context& ctx) {
-  std::vector<std::string> out;
-  for (std::size_t i = 0; i < ctx.invocation.size(); ++i) {
-    const std::string& a = ctx.invocation[i];
-    const std::string name = a.substr(0, a.find('='));
-    if (!how_not_what(name)) out.push_back(a);
-    else if (name == a) ++i;  // "--opt value": skip the value too
-  }
-  return out;
-}
-
-std::string hex(const std::string& bytes) {
-  static constexpr char digits[] = "0123456789abcdef";
-  std::string out;
-  out.reserve(2 * bytes.size());
-  for (const unsigned char c : bytes) out += {digits[c >> 4], digits[c & 15]};
-  return out;
-}
 
 // The bytes of a hex string, or nullopt if it is not one.
 std::optional<std::string> unhex(const std::string& text) {
@@ -116,49 +91,6 @@ Part read_part(const std::string& path) {
 }
 
 }  // namespace
-
-void add_shard_option(CLI::App* app, std::string& shard) {
-  app->add_option("--shard", shard,
-                  "i/N: run the i-th of N equal parts of the study's work and write it as a part to --json "
-                  "(steplab merge puts the parts together)");
-}
-
-void begin_shard(Context& ctx, const std::string& shard, const std::string& json, bool timed) {
-  if (shard.empty()) return;
-  const auto slash = shard.find('/');
-  if (slash == std::string::npos)
-    throw UsageError(fmt::format("--shard '{}' is not i/N; accepted: i/N with 1 <= i <= N, e.g. 3/7", shard));
-  const long long n = parse_count("--shard (N)", shard.substr(slash + 1), 1, kMaxShards);
-  const long long i = parse_count("--shard (i)", shard.substr(0, slash), 1, n);
-  if (json.empty()) throw UsageError("--shard needs --json PART.json: the part is written there; accepted: --shard i/N --json FILE");
-  if (timed)
-    throw UsageError("--shard with timed runs: times taken on different machines do not compare; accepted: --shard "
-                     "with --no-timing (study work-precision, scaling, frames), without --timing (study convergence)");
-  if (!ctx.dry_run) ctx.log = WorkLog{WorkMode::Shard, static_cast<int>(i), static_cast<int>(n), {}, 0};
-}
-
-bool finish_shard(const Context& ctx, const std::string& json) {
-  const WorkLog& work_log = ctx.log;
-  if (work_log.mode != WorkMode::Shard) return false;
-  Json calls = Json::array();
-  std::size_t ran = 0, total = 0;
-  for (const auto& call : work_log.calls) {
-    Json results = Json::object();
-    for (std::size_t t = 0; t < call.size(); ++t)
-      if (call[t]) results[std::to_string(t)] = hex(*call[t]), ++ran;
-    total += call.size();
-    calls.push_back({{"tasks", call.size()}, {"results", std::move(results)}});
-  }
-  Json part;
-  part["schema"] = kSchema;
-  part["command"] = part_command(ctx);
-  part["shard"] = {work_log.index, work_log.count};
-  part["calls"] = std::move(calls);
-  write_atomic(json, part.dump() + "\n");
-  std::printf("steplab: shard %d/%d: %zu of %zu tasks, written to %s (steplab merge puts the parts together)\n",
-              work_log.index, work_log.count, ran, total, json.c_str());
-  return true;
-}
 
 void add_merge_command(CLI::App& app, MergeArgs& a) {
   CLI::App* cmd = app.add_subcommand("merge", "put the parts of a study run with --shard i/N together: the JSON one "

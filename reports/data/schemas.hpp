@@ -1,7 +1,7 @@
 // The schema every JSON document of steplab's opens with, "steplab.<kind>/<version>": one name
 // per kind, read by the writers and by each command's --help. The version steps when a field
 // changes its meaning or goes; docs/json.md says what changed. A study's schema is declared with
-// its writers (reports/data/studies.hpp); these are the others'.
+// its writers (reports/studies/studies.hpp); these are the others'.
 #pragma once
 
 #include <string_view>

@@ -12,7 +12,7 @@
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/peers/peers.hpp"
 #include "analysis/studies/order_reduction.hpp"
-#include "reports/data/studies.hpp"
+#include "reports/studies/studies.hpp"
 #include "reports/document/claims.hpp"
 #include "reports/document/figure_styles.hpp"
 #include "reports/document/report_text.hpp"

@@ -13,7 +13,7 @@
 #include "analysis/studies/scaling.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/data/run_json.hpp"
-#include "reports/data/studies.hpp"
+#include "reports/studies/studies.hpp"
 #include "reports/document/section.hpp"
 
 namespace steplab {

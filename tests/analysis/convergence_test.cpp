@@ -6,7 +6,7 @@
 #include "analysis/studies/convergence.hpp"
 #include "analysis/kernel/kernel.hpp"
 #include "core/scenes/spring.hpp"
-#include "reports/data/studies.hpp"
+#include "reports/studies/studies.hpp"
 #include "tests/analysis/declared_order.hpp"
 
 namespace steplab {

@@ -9,7 +9,7 @@
 #include "analysis/studies/stability.hpp"
 #include "analysis/kernel/kernel.hpp"
 #include "core/scenes/spring.hpp"
-#include "reports/data/studies.hpp"
+#include "reports/studies/studies.hpp"
 
 namespace steplab {
 namespace {

@@ -10,7 +10,7 @@
 #include "analysis/studies/work_precision.hpp"
 #include "analysis/kernel/kernel.hpp"
 #include "core/scenes/chain.hpp"
-#include "reports/data/studies.hpp"
+#include "reports/studies/studies.hpp"
 
 namespace steplab {
 namespace {

@@ -10,7 +10,7 @@
 #include <ostream>
 
 #include "cli_helpers.hpp"
-#include "reports/data/studies.hpp"
+#include "reports/studies/studies.hpp"
 
 namespace steplab {
 namespace {

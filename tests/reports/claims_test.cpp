@@ -24,7 +24,7 @@
 
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/peers/peers.hpp"
-#include "reports/data/studies.hpp"
+#include "reports/studies/studies.hpp"
 #include "reports/document/findings.hpp"
 #include "claims.hpp"
 #include "reports/document/report.hpp"

@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
-#include "reports/data/studies.hpp"
+#include "reports/studies/studies.hpp"
 #include "reports/document/report.hpp"
 #include "small_report.hpp"
 

@@ -14,7 +14,7 @@
 #include "analysis/peers/peers.hpp"
 #include "analysis/studies/scaling.hpp"
 #include "reports/data/inputs.hpp"
-#include "reports/data/studies.hpp"
+#include "reports/studies/studies.hpp"
 #include "reports/document/figure_styles.hpp"
 #include "reports/document/report.hpp"
 #include "small_report.hpp"

@@ -9,7 +9,7 @@
 
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/peers/peers.hpp"
-#include "reports/data/studies.hpp"
+#include "reports/studies/studies.hpp"
 #include "reports/document/claims.hpp"
 #include "reports/document/figure_styles.hpp"
 #include "reports/document/findings.hpp"

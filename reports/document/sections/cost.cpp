@@ -11,7 +11,7 @@
 
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/peers/peers.hpp"
-#include "reports/data/studies.hpp"
+#include "reports/studies/studies.hpp"
 #include "reports/document/claims.hpp"
 #include "reports/document/findings.hpp"
 #include "reports/document/report_text.hpp"

@@ -10,7 +10,7 @@
 #include "analysis/studies/dense_output.hpp"
 #include "analysis/studies/defaults.hpp"
 #include "reports/data/inputs.hpp"
-#include "reports/data/studies.hpp"
+#include "reports/studies/studies.hpp"
 #include "reports/document/report.hpp"
 #include "reports/document/claims.hpp"
 #include "reports/document/report_text.hpp"

@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
-#include "reports/data/studies.hpp"
+#include "reports/studies/studies.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/claims.hpp"
 #include "reports/document/sections/long_time.hpp"

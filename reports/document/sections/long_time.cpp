@@ -11,7 +11,7 @@
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/studies/defaults.hpp"
 #include "analysis/studies/long_time.hpp"
-#include "reports/data/studies.hpp"
+#include "reports/studies/studies.hpp"
 #include "reports/document/claims.hpp"
 #include "reports/document/report_text.hpp"
 #include "reports/document/section.hpp"

@@ -1,16 +1,25 @@
-// The frame-budget study's writers (analysis/studies/frames.hpp): its JSON (steplab.frames/4)
-// and its table.
+// `steplab study frames`: a mass-spring scene at a frame rate, each method at substeps x sweeps
+// (or CG iterations) = a budget, its error, stretch, energy lost and cost a frame, and each
+// family's front (analysis/studies/frames.hpp). Its command, its parameters, its table on stdout
+// and its JSON (steplab.frames/4) with --json.
+#include "reports/studies/studies.hpp"
+
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/studies/frames.hpp"
+#include "reports/data/inputs.hpp"
+#include "reports/data/output.hpp"
 #include "reports/data/run_json.hpp"
-#include "reports/data/studies.hpp"
+#include "reports/data/study_command.hpp"
 
 namespace steplab {
+
 std::string frame_settings_text(const FrameSetup& s) {
   const MethodInfo& info = method_info(s.method);
   if (takes_sweeps(info)) return fmt::format("{} sweep{}", s.settings.sweeps, s.settings.sweeps == 1 ? "" : "s");
@@ -118,5 +127,61 @@ std::string frames_table(const FramesResult& r) {
   }
   return out;
 }
+
+namespace {
+
+bool mass_spring(const SceneKernel& s) { return s.spring_measures != nullptr; }
+
+
+}  // namespace
+
+
+
+namespace {
+
+struct FramesArgs : StudyArgs {
+  bool no_timing = false, no_orders = false;
+};
+
+CLI::App* add_frames(CLI::App* study, FramesArgs& a) {
+  CLI::App* cmd = study->add_subcommand("frames", "a mass-spring scene at a frame rate: substeps or sweeps, XPBD or large steps, "
+                                                  "at what cost a frame");
+  a.scene.scene = std::string(kFramesScene);
+  a.scene.add_to(cmd, mass_spring);
+  cmd->add_option("--methods", a.methods, "comma-separated methods (default xpbd, pbd, baraff_witkin, symplectic_euler, "
+                                          "implicit_euler, rk4)");
+  add_params(cmd, frames_params(), a.params, default_frames_config());
+  add_threads_option(cmd, a.threads, "worker threads (timings run one at a time)");
+  cmd->add_flag("--no-timing", a.no_timing, "cost by spring visits a frame only (reproducible byte for byte)");
+  cmd->add_flag("--no-orders", a.no_orders, "leave out the order in h of the methods on springs");
+  a.add_shard_and_json(cmd, schema::frames);
+  return cmd;
+}
+
+int run_frames(FramesArgs& a, Context& ctx) {
+  FramesConfig c = default_frames_config();
+  c.scene = a.scene.scene_index();
+  if (!mass_spring(scene_kernel(c.scene)))
+    throw UsageError(fmt::format("--scene {} is not made of springs; accepted: {}", scene_name(c.scene), scene_list(mass_spring)));
+  // The study's rope (32 masses, stiffness 5000) where the scene is the rope and the user gave neither.
+  if (c.scene == scene_index(kFramesScene))
+    for (const auto& [name, value] : kFramesParams)
+      if (!a.scene.given(name)) a.scene.set(name, fmt::format("{}", value));
+  c.params = a.scene.values(c.scene);
+  if (!a.methods.empty()) c.methods = resolve_methods(a.methods, false, c.scene);
+  else
+    std::erase_if(c.methods, [&](std::size_t m) { return !applies(m, c.scene); });
+  read_params(frames_params(), a.params, c);
+  check_frames(c);
+  c.timing = !a.no_timing;
+  c.orders = !a.no_orders;
+  c.workers = ctx.workers(resolve_thread_count(a.threads));
+  return run_study(ctx, a.shard, a.json, c.timing, [&] { return frames_study(c); },
+                   [](const FramesResult& r) { return frames_table(r); }, [](const FramesResult& r) { return frames_json(r); });
+}
+
+}  // namespace
+
+StudyCommand frames_command(CLI::App* study) { return study_command(study, add_frames, run_frames); }
 
 }  // namespace steplab

@@ -1,15 +1,24 @@
-// The work-precision study's writers (analysis/studies/work_precision.hpp): its JSON
-// (steplab.work_precision/1) and its tables; and a run's counts in words, which the report's
-// sections share.
+// `steplab study work-precision`: cost against error on the spring and the stiff chain, the
+// cheapest method per error level, the chain's stability limits, the stiffness sweep and its
+// crossover (analysis/studies/work_precision.hpp). Its command, its parameters, its tables on
+// stdout and its JSON (steplab.work_precision/2) with --json; and a run's counts in words, which
+// the report's sections share.
+#include "reports/studies/studies.hpp"
+
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "analysis/kernel/kernel.hpp"
+#include "analysis/peers/peers.hpp"
 #include "analysis/studies/work_precision.hpp"
+#include "reports/data/inputs.hpp"
+#include "reports/data/output.hpp"
 #include "reports/data/run_json.hpp"
-#include "reports/data/studies.hpp"
+#include "reports/data/study_command.hpp"
 
 namespace steplab {
 
@@ -140,5 +149,43 @@ std::string work_precision_table(const WorkPrecisionResult& r) {
              : "No stiffness of the sweep makes an implicit method cheaper than every explicit one.\n";
   return out;
 }
+
+namespace {
+
+struct WorkPrecisionArgs : StudyArgs {
+  bool no_timing = false;  // cost by evaluations only: reproducible byte for byte
+};
+
+CLI::App* add_work_precision(CLI::App* study, WorkPrecisionArgs& a) {
+  CLI::App* cmd = study->add_subcommand("work-precision", "cost against error on the spring and the stiff chain; "
+                                                          "cheapest method per error level; stiffness crossover");
+  cmd->add_option("--methods", a.methods,
+                  fmt::format("comma-separated methods and adaptive solvers ({}; default every numerical method, and every "
+                              "adaptive solver where the list names none)", fmt::join(peer_names(PeerScenes::FixedSize), ", ")));
+  add_params(cmd, work_precision_params(), a.params, WorkPrecisionConfig{});
+  add_threads_option(cmd, a.threads, "worker threads for the error runs (timings run one at a time)");
+  add_lanes_option(cmd, a.lanes);
+  add_shard_option(cmd, a.shard);
+  cmd->add_flag("--no-timing", a.no_timing, "cost by force evaluations only (reproducible byte for byte)");
+  cmd->add_option("--json", a.json, fmt::format("write JSON (schema {}) to this file", schema::work_precision));
+  return cmd;
+}
+
+int run_work_precision(WorkPrecisionArgs& a, Context& ctx) {
+  WorkPrecisionConfig c;
+  Solvers solvers = resolve_solvers(a.methods, adaptive_solvers(), "spring and chain", false);
+  c.methods = std::move(solvers.methods);
+  c.adaptive = std::move(solvers.adaptive);
+  read_params(work_precision_params(), a.params, c);
+  c.workers = ctx.workers(resolve_thread_count(a.threads));
+  resolve_lanes(a.lanes);  // checked; the work-precision runs go one at a time
+  c.timing = !a.no_timing;
+  return run_study(ctx, a.shard, a.json, c.timing, [&] { return work_precision_study(c); },
+                   [](const WorkPrecisionResult& r) { return work_precision_table(r); }, [](const WorkPrecisionResult& r) { return work_precision_json(r); });
+}
+
+}  // namespace
+
+StudyCommand work_precision_command(CLI::App* study) { return study_command(study, add_work_precision, run_work_precision); }
 
 }  // namespace steplab

@@ -1,10 +1,13 @@
+// `study stability` on a scene that declares its modes (analysis/studies/mode_stability.hpp): its
+// JSON (schema::mode_stability) and its table.
+#include "reports/studies/studies.hpp"
+
 #include <cmath>
 
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/studies/stability.hpp"
-#include "reports/data/studies.hpp"
 
 namespace steplab {
 

@@ -1,14 +1,24 @@
-// The convergence study's and the local error's output: JSON and tables, the order fits' caveats
-// marked beside them.
-#include "reports/data/studies.hpp"
+// `steplab study convergence`: each method's error against the step on a scene, its fitted order
+// beside the theory's (analysis/studies/convergence.hpp); --sweep NAME=V1,V2,... the study at each
+// value of one scene parameter. Its command, its parameters, its tables (the order fits' caveats
+// marked beside them) and its JSON (steplab.convergence/2; with --sweep, order_reduction.cpp's);
+// and the old framework's local error tables.
+#include "reports/studies/studies.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
+#include "analysis/peers/peers.hpp"
+#include "analysis/studies/convergence.hpp"
+#include "reports/data/inputs.hpp"
+#include "reports/data/output.hpp"
 #include "reports/data/run_json.hpp"
+#include "reports/data/study_command.hpp"
 
 namespace steplab {
 
@@ -218,5 +228,96 @@ std::string local_error_tables(const LocalErrorResult& r) {
   }
   return out;
 }
+
+namespace {
+
+struct ConvergenceArgs : StudyArgs {
+  SettingsArgs settings;  // of the methods on springs, for every run of theirs
+  std::string error = "final";
+  std::string sweep;  // NAME=V1,V2,...: the study at each value of one scene parameter
+  bool reference = false;
+  bool timing = false;
+};
+
+// --sweep NAME=V1,V2,...: a parameter of the scene (not a count: those set its size) and its
+// values, each within the parameter's bound, strictly increasing.
+std::pair<std::size_t, std::vector<double>> parse_sweep(const std::string& text, std::size_t scene) {
+  const std::span<const ParamSpec> params = scene_kernel(scene).params;
+  std::string accepted;
+  for (const ParamSpec& p : params)
+    if (!p.is_count) accepted += fmt::format("{}{}", accepted.empty() ? "" : ", ", p.name);
+  const std::size_t eq = text.find('=');
+  const std::string name = text.substr(0, eq);
+  const auto it = std::find_if(params.begin(), params.end(), [&](const ParamSpec& p) { return p.name == name && !p.is_count; });
+  if (eq == std::string::npos || it == params.end())
+    throw UsageError(fmt::format("--sweep '{}' names no parameter of {} that can be swept; accepted: NAME=V1,V2,... with NAME one of {}",
+                                 text, scene_name(scene), accepted));
+  const std::string list = text.substr(eq + 1);
+  if (list.empty()) throw UsageError(fmt::format("--sweep {}= has no values; accepted: {}=V1,V2,... increasing", name, name));
+  const std::vector<double> values = number_list("--sweep " + name, list, it->bound);
+  check_increasing(fmt::format("--sweep {} values", name), values);
+  return {static_cast<std::size_t>(it - params.begin()), values};
+}
+
+int run_convergence(ConvergenceArgs& a, Context& ctx) {
+  ConvergenceConfig c;
+  c.scene = a.scene.scene_index();
+  const bool has_exact = scene_kernel(c.scene).has_exact;
+  c.reference = a.reference || !has_exact;
+  c.params = a.scene.values(c.scene);
+  c.methods = resolve_methods(a.methods, false, c.scene);
+  c.settings = a.settings.resolve(c.methods);
+  c.t_end = c.reference ? 1.0 : 10.0;  // contacts make longer runs against a reference chaotic
+  read_params(convergence_params(), a.params, c);
+  check_convergence(c, option_names());
+  if (a.error == "final") c.fit_error = ErrorKind::Final;
+  else if (a.error == "max") c.fit_error = ErrorKind::Max;
+  else if (a.error == "rms") c.fit_error = ErrorKind::Rms;
+  else throw UsageError(fmt::format("--error '{}' is unknown{}; accepted: final, max, rms", a.error,
+                                     did_you_mean(a.error, {"final", "max", "rms"})));
+  if (c.reference && c.fit_error != ErrorKind::Final)
+    throw UsageError(fmt::format("--error {} needs the exact solution along the run; against the reference solution "
+                                 "(--scene {}{}) accepted: final",
+                                 a.error, a.scene.scene, a.reference ? ", --reference" : ""));
+  c.workers = ctx.workers(resolve_thread_count(a.threads));
+  c.pack_width = resolve_lanes(a.lanes);
+  c.timing = a.timing;
+  if (!a.sweep.empty()) {
+    const auto [param, values] = parse_sweep(a.sweep, c.scene);
+    if (!a.shard.empty()) throw UsageError("--sweep runs in one process; accepted: --sweep or --shard, not both");
+    if (ctx.stop_after_validation(a.json)) return 0;
+    const OrderReduction r = order_reduction(convergence_sweep(c, param, values));
+    std::fputs(order_reduction_table(r).c_str(), stdout);
+    if (!a.json.empty()) write_atomic(a.json, order_reduction_json(r).dump(1) + "\n");
+    return 0;
+  }
+  return run_study(ctx, a.shard, a.json, c.timing, [&] { return convergence_study(c); },
+                   [](const ConvergenceResult& r) { return convergence_table(r); }, [](const ConvergenceResult& r) { return convergence_json(r); });
+}
+
+CLI::App* add_convergence(CLI::App* study, ConvergenceArgs& a) {
+  CLI::App* cmd = study->add_subcommand("convergence", "errors against the exact solution over a dt sweep, fitted orders");
+  a.scene.add_to(cmd);
+  cmd->add_option("--methods", a.methods, "comma-separated methods (default every numerical method)");
+  add_params(cmd, convergence_params(), a.params, ConvergenceConfig{});
+  cmd->add_flag("--reference", a.reference,
+                "errors against a reference solution (dopri5 at rtol 1e-13) even where an exact one exists; "
+                "a scene without one always uses it");
+  cmd->add_option("--error", a.error, "error the order is fitted to: final, max, rms")->capture_default_str();
+  add_threads_option(cmd, a.threads);
+  add_lanes_option(cmd, a.lanes);
+  add_shard_option(cmd, a.shard);
+  a.settings.add_to(cmd);
+  cmd->add_flag("--timing", a.timing, "also time every run (work-precision; not reproducible byte for byte)");
+  cmd->add_option("--sweep", a.sweep, "NAME=V1,V2,...: the study at each value of the scene's parameter NAME "
+                  "(increasing), each method's order read against it (e.g. --scene target --sweep stiffness=1,1e2,1e4)");
+  cmd->add_option("--json", a.json, fmt::format("write JSON (schema {}; with --sweep {}) to this file", schema::convergence,
+                                                schema::convergence_sweep));
+  return cmd;
+}
+
+}  // namespace
+
+StudyCommand convergence_command(CLI::App* study) { return study_command(study, add_convergence, run_convergence); }
 
 }  // namespace steplab

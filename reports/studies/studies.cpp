@@ -1,5 +1,5 @@
 // What several studies' JSON share: a scene's parameters by name, the peers' builds.
-#include "reports/data/studies.hpp"
+#include "reports/studies/studies.hpp"
 
 #include "analysis/kernel/kernel.hpp"
 #include "analysis/peers/peers.hpp"

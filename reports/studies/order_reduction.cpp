@@ -1,11 +1,13 @@
-// Order against stiffness (analysis/studies/order_reduction.hpp): its JSON and its table.
+// `steplab study convergence --sweep`: order against stiffness (analysis/studies/order_reduction.hpp),
+// its JSON (steplab.convergence_sweep/1) and its table.
+#include "reports/studies/studies.hpp"
+
 #include <cmath>
 
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
 #include "reports/data/run_json.hpp"
-#include "reports/data/studies.hpp"
 
 namespace steplab {
 namespace {

@@ -1,13 +1,20 @@
-// The spring's stability study: its parameters, JSON and tables (`study stability`, `study damping`).
-#include "reports/data/studies.hpp"
+// `steplab study stability` and `steplab study damping`: on the spring, the thresholds dt*
+// predicted and measured over dampings and the (dt, damping) map, and the energy growth over damping
+// and dt (analysis/studies/stability.hpp); on a scene that declares its modes, its thresholds
+// (analysis/studies/mode_stability.hpp, written by mode_stability.cpp). Their commands, their
+// parameters, tables and JSON (steplab.stability/2).
+#include "reports/studies/studies.hpp"
 
 #include <cmath>
 
 #include <fmt/format.h>
 
 #include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/stability.hpp"
 #include "core/scenes/spring.hpp"
+#include "reports/data/inputs.hpp"
 #include "reports/data/run_json.hpp"
+#include "reports/data/study_command.hpp"
 
 namespace steplab {
 namespace {
@@ -154,5 +161,108 @@ std::string amplitude_table_text(const AmplitudeTable& t) {
   }
   return out;
 }
+
+namespace {
+
+// `study damping` and `study stability` share these (the spring only).
+struct StabilityArgs : StudyArgs {
+  std::string dampings;  // damping sweep; empty: 0 .. 2 x critical (21) + 0.1
+};
+
+StabilityConfig stability_config(StabilityArgs& a, Context& ctx) {
+  StabilityConfig c;
+  c.params = a.scene.values(a.scene.scene_index());
+  c.methods = resolve_methods(a.methods, false);
+  c.workers = ctx.workers(resolve_thread_count(a.threads));
+  c.pack_width = resolve_lanes(a.lanes);
+  return c;
+}
+
+// The scenes each stability command takes: damping the spring's alone; stability the spring's
+// (thresholds over dampings, the map) or a scene's that declares its modes.
+bool spring_scene(const SceneKernel& s) { return runs_spring_study(s); }
+bool stability_scene(const SceneKernel& s) { return runs_spring_study(s) || s.modes != nullptr; }
+
+void add_stability_options(CLI::App* app, StabilityArgs& a, bool sweep, bool map) {
+  // study stability: the spring or a scene with modes; study damping: the spring
+  a.scene.add_to(app, map ? stability_scene : spring_scene, map);
+  app->add_option("--methods", a.methods, "comma-separated methods (default every numerical method)");
+  // damping: the sweep's steps (and its dampings); stability: the thresholds' dampings and the map
+  const ParamFilter sweep_steps = [](std::string_view p) { return p == "dts"; }, the_rest = [](std::string_view p) { return p != "dts"; };
+  add_params(app, stability_params(), a.params, StabilityConfig{}, sweep ? sweep_steps : the_rest);
+  if (sweep) app->add_option("--dampings", a.dampings, "comma-separated dampings (default 0 to twice critical in 21 steps, and 0.1)");
+  add_threads_option(app, a.threads);
+  add_lanes_option(app, a.lanes);
+  add_shard_option(app, a.shard);
+  app->add_option("--json", a.json, map ? fmt::format("write JSON (schema {} on the spring, {} on a scene with modes) to this "
+                                                      "file", schema::stability, schema::mode_stability)
+                                        : fmt::format("write JSON (schema {}) to this file", schema::stability));
+}
+
+int run_damping(StabilityArgs& a, Context& ctx) {
+  StabilityConfig c = stability_config(a, ctx);
+  read_params(stability_params(), a.params, c);
+  if (!a.dampings.empty()) c.sweep_dampings = number_list("--dampings", a.dampings, Bound::NonNegative);
+  using Rows = std::vector<SweepRow>;
+  return run_study(ctx, a.shard, a.json, false, [&] { return damping_sweep(c); }, [](const Rows& r) { return sweep_table(r); },
+                   [&](const Rows& r) { return stability_json(c.params, {}, r, nullptr); });
+}
+
+// The spring's study (thresholds over dampings, the map: analysis/studies/stability.hpp) on the spring;
+// the modes' study on any other scene that declares its modes (core/scene.hpp).
+bool modes_study(const SceneKernel& s) { return s.modes != nullptr; }
+
+// A scene's thresholds: predicted from its modes, measured on the whole scene (analysis/studies/mode_stability.hpp).
+int mode_stability_command(StabilityArgs& a, Context& ctx) {
+  for (const char* spring_only : {"--threshold-dampings", "--map-dt-points", "--map-damping-points", "--map-dt-min", "--map-dt-max"})
+    if (a.scene.app->count(spring_only) > 0)
+      throw UsageError(fmt::format("{} applies to the spring's study; the {}'s damping is among its own parameters",
+                                   spring_only, a.scene.scene));
+  ModeStabilityConfig c;
+  c.scene = a.scene.scene_index();
+  c.params = a.scene.values(c.scene);
+  c.methods = resolve_methods(a.methods, false, c.scene);
+  c.workers = ctx.workers(resolve_thread_count(a.threads));
+  resolve_lanes(a.lanes);  // checked; the runs of a scene of run-time size go one at a time
+  using Rows = std::vector<ModeThresholdRow>;
+  return run_study(ctx, a.shard, a.json, false, [&] { return mode_threshold_study(c); },
+                   [&](const Rows& r) { return mode_thresholds_table(scene_name(c.scene), r); },
+                   [&](const Rows& r) { return mode_stability_json(c, r); });
+}
+
+int run_stability(StabilityArgs& a, Context& ctx) {
+  const SceneKernel& scene = scene_kernel(a.scene.scene_index());
+  if (!runs_spring_study(scene)) {
+    if (modes_study(scene)) return mode_stability_command(a, ctx);
+    const std::string accepted = scene_list([](const SceneKernel& s) { return runs_spring_study(s) || modes_study(s); });
+    throw UsageError(fmt::format("--scene '{}' is not accepted by study stability; accepted: {} (the spring, or a scene "
+                                 "that declares its modes)", a.scene.scene, accepted));
+  }
+  StabilityConfig c = stability_config(a, ctx);
+  read_params(stability_params(), a.params, c);
+  check_stability(c, option_names());
+  using Result = std::pair<std::vector<ThresholdRow>, StabilityMap>;
+  return run_study(ctx, a.shard, a.json, false, [&] { return Result{threshold_study(c), stability_map(c)}; },
+                   [](const Result& r) { return thresholds_table(r.first) + "\n" + map_summary(r.second); },
+                   [&](const Result& r) { return stability_json(c.params, r.first, {}, &r.second); });
+}
+
+CLI::App* add_damping(CLI::App* study, StabilityArgs& a) {
+  CLI::App* cmd = study->add_subcommand("damping", "spring: energy growth rate measured and predicted over damping and dt");
+  add_stability_options(cmd, a, true, false);
+  return cmd;
+}
+
+CLI::App* add_stability(CLI::App* study, StabilityArgs& a) {
+  CLI::App* cmd = study->add_subcommand("stability", "stability thresholds dt* predicted and measured: the spring (and a (dt, "
+                                                     "damping) map) or any scene that declares its modes (the rope of N masses)");
+  add_stability_options(cmd, a, false, true);
+  return cmd;
+}
+
+}  // namespace
+
+StudyCommand damping_command(CLI::App* study) { return study_command(study, add_damping, run_damping); }
+StudyCommand stability_command(CLI::App* study) { return study_command(study, add_stability, run_stability); }
 
 }  // namespace steplab

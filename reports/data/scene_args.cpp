@@ -1,4 +1,4 @@
-#include "reports/cli/scene_args.hpp"
+#include "reports/data/scene_args.hpp"
 
 #include <algorithm>
 

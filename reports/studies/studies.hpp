@@ -1,10 +1,10 @@
 // The studies of `steplab study`: their list, and each one's JSON document, printed table,
 // parameters and schema name. Field names are an interface (docs/json.md).
 //
-// A new study: analysis/studies/<name>.{hpp,cpp} (its runs); reports/data/<name>_output.cpp (its
-// JSON, table and StudyParam table, declared below with its schema name); its command,
-// reports/cli/<name>_command.cpp, defining `StudyCommand <name>_command(CLI::App* study)`
-// (reports/cli/commands.hpp); and X(<name>) in this list, in `steplab study --help`'s order.
+// A new study: analysis/studies/<name>.{hpp,cpp} (its runs); reports/studies/<name>.cpp (its
+// command, `StudyCommand <name>_command(CLI::App* study)`, built with study_command
+// (reports/data/study_command.hpp); its StudyParam table, JSON and table, declared below with its
+// schema name); and X(<name>) in this list, in `steplab study --help`'s order.
 #pragma once
 
 #define STEPLAB_STUDIES(X) \
@@ -51,7 +51,7 @@ std::span<const StudyParam<ConvergenceConfig>> convergence_params();
 void check_convergence(const ConvergenceConfig& c, const ParamNamer& name);
 // Order against stiffness: schema::convergence_sweep (each method's theory and its two
 // limits checked, the fits by method and value, and each value's whole convergence study), and
-// the table of fitted orders with the theory beside them (reports/data/sweep_output.cpp).
+// the table of fitted orders with the theory beside them (reports/studies/order_reduction.cpp).
 Json order_reduction_json(const OrderReduction& r);
 // A limit's check in a word: holds, fails, not reached, no fit, or "-" without a theory.
 std::string limit_word(const LimitCheck& c, bool has_theory);
@@ -96,7 +96,7 @@ std::string again_text(double x);  // stable again from: "never" where infinite
 #include "analysis/studies/mode_stability.hpp"
 
 namespace steplab {
-// `study stability` on a scene with modes (reports/data/mode_output.cpp): schema::mode_stability.
+// `study stability` on a scene with modes (reports/studies/mode_stability.cpp): schema::mode_stability.
 Json mode_stability_json(const ModeStabilityConfig& c, const std::vector<ModeThresholdRow>& rows);
 std::string mode_thresholds_table(std::string_view scene, const std::vector<ModeThresholdRow>& rows);
 }  // namespace steplab
@@ -108,7 +108,7 @@ namespace schema {
 // study scaling: "unbounded" for a stable step of every size (version 3 wrote "inf")
 inline constexpr std::string_view scaling = "steplab.scaling/6";
 }  // namespace schema
-// `study scaling` (reports/data/scaling_output.cpp). Its parameters
+// `study scaling`. Its parameters
 // that do not depend on the scene (t-end, frames, max-steps; the first is the report's scaling.t_end).
 std::span<const StudyParam<ScalingConfig>> scaling_params();
 Json scaling_json(const ScalingResult& r);
@@ -160,7 +160,7 @@ namespace steplab {
 namespace schema {
 inline constexpr std::string_view frames = "steplab.frames/4";  // study frames
 }  // namespace schema
-Json frames_json(const FramesResult& r);  // reports/data/frames_output.cpp
+Json frames_json(const FramesResult& r);
 std::string frames_table(const FramesResult& r);
 // Its parameters (the command's options) and their rule: a whole number of frames, at least 1.
 std::span<const StudyParam<FramesConfig>> frames_params();
@@ -177,7 +177,7 @@ namespace steplab {
 namespace schema {
 inline constexpr std::string_view long_time = "steplab.long_time/1";  // study long-time
 }  // namespace schema
-Json long_time_json(const LongTimeResult& r);  // reports/data/long_time_output.cpp
+Json long_time_json(const LongTimeResult& r);
 std::string long_time_table(const LongTimeResult& r);
 // Its parameters (the command's options, the report's long_time keys) and the rules between
 // them: fit-from below periods, at most 1e10 steps a run. `name` gives a parameter's name as
@@ -194,8 +194,17 @@ namespace steplab {
 namespace schema {
 inline constexpr std::string_view dense_output = "steplab.dense_output/1";  // study dense-output
 }  // namespace schema
-Json dense_output_json(const DenseOutputResult& r);  // reports/data/dense_output_output.cpp
+Json dense_output_json(const DenseOutputResult& r);
 std::string dense_output_table(const DenseOutputResult& r);
 // Its parameters (the command's options); their rule is check_sweep's.
 std::span<const StudyParam<DenseOutputConfig>> dense_output_params();
+}  // namespace steplab
+
+namespace steplab {
+struct StudyCommand;  // reports/data/study_command.hpp
+// Each study's command, `<name>_command`, made in reports/studies/<name>.cpp (damping's beside
+// stability's).
+#define STEPLAB_STUDY_COMMAND(name) StudyCommand name##_command(CLI::App* study);
+STEPLAB_STUDIES(STEPLAB_STUDY_COMMAND)
+#undef STEPLAB_STUDY_COMMAND
 }  // namespace steplab
