@@ -10,8 +10,8 @@
 #include "analysis/peers/sized_peers.hpp"
 #include "bench/cvode_rope.h"
 #include "core/scenes/chain.hpp"
-#include "reports/cli/commands.hpp"
 #include "reports/data/inputs.hpp"
+#include "reports/data/study_command.hpp"
 
 namespace steplab {
 namespace {
