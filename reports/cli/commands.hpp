@@ -1,5 +1,6 @@
-// The commands behind the CLI but the studies' (reports/studies/). Each takes its parsed arguments, throws UsageError for bad input
-// (before writing anything) and returns the exit status.
+// The commands that are not studies (a study's command is in reports/studies/<name>.cpp). Each
+// takes its parsed arguments, throws UsageError for bad input (before writing anything) and
+// returns the exit status.
 #pragma once
 
 #include <string>
