@@ -115,18 +115,17 @@ bool finish_shard(const Context& ctx, const std::string& json);
 // The most parts a study is split into.
 inline constexpr long long kMaxShards = 1'000'000;
 
-// What every study command does once its input is checked: its shard begun (if `shard` names
+// What every study command does once its input is checked: its shard begun (if `a.shard` names
 // one), nothing run in a dry run, the study run, and then its part written (a shard) or its
-// table on stdout and its JSON to `json` (if named). `timed`: the study times its runs.
+// table on stdout and its JSON to `a.json` (if named). `timed`: the study times its runs.
 template <class Study, class Table, class ToJson>
-int run_study(Context& ctx, const std::string& shard, const std::string& json, bool timed, Study&& study, Table&& table,
-              ToJson&& to_json) {
-  begin_shard(ctx, shard, json, timed);
-  if (ctx.stop_after_validation(json)) return 0;
+int run_study(Context& ctx, const StudyArgs& a, bool timed, Study&& study, Table&& table, ToJson&& to_json) {
+  begin_shard(ctx, a.shard, a.json, timed);
+  if (ctx.stop_after_validation(a.json)) return 0;
   const auto r = study();
-  if (finish_shard(ctx, json)) return 0;
+  if (finish_shard(ctx, a.json)) return 0;
   std::fputs(table(r).c_str(), stdout);
-  if (!json.empty()) write_atomic(json, to_json(r).dump(1) + "\n");
+  if (!a.json.empty()) write_atomic(a.json, to_json(r).dump(1) + "\n");
   return 0;
 }
 

@@ -147,8 +147,7 @@ int run_collision(CollisionArgs& a, Context& ctx) {
   read_params(collision_params(), a.params, c);
   check_collision(c);
   c.workers = ctx.workers(resolve_thread_count(a.threads));
-  return run_study(ctx, a.shard, a.json, false, [&] { return collision_study(c); },
-                   [](const CollisionResult& r) { return collision_table(r); }, [](const CollisionResult& r) { return collision_json(r); });
+  return run_study(ctx, a, false, [&] { return collision_study(c); }, collision_table, collision_json);
 }
 
 CLI::App* add_collision(CLI::App* study, CollisionArgs& a) {

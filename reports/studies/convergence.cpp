@@ -285,14 +285,10 @@ int run_convergence(ConvergenceArgs& a, Context& ctx) {
   if (!a.sweep.empty()) {
     const auto [param, values] = parse_sweep(a.sweep, c.scene);
     if (!a.shard.empty()) throw UsageError("--sweep runs in one process; accepted: --sweep or --shard, not both");
-    if (ctx.stop_after_validation(a.json)) return 0;
-    const OrderReduction r = order_reduction(convergence_sweep(c, param, values));
-    std::fputs(order_reduction_table(r).c_str(), stdout);
-    if (!a.json.empty()) write_atomic(a.json, order_reduction_json(r).dump(1) + "\n");
-    return 0;
+    return run_study(ctx, a, false, [&] { return order_reduction(convergence_sweep(c, param, values)); }, order_reduction_table,
+                     order_reduction_json);
   }
-  return run_study(ctx, a.shard, a.json, c.timing, [&] { return convergence_study(c); },
-                   [](const ConvergenceResult& r) { return convergence_table(r); }, [](const ConvergenceResult& r) { return convergence_json(r); });
+  return run_study(ctx, a, c.timing, [&] { return convergence_study(c); }, convergence_table, convergence_json);
 }
 
 CLI::App* add_convergence(CLI::App* study, ConvergenceArgs& a) {

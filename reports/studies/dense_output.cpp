@@ -104,8 +104,7 @@ int run_dense_output(DenseOutputArgs& a, Context& ctx) {
   read_params(dense_output_params(), a.params, c);
   check_sweep(c.dt_min, c.dt_max, c.t_end, option_names());
   c.workers = ctx.workers(resolve_thread_count(a.threads));
-  return run_study(ctx, a.shard, a.json, false, [&] { return dense_output_study(c); },
-                   [](const DenseOutputResult& r) { return dense_output_table(r); }, [](const DenseOutputResult& r) { return dense_output_json(r); });
+  return run_study(ctx, a, false, [&] { return dense_output_study(c); }, dense_output_table, dense_output_json);
 }
 
 }  // namespace

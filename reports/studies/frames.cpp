@@ -176,8 +176,7 @@ int run_frames(FramesArgs& a, Context& ctx) {
   c.timing = !a.no_timing;
   c.orders = !a.no_orders;
   c.workers = ctx.workers(resolve_thread_count(a.threads));
-  return run_study(ctx, a.shard, a.json, c.timing, [&] { return frames_study(c); },
-                   [](const FramesResult& r) { return frames_table(r); }, [](const FramesResult& r) { return frames_json(r); });
+  return run_study(ctx, a, c.timing, [&] { return frames_study(c); }, frames_table, frames_json);
 }
 
 }  // namespace

@@ -167,8 +167,7 @@ int run_long_time(LongTimeArgs& a, Context& ctx) {
   read_params(long_time_params(), a.params, c);
   check_long_time(c, option_names());
   c.workers = ctx.workers(resolve_thread_count(a.threads));
-  return run_study(ctx, a.shard, a.json, false, [&] { return long_time_study(c); },
-                   [](const LongTimeResult& r) { return long_time_table(r); }, [](const LongTimeResult& r) { return long_time_json(r); });
+  return run_study(ctx, a, false, [&] { return long_time_study(c); }, long_time_table, long_time_json);
 }
 
 }  // namespace

@@ -297,8 +297,7 @@ int run_scaling(ScalingArgs& a, Context& ctx) {
   c.steps_divide_frames = a.steps_divide_frames;
   c.workers = ctx.workers(resolve_thread_count(a.threads));
   c.timing = !a.no_timing;
-  return run_study(ctx, a.shard, a.json, c.timing, [&] { return scaling_study(c); },
-                   [](const ScalingResult& r) { return scaling_table(r); }, [](const ScalingResult& r) { return scaling_json(r); });
+  return run_study(ctx, a, c.timing, [&] { return scaling_study(c); }, scaling_table, scaling_json);
 }
 
 }  // namespace

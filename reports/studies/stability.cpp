@@ -204,7 +204,7 @@ int run_damping(StabilityArgs& a, Context& ctx) {
   read_params(stability_params(), a.params, c);
   if (!a.dampings.empty()) c.sweep_dampings = number_list("--dampings", a.dampings, Bound::NonNegative);
   using Rows = std::vector<SweepRow>;
-  return run_study(ctx, a.shard, a.json, false, [&] { return damping_sweep(c); }, [](const Rows& r) { return sweep_table(r); },
+  return run_study(ctx, a, false, [&] { return damping_sweep(c); }, sweep_table,
                    [&](const Rows& r) { return stability_json(c.params, {}, r, nullptr); });
 }
 
@@ -225,7 +225,7 @@ int mode_stability_command(StabilityArgs& a, Context& ctx) {
   c.workers = ctx.workers(resolve_thread_count(a.threads));
   resolve_lanes(a.lanes);  // checked; the runs of a scene of run-time size go one at a time
   using Rows = std::vector<ModeThresholdRow>;
-  return run_study(ctx, a.shard, a.json, false, [&] { return mode_threshold_study(c); },
+  return run_study(ctx, a, false, [&] { return mode_threshold_study(c); },
                    [&](const Rows& r) { return mode_thresholds_table(scene_name(c.scene), r); },
                    [&](const Rows& r) { return mode_stability_json(c, r); });
 }
@@ -242,7 +242,7 @@ int run_stability(StabilityArgs& a, Context& ctx) {
   read_params(stability_params(), a.params, c);
   check_stability(c, option_names());
   using Result = std::pair<std::vector<ThresholdRow>, StabilityMap>;
-  return run_study(ctx, a.shard, a.json, false, [&] { return Result{threshold_study(c), stability_map(c)}; },
+  return run_study(ctx, a, false, [&] { return Result{threshold_study(c), stability_map(c)}; },
                    [](const Result& r) { return thresholds_table(r.first) + "\n" + map_summary(r.second); },
                    [&](const Result& r) { return stability_json(c.params, r.first, {}, &r.second); });
 }

@@ -180,8 +180,7 @@ int run_work_precision(WorkPrecisionArgs& a, Context& ctx) {
   c.workers = ctx.workers(resolve_thread_count(a.threads));
   resolve_lanes(a.lanes);  // checked; the work-precision runs go one at a time
   c.timing = !a.no_timing;
-  return run_study(ctx, a.shard, a.json, c.timing, [&] { return work_precision_study(c); },
-                   [](const WorkPrecisionResult& r) { return work_precision_table(r); }, [](const WorkPrecisionResult& r) { return work_precision_json(r); });
+  return run_study(ctx, a, c.timing, [&] { return work_precision_study(c); }, work_precision_table, work_precision_json);
 }
 
 }  // namespace
