@@ -36,13 +36,13 @@ namespace steplab {
 // a pack is not passed in registers across calls: core/pack.hpp). 1 is one run at a time.
 inline constexpr int kPackWidths[] = {1, 2, 4, 8};
 
-// The widest loop compiled: 8 (AVX-512) unless the build says less. The sanitized build
-// compiles the 2-lane loop only (STEPLAB_MAX_PACK_WIDTH=2, CMakeLists.txt): the loop is one
-// template at every width, and each width more was another copy of it in every method's file.
+// The widest loop compiled: STEPLAB_MAX_PACK_WIDTH (CMakeLists.txt), 4 (AVX2) by default; 8
+// (AVX-512) where the build is configured so; 2 in the sanitized build. The loop is one template
+// at every width, and each width more is another copy of it in every method's file.
 #if defined(STEPLAB_MAX_PACK_WIDTH)
 inline constexpr int kMaxPackWidth = STEPLAB_MAX_PACK_WIDTH;
 #else
-inline constexpr int kMaxPackWidth = 8;
+inline constexpr int kMaxPackWidth = 4;
 #endif
 
 inline bool cpu_has_width(int width) {
@@ -58,9 +58,10 @@ inline bool cpu_has_width(int width) {
 #endif
 }
 
-// The studies' default: AVX2's 4 lanes where the CPU has it, else SSE2's 2. Not AVX-512's 8:
-// on the machine docs/performance.md quotes (AMD EPYC, Zen 4, which executes a 512-bit operation as two
-// 256-bit halves) its loop ran 2x slower than AVX2's (docs/performance.md, "Runs stepped together in SIMD packs"); --lanes 8 asks for it.
+// The studies' default: AVX2's 4 lanes where the CPU has it, else SSE2's 2. Not AVX-512's 8 (in
+// a build configured with STEPLAB_MAX_PACK_WIDTH=8): on the machine docs/performance.md quotes
+// (AMD EPYC, Zen 4, which executes a 512-bit operation as two 256-bit halves) its loop ran 3x
+// slower than AVX2's, GCC 12 doing its comparisons lane by lane; --lanes 8 asks for it there.
 inline int best_width() {
   static const int best = cpu_has_width(4) ? 4 : cpu_has_width(2) ? 2 : 1;
   return best;
@@ -75,10 +76,14 @@ struct BatchRun {
 // Whether M steps packs of runs of S: S is Packable and M's step (with its memory, for a
 // multistep method) is written over the scalar (core/method.hpp).
 // Its stages' dense solves, if any, are up to kPackLuSize unknowns (core/method.hpp).
+// Asked of the 2-lane pack, which every build compiles: Stepper::step's return type is deduced,
+// so the question instantiates the method's step over that pack, which the 2-lane loop then
+// shares (asked of an 8-lane pack, it was one more instantiation per pair: about a tenth of
+// each method file's compile time).
 template <class M, class S>
 concept PackedStep = Packable<S> && solve_stages<M>() * S::dim <= kPackLuSize &&
-                     requires(Stepper<M, PackScene<S, Pack<8>>, Pack<8>>& st, const PackScene<S, Pack<8>>& s,
-                              State<S::dim, Pack<8>>& y, Pack<8> h) {
+                     requires(Stepper<M, PackScene<S, Pack<2>>, Pack<2>>& st, const PackScene<S, Pack<2>>& s,
+                              State<S::dim, Pack<2>>& y, Pack<2> h) {
                        st.step(s, y, h, h);  // a StepStatus, or the lanes that failed (a mask)
                      };
 

@@ -160,9 +160,10 @@ int resolve_lanes(const std::string& text) {
   if (text == "auto") return 0;
   const long long n = parse_count("--lanes", text, 1, 64);
   if (!cpu_has_width(static_cast<int>(n)))  // also false for a width that is none of 1, 2, 4, 8
-    throw UsageError(fmt::format("--lanes {} is not a pack width this CPU steps; accepted: auto, 1 (one run at a time), "
-                                 "2 (SSE2){}{}",
-                                 text, cpu_has_width(4) ? ", 4 (AVX2)" : "", cpu_has_width(8) ? ", 8 (AVX-512)" : ""));
+    throw UsageError(fmt::format("--lanes {} is not a pack width this CPU and build step; accepted: auto, 1 (one run at a time), "
+                                 "2 (SSE2){}{}{}",
+                                 text, cpu_has_width(4) ? ", 4 (AVX2)" : "", cpu_has_width(8) ? ", 8 (AVX-512)" : "",
+                                 n == 8 && kMaxPackWidth < 8 ? "; 8 needs AVX-512 and a build configured with -DSTEPLAB_MAX_PACK_WIDTH=8" : ""));
   return static_cast<int>(n);
 }
 
@@ -174,7 +175,8 @@ void add_lanes_option(CLI::App* app, std::string& lanes) {
   lanes = "auto";
   app->add_option("--lanes", lanes,
                   "runs of a method stepped together in SIMD lanes, where its kernel is packed (docs/design.md, \"Why a "
-                  "step is fast\"): auto (4 with AVX2, else 2), 2 (SSE2), 4 (AVX2), 8 (AVX-512), or 1: one at a time. "
+                  "step is fast\"): auto (4 with AVX2, else 2), 2 (SSE2), 4 (AVX2), 8 (AVX-512, in a build configured with "
+                  "-DSTEPLAB_MAX_PACK_WIDTH=8), or 1: one at a time. "
                   "The output is the same")
       ->capture_default_str();
 }

@@ -10,6 +10,7 @@
 #include <ostream>
 
 #include "cli_helpers.hpp"
+#include "core/batch.hpp"
 #include "reports/studies/studies.hpp"
 
 namespace steplab {
@@ -248,6 +249,16 @@ void one_rule_each_way(std::span<const StudyParam<C>> table, const char* section
     EXPECT_EQ(message([&] { params_from_json(table, j, section, read); }), "") << name;
     EXPECT_EQ(params_json(table, typed)[key], params_json(table, read)[key]) << name;
   }
+}
+
+// AVX-512's 8 lanes are compiled only where the build is configured for them (CMakeLists.txt):
+// elsewhere the refusal says how to get them.
+TEST(Lanes, EightNamesTheBuildOptionWhereTheBuildHasNoAvx512Loop) {
+  if (kMaxPackWidth >= 8) GTEST_SKIP() << "this build compiles the 8-lane loop";
+  const Result r = run_steplab("study stability --lanes 8");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("--lanes 8 is not a pack width"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("-DSTEPLAB_MAX_PACK_WIDTH=8"), std::string::npos) << r.err;
 }
 
 TEST(StudyParams, OneRuleEachWay) {
