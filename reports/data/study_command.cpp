@@ -160,7 +160,7 @@ int resolve_lanes(const std::string& text) {
   if (text == "auto") return 0;
   const long long n = parse_count("--lanes", text, 1, 64);
   if (!cpu_has_width(static_cast<int>(n)))  // also false for a width that is none of 1, 2, 4, 8
-    throw UsageError(fmt::format("--lanes {} is not a pack width this CPU and build step; accepted: auto, 1 (one run at a time), "
+    throw UsageError(fmt::format("--lanes {} is not a pack width this CPU and build can step; accepted: auto, 1 (one run at a time), "
                                  "2 (SSE2){}{}{}",
                                  text, cpu_has_width(4) ? ", 4 (AVX2)" : "", cpu_has_width(8) ? ", 8 (AVX-512)" : "",
                                  n == 8 && kMaxPackWidth < 8 ? "; 8 needs AVX-512 and a build configured with -DSTEPLAB_MAX_PACK_WIDTH=8" : ""));

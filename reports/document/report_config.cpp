@@ -81,6 +81,27 @@ std::vector<double> scene_values(const Json& j, std::size_t scene) {
   return out;
 }
 
+// The report's own keys beside its studies', declared as theirs are (reports/data/study_params.hpp):
+// from these rows come their keys, their defaults in --print-config and the one rule each is read by.
+constexpr StudyParam<ReportConfig> kSheetStabilityParams[] = {  // the "stability" object's, after the study's
+    {"large-dt", "the sheet's large step, with the spring's damping", kPositive, &ReportConfig::large_dt},
+    {"small-dt", "the sheet's small step, without damping", kPositive, &ReportConfig::small_dt},
+};
+constexpr StudyParam<StiffOrderDefaults> kStiffOrderParams[] = {
+    {"stiffnesses", "the stiffness of each sweep, increasing", kPositive, &StiffOrderDefaults::stiffnesses},
+    {"dt-max", "largest step", kPositive, &StiffOrderDefaults::dt_max},
+    {"dt-min", "smallest step", kPositive, &StiffOrderDefaults::dt_min},
+    {"points", "steps in the geometric sweep", {3, 1000}, &StiffOrderDefaults::points},
+    {"t-end", "simulated time of every run", kPositive, &StiffOrderDefaults::t_end},
+};
+constexpr StudyParam<ReportConfig> kFigureParams[] = {
+    {"cannonball-dt", "the cannon ball's step", kPositive, &ReportConfig::cannonball_dt},
+    {"cannonball-t-end", "the cannon ball's time", kPositive, &ReportConfig::cannonball_t_end},
+    {"spring-dts", "the spring's steps", kPositive, &ReportConfig::spring_figure_dts},
+    {"spring-t-end", "the spring's time", kPositive, &ReportConfig::spring_figure_t_end},
+    {"energy-t-end", "the energy figure's time", kPositive, &ReportConfig::energy_t_end},
+};
+
 // Indices of `names` in a table, each found by `find`, sorted into the table's order; UsageError
 // for an empty list or name, an unknown or a repeated name (`accepted` lists the table).
 template <class Find>
@@ -210,8 +231,7 @@ Json report_config_json(const ReportConfig& c) {
   j["work_precision"] = params_json(work_precision_params(), c.work_precision);
   j["work_precision"]["timing"] = c.timing;
   j["stability"] = params_json(stability_params(), c.stability);
-  j["stability"]["large_dt"] = c.large_dt;
-  j["stability"]["small_dt"] = c.small_dt;
+  j["stability"].update(params_json<ReportConfig>(kSheetStabilityParams, c));
   j["collision"] = params_json(collision_params(), c.collision);
   j["long_time"] = {{"periods", c.long_time_periods}};
   Json scaling;  // the sizes of each scene by its name, then the measure
@@ -222,15 +242,9 @@ Json report_config_json(const ReportConfig& c) {
   scaling["stiffening"] = c.scaling_stiffening;
   scaling["visual"] = c.scaling_visual;
   j["scaling"] = std::move(scaling);
-  const StiffOrderDefaults& so = c.stiff_order;
   j[std::string(scene_name(c.stiffened.scene))] = scene_params_json(c.stiffened.scene, c.stiffened.params);
-  j["stiff_order"] = {{"stiffnesses", so.stiffnesses}, {"dt_max", so.dt_max}, {"dt_min", so.dt_min}, {"points", so.points},
-                      {"t_end", so.t_end}};
-  j["figures"] = {{"cannonball_dt", c.cannonball_dt},
-                  {"cannonball_t_end", c.cannonball_t_end},
-                  {"spring_dts", c.spring_figure_dts},
-                  {"spring_t_end", c.spring_figure_t_end},
-                  {"energy_t_end", c.energy_t_end}};
+  j["stiff_order"] = params_json<StiffOrderDefaults>(kStiffOrderParams, c.stiff_order);
+  j["figures"] = params_json<ReportConfig>(kFigureParams, c);
   j["threads"] = c.threads;
   return j;
 }
@@ -252,8 +266,7 @@ ReportConfig report_config_from_json(const Json& user, const ReportConfig& base)
   const Json& st = j["stability"];
   params_from_json(stability_params(), st, "stability", c.stability);
   check_stability(c.stability, config_names("stability"));
-  c.large_dt = num(st["large_dt"], "stability.large_dt", Bound::Positive);
-  c.small_dt = num(st["small_dt"], "stability.small_dt", Bound::Positive);
+  params_from_json<ReportConfig>(kSheetStabilityParams, st, "stability", c);
   params_from_json(collision_params(), j["collision"], "collision", c.collision);
   check_collision(c.collision);
   LongTimeConfig long_time = default_long_time_config(scene_index(kLongTimeScene));  // the study's rules, as its command has them
@@ -286,22 +299,12 @@ ReportConfig report_config_from_json(const Json& user, const ReportConfig& base)
   if (c.scaling_stiffening.empty()) throw UsageError("config: scaling.stiffening is empty; accepted: 1 or more positive factors");
   c.scaling_visual = num(sc["visual"], "scaling.visual", Bound::Positive);
   c.stiffened.params = scene_values(j[std::string(scene_name(c.stiffened.scene))], c.stiffened.scene);
-  const Json& so = j["stiff_order"];
   StiffOrderDefaults& s = c.stiff_order;
-  s.stiffnesses = nums(so["stiffnesses"], "stiff_order.stiffnesses", Bound::Positive);
+  params_from_json<StiffOrderDefaults>(kStiffOrderParams, j["stiff_order"], "stiff_order", s);
   check_increasing("config: stiff_order.stiffnesses", s.stiffnesses);
   if (s.stiffnesses.size() < 2) throw UsageError("config: stiff_order.stiffnesses has fewer than 2 values; accepted: 2 or more");
-  s.dt_max = num(so["dt_max"], "stiff_order.dt_max", Bound::Positive);
-  s.dt_min = num(so["dt_min"], "stiff_order.dt_min", Bound::Positive);
-  s.points = count(so["points"], "stiff_order.points", 3, 1000);
-  s.t_end = num(so["t_end"], "stiff_order.t_end", Bound::Positive);
   check_sweep(s.dt_min, s.dt_max, s.t_end, config_names("stiff_order"));
-  const Json& fg = j["figures"];
-  c.cannonball_dt = num(fg["cannonball_dt"], "figures.cannonball_dt", Bound::Positive);
-  c.cannonball_t_end = num(fg["cannonball_t_end"], "figures.cannonball_t_end", Bound::Positive);
-  c.spring_figure_dts = nums(fg["spring_dts"], "figures.spring_dts", Bound::Positive);
-  c.spring_figure_t_end = num(fg["spring_t_end"], "figures.spring_t_end", Bound::Positive);
-  c.energy_t_end = num(fg["energy_t_end"], "figures.energy_t_end", Bound::Positive);
+  params_from_json<ReportConfig>(kFigureParams, j["figures"], "figures", c);
   step_count(c.cannonball_t_end, c.cannonball_dt);
   for (double dt : c.spring_figure_dts) step_count(c.spring_figure_t_end, dt);
   step_count(c.energy_t_end, c.large_dt);

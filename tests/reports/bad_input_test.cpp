@@ -212,6 +212,13 @@ INSTANTIATE_TEST_SUITE_P(
                  R"({"stiff_order": {"stiffnesses": [1, 1e4, 1e2]}})"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "config: stiff_order.stiffnesses",
                  R"({"stiff_order": {"stiffnesses": [1, -5]}})"},
+        // the report's own keys, read by their tables' rule as the studies' are (report_config.cpp)
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "config: stiff_order.points 3.5 is not a whole number; accepted: 3 .. 1000",
+                 R"({"stiff_order": {"points": 3.5}})"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "config: figures.spring_dts -1 is out of range; accepted: > 0",
+                 R"({"figures": {"spring_dts": [0.01, -1]}})"},
+        BadInput{"report --config {dir}/config.json --out {dir}/r", "config: stability.large_dt 0 is out of range; accepted: > 0",
+                 R"({"stability": {"large_dt": 0}})"},
         BadInput{"report --config {dir}/config.json --out {dir}/r", "config: target.stiffness",
                  R"({"target": {"stiffness": 0}})"}));
 
