@@ -255,7 +255,7 @@ std::string unstable_words(const std::vector<MethodRate>& runs) {
   std::vector<std::string> rates;
   for (const MethodRate& r : runs)
     if (is_weak(r)) rates.push_back(fmt::format("{:.3g}", r.rate));
-    else if (std::isfinite(r.rate) && r.rate < kWeakRate) strong.push_back(fmt::format("`{}` (E/E0 up to {:.3g})", name(r.method), r.energy_max));
+    else if (std::isfinite(r.rate) && r.rate < kWeakRate) strong.push_back(fmt::format("`{}` (its E/E0 up to {:.3g})", name(r.method), r.energy_max));
     else strong.push_back(fmt::format("`{}`", name(r.method)));
   if (weak.empty()) return and_list(strong);
   const std::string w = fmt::format("weakly (energy growing {} per unit time) {}", and_list(rates), method_list(weak));

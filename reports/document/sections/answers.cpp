@@ -116,9 +116,9 @@ std::string order_answer(const Page& page) {
     if (!fams.empty()) ways.push_back(fmt::format("{} in {}", to_text(t), and_list(fams)));
   }
   if (!ways.empty())
-    md += fmt::format(" Within a family, whose methods share a construction, dt* {}: how a method is built sets its "
+    md += fmt::format(" Within a family, whose methods share a construction, at damping {}, dt* {}: how a method is built sets its "
                       "stability more than its order does{}.",
-                      and_list(ways),
+                      c.damping(), and_list(ways),
                       page.has("regions") ? fmt::format(" (figure {} draws the regions of the methods that have one)", page.number("regions")) : "");
   if (Ledger* l = page.ledger) {
     if (f.spearman_n >= 3) claim_spearman(*l, spearman_points({page.data}, f), f.spearman, "answers.order_correlation", "answers", md, 2);

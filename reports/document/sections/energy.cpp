@@ -144,9 +144,9 @@ class Energy : public Section {
                             : fmt::format("The symplectic {} here ({}, order {}) {} its energy bounded", symplectic.size() == 1 ? "method" : "methods",
                                           method_list(symplectic), orders.front(), symplectic.size() == 1 ? "keeps" : "keep");
       const std::string theory =
-          "a symplectic step exactly conserves a modified energy H + O(dt^p^), so the true energy stays within O(dt^p^) of its "
-          "start: for all time on this linear spring, on a nonlinear system over exponentially long times (Hairer, Lubich and "
-          "Wanner, IX.8)";
+          "below its step limit dt*, a symplectic step conserves a modified energy H + O(dt^p^) (exactly on this linear "
+          "spring), so the true energy stays within O(dt^p^) of its start: for all time here, on a nonlinear system over "
+          "exponentially long times (Hairer, Lubich and Wanner, IX.8)";
       md += fmt::format("\n{}. Theory: {}.\n\n", finding, theory);
       if (page.ledger) {
         claim_energy(*page.ledger, d, "energy.symplectic_bounded", "energy", finding, EnergyKind::Bounded, symplectic, true);

@@ -39,7 +39,7 @@ class Summary : public Section {
     const double gamma = c.damping();
     std::string md = "## " + title() + "\n\n";
     // The dashes of the rule set pandoc's column widths in the PDF.
-    md += fmt::format("| family | method | order | fitted order [bound] | dt* undamped | dt* at damping {} | stable at dt {}, "
+    md += fmt::format("| family | method | order | fitted order [bound] | dt* undamped | dt* at damping {} | stable at dt {} damped, "
                       "at dt {} undamped |\n|------|-----------|--|-----------|------|-------|-------|\n",
                       gamma, c.large_dt, c.small_dt);
     std::vector<const MethodFinding*> rows;
