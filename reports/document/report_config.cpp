@@ -10,6 +10,7 @@
 
 #include "analysis/studies/defaults.hpp"
 #include "analysis/kernel/kernel.hpp"
+#include "analysis/studies/order_reduction.hpp"
 #include "analysis/studies/scaling.hpp"
 #include "reports/data/inputs.hpp"
 #include "reports/data/run_json.hpp"
@@ -87,12 +88,10 @@ constexpr StudyParam<ReportConfig> kSheetStabilityParams[] = {  // the "stabilit
     {"large-dt", "the sheet's large step, with the spring's damping", kPositive, &ReportConfig::large_dt},
     {"small-dt", "the sheet's small step, without damping", kPositive, &ReportConfig::small_dt},
 };
-constexpr StudyParam<StiffOrderDefaults> kStiffOrderParams[] = {
+// The stiff-order study is `study convergence --sweep` (reproduce.cpp): its stiffnesses are the
+// report's own row, its steps and time the convergence study's rows (convergence_params()).
+constexpr StudyParam<StiffOrderDefaults> kStiffnessesParam[] = {
     {"stiffnesses", "the stiffness of each sweep, increasing", kPositive, &StiffOrderDefaults::stiffnesses},
-    {"dt-max", "largest step", kPositive, &StiffOrderDefaults::dt_max},
-    {"dt-min", "smallest step", kPositive, &StiffOrderDefaults::dt_min},
-    {"points", "steps in the geometric sweep", {3, 1000}, &StiffOrderDefaults::points},
-    {"t-end", "simulated time of every run", kPositive, &StiffOrderDefaults::t_end},
 };
 constexpr StudyParam<ReportConfig> kFigureParams[] = {
     {"cannonball-dt", "the cannon ball's step", kPositive, &ReportConfig::cannonball_dt},
@@ -243,7 +242,8 @@ Json report_config_json(const ReportConfig& c) {
   scaling["visual"] = c.scaling_visual;
   j["scaling"] = std::move(scaling);
   j[std::string(scene_name(c.stiffened.scene))] = scene_params_json(c.stiffened.scene, c.stiffened.params);
-  j["stiff_order"] = params_json<StiffOrderDefaults>(kStiffOrderParams, c.stiff_order);
+  j["stiff_order"] = params_json<StiffOrderDefaults>(kStiffnessesParam, c.stiff_order);
+  j["stiff_order"].update(params_json(convergence_params(), stiff_order_config(c.stiffened.scene, {}, c.stiff_order, {})));
   j["figures"] = params_json<ReportConfig>(kFigureParams, c);
   j["threads"] = c.threads;
   return j;
@@ -300,7 +300,10 @@ ReportConfig report_config_from_json(const Json& user, const ReportConfig& base)
   c.scaling_visual = num(sc["visual"], "scaling.visual", Bound::Positive);
   c.stiffened.params = scene_values(j[std::string(scene_name(c.stiffened.scene))], c.stiffened.scene);
   StiffOrderDefaults& s = c.stiff_order;
-  params_from_json<StiffOrderDefaults>(kStiffOrderParams, j["stiff_order"], "stiff_order", s);
+  params_from_json<StiffOrderDefaults>(kStiffnessesParam, j["stiff_order"], "stiff_order", s);
+  ConvergenceConfig sweep = stiff_order_config(c.stiffened.scene, {}, s, {});
+  params_from_json(convergence_params(), j["stiff_order"], "stiff_order", sweep);
+  s.dt_max = sweep.dt_max, s.dt_min = sweep.dt_min, s.points = sweep.points, s.t_end = sweep.t_end;
   check_increasing("config: stiff_order.stiffnesses", s.stiffnesses);
   if (s.stiffnesses.size() < 2) throw UsageError("config: stiff_order.stiffnesses has fewer than 2 values; accepted: 2 or more");
   check_sweep(s.dt_min, s.dt_max, s.t_end, config_names("stiff_order"));
